@@ -1,0 +1,7 @@
+/* app.h - the sub-commands of `lamina`. Each returns the exit status. */
+#ifndef LAMINA_APP_H
+#define LAMINA_APP_H
+
+int cmd_run(int argc, char **argv);
+
+#endif

@@ -1,0 +1,110 @@
+/* cmd_run.c - `lamina run SCRIPT.lua [--set name=value ...]`. */
+#include <lauxlib.h>
+#include <lua.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "app.h"
+#include "lamina_lua.h"
+
+/* FNV-1a of the script's bytes: the provenance stamped into every PNG. */
+static int hash_file(const char *path, char out[17])
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return -1;
+    uint64_t h = 14695981039346656037ull;
+    int c;
+    while ((c = getc(f)) != EOF) {
+        h ^= (unsigned char)c;
+        h *= 1099511628211ull;
+    }
+    int bad = ferror(f);
+    fclose(f);
+    snprintf(out, 17, "%016llx", (unsigned long long)h);
+    return bad ? -1 : 0;
+}
+
+static int parse_args(int argc, char **argv, lamina_run *run)
+{
+    for (int i = 0; i < argc; i++) {
+        const char *a = argv[i];
+        if (strcmp(a, "--set") == 0 || strncmp(a, "--set=", 6) == 0) {
+            const char *kv = a[5] == '=' ? a + 6 : (i + 1 < argc ? argv[++i] : NULL);
+            const char *eq = kv ? strchr(kv, '=') : NULL;
+            if (!eq || eq == kv) {
+                fprintf(stderr, "lamina run: --set needs name=value (got '%s')\n",
+                        kv ? kv : "");
+                return -1;
+            }
+            lamina_set *s = &run->sets[run->nsets++];
+            size_t n = (size_t)(eq - kv);
+            char *name = malloc(n + 1);
+            if (!name) return -1;
+            memcpy(name, kv, n);
+            name[n] = 0;
+            s->name = name;
+            s->value = eq + 1;
+            s->used = 0;
+            for (int k = 0; k < run->nsets - 1; k++)
+                if (strcmp(run->sets[k].name, name) == 0) {
+                    fprintf(stderr, "lamina run: --set %s given twice\n", name);
+                    return -1;
+                }
+        } else if (strcmp(a, "--quiet") == 0 || strcmp(a, "-q") == 0) {
+            run->quiet = 1;
+        } else if (a[0] == '-' && a[1]) {
+            fprintf(stderr, "lamina run: unknown option '%s' (try 'lamina help')\n", a);
+            return -1;
+        } else if (!run->script) {
+            run->script = a;
+        } else {
+            fprintf(stderr, "lamina run: more than one script given ('%s', '%s')\n",
+                    run->script, a);
+            return -1;
+        }
+    }
+    if (!run->script) {
+        fprintf(stderr, "lamina run: no script given (usage: lamina run SCRIPT.lua)\n");
+        return -1;
+    }
+    return 0;
+}
+
+static void free_sets(lamina_run *run)
+{
+    for (int i = 0; i < run->nsets; i++) free((char *)run->sets[i].name);
+    free(run->sets);
+}
+
+int cmd_run(int argc, char **argv)
+{
+    lamina_run run;
+    memset(&run, 0, sizeof run);
+    run.sets = calloc((size_t)argc + 1, sizeof *run.sets);
+    if (!run.sets) return LAMINA_EXIT_USAGE;
+    if (parse_args(argc, argv, &run)) {
+        free_sets(&run);
+        return LAMINA_EXIT_USAGE;
+    }
+    if (hash_file(run.script, run.script_hash)) {
+        perror(run.script);
+        fprintf(stderr, "lamina run: cannot read script '%s'\n", run.script);
+        free_sets(&run);
+        return LAMINA_EXIT_USAGE;
+    }
+    lua_State *L = lamina_open_state(&run);
+    if (!L) {
+        fprintf(stderr, "lamina run: cannot create a Lua state (out of memory)\n");
+        free_sets(&run);
+        return LAMINA_EXIT_USAGE;
+    }
+    int rc = lamina_run_script(L, &run);
+    lua_close(L);
+    if (run.frames && !run.quiet)
+        fprintf(stderr, "lamina: %ld frame%s written to %s\n", run.frames,
+                run.frames == 1 ? "" : "s", run.frame_dir);
+    free_sets(&run);
+    return rc;
+}

@@ -1,0 +1,123 @@
+/* l_args.c - reading constructor tables with named errors. */
+#include <string.h>
+
+#include "l_internal.h"
+
+void la_check_table(lua_State *L, int idx, const char *fn)
+{
+    if (lua_type(L, idx) != LUA_TTABLE)
+        luaL_error(L, "%s expects one table of named arguments, e.g. %s{...} (got %s)",
+                   fn, fn, luaL_typename(L, idx));
+}
+
+void la_check_keys(lua_State *L, int idx, const char *fn, const char *const keys[])
+{
+    idx = lua_absindex(L, idx);
+    la_check_table(L, idx, fn);
+    lua_pushnil(L);
+    while (lua_next(L, idx)) {
+        lua_pop(L, 1);
+        if (lua_type(L, -1) != LUA_TSTRING)
+            luaL_error(L, "%s: unexpected positional argument (use named keys)", fn);
+        const char *k = lua_tostring(L, -1);
+        int ok = 0;
+        for (int i = 0; keys[i]; i++)
+            if (strcmp(k, keys[i]) == 0) ok = 1;
+        if (!ok) {
+            luaL_Buffer b;
+            luaL_buffinit(L, &b);
+            for (int i = 0; keys[i]; i++) {
+                if (i) luaL_addstring(&b, ", ");
+                luaL_addstring(&b, keys[i]);
+            }
+            luaL_pushresult(&b);
+            luaL_error(L, "%s: unknown key '%s' (known keys: %s)", fn, k,
+                       lua_tostring(L, -1));
+        }
+    }
+}
+
+int la_has(lua_State *L, int idx, const char *key)
+{
+    int t = lua_getfield(L, idx, key);
+    lua_pop(L, 1);
+    return t != LUA_TNIL;
+}
+
+double la_opt_number(lua_State *L, int idx, const char *fn, const char *key, double def)
+{
+    int t = lua_getfield(L, idx, key);
+    double v = def;
+    if (t != LUA_TNIL) {
+        int isnum;
+        v = lua_tonumberx(L, -1, &isnum);
+        if (!isnum)
+            luaL_error(L, "%s: '%s' must be a number (got %s)", fn, key,
+                       luaL_typename(L, -1));
+    }
+    lua_pop(L, 1);
+    return v;
+}
+
+double la_number(lua_State *L, int idx, const char *fn, const char *key)
+{
+    if (!la_has(L, idx, key)) luaL_error(L, "%s: '%s' is required", fn, key);
+    return la_opt_number(L, idx, fn, key, 0);
+}
+
+const char *la_opt_string(lua_State *L, int idx, const char *fn, const char *key,
+                          const char *def)
+{
+    int t = lua_getfield(L, idx, key);
+    const char *s = def;
+    if (t != LUA_TNIL) {
+        if (t != LUA_TSTRING)
+            luaL_error(L, "%s: '%s' must be a string (got %s)", fn, key,
+                       luaL_typename(L, -1));
+        s = lua_tostring(L, -1);
+    }
+    lua_pop(L, 1);   /* the string stays alive: it is referenced by the table */
+    return s;
+}
+
+void la_pair(lua_State *L, int idx, const char *fn, const char *key, double *a, double *b)
+{
+    lua_getfield(L, idx, key);
+    if (!lua_istable(L, -1) || lua_rawlen(L, -1) != 2)
+        luaL_error(L, "%s: '%s' must be a pair {a, b}", fn, key);
+    for (int i = 1; i <= 2; i++) {
+        lua_rawgeti(L, -1, i);
+        int isnum;
+        double v = lua_tonumberx(L, -1, &isnum);
+        if (!isnum) luaL_error(L, "%s: '%s'[%d] must be a number", fn, key, i);
+        *(i == 1 ? a : b) = v;
+        lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+}
+
+int la_option(lua_State *L, const char *fn, const char *key, const char *value,
+              const char *const names[])
+{
+    for (int i = 0; names[i]; i++)
+        if (strcmp(value, names[i]) == 0) return i;
+    luaL_Buffer b;
+    luaL_buffinit(L, &b);
+    for (int i = 0; names[i]; i++) {
+        if (i) luaL_addstring(&b, " | ");
+        luaL_addchar(&b, '"');
+        luaL_addstring(&b, names[i]);
+        luaL_addchar(&b, '"');
+    }
+    luaL_pushresult(&b);
+    return luaL_error(L, "%s: %s = \"%s\" is not one of %s", fn, key, value,
+                      lua_tostring(L, -1));
+}
+
+lamina_run *la_run(lua_State *L)
+{
+    lua_getfield(L, LUA_REGISTRYINDEX, "lamina.run");
+    lamina_run *run = lua_touserdata(L, -1);
+    lua_pop(L, 1);
+    return run;
+}

@@ -1,0 +1,262 @@
+/* l_body.c - sim:body{...}: a region of one material filled with particles,
+ * and the body handle (com, velocity, particles). */
+#include <math.h>
+#include <string.h>
+
+#include "l_internal.h"
+
+typedef struct la_body { int index; } la_body;
+
+/* The body and, through its uservalue, the simulation it lives in: a body
+ * handle keeps its simulation alive. */
+static la_body *check_body(lua_State *L, int idx, lm_sim **sim)
+{
+    la_body *b = luaL_checkudata(L, idx, LA_BODY);
+    lua_getiuservalue(L, idx, 1);
+    *sim = la_check_sim(L, -1)->sim;
+    lua_pop(L, 1);
+    return b;
+}
+
+/* ppc = n (a square: 4 = 2x2, 16 = 4x4, as the papers count) or {nx, ny}. */
+static void read_ppc(lua_State *L, const char *fn, int *npx, int *npy)
+{
+    int t = lua_getfield(L, 2, "ppc");
+    lua_pop(L, 1);
+    if (t == LUA_TNIL) {
+        *npx = *npy = 2;
+    } else if (t == LUA_TTABLE) {
+        double a, b;
+        la_pair(L, 2, fn, "ppc", &a, &b);
+        if (a < 1 || b < 1 || a != floor(a) || b != floor(b) || a * b > 4096)
+            luaL_error(L, "%s: ppc = {%f, %f} must be two positive integers", fn, a, b);
+        *npx = (int)a;
+        *npy = (int)b;
+    } else {
+        double n = la_number(L, 2, fn, "ppc");
+        double r = floor(sqrt(n) + 0.5);
+        if (n < 1 || r * r != n || n > 4096)
+            luaL_error(L, "%s: ppc = %f is not a square number (1, 4, 9, 16, ...); "
+                       "use ppc = {nx, ny} for other patterns", fn, n);
+        *npx = *npy = (int)r;
+    }
+}
+
+/* Region test at a trial point: a built-in shape, or a Lua function. */
+static int inside(lua_State *L, int ridx, const lm_region *r, double x, double y)
+{
+    if (r) return lm_region_contains(r, x, y);
+    lua_pushvalue(L, ridx);
+    lua_pushnumber(L, x);
+    lua_pushnumber(L, y);
+    lua_call(L, 2, 1);
+    int in = lua_toboolean(L, -1);
+    lua_pop(L, 1);
+    return in;
+}
+
+/* velocity = {vx, vy} or a function (x, y) -> vx, vy. */
+static void velocity_at(lua_State *L, int vidx, double x, double y, double *vx, double *vy)
+{
+    if (vidx == 0) return;
+    if (lua_isfunction(L, vidx)) {
+        lua_pushvalue(L, vidx);
+        lua_pushnumber(L, x);
+        lua_pushnumber(L, y);
+        lua_call(L, 2, 2);
+        int ok1, ok2;
+        *vx = lua_tonumberx(L, -2, &ok1);
+        *vy = lua_tonumberx(L, -1, &ok2);
+        if (!ok1 || !ok2)
+            luaL_error(L, "sim:body: the velocity function must return two numbers");
+        lua_pop(L, 2);
+    }
+}
+
+int la_sim_body(lua_State *L)
+{
+    static const char *const keys[] = {"material", "region", "ppc", "velocity", "name", NULL};
+    const char *fn = "sim:body";
+    la_sim *s = la_check_sim(L, 1);
+    la_check_keys(L, 2, fn, keys);
+    if (s->running) return luaL_error(L, "%s: bodies cannot be added during a run", fn);
+    lm_sim *sim = s->sim;
+
+    lua_getfield(L, 2, "material");
+    if (lua_isnil(L, -1)) return luaL_error(L, "%s: 'material' is required", fn);
+    lm_material *mat = luaL_testudata(L, -1, LA_MATERIAL);
+    if (!mat) return luaL_error(L, "%s: 'material' must be a material (lamina.elastic{...})", fn);
+    int midx = lua_gettop(L);
+
+    lua_getfield(L, 2, "region");
+    int ridx = lua_gettop(L);
+    lm_region *region = la_test_region(L, ridx);
+    if (!region && !lua_isfunction(L, ridx))
+        return luaL_error(L, "%s: 'region' must be lamina.disk/rect/polygon or a "
+                          "function(x, y) -> boolean (got %s)", fn, luaL_typename(L, ridx));
+
+    int npx, npy;
+    read_ppc(L, fn, &npx, &npy);
+
+    double vx0 = 0, vy0 = 0;
+    int vidx = 0;
+    int vt = lua_getfield(L, 2, "velocity");
+    if (vt == LUA_TFUNCTION) vidx = lua_gettop(L);
+    else {
+        lua_pop(L, 1);
+        if (vt != LUA_TNIL) la_pair(L, 2, fn, "velocity", &vx0, &vy0);
+    }
+
+    int mi = lm_sim_add_material(sim, mat);
+    int bi = mi < 0 ? -1 : lm_sim_add_body(sim, mi);
+    if (bi < 0) return luaL_error(L, "%s: out of memory", fn);
+    la_sim_keep(L, 1, midx);
+
+    const lm_grid *g = &sim->grid;
+    lm_seed_range range = region
+        ? lm_seed_range_for(g, npx, npy, region->x0, region->y0, region->x1, region->y1)
+        : lm_seed_range_for(g, npx, npy, g->x0, g->y0, g->x0 + g->nx * g->hx,
+                            g->y0 + g->ny * g->hy);
+    double mass = lm_seed_mass(g, npx, npy, mat->rho);
+    size_t total = lm_seed_count(&range);
+    for (size_t k = 0; k < total; k++) {
+        double x, y, vx = vx0, vy = vy0;
+        lm_seed_point(g, &range, k, &x, &y);
+        if (!inside(L, ridx, region, x, y)) continue;
+        velocity_at(L, vidx, x, y, &vx, &vy);
+        if (lm_sim_add_particle(sim, bi, x, y, vx, vy, mass, mat->rho) != LM_OK)
+            return luaL_error(L, "%s: %s", fn, sim->err);
+    }
+    if (sim->bodies[bi].count == 0)
+        return luaL_error(L, "%s: the region holds no particles at ppc = %d "
+                          "(is it inside the domain, and larger than a cell?)", fn, npx * npy);
+
+    la_body *b = lua_newuserdatauv(L, sizeof *b, 2);
+    b->index = bi;
+    luaL_setmetatable(L, LA_BODY);
+    lua_pushvalue(L, 1);
+    lua_setiuservalue(L, -2, 1);
+    lua_getfield(L, 2, "name");
+    lua_setiuservalue(L, -2, 2);
+    return 1;
+}
+
+static int body_com(lua_State *L)
+{
+    lm_sim *sim;
+    la_body *b = check_body(L, 1, &sim);
+    double x, y;
+    lm_body_com(sim, b->index, &x, &y);
+    lua_pushnumber(L, x);
+    lua_pushnumber(L, y);
+    return 2;
+}
+
+static int body_velocity(lua_State *L)
+{
+    lm_sim *sim;
+    la_body *b = check_body(L, 1, &sim);
+    double vx, vy;
+    lm_body_velocity(sim, b->index, &vx, &vy);
+    lua_pushnumber(L, vx);
+    lua_pushnumber(L, vy);
+    return 2;
+}
+
+static int body_mass(lua_State *L)
+{
+    lm_sim *sim;
+    la_body *b = check_body(L, 1, &sim);
+    lua_pushnumber(L, lm_body_mass(sim, b->index));
+    return 1;
+}
+
+static void push_array(lua_State *L, const double *a, size_t first, size_t n, const char *name)
+{
+    lua_createtable(L, (int)n, 0);
+    for (size_t i = 0; i < n; i++) {
+        lua_pushnumber(L, a[first + i]);
+        lua_rawseti(L, -2, (lua_Integer)i + 1);
+    }
+    lua_setfield(L, -2, name);
+}
+
+/* A table of arrays (design.md): x, y, vx, vy, mass, rho, and the global
+ * Cauchy stress sxx, syy, sxy. */
+static int body_particles(lua_State *L)
+{
+    lm_sim *sim;
+    la_body *b = check_body(L, 1, &sim);
+    const lm_body *bd = &sim->bodies[b->index];
+    const lm_particles *p = &sim->p;
+    size_t a = bd->first, n = bd->count;
+    lua_createtable(L, 0, 10);
+    push_array(L, p->x, a, n, "x");
+    push_array(L, p->y, a, n, "y");
+    push_array(L, p->vx, a, n, "vx");
+    push_array(L, p->vy, a, n, "vy");
+    push_array(L, p->m, a, n, "mass");
+    push_array(L, p->rho, a, n, "rho");
+    push_array(L, p->sxx, a, n, "sxx");
+    push_array(L, p->syy, a, n, "syy");
+    push_array(L, p->sxy, a, n, "sxy");
+    lua_pushinteger(L, (lua_Integer)n);
+    lua_setfield(L, -2, "n");
+    return 1;
+}
+
+static int body_len(lua_State *L)
+{
+    lm_sim *sim;
+    la_body *b = check_body(L, 1, &sim);
+    lua_pushinteger(L, (lua_Integer)sim->bodies[b->index].count);
+    return 1;
+}
+
+static int body_tostring(lua_State *L)
+{
+    lm_sim *sim;
+    la_body *b = check_body(L, 1, &sim);
+    lua_getiuservalue(L, 1, 2);
+    const char *name = lua_isstring(L, -1) ? lua_tostring(L, -1) : "";
+    lua_pushfstring(L, "lamina.body %d%s%s (%d particles)", b->index + 1,
+                    *name ? " " : "", name, (int)sim->bodies[b->index].count);
+    return 1;
+}
+
+static int body_index(lua_State *L)
+{
+    lm_sim *sim;
+    la_body *b = check_body(L, 1, &sim);
+    const char *k = luaL_checkstring(L, 2);
+    if (strcmp(k, "name") == 0) {
+        lua_getiuservalue(L, 1, 2);
+        return 1;
+    }
+    if (strcmp(k, "index") == 0) {
+        lua_pushinteger(L, b->index + 1);
+        return 1;
+    }
+    luaL_getmetafield(L, 1, "methods");
+    lua_getfield(L, -1, k);
+    if (lua_isnil(L, -1)) return luaL_error(L, "body has no field or method '%s'", k);
+    return 1;
+}
+
+void la_open_body(lua_State *L)
+{
+    static const luaL_Reg meta[] = {{"__index", body_index},
+                                    {"__len", body_len},
+                                    {"__tostring", body_tostring},
+                                    {NULL, NULL}};
+    static const luaL_Reg methods[] = {{"com", body_com},
+                                       {"velocity", body_velocity},
+                                       {"mass", body_mass},
+                                       {"particles", body_particles},
+                                       {NULL, NULL}};
+    luaL_newmetatable(L, LA_BODY);
+    luaL_setfuncs(L, meta, 0);
+    luaL_newlib(L, methods);
+    lua_setfield(L, -2, "methods");
+    lua_pop(L, 1);
+}

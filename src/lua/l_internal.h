@@ -1,0 +1,75 @@
+/* l_internal.h - shared by the binding files (not a public header). */
+#ifndef LAMINA_L_INTERNAL_H
+#define LAMINA_L_INTERNAL_H
+
+#include <lauxlib.h>
+#include <lua.h>
+
+#include "lamina_lua.h"
+#include "mpm.h"
+
+#define LA_MATERIAL "lamina.material"
+#define LA_REGION "lamina.region"
+#define LA_SIM "lamina.sim"
+#define LA_BODY "lamina.body"
+
+/* l_args.c: constructor tables. Every constructor takes one table of named
+ * arguments and rejects a key it does not know, by name, at the script's
+ * line (design.md, Lua API). */
+void la_check_table(lua_State *L, int idx, const char *fn);
+void la_check_keys(lua_State *L, int idx, const char *fn, const char *const keys[]);
+int la_has(lua_State *L, int idx, const char *key);
+double la_number(lua_State *L, int idx, const char *fn, const char *key);
+double la_opt_number(lua_State *L, int idx, const char *fn, const char *key, double def);
+const char *la_opt_string(lua_State *L, int idx, const char *fn, const char *key,
+                          const char *def);
+/* A {a, b} pair of numbers at key. */
+void la_pair(lua_State *L, int idx, const char *fn, const char *key, double *a, double *b);
+/* The option's index in names[] or a named error. */
+int la_option(lua_State *L, const char *fn, const char *key, const char *value,
+              const char *const names[]);
+lamina_run *la_run(lua_State *L);
+
+/* l_material.c */
+void la_open_material(lua_State *L);
+int la_elastic(lua_State *L);
+lm_material *la_check_material(lua_State *L, int idx);
+
+/* l_region.c */
+void la_open_region(lua_State *L);
+int la_disk(lua_State *L);
+int la_rect(lua_State *L);
+int la_polygon(lua_State *L);
+lm_region *la_test_region(lua_State *L, int idx);
+
+/* l_sim.c */
+typedef struct la_event {
+    double interval;            /* 0: once (sim:at) */
+    double t0;                  /* first firing */
+    long k;                     /* firings so far */
+    double next;
+    int ref;                    /* the function, in the sim's uservalue */
+    int done;
+} la_event;
+
+typedef struct la_sim {
+    lm_sim *sim;
+    int running;                /* inside run/step: no nested runs */
+    la_event *ev;
+    int nev, capev;
+} la_sim;
+
+void la_open_sim(lua_State *L);
+int la_sim_new(lua_State *L);
+la_sim *la_check_sim(lua_State *L, int idx);
+/* Keeps the value at idx alive as long as the sim at sidx (its uservalue). */
+void la_sim_keep(lua_State *L, int sidx, int idx);
+
+/* l_body.c */
+void la_open_body(lua_State *L);
+int la_sim_body(lua_State *L);
+
+/* l_frame.c */
+int la_sim_frame(lua_State *L);
+
+#endif

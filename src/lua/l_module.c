@@ -1,0 +1,159 @@
+/* l_module.c - the `lamina` table, the sandboxed state and running a script.
+ *
+ * Errors are reported as lua.c does: one protected call with a message
+ * handler that appends a traceback; syntax errors carry file:line from the
+ * loader. The exit status tells a failed simulation (1) from a wrong script
+ * or command line (2). */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <lualib.h>
+
+#include "l_internal.h"
+
+/* lamina.param(name, default): the --set value when given, converted to the
+ * default's type, else the default. */
+static int l_param(lua_State *L)
+{
+    const char *name = luaL_checkstring(L, 1);
+    luaL_checkany(L, 2);
+    lamina_run *run = la_run(L);
+    for (int i = 0; run && i < run->nsets; i++) {
+        if (strcmp(run->sets[i].name, name) != 0) continue;
+        const char *v = run->sets[i].value;
+        run->sets[i].used = 1;
+        switch (lua_type(L, 2)) {
+        case LUA_TNUMBER:
+            if (!lua_stringtonumber(L, v))
+                return luaL_error(L, "--set %s=%s: a number is expected", name, v);
+            return 1;
+        case LUA_TBOOLEAN:
+            if (strcmp(v, "true") == 0) lua_pushboolean(L, 1);
+            else if (strcmp(v, "false") == 0) lua_pushboolean(L, 0);
+            else return luaL_error(L, "--set %s=%s: true or false is expected", name, v);
+            return 1;
+        case LUA_TSTRING:
+            lua_pushstring(L, v);
+            return 1;
+        default:
+            return luaL_error(L, "lamina.param('%s', ...): the default must be a "
+                              "number, boolean or string", name);
+        }
+    }
+    lua_pushvalue(L, 2);
+    return 1;
+}
+
+static int luaopen_lamina(lua_State *L)
+{
+    static const luaL_Reg funcs[] = {{"param", l_param},
+                                     {"sim", la_sim_new},
+                                     {"elastic", la_elastic},
+                                     {"disk", la_disk},
+                                     {"rect", la_rect},
+                                     {"polygon", la_polygon},
+                                     {NULL, NULL}};
+    la_open_material(L);
+    la_open_region(L);
+    la_open_sim(L);
+    la_open_body(L);
+    luaL_newlib(L, funcs);
+    lua_pushstring(L, LAMINA_VERSION);
+    lua_setfield(L, -2, "version");
+    return 1;
+}
+
+/* Scenario scripts get io/os only as far as the API needs: output paths go
+ * through lamina (design.md, Conventions). */
+static void open_sandbox(lua_State *L)
+{
+    static const luaL_Reg libs[] = {{LUA_GNAME, luaopen_base},
+                                    {LUA_LOADLIBNAME, luaopen_package},
+                                    {LUA_COLIBNAME, luaopen_coroutine},
+                                    {LUA_TABLIBNAME, luaopen_table},
+                                    {LUA_STRLIBNAME, luaopen_string},
+                                    {LUA_MATHLIBNAME, luaopen_math},
+                                    {LUA_UTF8LIBNAME, luaopen_utf8},
+                                    {LUA_OSLIBNAME, luaopen_os},
+                                    {LUA_IOLIBNAME, luaopen_io},
+                                    {NULL, NULL}};
+    for (const luaL_Reg *lib = libs; lib->func; lib++) {
+        luaL_requiref(L, lib->name, lib->func, 1);
+        lua_pop(L, 1);
+    }
+    static const char *const os_drop[] = {"execute", "exit", "remove", "rename",
+                                          "tmpname", "setlocale", NULL};
+    static const char *const io_drop[] = {"open", "popen", "tmpfile", "input",
+                                          "output", "lines", "close", NULL};
+    lua_getglobal(L, "os");
+    for (int i = 0; os_drop[i]; i++) {
+        lua_pushnil(L);
+        lua_setfield(L, -2, os_drop[i]);
+    }
+    lua_pop(L, 1);
+    lua_getglobal(L, "io");
+    for (int i = 0; io_drop[i]; i++) {
+        lua_pushnil(L);
+        lua_setfield(L, -2, io_drop[i]);
+    }
+    lua_pop(L, 1);
+}
+
+lua_State *lamina_open_state(lamina_run *run)
+{
+    lua_State *L = luaL_newstate();
+    if (!L) return NULL;
+    lua_pushlightuserdata(L, run);
+    lua_setfield(L, LUA_REGISTRYINDEX, "lamina.run");
+    open_sandbox(L);
+    luaL_requiref(L, "lamina", luaopen_lamina, 1);
+    lua_pop(L, 1);
+    return L;
+}
+
+static int msghandler(lua_State *L)
+{
+    const char *msg = lua_tostring(L, 1);
+    if (msg == NULL) {
+        if (luaL_callmeta(L, 1, "__tostring") && lua_type(L, -1) == LUA_TSTRING)
+            return 1;
+        msg = lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
+    }
+    luaL_traceback(L, L, msg, 1);
+    return 1;
+}
+
+/* A --set name the script never asked for is almost always a typo. */
+static int check_sets(const lamina_run *run)
+{
+    int bad = 0;
+    for (int i = 0; i < run->nsets; i++) {
+        if (run->sets[i].used) continue;
+        fprintf(stderr, "lamina: --set %s: the script has no lamina.param('%s', ...)\n",
+                run->sets[i].name, run->sets[i].name);
+        bad = 1;
+    }
+    return bad;
+}
+
+int lamina_run_script(lua_State *L, lamina_run *run)
+{
+    lua_pushcfunction(L, msghandler);
+    int base = lua_gettop(L);
+    if (luaL_loadfile(L, run->script) != LUA_OK) {
+        fprintf(stderr, "lamina: %s\n", lua_tostring(L, -1));
+        lua_settop(L, 0);
+        return LAMINA_EXIT_USAGE;
+    }
+    lua_pushstring(L, run->script);
+    lua_setglobal(L, "SCRIPT");
+    int rc = lua_pcall(L, 0, 0, base);
+    if (rc != LUA_OK) {
+        fprintf(stderr, "lamina: %s\n", lua_tostring(L, -1));
+        lua_settop(L, 0);
+        return run->sim_failed ? LAMINA_EXIT_SIM : LAMINA_EXIT_USAGE;
+    }
+    lua_settop(L, 0);
+    return check_sets(run) ? LAMINA_EXIT_USAGE : LAMINA_EXIT_OK;
+}

@@ -1,0 +1,139 @@
+/* l_region.c - lamina.disk, lamina.rect, lamina.polygon (and, handled where
+ * regions are used, a plain function f(x, y) -> bool). */
+#include <stdlib.h>
+#include <string.h>
+
+#include "l_internal.h"
+
+lm_region *la_test_region(lua_State *L, int idx)
+{
+    return luaL_testudata(L, idx, LA_REGION);
+}
+
+static lm_region *push_region(lua_State *L, lm_region_kind kind)
+{
+    lm_region *r = lua_newuserdatauv(L, sizeof *r, 0);
+    memset(r, 0, sizeof *r);
+    r->kind = kind;
+    luaL_setmetatable(L, LA_REGION);
+    return r;
+}
+
+int la_disk(lua_State *L)
+{
+    static const char *const keys[] = {"center", "radius", NULL};
+    const char *fn = "lamina.disk";
+    la_check_keys(L, 1, fn, keys);
+    double cx, cy;
+    la_pair(L, 1, fn, "center", &cx, &cy);
+    double r = la_number(L, 1, fn, "radius");
+    if (!(r > 0)) luaL_error(L, "%s: radius must be positive (got %f)", fn, r);
+    lm_region *g = push_region(L, LM_REGION_DISK);
+    g->cx = cx;
+    g->cy = cy;
+    g->r = r;
+    g->x0 = cx - r; g->x1 = cx + r;
+    g->y0 = cy - r; g->y1 = cy + r;
+    return 1;
+}
+
+/* lamina.rect{x0, y0, x1, y1} or {min = {x, y}, max = {x, y}}. */
+int la_rect(lua_State *L)
+{
+    static const char *const keys[] = {"x0", "y0", "x1", "y1", "min", "max", NULL};
+    const char *fn = "lamina.rect";
+    la_check_keys(L, 1, fn, keys);
+    double x0, y0, x1, y1;
+    if (la_has(L, 1, "min") || la_has(L, 1, "max")) {
+        la_pair(L, 1, fn, "min", &x0, &y0);
+        la_pair(L, 1, fn, "max", &x1, &y1);
+    } else {
+        x0 = la_number(L, 1, fn, "x0");
+        y0 = la_number(L, 1, fn, "y0");
+        x1 = la_number(L, 1, fn, "x1");
+        y1 = la_number(L, 1, fn, "y1");
+    }
+    if (!(x1 > x0) || !(y1 > y0))
+        luaL_error(L, "%s: empty rectangle (need x1 > x0 and y1 > y0)", fn);
+    lm_region *g = push_region(L, LM_REGION_RECT);
+    g->x0 = x0; g->y0 = y0; g->x1 = x1; g->y1 = y1;
+    return 1;
+}
+
+/* lamina.polygon{points = {{x, y}, ...}} (also accepts the list directly). */
+int la_polygon(lua_State *L)
+{
+    static const char *const keys[] = {"points", NULL};
+    const char *fn = "lamina.polygon";
+    la_check_table(L, 1, fn);
+    int list = 1;
+    if (lua_rawlen(L, 1) == 0) {
+        la_check_keys(L, 1, fn, keys);
+        lua_getfield(L, 1, "points");
+        if (!lua_istable(L, -1)) luaL_error(L, "%s: 'points' must be a list of {x, y}", fn);
+        list = lua_gettop(L);
+    }
+    int n = (int)lua_rawlen(L, list);
+    if (n < 3) luaL_error(L, "%s: needs at least 3 points (got %d)", fn, n);
+    lm_region *g = push_region(L, LM_REGION_POLYGON);
+    g->vx = malloc(n * sizeof(double));
+    g->vy = malloc(n * sizeof(double));
+    if (!g->vx || !g->vy) luaL_error(L, "%s: out of memory", fn);
+    g->nv = n;
+    for (int i = 0; i < n; i++) {
+        lua_rawgeti(L, list, i + 1);
+        if (!lua_istable(L, -1) || lua_rawlen(L, -1) != 2)
+            luaL_error(L, "%s: point %d must be {x, y}", fn, i + 1);
+        lua_rawgeti(L, -1, 1);
+        lua_rawgeti(L, -2, 2);
+        int okx, oky;
+        g->vx[i] = lua_tonumberx(L, -2, &okx);
+        g->vy[i] = lua_tonumberx(L, -1, &oky);
+        if (!okx || !oky) luaL_error(L, "%s: point %d must be two numbers", fn, i + 1);
+        lua_pop(L, 3);
+        if (i == 0 || g->vx[i] < g->x0) g->x0 = g->vx[i];
+        if (i == 0 || g->vx[i] > g->x1) g->x1 = g->vx[i];
+        if (i == 0 || g->vy[i] < g->y0) g->y0 = g->vy[i];
+        if (i == 0 || g->vy[i] > g->y1) g->y1 = g->vy[i];
+    }
+    return 1;
+}
+
+static int region_gc(lua_State *L)
+{
+    lm_region *r = luaL_checkudata(L, 1, LA_REGION);
+    free(r->vx);
+    free(r->vy);
+    r->vx = r->vy = NULL;
+    return 0;
+}
+
+/* region:contains(x, y), so scripts can combine shapes in plain functions. */
+static int region_contains(lua_State *L)
+{
+    lm_region *r = luaL_checkudata(L, 1, LA_REGION);
+    lua_pushboolean(L, lm_region_contains(r, luaL_checknumber(L, 2), luaL_checknumber(L, 3)));
+    return 1;
+}
+
+static int region_tostring(lua_State *L)
+{
+    static const char *const names[] = {"disk", "rect", "polygon"};
+    lm_region *r = luaL_checkudata(L, 1, LA_REGION);
+    lua_pushfstring(L, "lamina.%s (bounding box %f, %f .. %f, %f)", names[r->kind],
+                    r->x0, r->y0, r->x1, r->y1);
+    return 1;
+}
+
+void la_open_region(lua_State *L)
+{
+    static const luaL_Reg meta[] = {{"__gc", region_gc},
+                                    {"__tostring", region_tostring},
+                                    {NULL, NULL}};
+    static const luaL_Reg methods[] = {{"contains", region_contains}, {NULL, NULL}};
+    luaL_newmetatable(L, LA_REGION);
+    luaL_setfuncs(L, meta, 0);
+    luaL_newlib(L, methods);
+    lua_setfield(L, -2, "__index");
+    lua_pop(L, 1);
+}

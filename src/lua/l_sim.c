@@ -1,0 +1,351 @@
+/* l_sim.c - lamina.sim{...}: the simulation handle, its clock and events.
+ *
+ * Callbacks (sim:every, sim:at) run between steps, so a live parameter
+ * change made in one is applied exactly at a step boundary. Their functions
+ * and the materials the engine borrows live in the sim's uservalue table. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "l_internal.h"
+
+static const char *const schemes[] = {"musl", "usl", NULL};
+static const char *const bcs[] = {"fixed", "symmetry", "free", NULL};
+static const char *const sides[] = {"left", "right", "bottom", "top", NULL};
+
+la_sim *la_check_sim(lua_State *L, int idx)
+{
+    la_sim *s = luaL_checkudata(L, idx, LA_SIM);
+    if (!s->sim) luaL_error(L, "the simulation has been closed");
+    return s;
+}
+
+void la_sim_keep(lua_State *L, int sidx, int idx)
+{
+    sidx = lua_absindex(L, sidx);
+    idx = lua_absindex(L, idx);
+    lua_getiuservalue(L, sidx, 1);
+    lua_pushvalue(L, idx);
+    luaL_ref(L, -2);
+    lua_pop(L, 1);
+}
+
+static void read_cell(lua_State *L, const char *fn, lm_sim_def *d)
+{
+    int t = lua_getfield(L, 1, "cell");
+    lua_pop(L, 1);
+    if (t == LUA_TTABLE) {
+        la_pair(L, 1, fn, "cell", &d->hx, &d->hy);
+    } else if (t != LUA_TNIL) {
+        d->hx = d->hy = la_number(L, 1, fn, "cell");
+    }
+}
+
+static void read_domain(lua_State *L, const char *fn, lm_sim_def *d)
+{
+    if (lua_getfield(L, 1, "domain") == LUA_TNIL) {
+        lua_pop(L, 1);
+        return;
+    }
+    if (!lua_istable(L, -1) || lua_rawlen(L, -1) != 4)
+        luaL_error(L, "%s: 'domain' must be {x0, y0, x1, y1}", fn);
+    double v[4];
+    for (int i = 0; i < 4; i++) {
+        lua_rawgeti(L, -1, i + 1);
+        int ok;
+        v[i] = lua_tonumberx(L, -1, &ok);
+        if (!ok) luaL_error(L, "%s: 'domain'[%d] must be a number", fn, i + 1);
+        lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+    d->x0 = v[0]; d->y0 = v[1]; d->x1 = v[2]; d->y1 = v[3];
+}
+
+/* boundary = "fixed" (every side) or {left = ..., right = ..., bottom = ...,
+ * top = ...}; sides not named keep the default, fixed. */
+static void read_boundary(lua_State *L, const char *fn, lm_sim_def *d)
+{
+    int t = lua_getfield(L, 1, "boundary");
+    if (t == LUA_TSTRING) {
+        int bc = la_option(L, fn, "boundary", lua_tostring(L, -1), bcs);
+        for (int s = 0; s < 4; s++) d->bc[s] = (lm_bc)bc;
+    } else if (t == LUA_TTABLE) {
+        la_check_keys(L, -1, "lamina.sim boundary", sides);
+        for (int s = 0; s < 4; s++) {
+            const char *v = la_opt_string(L, -1, fn, sides[s], NULL);
+            if (v) d->bc[s] = (lm_bc)la_option(L, fn, sides[s], v, bcs);
+        }
+    } else if (t != LUA_TNIL) {
+        luaL_error(L, "%s: 'boundary' must be a string or a table of sides", fn);
+    }
+    lua_pop(L, 1);
+}
+
+int la_sim_new(lua_State *L)
+{
+    static const char *const keys[] = {"domain", "cell", "dt", "scheme", "gravity",
+                                       "boundary", "courant", NULL};
+    const char *fn = "lamina.sim";
+    la_check_keys(L, 1, fn, keys);
+    lm_sim_def d;
+    lm_sim_def_default(&d);
+    read_domain(L, fn, &d);
+    read_cell(L, fn, &d);
+    d.dt = la_number(L, 1, fn, "dt");
+    d.scheme = (lm_scheme)la_option(L, fn, "scheme",
+                                    la_opt_string(L, 1, fn, "scheme", "musl"), schemes);
+    if (la_has(L, 1, "gravity")) la_pair(L, 1, fn, "gravity", &d.gx, &d.gy);
+    read_boundary(L, fn, &d);
+    d.courant = la_opt_number(L, 1, fn, "courant", 1.0);
+
+    la_sim *s = lua_newuserdatauv(L, sizeof *s, 1);
+    memset(s, 0, sizeof *s);
+    luaL_setmetatable(L, LA_SIM);
+    lua_newtable(L);
+    lua_setiuservalue(L, -2, 1);
+    char err[256];
+    s->sim = lm_sim_new(&d, err, sizeof err);
+    if (!s->sim) luaL_error(L, "%s: %s", fn, err);
+    return 1;
+}
+
+static int sim_gc(lua_State *L)
+{
+    la_sim *s = luaL_checkudata(L, 1, LA_SIM);
+    lm_sim_free(s->sim);
+    free(s->ev);
+    s->sim = NULL;
+    s->ev = NULL;
+    return 0;
+}
+
+/* ---- events ---------------------------------------------------------- */
+
+static void add_event(lua_State *L, la_sim *s, double first, double interval)
+{
+    luaL_checktype(L, 3, LUA_TFUNCTION);
+    if (s->nev == s->capev) {
+        int cap = s->capev ? 2 * s->capev : 8;
+        la_event *e = realloc(s->ev, cap * sizeof *e);
+        if (!e) luaL_error(L, "out of memory");
+        s->ev = e;
+        s->capev = cap;
+    }
+    la_event *e = &s->ev[s->nev++];
+    memset(e, 0, sizeof *e);
+    e->interval = interval;
+    e->t0 = e->next = first;
+    lua_getiuservalue(L, 1, 1);
+    lua_pushvalue(L, 3);
+    e->ref = luaL_ref(L, -2);
+    lua_pop(L, 1);
+}
+
+/* sim:every(interval, fn): fn(sim) now (at the next step boundary) and
+ * every interval of simulated time after. */
+static int sim_every(lua_State *L)
+{
+    la_sim *s = la_check_sim(L, 1);
+    double dt = luaL_checknumber(L, 2);
+    if (!(dt > 0)) return luaL_error(L, "sim:every: interval must be positive (got %f)", dt);
+    add_event(L, s, s->sim->t, dt);
+    return 0;
+}
+
+/* sim:at(t, fn): fn(sim) once, at the first step boundary at or after t. */
+static int sim_at(lua_State *L)
+{
+    la_sim *s = la_check_sim(L, 1);
+    add_event(L, s, luaL_checknumber(L, 2), 0);
+    return 0;
+}
+
+/* Runs every event that is due. Half a step of tolerance, so that an event
+ * at t = 0.1 fires at the step that lands on 0.1 up to rounding. */
+static void fire_due(lua_State *L, la_sim *s)
+{
+    double now = s->sim->t + 0.5 * s->sim->def.dt;
+    for (int i = 0; i < s->nev; i++) {
+        la_event *e = &s->ev[i];
+        if (e->done || e->next > now) continue;
+        if (e->interval > 0) {
+            /* next multiple after now: an interval shorter than dt fires
+             * once per step, not in bursts */
+            do {
+                e->k++;
+                e->next = e->t0 + e->k * e->interval;
+            } while (e->next <= now);
+        } else {
+            e->done = 1;
+        }
+        lua_getiuservalue(L, 1, 1);
+        lua_rawgeti(L, -1, e->ref);
+        lua_remove(L, -2);
+        lua_pushvalue(L, 1);
+        if (lua_pcall(L, 1, 0, 0) != LUA_OK) {
+            s->running = 0;
+            la_run(L)->active = NULL;
+            lua_error(L);
+        }
+    }
+}
+
+/* ---- stepping -------------------------------------------------------- */
+
+/* design.md: a dt whose Courant number exceeds `courant` is refused with
+ * the limit printed. */
+static void check_courant(lua_State *L, la_sim *s)
+{
+    double c;
+    double cn = lm_sim_courant(s->sim, &c);
+    if (cn > s->sim->def.courant * (1 + 1e-12)) {
+        double h = fmin(s->sim->grid.hx, s->sim->grid.hy);
+        luaL_error(L, "dt = %g is too large: Courant number dt*c/h = %g exceeds "
+                   "courant = %g (c_max = %g, h = %g); use dt <= %g or raise courant",
+                   s->sim->def.dt, cn, s->sim->def.courant, c, h,
+                   s->sim->def.courant * h / c);
+    }
+}
+
+static void advance(lua_State *L, la_sim *s, long nsteps)
+{
+    if (s->running) luaL_error(L, "sim:run/sim:step called from inside a callback");
+    check_courant(L, s);
+    lamina_run *run = la_run(L);
+    s->running = 1;
+    run->active = s->sim;
+    fire_due(L, s);
+    for (long n = 0; n < nsteps; n++) {
+        lm_status st = lm_sim_step(s->sim);
+        if (st != LM_OK) {
+            s->running = 0;
+            run->active = NULL;
+            run->sim_failed = 1;
+            luaL_error(L, "simulation failed: %s", s->sim->err);
+        }
+        fire_due(L, s);
+    }
+    s->running = 0;
+    run->active = NULL;
+}
+
+static int sim_run(lua_State *L)
+{
+    static const char *const keys[] = {"t_end", NULL};
+    la_sim *s = la_check_sim(L, 1);
+    la_check_keys(L, 2, "sim:run", keys);
+    double t_end = la_number(L, 2, "sim:run", "t_end");
+    double n = floor((t_end - s->sim->t) / s->sim->def.dt + 0.5);
+    if (n > 1e12) return luaL_error(L, "sim:run: t_end = %f needs %f steps", t_end, n);
+    advance(L, s, n > 0 ? (long)n : 0);
+    return 0;
+}
+
+static int sim_step(lua_State *L)
+{
+    la_sim *s = la_check_sim(L, 1);
+    lua_Integer n = luaL_optinteger(L, 2, 1);
+    if (n < 0) return luaL_error(L, "sim:step: n must be >= 0 (got %d)", (int)n);
+    advance(L, s, (long)n);
+    return 0;
+}
+
+/* ---- diagnostics ----------------------------------------------------- */
+
+static int sim_energy(lua_State *L)
+{
+    la_sim *s = la_check_sim(L, 1);
+    lm_energy e = lm_sim_energy(s->sim);
+    lua_createtable(L, 0, 5);
+    lua_pushnumber(L, e.kinetic); lua_setfield(L, -2, "kinetic");
+    lua_pushnumber(L, e.strain); lua_setfield(L, -2, "strain");
+    lua_pushnumber(L, e.internal); lua_setfield(L, -2, "internal");
+    lua_pushnumber(L, e.potential); lua_setfield(L, -2, "potential");
+    lua_pushnumber(L, e.total); lua_setfield(L, -2, "total");
+    return 1;
+}
+
+static int sim_momentum(lua_State *L)
+{
+    la_sim *s = la_check_sim(L, 1);
+    double px, py;
+    lm_sim_momentum(s->sim, &px, &py);
+    lua_pushnumber(L, px);
+    lua_pushnumber(L, py);
+    return 2;
+}
+
+static int sim_hash(lua_State *L)
+{
+    la_sim *s = la_check_sim(L, 1);
+    char buf[17];
+    snprintf(buf, sizeof buf, "%016llx", (unsigned long long)lm_sim_hash(s->sim));
+    lua_pushstring(L, buf);
+    return 1;
+}
+
+static int sim_courant(lua_State *L)
+{
+    la_sim *s = la_check_sim(L, 1);
+    double c;
+    lua_pushnumber(L, lm_sim_courant(s->sim, &c));
+    lua_pushnumber(L, c);
+    return 2;
+}
+
+static int sim_index(lua_State *L)
+{
+    la_sim *s = la_check_sim(L, 1);
+    const char *k = luaL_checkstring(L, 2);
+    const lm_sim *m = s->sim;
+    if (strcmp(k, "t") == 0) lua_pushnumber(L, m->t);
+    else if (strcmp(k, "step") == 0) lua_pushinteger(L, m->step);
+    else if (strcmp(k, "dt") == 0) lua_pushnumber(L, m->def.dt);
+    else if (strcmp(k, "cell") == 0) lua_pushnumber(L, m->grid.hx);
+    else if (strcmp(k, "n") == 0) lua_pushinteger(L, (lua_Integer)m->p.n);
+    else if (strcmp(k, "scheme") == 0) lua_pushstring(L, schemes[m->def.scheme]);
+    else {
+        luaL_getmetafield(L, 1, "methods");
+        lua_getfield(L, -1, k);
+        if (lua_isnil(L, -1)) return luaL_error(L, "sim has no field or method '%s'", k);
+    }
+    return 1;
+}
+
+static int sim_newindex(lua_State *L)
+{
+    return luaL_error(L, "sim.%s is read-only", luaL_checkstring(L, 2));
+}
+
+static int sim_tostring(lua_State *L)
+{
+    la_sim *s = la_check_sim(L, 1);
+    lua_pushfstring(L, "lamina.sim (%d x %d cells, %d particles, t = %f)",
+                    s->sim->grid.nx, s->sim->grid.ny, (int)s->sim->p.n, s->sim->t);
+    return 1;
+}
+
+void la_open_sim(lua_State *L)
+{
+    static const luaL_Reg meta[] = {{"__gc", sim_gc}, {"__close", sim_gc},
+                                    {"__index", sim_index},
+                                    {"__newindex", sim_newindex},
+                                    {"__tostring", sim_tostring},
+                                    {NULL, NULL}};
+    static const luaL_Reg methods[] = {{"body", la_sim_body},
+                                       {"every", sim_every},
+                                       {"at", sim_at},
+                                       {"run", sim_run},
+                                       {"step", sim_step},
+                                       {"energy", sim_energy},
+                                       {"momentum", sim_momentum},
+                                       {"hash", sim_hash},
+                                       {"courant", sim_courant},
+                                       {"frame", la_sim_frame},
+                                       {NULL, NULL}};
+    luaL_newmetatable(L, LA_SIM);
+    luaL_setfuncs(L, meta, 0);
+    luaL_newlib(L, methods);
+    lua_setfield(L, -2, "methods");
+    lua_pop(L, 1);
+}

@@ -1,0 +1,176 @@
+/* mpm.h - lamina's engine: the material point method in 2D.
+ *
+ * One lm_sim owns the background grid, the particles (structure of arrays),
+ * the bodies and pointers to the materials. The step follows physics.md §1
+ * one phase per function (step.c), so the paper can be read beside it.
+ *
+ * No Lua, no drawing, no file I/O here. Errors are values: functions return
+ * LM_OK or an lm_status and leave a one-line message in sim->err naming the
+ * time, step, particle and body and the likely cause.
+ *
+ * Fields of the structs below are readable by the bindings and the renderer;
+ * only the engine writes them. */
+#ifndef LAMINA_MPM_H
+#define LAMINA_MPM_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+typedef enum lm_status {
+    LM_OK = 0,
+    LM_ERR_INPUT,      /* a bad value given to the engine */
+    LM_ERR_UNSTABLE,   /* NaN/inf, or a cell compressed to nothing */
+    LM_ERR_DOMAIN,     /* a particle left the grid */
+    LM_ERR_MEMORY
+} lm_status;
+
+typedef enum lm_scheme { LM_MUSL = 0, LM_USL = 1 } lm_scheme;
+
+/* Per-side boundary condition on the grid's outer nodes. */
+typedef enum lm_bc { LM_BC_FIXED = 0, LM_BC_SYMMETRY = 1, LM_BC_FREE = 2 } lm_bc;
+enum { LM_LEFT = 0, LM_RIGHT = 1, LM_BOTTOM = 2, LM_TOP = 3 };
+
+/* ---- materials (material.c, material_elastic.c) ---------------------- */
+
+typedef enum lm_kind { LM_ELASTIC = 1 } lm_kind;
+typedef enum lm_plane { LM_PLANE_STRAIN = 0, LM_PLANE_STRESS = 1 } lm_plane;
+
+typedef struct lm_material {
+    lm_kind kind;
+    double rho;            /* reference density */
+    double E, nu;          /* elastic solid */
+    lm_plane plane;
+} lm_material;
+
+/* Fastest wave speed of the material (physics.md §5), for the Courant check. */
+double lm_material_wave_speed(const lm_material *mat);
+/* Checks the parameters; 0 if fine, else writes why into err. */
+int lm_material_validate(const lm_material *mat, char *err, size_t errlen);
+
+/* ---- grid (grid.c) ----------------------------------------------------- */
+
+typedef struct lm_grid {
+    double x0, y0;         /* lower-left node */
+    double hx, hy;         /* cell size */
+    int nx, ny;            /* cells; nodes are (nx+1)*(ny+1), row-major in x */
+    lm_bc bc[4];           /* LM_LEFT, LM_RIGHT, LM_BOTTOM, LM_TOP */
+    double *m;             /* lumped nodal mass */
+    double *px, *py;       /* momentum p_i, then p_i^L */
+    double *fx, *fy;       /* total nodal force */
+    double *vx, *vy;       /* velocity used for the strain (step 5) */
+} lm_grid;
+
+/* ---- particles (particles.c) -------------------------------------------- */
+
+typedef struct lm_particles {
+    size_t n, cap;
+    double *x, *y;         /* position */
+    double *vx, *vy;       /* velocity */
+    double *m;             /* mass (constant) */
+    double *rho;           /* density; volume = m / rho */
+    double *sxx, *syy, *sxy, *szz;  /* Cauchy stress, global axes */
+    int *body;             /* owning body index */
+    int *mat;              /* material index into sim->mats */
+    /* Shape functions of the step, evaluated once at x^k ([F] eqs 13-14):
+     * lower-left node, then 4 weights and gradients in the order
+     * (i,j) (i+1,j) (i,j+1) (i+1,j+1). */
+    int *node;
+    double *N, *Gx, *Gy;
+} lm_particles;
+
+typedef struct lm_body {
+    int mat;               /* index into sim->mats */
+    size_t first, count;   /* particles [first, first+count) */
+} lm_body;
+
+/* ---- the simulation (sim.c) ---------------------------------------------- */
+
+typedef struct lm_sim_def {
+    double x0, y0, x1, y1; /* domain */
+    double hx, hy;         /* cell size (the domain is rounded up to whole cells) */
+    double dt;
+    lm_scheme scheme;
+    double gx, gy;         /* gravity */
+    lm_bc bc[4];
+    double courant;        /* largest allowed dt*c_max/h */
+} lm_sim_def;
+
+/* Fills a definition with lamina's defaults (unit square, cell 0.1, MUSL,
+ * no gravity, fixed walls, courant 1). */
+void lm_sim_def_default(lm_sim_def *def);
+
+typedef struct lm_sim {
+    lm_sim_def def;
+    lm_grid grid;
+    lm_particles p;
+    lm_material **mats;    /* borrowed: the caller keeps them alive */
+    int nmats, capmats;
+    lm_body *bodies;
+    int nbodies, capbodies;
+    double t;
+    long step;
+    double pe_ref;         /* sum m g.x at seeding: potential energy datum */
+    char err[512];
+} lm_sim;
+
+lm_sim *lm_sim_new(const lm_sim_def *def, char *err, size_t errlen);
+void lm_sim_free(lm_sim *sim);
+
+/* Registers a material (borrowed pointer); returns its index or -1. */
+int lm_sim_add_material(lm_sim *sim, lm_material *mat);
+/* Starts a body of material index `mat`; returns its index or -1. */
+int lm_sim_add_body(lm_sim *sim, int mat);
+/* Appends one particle to the last body (bodies are contiguous). */
+lm_status lm_sim_add_particle(lm_sim *sim, int body, double x, double y,
+                              double vx, double vy, double mass, double rho);
+
+/* Courant number dt * c_max / min(hx, hy) over the materials in use. */
+double lm_sim_courant(const lm_sim *sim, double *c_max);
+
+/* One step of physics.md §1. On failure sim->err says why. */
+lm_status lm_sim_step(lm_sim *sim);
+
+/* ---- seeding (seed.c, region.c) ----------------------------------------- */
+
+typedef enum lm_region_kind { LM_REGION_DISK, LM_REGION_RECT, LM_REGION_POLYGON } lm_region_kind;
+
+typedef struct lm_region {
+    lm_region_kind kind;
+    double cx, cy, r;          /* disk */
+    double x0, y0, x1, y1;     /* rect; for every kind, the bounding box */
+    int nv;                    /* polygon vertices */
+    double *vx, *vy;
+} lm_region;
+
+int lm_region_contains(const lm_region *r, double x, double y);
+
+/* Trial points of seeding: npx*npy per cell on a regular pattern (the cell
+ * split into npx*npy sub-cells, a point at each centre; normals paper §2).
+ * Cells [i0,i1) x [j0,j1) are visited row by row; point k of that range: */
+typedef struct lm_seed_range { int i0, i1, j0, j1, npx, npy; } lm_seed_range;
+/* The cell range covering the box (clipped to the grid). */
+lm_seed_range lm_seed_range_for(const lm_grid *g, int npx, int npy,
+                                double x0, double y0, double x1, double y1);
+size_t lm_seed_count(const lm_seed_range *r);
+void lm_seed_point(const lm_grid *g, const lm_seed_range *r, size_t k,
+                   double *x, double *y);
+/* Mass of one seeded particle of density rho (per unit depth). */
+double lm_seed_mass(const lm_grid *g, int npx, int npy, double rho);
+
+/* ---- diagnostics (diag.c) ------------------------------------------------ */
+
+typedef struct lm_energy {
+    double kinetic, strain, internal, potential, total;
+} lm_energy;
+
+lm_energy lm_sim_energy(const lm_sim *sim);
+/* Mass-weighted centre and velocity of a body (body < 0: all particles). */
+void lm_body_com(const lm_sim *sim, int body, double *x, double *y);
+void lm_body_velocity(const lm_sim *sim, int body, double *vx, double *vy);
+double lm_body_mass(const lm_sim *sim, int body);
+/* Linear momentum of all particles. */
+void lm_sim_momentum(const lm_sim *sim, double *px, double *py);
+/* FNV-1a hash of the particle state: equal hashes, equal states. */
+uint64_t lm_sim_hash(const lm_sim *sim);
+
+#endif

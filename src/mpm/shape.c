@@ -1,0 +1,30 @@
+/* shape.c - the bilinear nodal basis N_i(x) and its gradient ([F] §2). */
+#include <math.h>
+
+#include "step.h"
+
+void lm_shape_bilinear(const lm_grid *g, double x, double y, int *node,
+                       double N[4], double Gx[4], double Gy[4])
+{
+    double fx = (x - g->x0) / g->hx, fy = (y - g->y0) / g->hy;
+    int i = (int)floor(fx), j = (int)floor(fy);
+    /* A point exactly on the far edge belongs to the last cell. */
+    if (i >= g->nx) i = g->nx - 1;
+    if (j >= g->ny) j = g->ny - 1;
+    if (i < 0) i = 0;
+    if (j < 0) j = 0;
+    double xi = fx - i, eta = fy - j;
+    *node = j * (g->nx + 1) + i;
+    N[0] = (1 - xi) * (1 - eta);
+    N[1] = xi * (1 - eta);
+    N[2] = (1 - xi) * eta;
+    N[3] = xi * eta;
+    Gx[0] = -(1 - eta) / g->hx;
+    Gx[1] = (1 - eta) / g->hx;
+    Gx[2] = -eta / g->hx;
+    Gx[3] = eta / g->hx;
+    Gy[0] = -(1 - xi) / g->hy;
+    Gy[1] = -xi / g->hy;
+    Gy[2] = (1 - xi) / g->hy;
+    Gy[3] = xi / g->hy;
+}

@@ -1,0 +1,182 @@
+/* sim.c - creating a simulation, its bodies and particles. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "mpm.h"
+#include "particles.h"
+#include "step.h"
+
+void lm_sim_def_default(lm_sim_def *def)
+{
+    memset(def, 0, sizeof *def);
+    def->x1 = def->y1 = 1;
+    def->hx = def->hy = 0.1;
+    def->dt = 1e-3;
+    def->scheme = LM_MUSL;
+    for (int s = 0; s < 4; s++) def->bc[s] = LM_BC_FIXED;
+    def->courant = 1;
+}
+
+/* Whole cells cover the domain; a domain that is a multiple of the cell
+ * size up to rounding gets exactly that many. */
+static int cells(double len, double h)
+{
+    double n = len / h;
+    double r = floor(n + 0.5);
+    return fabs(n - r) < 1e-9 * (r > 1 ? r : 1) ? (int)r : (int)ceil(n);
+}
+
+static int grid_alloc(lm_grid *g)
+{
+    size_t n = lm_grid_nodes(g);
+    double **f[] = {&g->m, &g->px, &g->py, &g->fx, &g->fy, &g->vx, &g->vy};
+    for (size_t k = 0; k < sizeof f / sizeof f[0]; k++) {
+        *f[k] = calloc(n, sizeof(double));
+        if (!*f[k]) return -1;
+    }
+    return 0;
+}
+
+static void grid_free(lm_grid *g)
+{
+    free(g->m); free(g->px); free(g->py); free(g->fx); free(g->fy);
+    free(g->vx); free(g->vy);
+}
+
+lm_sim *lm_sim_new(const lm_sim_def *def, char *err, size_t errlen)
+{
+    if (!(def->x1 > def->x0) || !(def->y1 > def->y0)) {
+        snprintf(err, errlen, "domain {%g, %g, %g, %g} is empty: need x1 > x0 and y1 > y0",
+                 def->x0, def->y0, def->x1, def->y1);
+        return NULL;
+    }
+    if (!(def->hx > 0) || !(def->hy > 0) || !isfinite(def->hx) || !isfinite(def->hy)) {
+        snprintf(err, errlen, "cell size must be positive (got %g x %g)", def->hx, def->hy);
+        return NULL;
+    }
+    if (!(def->dt > 0) || !isfinite(def->dt)) {
+        snprintf(err, errlen, "dt must be positive (got %g)", def->dt);
+        return NULL;
+    }
+    if (!(def->courant > 0)) {
+        snprintf(err, errlen, "courant must be positive (got %g)", def->courant);
+        return NULL;
+    }
+    double ncells = ((def->x1 - def->x0) / def->hx) * ((def->y1 - def->y0) / def->hy);
+    if (ncells > 1e8) {
+        snprintf(err, errlen, "grid of %.3g cells is too large (limit 1e8)", ncells);
+        return NULL;
+    }
+    lm_sim *sim = calloc(1, sizeof *sim);
+    if (!sim) {
+        snprintf(err, errlen, "out of memory");
+        return NULL;
+    }
+    sim->def = *def;
+    lm_grid *g = &sim->grid;
+    g->x0 = def->x0;
+    g->y0 = def->y0;
+    g->hx = def->hx;
+    g->hy = def->hy;
+    g->nx = cells(def->x1 - def->x0, def->hx);
+    g->ny = cells(def->y1 - def->y0, def->hy);
+    memcpy(g->bc, def->bc, sizeof g->bc);
+    if (grid_alloc(g)) {
+        lm_sim_free(sim);
+        snprintf(err, errlen, "out of memory for a %d x %d grid", g->nx, g->ny);
+        return NULL;
+    }
+    return sim;
+}
+
+void lm_sim_free(lm_sim *sim)
+{
+    if (!sim) return;
+    grid_free(&sim->grid);
+    lm_particles_free(&sim->p);
+    free(sim->mats);
+    free(sim->bodies);
+    free(sim);
+}
+
+int lm_sim_add_material(lm_sim *sim, lm_material *mat)
+{
+    for (int k = 0; k < sim->nmats; k++)
+        if (sim->mats[k] == mat) return k;
+    if (sim->nmats == sim->capmats) {
+        int cap = sim->capmats ? 2 * sim->capmats : 4;
+        lm_material **q = realloc(sim->mats, cap * sizeof *q);
+        if (!q) return -1;
+        sim->mats = q;
+        sim->capmats = cap;
+    }
+    sim->mats[sim->nmats] = mat;
+    return sim->nmats++;
+}
+
+int lm_sim_add_body(lm_sim *sim, int mat)
+{
+    if (mat < 0 || mat >= sim->nmats) return -1;
+    if (sim->nbodies == sim->capbodies) {
+        int cap = sim->capbodies ? 2 * sim->capbodies : 4;
+        lm_body *q = realloc(sim->bodies, cap * sizeof *q);
+        if (!q) return -1;
+        sim->bodies = q;
+        sim->capbodies = cap;
+    }
+    lm_body *b = &sim->bodies[sim->nbodies];
+    b->mat = mat;
+    b->first = sim->p.n;
+    b->count = 0;
+    return sim->nbodies++;
+}
+
+lm_status lm_sim_add_particle(lm_sim *sim, int body, double x, double y,
+                              double vx, double vy, double mass, double rho)
+{
+    lm_particles *p = &sim->p;
+    if (body != sim->nbodies - 1) {
+        snprintf(sim->err, sizeof sim->err,
+                 "particles can only be added to the newest body");
+        return LM_ERR_INPUT;
+    }
+    if (!(mass > 0) || !(rho > 0)) {
+        snprintf(sim->err, sizeof sim->err,
+                 "particle mass and density must be positive (got %g, %g)", mass, rho);
+        return LM_ERR_INPUT;
+    }
+    if (p->n == p->cap &&
+        lm_particles_reserve(p, p->cap ? 2 * p->cap : 1024)) {
+        snprintf(sim->err, sizeof sim->err, "out of memory for %zu particles", p->n + 1);
+        return LM_ERR_MEMORY;
+    }
+    size_t q = p->n++;
+    p->x[q] = x;
+    p->y[q] = y;
+    p->vx[q] = vx;
+    p->vy[q] = vy;
+    p->m[q] = mass;
+    p->rho[q] = rho;
+    p->sxx[q] = p->syy[q] = p->sxy[q] = p->szz[q] = 0;
+    p->body[q] = body;
+    p->mat[q] = sim->bodies[body].mat;
+    p->node[q] = 0;
+    sim->bodies[body].count++;
+    sim->pe_ref += mass * (sim->def.gx * x + sim->def.gy * y);
+    return LM_OK;
+}
+
+/* physics.md §5: dt_c = h / c_max; the number is dt / dt_c. */
+double lm_sim_courant(const lm_sim *sim, double *c_max)
+{
+    double c = 0;
+    for (int b = 0; b < sim->nbodies; b++) {
+        double cb = lm_material_wave_speed(sim->mats[sim->bodies[b].mat]);
+        if (cb > c) c = cb;
+    }
+    if (c_max) *c_max = c;
+    double h = sim->grid.hx < sim->grid.hy ? sim->grid.hx : sim->grid.hy;
+    return sim->def.dt * c / h;
+}

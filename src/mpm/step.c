@@ -1,0 +1,230 @@
+/* step.c - one explicit MPM step, physics.md §1, one phase per function.
+ *
+ * References: [F] = York, Sulsky & Schreyer 2000 (eqs 5-16), [M] = the 1999
+ * membrane paper (eqs 10-13), [N] §7 (the USL summary).
+ * The shape functions are evaluated once at x^k and used for every transfer
+ * of the step ([F] eqs 13-14). */
+#include <math.h>
+#include <stdio.h>
+
+#include "step.h"
+
+static const int corner_dx[4] = {0, 1, 0, 1};
+static const int corner_dy[4] = {0, 0, 1, 1};
+
+static inline int corner(const lm_grid *g, int node, int k)
+{
+    return node + corner_dy[k] * (g->nx + 1) + corner_dx[k];
+}
+
+void lm_step_shape(lm_sim *sim)
+{
+    lm_particles *p = &sim->p;
+    for (size_t q = 0; q < p->n; q++)
+        lm_shape_bilinear(&sim->grid, p->x[q], p->y[q], &p->node[q],
+                          &p->N[4 * q], &p->Gx[4 * q], &p->Gy[4 * q]);
+}
+
+/* Step 1: m_i = sum_p m_p N_ip, p_i = sum_p m_p v_p N_ip (lumped mass). */
+void lm_step_p2g(lm_sim *sim)
+{
+    lm_grid *g = &sim->grid;
+    const lm_particles *p = &sim->p;
+    for (size_t q = 0; q < p->n; q++) {
+        for (int k = 0; k < 4; k++) {
+            int i = corner(g, p->node[q], k);
+            double w = p->m[q] * p->N[4 * q + k];
+            g->m[i] += w;
+            g->px[i] += w * p->vx[q];
+            g->py[i] += w * p->vy[q];
+        }
+    }
+}
+
+/* Step 2: f_i^int = -sum_p V_p sigma_p . G_ip ([F] eq 9), f_i^ext = m_i g. */
+void lm_step_forces(lm_sim *sim)
+{
+    lm_grid *g = &sim->grid;
+    const lm_particles *p = &sim->p;
+    for (size_t q = 0; q < p->n; q++) {
+        double V = p->m[q] / p->rho[q];
+        for (int k = 0; k < 4; k++) {
+            int i = corner(g, p->node[q], k);
+            double gx = p->Gx[4 * q + k], gy = p->Gy[4 * q + k];
+            g->fx[i] -= V * (p->sxx[q] * gx + p->sxy[q] * gy);
+            g->fy[i] -= V * (p->sxy[q] * gx + p->syy[q] * gy);
+        }
+    }
+    size_t nn = lm_grid_nodes(g);
+    for (size_t i = 0; i < nn; i++) {
+        g->fx[i] += g->m[i] * sim->def.gx;
+        g->fy[i] += g->m[i] * sim->def.gy;
+    }
+}
+
+/* Step 3: p_i^L = p_i + dt f_i ([F] eq 10); the boundary conditions act on
+ * both p^L and f, so that step 4 sees the constrained accelerations. */
+void lm_step_grid_update(lm_sim *sim)
+{
+    lm_grid *g = &sim->grid;
+    size_t nn = lm_grid_nodes(g);
+    double dt = sim->def.dt;
+    for (size_t i = 0; i < nn; i++) {
+        g->px[i] += dt * g->fx[i];
+        g->py[i] += dt * g->fy[i];
+    }
+    lm_grid_apply_bc(g, g->px, g->py);
+    lm_grid_apply_bc(g, g->fx, g->fy);
+}
+
+/* Step 4 ([F] eq 12): FLIP velocity update from the nodal accelerations,
+ * position from the Lagrangian grid velocity. Only zero-mass nodes are
+ * skipped; dropping "small" ones would break momentum conservation. */
+void lm_step_g2p(lm_sim *sim)
+{
+    const lm_grid *g = &sim->grid;
+    lm_particles *p = &sim->p;
+    double dt = sim->def.dt;
+    for (size_t q = 0; q < p->n; q++) {
+        double ax = 0, ay = 0, ux = 0, uy = 0;
+        for (int k = 0; k < 4; k++) {
+            int i = corner(g, p->node[q], k);
+            if (g->m[i] <= 0) continue;
+            double w = p->N[4 * q + k] / g->m[i];
+            ax += w * g->fx[i];
+            ay += w * g->fy[i];
+            ux += w * g->px[i];
+            uy += w * g->py[i];
+        }
+        p->vx[q] += dt * ax;
+        p->vy[q] += dt * ay;
+        p->x[q] += dt * ux;
+        p->y[q] += dt * uy;
+    }
+}
+
+/* Step 5. MUSL ([M] eqs 12-13, [F] eq 13): re-map the updated particle
+ * velocities to the grid with the same N_ip and constrain them again.
+ * USL ([N] §7): use v_i^L = p_i^L / m_i. */
+void lm_step_strain_velocity(lm_sim *sim)
+{
+    lm_grid *g = &sim->grid;
+    const lm_particles *p = &sim->p;
+    size_t nn = lm_grid_nodes(g);
+    if (sim->def.scheme == LM_MUSL) {
+        for (size_t i = 0; i < nn; i++) g->vx[i] = g->vy[i] = 0;
+        for (size_t q = 0; q < p->n; q++) {
+            for (int k = 0; k < 4; k++) {
+                int i = corner(g, p->node[q], k);
+                double w = p->m[q] * p->N[4 * q + k];
+                g->vx[i] += w * p->vx[q];
+                g->vy[i] += w * p->vy[q];
+            }
+        }
+        for (size_t i = 0; i < nn; i++) {
+            if (g->m[i] > 0) {
+                g->vx[i] /= g->m[i];
+                g->vy[i] /= g->m[i];
+            }
+        }
+    } else {
+        for (size_t i = 0; i < nn; i++) {
+            g->vx[i] = g->m[i] > 0 ? g->px[i] / g->m[i] : 0;
+            g->vy[i] = g->m[i] > 0 ? g->py[i] / g->m[i] : 0;
+        }
+    }
+    lm_grid_apply_bc(g, g->vx, g->vy);
+}
+
+/* Steps 6-8: L = sum_i v_i (x) G_ip; strain increment (dt/2)(L + L^T) and
+ * spin (1/2)(L - L^T); density rho/(1 + tr de) ([F] eq 16); stress by the
+ * particle's constitutive law. */
+void lm_step_stress(lm_sim *sim)
+{
+    const lm_grid *g = &sim->grid;
+    lm_particles *p = &sim->p;
+    double dt = sim->def.dt;
+    for (size_t q = 0; q < p->n; q++) {
+        double Lxx = 0, Lxy = 0, Lyx = 0, Lyy = 0;
+        for (int k = 0; k < 4; k++) {
+            int i = corner(g, p->node[q], k);
+            double gx = p->Gx[4 * q + k], gy = p->Gy[4 * q + k];
+            Lxx += g->vx[i] * gx;
+            Lxy += g->vx[i] * gy;
+            Lyx += g->vy[i] * gx;
+            Lyy += g->vy[i] * gy;
+        }
+        double dexx = dt * Lxx, deyy = dt * Lyy;
+        double dexy = 0.5 * dt * (Lxy + Lyx);
+        double w = 0.5 * (Lxy - Lyx);
+        p->rho[q] /= 1 + dexx + deyy;
+        const lm_material *mat = sim->mats[p->mat[q]];
+        switch (mat->kind) {
+        case LM_ELASTIC:
+            lm_elastic_update(mat, dexx, deyy, dexy, w, dt, &p->sxx[q],
+                              &p->syy[q], &p->sxy[q], &p->szz[q]);
+            break;
+        }
+    }
+}
+
+static lm_status fail(lm_sim *sim, lm_status st, size_t q, const char *what,
+                      const char *cause)
+{
+    const lm_particles *p = &sim->p;
+    snprintf(sim->err, sizeof sim->err,
+             "at t = %.6g (step %ld): particle %zu of body %d %s at "
+             "(%.6g, %.6g), velocity (%.6g, %.6g); likely cause: %s",
+             sim->t, sim->step, q + 1, p->body[q] + 1, what, p->x[q], p->y[q],
+             p->vx[q], p->vy[q], cause);
+    return st;
+}
+
+/* Stops the run at the first sign of trouble, naming the particle, rather
+ * than letting NaN spread through the grid. */
+lm_status lm_step_check(lm_sim *sim)
+{
+    const lm_particles *p = &sim->p;
+    const lm_grid *g = &sim->grid;
+    double x1 = g->x0 + g->nx * g->hx, y1 = g->y0 + g->ny * g->hy;
+    for (size_t q = 0; q < p->n; q++) {
+        if (!isfinite(p->x[q]) || !isfinite(p->y[q]) || !isfinite(p->vx[q]) ||
+            !isfinite(p->vy[q]) || !isfinite(p->sxx[q]) ||
+            !isfinite(p->syy[q]) || !isfinite(p->sxy[q]))
+            return fail(sim, LM_ERR_UNSTABLE, q, "became NaN or infinite",
+                        "the time step is too large (raise stability: "
+                        "lower dt) or a material parameter is extreme");
+        if (!(p->rho[q] > 0) || !isfinite(p->rho[q]))
+            return fail(sim, LM_ERR_UNSTABLE, q,
+                        "was compressed to zero or negative volume",
+                        "element inversion: the time step is too large or "
+                        "the material too soft for the load");
+        if (p->x[q] < g->x0 || p->x[q] > x1 || p->y[q] < g->y0 || p->y[q] > y1)
+            return fail(sim, LM_ERR_DOMAIN, q, "left the domain",
+                        "the domain is too small for the motion, or a "
+                        "'free' side let the body out");
+    }
+    return LM_OK;
+}
+
+lm_status lm_sim_step(lm_sim *sim)
+{
+    if (sim->p.n == 0) {
+        sim->step++;
+        sim->t = sim->step * sim->def.dt;
+        return LM_OK;
+    }
+    lm_grid_clear(&sim->grid);
+    lm_step_shape(sim);
+    lm_step_p2g(sim);
+    lm_step_forces(sim);
+    lm_step_grid_update(sim);
+    lm_step_g2p(sim);
+    lm_step_strain_velocity(sim);
+    lm_step_stress(sim);
+    sim->step++;
+    /* t from the step count, so that long runs do not accumulate dt's
+     * rounding error. */
+    sim->t = sim->step * sim->def.dt;
+    return lm_step_check(sim);
+}

@@ -1,0 +1,36 @@
+/* step.h - the phases of one MPM step (physics.md §1), exposed so that the
+ * unit tests can check each one alone. lm_sim_step() calls them in order. */
+#ifndef LAMINA_STEP_H
+#define LAMINA_STEP_H
+
+#include "mpm.h"
+
+/* Bilinear basis at (x, y): lower-left node, weights and gradients in the
+ * order (i,j) (i+1,j) (i,j+1) (i+1,j+1). The caller guarantees the point is
+ * inside the grid. */
+void lm_shape_bilinear(const lm_grid *g, double x, double y, int *node,
+                       double N[4], double Gx[4], double Gy[4]);
+
+void lm_step_shape(lm_sim *sim);            /* N_ip, G_ip at x^k */
+void lm_step_p2g(lm_sim *sim);              /* 1. m_i, p_i */
+void lm_step_forces(lm_sim *sim);           /* 2. f_i^int + f_i^ext */
+void lm_step_grid_update(lm_sim *sim);      /* 3. p_i^L, boundary conditions */
+void lm_step_g2p(lm_sim *sim);              /* 4. v_p, x_p */
+void lm_step_strain_velocity(lm_sim *sim);  /* 5. MUSL re-map or USL */
+void lm_step_stress(lm_sim *sim);           /* 6-8. strain, density, stress */
+lm_status lm_step_check(lm_sim *sim);       /* NaN, inversion, domain */
+
+/* Zeroes the boundary-constrained components of a nodal vector field. */
+void lm_grid_apply_bc(const lm_grid *g, double *ux, double *uy);
+void lm_grid_clear(lm_grid *g);
+size_t lm_grid_nodes(const lm_grid *g);
+
+/* Objective stress update of an elastic solid, [F] eq 19 (Jaumann rate). */
+void lm_elastic_update(const lm_material *mat, double dexx, double deyy,
+                       double dexy, double w, double dt, double *sxx,
+                       double *syy, double *sxy, double *szz);
+/* Strain energy density 1/2 sigma:C^-1:sigma, from the stress. */
+double lm_elastic_energy_density(const lm_material *mat, double sxx,
+                                 double syy, double sxy, double szz);
+
+#endif
