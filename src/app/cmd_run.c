@@ -8,6 +8,7 @@
 
 #include "app.h"
 #include "lamina_lua.h"
+#include "render.h"
 
 /* FNV-1a of the script's bytes: the provenance stamped into every PNG. */
 static int hash_file(const char *path, char out[17])
@@ -106,5 +107,6 @@ int cmd_run(int argc, char **argv)
         fprintf(stderr, "lamina: %ld frame%s written to %s\n", run.frames,
                 run.frames == 1 ? "" : "s", run.frame_dir);
     free_sets(&run);
+    lr_shutdown();
     return rc;
 }

@@ -36,8 +36,9 @@ static void read_ppc(lua_State *L, const char *fn, int *npx, int *npy)
         double n = la_number(L, 2, fn, "ppc");
         double r = floor(sqrt(n) + 0.5);
         if (n < 1 || r * r != n || n > 4096)
-            luaL_error(L, "%s: ppc = %f is not a square number (1, 4, 9, 16, ...); "
-                       "use ppc = {nx, ny} for other patterns", fn, n);
+            luaL_error(L, "%s: ppc = %s is not a square number (1, 4, 9, 16, ...); "
+                       "use ppc = {nx, ny} for other patterns", fn,
+                       (lua_getfield(L, 2, "ppc"), lua_tostring(L, -1)));
         *npx = *npy = (int)r;
     }
 }

@@ -4,6 +4,7 @@
  * change made in one is applied exactly at a step boundary. Their functions
  * and the materials the engine borrows live in the sim's uservalue table. */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -200,10 +201,13 @@ static void check_courant(lua_State *L, la_sim *s)
     double cn = lm_sim_courant(s->sim, &c);
     if (cn > s->sim->def.courant * (1 + 1e-12)) {
         double h = fmin(s->sim->grid.hx, s->sim->grid.hy);
-        luaL_error(L, "dt = %g is too large: Courant number dt*c/h = %g exceeds "
-                   "courant = %g (c_max = %g, h = %g); use dt <= %g or raise courant",
-                   s->sim->def.dt, cn, s->sim->def.courant, c, h,
-                   s->sim->def.courant * h / c);
+        char msg[320];
+        snprintf(msg, sizeof msg,
+                 "dt = %g is too large: Courant number dt*c/h = %g exceeds "
+                 "courant = %g (c_max = %g, h = %g); use dt <= %g or raise courant",
+                 s->sim->def.dt, cn, s->sim->def.courant, c, h,
+                 s->sim->def.courant * h / c);
+        luaL_error(L, "%s", msg);
     }
 }
 
@@ -325,8 +329,28 @@ static int sim_tostring(lua_State *L)
     return 1;
 }
 
+/* The contract has both sim.step (the step count, a number) and
+ * sim:step(n). sim:step(n) is sim.step(sim, n): a call of the count. Numbers
+ * get a __call metamethod that steps when its first argument is a sim and
+ * otherwise fails exactly as calling a number does. */
+static int number_call(lua_State *L)
+{
+    if (luaL_testudata(L, 2, LA_SIM)) {
+        lua_remove(L, 1);
+        return sim_step(L);
+    }
+    return luaL_error(L, "attempt to call a number value");
+}
+
 void la_open_sim(lua_State *L)
 {
+    lua_pushinteger(L, 0);
+    lua_createtable(L, 0, 1);
+    lua_pushcfunction(L, number_call);
+    lua_setfield(L, -2, "__call");
+    lua_setmetatable(L, -2);
+    lua_pop(L, 1);
+
     static const luaL_Reg meta[] = {{"__gc", sim_gc}, {"__close", sim_gc},
                                     {"__index", sim_index},
                                     {"__newindex", sim_newindex},

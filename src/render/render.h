@@ -86,4 +86,7 @@ lr_rgba lr_palette(int g);
 /* Draws the frame with cairo and writes it to `path` (PNG). */
 int lr_frame_write(const lr_frame *f, const char *path, char *err, size_t errlen);
 
+/* Frees cairo's and fontconfig's static caches; call once at exit. */
+void lr_shutdown(void);
+
 #endif

@@ -1,0 +1,31 @@
+#!/bin/bash
+# .ci/setup.sh - install what is missing, configure and build.
+#
+# Sourced by .ci/main and .ci/test. Idempotent: packages are installed only
+# when missing (apt-get update runs only then), CMake configures once and
+# then builds incrementally. BUILD_DIR and CMAKE_ARGS may be set by callers.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+
+PACKAGES=(cmake make gcc pkg-config liblua5.4-dev libcairo2-dev libpng-dev
+          libfontconfig-dev fonts-dejavu-core libosmesa6-dev valgrind)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}"
+  SUDO=""
+  [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+lamina_build() {   # lamina_build DIR [cmake args...]
+  local dir=$1; shift
+  if [ ! -f "$dir/CMakeCache.txt" ]; then
+    cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo "$@" >/dev/null
+  fi
+  cmake --build "$dir" -j"$(nproc)" -- --no-print-directory >/dev/null
+}

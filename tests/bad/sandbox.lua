@@ -1,0 +1,5 @@
+-- expect: 2
+-- stderr: sandbox\.lua:5: attempt to call a nil value \(field 'execute'\)
+-- Scenario scripts cannot run programs or open files by themselves:
+-- output paths go through lamina (design.md, Conventions).
+os.execute("true")

@@ -1,0 +1,30 @@
+#!/bin/sh
+# expect.sh STATUS PATTERN [PATTERN ...] -- COMMAND [ARG ...]
+# Runs COMMAND and passes when it exits with STATUS and its stderr matches
+# every (extended) regular expression PATTERN. Used by the bad-input tests:
+# a wrong input must fail with the right status and a message that says why.
+want=$1; shift
+n=0
+while [ "$1" != "--" ]; do
+  n=$((n + 1)); eval "pat_$n=\$1"; shift
+  [ $# -eq 0 ] && { echo "expect.sh: missing --" >&2; exit 2; }
+done
+shift
+err=$(mktemp)
+"$@" >/dev/null 2>"$err"
+got=$?
+cat "$err"
+rc=0
+if [ "$got" != "$want" ]; then
+  echo "FAIL: exit status $got, expected $want" >&2; rc=1
+fi
+i=1
+while [ $i -le $n ]; do
+  eval "p=\$pat_$i"
+  if ! grep -Eq -- "$p" "$err"; then
+    echo "FAIL: stderr does not match /$p/" >&2; rc=1
+  fi
+  i=$((i + 1))
+done
+rm -f "$err"
+exit $rc
