@@ -132,14 +132,29 @@ int la_sim_body(lua_State *L)
         return luaL_error(L, "%s: the region holds no particles at ppc = %d "
                           "(is it inside the domain, and larger than a cell?)", fn, npx * npy);
 
+    lua_getfield(L, 2, "name");
+    la_push_body(L, 1, bi, lua_gettop(L));
+    return 1;
+}
+
+void la_push_body(lua_State *L, int sidx, int bi, int nameidx)
+{
+    sidx = lua_absindex(L, sidx);
+    if (nameidx) nameidx = lua_absindex(L, nameidx);
     la_body *b = lua_newuserdatauv(L, sizeof *b, 2);
     b->index = bi;
     luaL_setmetatable(L, LA_BODY);
-    lua_pushvalue(L, 1);
+    lua_pushvalue(L, sidx);
     lua_setiuservalue(L, -2, 1);
-    lua_getfield(L, 2, "name");
-    lua_setiuservalue(L, -2, 2);
-    return 1;
+    if (nameidx) {
+        lua_pushvalue(L, nameidx);
+        lua_setiuservalue(L, -2, 2);
+    }
+}
+
+int la_check_body(lua_State *L, int idx, lm_sim **sim)
+{
+    return check_body(L, idx, sim)->index;
 }
 
 static int body_com(lua_State *L)
@@ -201,6 +216,21 @@ static int body_particles(lua_State *L)
     push_array(L, p->sxx, a, n, "sxx");
     push_array(L, p->syy, a, n, "syy");
     push_array(L, p->sxy, a, n, "sxy");
+    if (bd->membrane) {
+        /* normal = tangent turned +90 degrees */
+        lua_createtable(L, (int)n, 0);
+        lua_createtable(L, (int)n, 0);
+        for (size_t i = 0; i < n; i++) {
+            lua_pushnumber(L, -p->ty[a + i]);
+            lua_rawseti(L, -3, (lua_Integer)i + 1);
+            lua_pushnumber(L, p->tx[a + i]);
+            lua_rawseti(L, -2, (lua_Integer)i + 1);
+        }
+        lua_setfield(L, -3, "ny");
+        lua_setfield(L, -2, "nx");
+        push_array(L, p->et, a, n, "et");
+        push_array(L, p->ds, a, n, "ds");
+    }
     lua_pushinteger(L, (lua_Integer)n);
     lua_setfield(L, -2, "n");
     return 1;

@@ -33,6 +33,7 @@ lamina_run *la_run(lua_State *L);
 /* l_material.c */
 void la_open_material(lua_State *L);
 int la_elastic(lua_State *L);
+int la_membrane_material(lua_State *L);
 lm_material *la_check_material(lua_State *L, int idx);
 
 /* l_region.c */
@@ -68,6 +69,13 @@ void la_sim_keep(lua_State *L, int sidx, int idx);
 /* l_body.c */
 void la_open_body(lua_State *L);
 int la_sim_body(lua_State *L);
+/* Pushes a handle for body bi of the sim at sidx; name at nameidx (0: none). */
+void la_push_body(lua_State *L, int sidx, int bi, int nameidx);
+/* The body handle at idx and its simulation. */
+int la_check_body(lua_State *L, int idx, lm_sim **sim);
+
+/* l_membrane.c */
+int la_sim_membrane(lua_State *L);
 
 /* l_frame.c */
 int la_sim_frame(lua_State *L);

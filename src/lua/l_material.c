@@ -11,6 +11,7 @@
 #include "l_internal.h"
 
 static const char *const planes[] = {"strain", "stress", NULL};
+static const char *const laws[] = {"uniaxial", "plane_stress", NULL};
 
 lm_material *la_check_material(lua_State *L, int idx)
 {
@@ -48,6 +49,29 @@ int la_elastic(lua_State *L)
     return 1;
 }
 
+/* lamina.membrane{rho, E, nu, thickness, law, one_way} ([M] §3, [T] §5.1):
+ * mass per unit length rho * thickness (per unit depth). */
+int la_membrane_material(lua_State *L)
+{
+    static const char *const keys[] = {"rho", "E", "nu", "thickness", "law", "one_way", NULL};
+    const char *fn = "lamina.membrane";
+    la_check_keys(L, 1, fn, keys);
+    lm_material *m = push_material(L);
+    m->kind = LM_MEMBRANE;
+    m->rho = la_number(L, 1, fn, "rho");
+    m->E = la_number(L, 1, fn, "E");
+    m->nu = la_opt_number(L, 1, fn, "nu", 0);
+    m->thickness = la_number(L, 1, fn, "thickness");
+    m->law = (lm_law)la_option(L, fn, "law", la_opt_string(L, 1, fn, "law", "uniaxial"), laws);
+    lua_getfield(L, 1, "one_way");
+    if (!lua_isnil(L, -1) && !lua_isboolean(L, -1))
+        luaL_error(L, "%s: 'one_way' must be true or false", fn);
+    m->one_way = lua_toboolean(L, -1);
+    lua_pop(L, 1);
+    validate(L, fn, m);
+    return 1;
+}
+
 static int mat_index(lua_State *L)
 {
     lm_material *m = la_check_material(L, 1);
@@ -56,7 +80,11 @@ static int mat_index(lua_State *L)
     else if (strcmp(k, "E") == 0) lua_pushnumber(L, m->E);
     else if (strcmp(k, "nu") == 0) lua_pushnumber(L, m->nu);
     else if (strcmp(k, "plane") == 0) lua_pushstring(L, planes[m->plane]);
-    else if (strcmp(k, "kind") == 0) lua_pushstring(L, "elastic");
+    else if (strcmp(k, "kind") == 0)
+        lua_pushstring(L, m->kind == LM_MEMBRANE ? "membrane" : "elastic");
+    else if (strcmp(k, "thickness") == 0 && m->kind == LM_MEMBRANE) lua_pushnumber(L, m->thickness);
+    else if (strcmp(k, "law") == 0 && m->kind == LM_MEMBRANE) lua_pushstring(L, laws[m->law]);
+    else if (strcmp(k, "one_way") == 0 && m->kind == LM_MEMBRANE) lua_pushboolean(L, m->one_way);
     else if (strcmp(k, "wave_speed") == 0) lua_pushnumber(L, lm_material_wave_speed(m));
     else return luaL_error(L, "material has no field '%s'", k);
     return 1;
@@ -70,10 +98,15 @@ static int mat_newindex(lua_State *L)
     lm_material next = *m;
     if (strcmp(k, "E") == 0) next.E = luaL_checknumber(L, 3);
     else if (strcmp(k, "nu") == 0) next.nu = luaL_checknumber(L, 3);
-    else if (strcmp(k, "plane") == 0)
+    else if (strcmp(k, "plane") == 0 && m->kind == LM_ELASTIC)
         next.plane = (lm_plane)la_option(L, "material", "plane", luaL_checkstring(L, 3), planes);
+    else if (strcmp(k, "one_way") == 0 && m->kind == LM_MEMBRANE)
+        next.one_way = lua_toboolean(L, 3);
+    else if (strcmp(k, "law") == 0 && m->kind == LM_MEMBRANE)
+        next.law = (lm_law)la_option(L, "material", "law", luaL_checkstring(L, 3), laws);
     else
-        return luaL_error(L, "material field '%s' cannot be changed (changeable: E, nu, plane)", k);
+        return luaL_error(L, "material field '%s' cannot be changed (changeable: E, nu, %s)", k,
+                          m->kind == LM_MEMBRANE ? "law, one_way" : "plane");
     validate(L, "material", &next);
     *m = next;
     lamina_run *run = la_run(L);
@@ -86,6 +119,12 @@ static int mat_newindex(lua_State *L)
 static int mat_tostring(lua_State *L)
 {
     lm_material *m = la_check_material(L, 1);
+    if (m->kind == LM_MEMBRANE) {
+        lua_pushfstring(L, "lamina.membrane{rho = %f, E = %f, nu = %f, thickness = %f, "
+                        "law = \"%s\", one_way = %s}", m->rho, m->E, m->nu, m->thickness,
+                        laws[m->law], m->one_way ? "true" : "false");
+        return 1;
+    }
     lua_pushfstring(L, "lamina.elastic{rho = %f, E = %f, nu = %f, plane = \"%s\"}",
                     m->rho, m->E, m->nu, planes[m->plane]);
     return 1;

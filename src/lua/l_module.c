@@ -10,7 +10,7 @@
 
 #include <lualib.h>
 
-#include "l_internal.h"
+#include "l_curve.h"
 
 /* lamina.param(name, default): the --set value when given, converted to the
  * default's type, else the default. */
@@ -50,6 +50,7 @@ static int luaopen_lamina(lua_State *L)
     static const luaL_Reg funcs[] = {{"param", l_param},
                                      {"sim", la_sim_new},
                                      {"elastic", la_elastic},
+                                     {"membrane", la_membrane_material},
                                      {"disk", la_disk},
                                      {"rect", la_rect},
                                      {"polygon", la_polygon},
@@ -58,7 +59,9 @@ static int luaopen_lamina(lua_State *L)
     la_open_region(L);
     la_open_sim(L);
     la_open_body(L);
+    la_open_curve(L);
     luaL_newlib(L, funcs);
+    la_register_curves(L);
     lua_pushstring(L, LAMINA_VERSION);
     lua_setfield(L, -2, "version");
     return 1;

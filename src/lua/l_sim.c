@@ -357,6 +357,7 @@ void la_open_sim(lua_State *L)
                                     {"__tostring", sim_tostring},
                                     {NULL, NULL}};
     static const luaL_Reg methods[] = {{"body", la_sim_body},
+                                       {"membrane", la_sim_membrane},
                                        {"every", sim_every},
                                        {"at", sim_at},
                                        {"run", sim_run},

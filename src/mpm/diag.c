@@ -20,6 +20,9 @@ lm_energy lm_sim_energy(const lm_sim *sim)
             e.strain += V * lm_elastic_energy_density(mat, p->sxx[q], p->syy[q],
                                                       p->sxy[q], p->szz[q]);
             break;
+        case LM_MEMBRANE:
+            e.strain += lm_membrane_energy(mat, V, p->et[q]);
+            break;
         }
         gx += p->m[q] * (sim->def.gx * p->x[q] + sim->def.gy * p->y[q]);
     }
@@ -99,7 +102,7 @@ uint64_t lm_sim_hash(const lm_sim *sim)
     const lm_particles *p = &sim->p;
     uint64_t h = 14695981039346656037ull;
     const double *f[] = {p->x, p->y, p->vx, p->vy, p->rho,
-                         p->sxx, p->syy, p->sxy, p->szz};
+                         p->sxx, p->syy, p->sxy, p->szz, p->et};
     for (size_t k = 0; k < sizeof f / sizeof f[0]; k++)
         if (p->n) h = fnv1a(h, f[k], p->n * sizeof(double));
     h = fnv1a(h, &sim->step, sizeof sim->step);

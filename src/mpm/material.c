@@ -13,6 +13,9 @@ double lm_material_wave_speed(const lm_material *mat)
         if (mat->plane == LM_PLANE_STRAIN)
             return sqrt(E * (1 - nu) / ((1 + nu) * (1 - 2 * nu) * rho));
         return sqrt(E / ((1 - nu * nu) * rho));
+    case LM_MEMBRANE:
+        if (mat->law == LM_LAW_PLANE_STRESS) return sqrt(E / ((1 - nu * nu) * rho));
+        return sqrt(E / rho);
     }
     return 0;
 }
@@ -31,6 +34,20 @@ int lm_material_validate(const lm_material *mat, char *err, size_t errlen)
         }
         if (!(mat->nu > -1) || !(mat->nu < 0.5)) {
             snprintf(err, errlen, "nu must lie in (-1, 0.5) (got %g)", mat->nu);
+            return -1;
+        }
+        break;
+    case LM_MEMBRANE:
+        if (!(mat->E >= 0) || !isfinite(mat->E)) {
+            snprintf(err, errlen, "E must be non-negative and finite (got %g)", mat->E);
+            return -1;
+        }
+        if (!(mat->nu > -1) || !(mat->nu < 1)) {
+            snprintf(err, errlen, "nu must lie in (-1, 1) (got %g)", mat->nu);
+            return -1;
+        }
+        if (!(mat->thickness > 0) || !isfinite(mat->thickness)) {
+            snprintf(err, errlen, "thickness must be positive (got %g)", mat->thickness);
             return -1;
         }
         break;

@@ -32,14 +32,20 @@ enum { LM_LEFT = 0, LM_RIGHT = 1, LM_BOTTOM = 2, LM_TOP = 3 };
 
 /* ---- materials (material.c, material_elastic.c) ---------------------- */
 
-typedef enum lm_kind { LM_ELASTIC = 1 } lm_kind;
+typedef enum lm_kind { LM_ELASTIC = 1, LM_MEMBRANE = 2 } lm_kind;
 typedef enum lm_plane { LM_PLANE_STRAIN = 0, LM_PLANE_STRESS = 1 } lm_plane;
+/* Membrane laws ([T] eqs 5.9, 5.15): a string/wire carries only the
+ * tangential stress; a plane-stress membrane also sigma_z = nu sigma_t. */
+typedef enum lm_law { LM_LAW_UNIAXIAL = 0, LM_LAW_PLANE_STRESS = 1 } lm_law;
 
 typedef struct lm_material {
     lm_kind kind;
     double rho;            /* reference density */
-    double E, nu;          /* elastic solid */
-    lm_plane plane;
+    double E, nu;          /* elastic solid and membrane */
+    lm_plane plane;        /* elastic solid */
+    double thickness;      /* membrane: mass per length is rho * thickness */
+    lm_law law;            /* membrane */
+    int one_way;           /* membrane: no stress in compression ([M] §3.2) */
 } lm_material;
 
 /* Fastest wave speed of the material (physics.md §5), for the Courant check. */
@@ -69,6 +75,10 @@ typedef struct lm_particles {
     double *m;             /* mass (constant) */
     double *rho;           /* density; volume = m / rho */
     double *sxx, *syy, *sxy, *szz;  /* Cauchy stress, global axes */
+    /* Membrane points only (zero elsewhere): tangential strain eps_t, the
+     * length of membrane Delta s a point stands for, and the unit tangent
+     * of the step (the normal is the tangent turned +90 degrees). */
+    double *et, *ds, *tx, *ty;
     int *body;             /* owning body index */
     int *mat;              /* material index into sim->mats */
     /* Shape functions of the step, evaluated once at x^k ([F] eqs 13-14):
@@ -78,9 +88,15 @@ typedef struct lm_particles {
     double *N, *Gx, *Gy;
 } lm_particles;
 
+/* How a membrane finds its normals (physics.md §3). */
+typedef enum lm_normals { LM_NORMALS_CONNECTIVITY = 0 } lm_normals;
+
 typedef struct lm_body {
     int mat;               /* index into sim->mats */
     size_t first, count;   /* particles [first, first+count) */
+    int membrane;          /* points in curve order, tangents from neighbours */
+    int closed;            /* membrane: the last point neighbours the first */
+    lm_normals normals;
 } lm_body;
 
 /* ---- the simulation (sim.c) ---------------------------------------------- */
@@ -110,6 +126,7 @@ typedef struct lm_sim {
     double t;
     long step;
     double pe_ref;         /* sum m g.x at seeding: potential energy datum */
+    int prepared;          /* membrane stresses built from eps_t */
     char err[512];
 } lm_sim;
 
@@ -123,6 +140,18 @@ int lm_sim_add_body(lm_sim *sim, int mat);
 /* Appends one particle to the last body (bodies are contiguous). */
 lm_status lm_sim_add_particle(lm_sim *sim, int body, double x, double y,
                               double vx, double vy, double mass, double rho);
+
+/* Starts a membrane body: its points, added in curve order, keep that
+ * order, so connectivity normals (physics.md §3) can use neighbours. */
+int lm_sim_add_membrane(lm_sim *sim, int mat, int closed);
+/* Sets a membrane point's reference length ds and initial tangential
+ * strain; mass stays as given (the heavy end point has its own). */
+lm_status lm_sim_set_membrane_point(lm_sim *sim, size_t q, double ds, double et);
+
+/* Builds what depends on whole bodies (membrane tangents and stresses from
+ * their strains); called by the first step, and by anyone who needs the
+ * tangents before it. */
+void lm_sim_prepare(lm_sim *sim);
 
 /* Courant number dt * c_max / min(hx, hy) over the materials in use. */
 double lm_sim_courant(const lm_sim *sim, double *c_max);

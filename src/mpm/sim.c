@@ -127,10 +127,46 @@ int lm_sim_add_body(lm_sim *sim, int mat)
         sim->capbodies = cap;
     }
     lm_body *b = &sim->bodies[sim->nbodies];
+    memset(b, 0, sizeof *b);
     b->mat = mat;
     b->first = sim->p.n;
     b->count = 0;
     return sim->nbodies++;
+}
+
+int lm_sim_add_membrane(lm_sim *sim, int mat, int closed)
+{
+    if (mat < 0 || mat >= sim->nmats || sim->mats[mat]->kind != LM_MEMBRANE) return -1;
+    int b = lm_sim_add_body(sim, mat);
+    if (b < 0) return -1;
+    sim->bodies[b].membrane = 1;
+    sim->prepared = 0;
+    sim->bodies[b].closed = closed;
+    return b;
+}
+
+/* The point's volume is thickness * ds * (1 + eps_t) (physics.md §2), kept
+ * as rho = m / V so that the force loop treats every particle alike; the
+ * initial stress follows the law from the initial strain. */
+lm_status lm_sim_set_membrane_point(lm_sim *sim, size_t q, double ds, double et)
+{
+    lm_particles *p = &sim->p;
+    const lm_material *mat = q < p->n ? sim->mats[p->mat[q]] : NULL;
+    if (!mat || mat->kind != LM_MEMBRANE || !(ds > 0) || !(et > -1)) {
+        snprintf(sim->err, sizeof sim->err,
+                 "membrane point %zu: ds = %g and strain = %g (need ds > 0, strain > -1)",
+                 q + 1, ds, et);
+        return LM_ERR_INPUT;
+    }
+    p->ds[q] = ds;
+    p->et[q] = et;
+    p->rho[q] = p->m[q] / (mat->thickness * ds * (1 + et));
+    double st = lm_membrane_stress(mat, et);
+    p->sxx[q] = p->syy[q] = p->sxy[q] = 0;
+    p->szz[q] = mat->law == LM_LAW_PLANE_STRESS ? mat->nu * st : 0;
+    /* the tangent is not known until the body is complete: the stress
+     * tensor is rebuilt from eps_t at the first step (lm_membrane_prepare) */
+    return LM_OK;
 }
 
 lm_status lm_sim_add_particle(lm_sim *sim, int body, double x, double y,
@@ -160,6 +196,7 @@ lm_status lm_sim_add_particle(lm_sim *sim, int body, double x, double y,
     p->m[q] = mass;
     p->rho[q] = rho;
     p->sxx[q] = p->syy[q] = p->sxy[q] = p->szz[q] = 0;
+    p->et[q] = p->ds[q] = p->tx[q] = p->ty[q] = 0;
     p->body[q] = body;
     p->mat[q] = sim->bodies[body].mat;
     p->node[q] = 0;

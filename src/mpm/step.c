@@ -144,6 +144,7 @@ void lm_step_stress(lm_sim *sim)
     const lm_grid *g = &sim->grid;
     lm_particles *p = &sim->p;
     double dt = sim->def.dt;
+    lm_membrane_tangents(sim);      /* the current tangent, at x^{k+1} */
     for (size_t q = 0; q < p->n; q++) {
         double Lxx = 0, Lxy = 0, Lyx = 0, Lyy = 0;
         for (int k = 0; k < 4; k++) {
@@ -157,12 +158,17 @@ void lm_step_stress(lm_sim *sim)
         double dexx = dt * Lxx, deyy = dt * Lyy;
         double dexy = 0.5 * dt * (Lxy + Lyx);
         double w = 0.5 * (Lxy - Lyx);
-        p->rho[q] /= 1 + dexx + deyy;
         const lm_material *mat = sim->mats[p->mat[q]];
         switch (mat->kind) {
         case LM_ELASTIC:
+            p->rho[q] /= 1 + dexx + deyy;
             lm_elastic_update(mat, dexx, deyy, dexy, w, dt, &p->sxx[q],
                               &p->syy[q], &p->sxy[q], &p->szz[q]);
+            break;
+        case LM_MEMBRANE:
+            lm_membrane_update(mat, dexx, deyy, dexy, p->tx[q], p->ty[q], p->m[q],
+                               p->ds[q], &p->et[q], &p->rho[q], &p->sxx[q],
+                               &p->syy[q], &p->sxy[q], &p->szz[q]);
             break;
         }
     }
@@ -207,6 +213,12 @@ lm_status lm_step_check(lm_sim *sim)
     return LM_OK;
 }
 
+void lm_sim_prepare(lm_sim *sim)
+{
+    lm_membrane_prepare(sim);
+    sim->prepared = 1;
+}
+
 lm_status lm_sim_step(lm_sim *sim)
 {
     if (sim->p.n == 0) {
@@ -214,6 +226,7 @@ lm_status lm_sim_step(lm_sim *sim)
         sim->t = sim->step * sim->def.dt;
         return LM_OK;
     }
+    if (!sim->prepared) lm_sim_prepare(sim);
     lm_grid_clear(&sim->grid);
     lm_step_shape(sim);
     lm_step_p2g(sim);

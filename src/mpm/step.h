@@ -33,4 +33,21 @@ void lm_elastic_update(const lm_material *mat, double dexx, double deyy,
 double lm_elastic_energy_density(const lm_material *mat, double sxx,
                                  double syy, double sxy, double szz);
 
+/* membrane.c: [M] §3, [T] §5.1, physics.md §2 "Membrane". */
+/* Unit tangents of every membrane point from its curve neighbours
+ * (connectivity, [F] §3.2): x_{p+1} - x_{p-1}, one-sided at open ends. */
+void lm_membrane_tangents(lm_sim *sim);
+/* sigma_t from eps_t by the law (one-way: none in compression). */
+double lm_membrane_stress(const lm_material *mat, double et);
+/* eps_t += t.de.t with the current tangent; sigma rebuilt as sigma_t t(x)t;
+ * the volume from the tangential stretch, kept as rho = m / V. */
+void lm_membrane_update(const lm_material *mat, double dexx, double deyy, double dexy,
+                        double tx, double ty, double m, double ds, double *et,
+                        double *rho, double *sxx, double *syy, double *sxy, double *szz);
+/* Strain energy 1/2 V sigma_t eps_t. */
+double lm_membrane_energy(const lm_material *mat, double V, double et);
+/* Rebuilds the stress tensors of the membrane points from eps_t along the
+ * current tangents (before the first step, once bodies are complete). */
+void lm_membrane_prepare(lm_sim *sim);
+
 #endif

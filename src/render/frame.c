@@ -182,7 +182,8 @@ static void draw_hline(lr_canvas *c, const lr_frame *f, const view *v,
 static void line_range(double origin, double h, int n, double lo, double hi,
                        int *i0, int *i1)
 {
-    double a = ceil((lo - origin) / h), b = floor((hi - origin) / h);
+    /* the slack lets draw_vline/draw_hline judge lines on the window edge */
+    double a = ceil((lo - origin) / h - 1e-6), b = floor((hi - origin) / h + 1e-6);
     *i0 = a > 1.0 ? (a < n ? (int)a : n) : 1;
     *i1 = b < n - 1.0 ? (b > 0.0 ? (int)b : 0) : n - 1;
 }

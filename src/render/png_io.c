@@ -160,6 +160,19 @@ static int make_parents(const char *path, char *err, size_t errlen)
 
 /* ---- writing ---------------------------------------------------------- */
 
+/* rename(2) would replace whatever is at path; a device, FIFO or directory
+ * there (say /dev/null, when running as root) must stay what it is. */
+static int check_target(const char *path, char *err, size_t errlen)
+{
+    struct stat st;
+    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
+        set_err(err, errlen, "cannot write '%s': it exists and is not a "
+                "regular file", path);
+        return -1;
+    }
+    return 0;
+}
+
 static int check_text(const lr_text_chunk *text, size_t ntext, const char *path,
                       char *err, size_t errlen)
 {
@@ -313,7 +326,8 @@ int lr_png_write(const char *path, int width, int height,
 {
     if (check_image(path, width, height, rgba, err, errlen) != 0 ||
         check_text(text, ntext, path, err, errlen) != 0 ||
-        make_parents(path, err, errlen) != 0)
+        make_parents(path, err, errlen) != 0 ||
+        check_target(path, err, errlen) != 0)
         return -1;
     char *tmp = temp_template(path);
     png_text *pt = make_png_text(text, ntext);

@@ -19,7 +19,7 @@ static void fall(lm_scheme scheme)
     for (int s = 0; s < 4; s++) d.bc[s] = LM_BC_FREE;
     char err[256];
     lm_sim *sim = lm_sim_new(&d, err, sizeof err);
-    lm_material mat = {LM_ELASTIC, 1000, 1e6, 0.3, LM_PLANE_STRAIN};
+    lm_material mat = {.kind = LM_ELASTIC, .rho = 1000, .E = 1e6, .nu = 0.3, .plane = LM_PLANE_STRAIN};
     CHECK(fixture_block(sim, &mat, 0.3, 0.6, 0.7, 0.9, 2, 0, 0, 0, 1) >= 0);
     size_t n = sim->p.n;
     double *y0 = malloc(n * sizeof *y0), *x0 = malloc(n * sizeof *x0);

@@ -9,7 +9,7 @@
 
 int main(void)
 {
-    lm_material mat = {LM_ELASTIC, 1, 1e4, 0.3, LM_PLANE_STRESS};
+    lm_material mat = {.kind = LM_ELASTIC, .rho = 1, .E = 1e4, .nu = 0.3, .plane = LM_PLANE_STRESS};
     double s = 5, omega = 2, dt = 1e-3;
     /* v = omega (-y, x): L_xy = -omega, L_yx = omega, w = (L_xy - L_yx)/2 */
     double w = -omega;
@@ -30,7 +30,7 @@ int main(void)
     CHECK_NEAR(sxx + syy, s, 1e-9);   /* the trace is kept exactly */
 
     /* plane strain: sigma_zz = nu (sxx + syy) for a pure strain increment */
-    lm_material ps = {LM_ELASTIC, 1, 1e4, 0.3, LM_PLANE_STRAIN};
+    lm_material ps = {.kind = LM_ELASTIC, .rho = 1, .E = 1e4, .nu = 0.3, .plane = LM_PLANE_STRAIN};
     sxx = syy = sxy = szz = 0;
     lm_elastic_update(&ps, 1e-4, -3e-5, 2e-5, 0, dt, &sxx, &syy, &sxy, &szz);
     CHECK_NEAR(szz, 0.3 * (sxx + syy), 1e-12);

@@ -16,7 +16,7 @@ static void one_scheme(lm_scheme scheme)
     char err[256];
     lm_sim *sim = lm_sim_new(&d, err, sizeof err);
     CHECK(sim != NULL);
-    lm_material mat = {LM_ELASTIC, 10, 1e4, 0.3, LM_PLANE_STRAIN};
+    lm_material mat = {.kind = LM_ELASTIC, .rho = 10, .E = 1e4, .nu = 0.3, .plane = LM_PLANE_STRAIN};
     CHECK(fixture_block(sim, &mat, 0.53, 0.31, 1.27, 0.77, 3, 0.5, -0.2, 0.4, 11) >= 0);
     /* give the block stress so that forces are not trivially zero */
     for (size_t q = 0; q < sim->p.n; q++) {

@@ -213,6 +213,7 @@ static void test_errors(void)
     unsigned char px[4 * W * H];
     fill(px, W, H, 5);
     struct stat st;
+    char err[512] = "";
 
     const char *proc = "/proc/lamina_nope/x.png";
     CHECK(fails_naming(proc, px));
@@ -225,23 +226,38 @@ static void test_errors(void)
     CHECK(fails_naming(in_dir(1, "e1/plain/x.png"), px));
     CHECK(count_entries(in_dir(0, "e1")) == 1);
 
-    /* the target is a directory: fails at rename, after the temporary was
-     * written, which must then be gone */
+    /* the target is a directory: refused, not replaced */
     CHECK(mkdir(in_dir(0, "e2"), 0777) == 0);
     CHECK(mkdir(in_dir(0, "e2/target.png"), 0777) == 0);
     CHECK(fails_naming(in_dir(1, "e2/target.png"), px));
     CHECK(count_entries(in_dir(0, "e2")) == 1);
+    CHECK(stat(in_dir(0, "e2/target.png"), &st) == 0 && S_ISDIR(st.st_mode));
+
+    /* libpng refuses the header (width over its 1e6 limit) after the
+     * temporary was created: it must be gone, an old file untouched */
+    const char *old = in_dir(0, "e2/old.png");
+    CHECK(lr_png_write(old, W, H, px, NULL, 0, err, sizeof err) == 0);
+    enum { WIDE = 1000001 };
+    unsigned char *wide = calloc(4 * (size_t)WIDE, 1);
+    CHECK(wide != NULL);
+    CHECK(lr_png_write(old, WIDE, 1, wide, NULL, 0, err, sizeof err) == -1);
+    CHECK(strstr(err, old) != NULL && strstr(err, "libpng") != NULL);
+    free(wide);
+    CHECK(count_entries(in_dir(1, "e2")) == 2);
+    int w, h;
+    unsigned char *back = NULL;
+    CHECK(lr_png_read(old, &w, &h, &back, err, sizeof err) == 0);
+    CHECK(w == W && h == H && back && memcmp(back, px, sizeof px) == 0);
+    free(back);
+    back = NULL;
 
     /* a bad keyword is refused before anything is created */
-    char err[512] = "";
     lr_text_chunk bad[] = { { "", "empty keyword" } };
     CHECK(lr_png_write(in_dir(0, "e2/k.png"), W, H, px, bad, 1, err,
                        sizeof err) == -1);
-    CHECK(count_entries(in_dir(0, "e2")) == 1);
+    CHECK(count_entries(in_dir(0, "e2")) == 2);
 
     /* reading: a missing file and a file that is not a PNG */
-    int w, h;
-    unsigned char *back = NULL;
     CHECK(lr_png_read(in_dir(0, "missing.png"), &w, &h, &back, err,
                       sizeof err) == -1);
     CHECK(strstr(err, in_dir(0, "missing.png")) != NULL);

@@ -1,0 +1,148 @@
+/* l_membrane.c - sim:membrane{...}: a membrane or string as one layer of
+ * points along a curve ([M] §3, [F] §3.2).
+ *
+ * Points are evenly spaced along the curve including both ends; the count
+ * is rounded up from length / spacing (design.md). Each point stands for
+ * ds = length / intervals of membrane and weighs rho * thickness * ds per
+ * unit depth; `end_mass` replaces the last point's mass (the papers' heavy
+ * point). Points keep their curve order for connectivity normals. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "l_curve.h"
+
+static const char *const normal_methods[] = {"connectivity", NULL};
+
+/* initial_strain: a number for every point, or a function (u, i) -> strain
+ * of the curve parameter u in [0, 1] and the point's index i (1-based). */
+static double strain_at(lua_State *L, int sidx, double u, int i)
+{
+    if (sidx == 0) return 0;
+    if (lua_isnumber(L, sidx)) return lua_tonumber(L, sidx);
+    lua_pushvalue(L, sidx);
+    lua_pushnumber(L, u);
+    lua_pushinteger(L, i);
+    lua_call(L, 2, 1);
+    int ok;
+    double e = lua_tonumberx(L, -1, &ok);
+    if (!ok) luaL_error(L, "sim:membrane: initial_strain function must return a number");
+    lua_pop(L, 1);
+    return e;
+}
+
+/* "membrane 'skin'" or "membrane 3" for messages. */
+static const char *label(lua_State *L, int nameidx, int body)
+{
+    if (nameidx && lua_isstring(L, nameidx))
+        return lua_pushfstring(L, "membrane '%s'", lua_tostring(L, nameidx));
+    return lua_pushfstring(L, "membrane %d", body + 1);
+}
+
+static int point_count(lua_State *L, const char *fn, const la_curve_points *cp, double h,
+                       const char **what)
+{
+    double count = la_opt_number(L, 2, fn, "count", 0);
+    int have_spacing = la_has(L, 2, "spacing");
+    if ((count > 0) == have_spacing)
+        luaL_error(L, "%s: give exactly one of 'spacing' and 'count'", fn);
+    int intervals;
+    if (have_spacing) {
+        double sp = la_number(L, 2, fn, "spacing");
+        if (!(sp > 0)) luaL_error(L, "%s: spacing must be positive (got %f)", fn, sp);
+        if (sp > h)
+            luaL_error(L, "%s: %s spacing %f is larger than a cell (%f): neighbouring "
+                       "points must stay within one cell or the membrane breaks", fn,
+                       *what, sp, h);
+        intervals = (int)ceil(cp->length / sp - 1e-9);
+    } else {
+        if (count != floor(count) || count < 2)
+            luaL_error(L, "%s: count must be a whole number >= 2 (got %f)", fn, count);
+        intervals = cp->closed ? (int)count : (int)count - 1;
+    }
+    if (intervals < 1) intervals = 1;
+    if (intervals > 10000000) luaL_error(L, "%s: %d points are too many", fn, intervals);
+    return intervals;
+}
+
+int la_sim_membrane(lua_State *L)
+{
+    static const char *const keys[] = {"material", "curve", "spacing", "count", "normals",
+                                       "initial_strain", "end_mass", "velocity", "name", NULL};
+    const char *fn = "sim:membrane";
+    la_sim *s = la_check_sim(L, 1);
+    la_check_keys(L, 2, fn, keys);
+    if (s->running) return luaL_error(L, "%s: membranes cannot be added during a run", fn);
+    lm_sim *sim = s->sim;
+    const lm_grid *g = &sim->grid;
+
+    lua_getfield(L, 2, "material");
+    lm_material *mat = luaL_testudata(L, -1, LA_MATERIAL);
+    if (!mat || mat->kind != LM_MEMBRANE)
+        return luaL_error(L, "%s: 'material' must be lamina.membrane{...}", fn);
+    int midx = lua_gettop(L);
+    lua_getfield(L, 2, "name");
+    int nameidx = lua_gettop(L);
+    const char *what = label(L, nameidx, sim->nbodies);
+
+    lua_getfield(L, 2, "curve");
+    int cidx = lua_gettop(L);
+    la_curve_points cp;
+    if (la_curve_sample(L, cidx, &cp))
+        return luaL_error(L, "%s: 'curve' must be lamina.segment/arc/polyline or a "
+                          "function(u) -> x, y (got %s)", fn, luaL_typename(L, cidx));
+    if (!(cp.length > 0)) return luaL_error(L, "%s: %s has zero length", fn, what);
+    double h = fmin(g->hx, g->hy);
+    int intervals = point_count(L, fn, &cp, h, &what);
+    int n = cp.closed ? intervals : intervals + 1;
+    double ds = cp.length / intervals;
+    if (ds > h * (1 + 1e-12))
+        return luaL_error(L, "%s: %s spacing %f is larger than a cell (%f): neighbouring "
+                          "points must stay within one cell or the membrane breaks",
+                          fn, what, ds, h);
+    (void)la_option(L, fn, "normals", la_opt_string(L, 2, fn, "normals", "connectivity"),
+                    normal_methods);
+
+    double end_mass = la_opt_number(L, 2, fn, "end_mass", 0);
+    if (la_has(L, 2, "end_mass") && !(end_mass > 0))
+        return luaL_error(L, "%s: end_mass must be positive (got %f)", fn, end_mass);
+    double vx = 0, vy = 0;
+    if (la_has(L, 2, "velocity")) la_pair(L, 2, fn, "velocity", &vx, &vy);
+    int sidx = 0;
+    int st = lua_getfield(L, 2, "initial_strain");
+    if (st == LUA_TNUMBER || st == LUA_TFUNCTION) sidx = lua_gettop(L);
+    else if (st != LUA_TNIL)
+        return luaL_error(L, "%s: initial_strain must be a number or a function(u, i)", fn);
+
+    double *px = lua_newuserdatauv(L, 2 * (size_t)n * sizeof(double), 0);
+    double *py = px + n;
+    la_curve_place(&cp, n, px, py);
+    double x1 = g->x0 + g->nx * g->hx, y1 = g->y0 + g->ny * g->hy;
+    for (int k = 0; k < n; k++)
+        if (!(px[k] >= g->x0 && px[k] <= x1 && py[k] >= g->y0 && py[k] <= y1))
+            return luaL_error(L, "%s: %s leaves the domain: point %d at (%f, %f) is outside "
+                              "{%f, %f, %f, %f}", fn, what, k + 1, px[k], py[k],
+                              g->x0, g->y0, x1, y1);
+
+    int mi = lm_sim_add_material(sim, mat);
+    int bi = mi < 0 ? -1 : lm_sim_add_membrane(sim, mi, cp.closed);
+    if (bi < 0) return luaL_error(L, "%s: out of memory", fn);
+    la_sim_keep(L, 1, midx);
+    double mass = mat->rho * mat->thickness * ds;
+    for (int k = 0; k < n; k++) {
+        double u = cp.closed ? (double)k / n : (n > 1 ? (double)k / (n - 1) : 0);
+        double e = strain_at(L, sidx, u, k + 1);
+        double m = (k == n - 1 && end_mass > 0) ? end_mass : mass;
+        if (!(e > -1) || !isfinite(e))
+            return luaL_error(L, "%s: %s initial strain %f at point %d must be > -1",
+                              fn, what, e, k + 1);
+        size_t q = sim->p.n;
+        if (lm_sim_add_particle(sim, bi, px[k], py[k], vx, vy, m, mat->rho) != LM_OK ||
+            lm_sim_set_membrane_point(sim, q, ds, e) != LM_OK)
+            return luaL_error(L, "%s: %s", fn, sim->err);
+    }
+    lm_sim_prepare(sim);
+    la_push_body(L, 1, bi, nameidx);
+    return 1;
+}
