@@ -10,6 +10,7 @@
  * that changes none of its own locals after the setjmp, and all state that
  * an error handler writes is owned by the caller, so nothing is left
  * indeterminate after the jump. */
+#include "atomic_file.h"
 #include "render.h"
 
 #include <errno.h>
@@ -21,8 +22,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 /* zlib level: fixed so that output bytes do not depend on libpng defaults */
 #define PNG_LEVEL 6
@@ -102,76 +101,7 @@ static void io_read(png_structp png, png_bytep data, size_t len)
     }
 }
 
-/* ---- directories ------------------------------------------------------ */
-
-/* Makes sure dir exists as a directory, creating it if missing. */
-static int ensure_dir(const char *dir, const char *path, char *err, size_t errlen)
-{
-    struct stat st;
-    if (stat(dir, &st) != 0) {
-        if (errno != ENOENT) {
-            set_err(err, errlen, "cannot write '%s': '%s': %s", path, dir,
-                    strerror(errno));
-            return -1;
-        }
-        if (mkdir(dir, 0777) == 0)
-            return 0;
-        /* another process may have created it in between */
-        if (errno != EEXIST || stat(dir, &st) != 0) {
-            set_err(err, errlen, "cannot write '%s': cannot create directory "
-                    "'%s': %s", path, dir, strerror(errno));
-            return -1;
-        }
-    }
-    if (!S_ISDIR(st.st_mode)) {
-        set_err(err, errlen, "cannot write '%s': '%s' is not a directory",
-                path, dir);
-        return -1;
-    }
-    return 0;
-}
-
-/* mkdir -p for the directory part of path. */
-static int make_parents(const char *path, char *err, size_t errlen)
-{
-    const char *slash = strrchr(path, '/');
-    if (!slash || slash == path)
-        return 0;   /* the current directory or the root: both exist */
-    size_t len = (size_t)(slash - path);
-    char *dir = malloc(len + 1);
-    if (!dir) {
-        set_err(err, errlen, "cannot write '%s': out of memory", path);
-        return -1;
-    }
-    memcpy(dir, path, len);
-    dir[len] = '\0';
-    int rc = 0;
-    for (size_t i = 1; i <= len && rc == 0; i++) {
-        if (i < len && (dir[i] != '/' || dir[i - 1] == '/'))
-            continue;   /* not the end of a component (or a repeated '/') */
-        char keep = dir[i];
-        dir[i] = '\0';
-        rc = ensure_dir(dir, path, err, errlen);
-        dir[i] = keep;
-    }
-    free(dir);
-    return rc;
-}
-
 /* ---- writing ---------------------------------------------------------- */
-
-/* rename(2) would replace whatever is at path; a device, FIFO or directory
- * there (say /dev/null, when running as root) must stay what it is. */
-static int check_target(const char *path, char *err, size_t errlen)
-{
-    struct stat st;
-    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
-        set_err(err, errlen, "cannot write '%s': it exists and is not a "
-                "regular file", path);
-        return -1;
-    }
-    return 0;
-}
 
 static int check_text(const lr_text_chunk *text, size_t ntext, const char *path,
                       char *err, size_t errlen)
@@ -246,59 +176,6 @@ static int encode(png_io *io, int width, int height, const unsigned char *rgba,
     return 0;
 }
 
-/* "<path>.tmp.XXXXXX": same directory, so rename(2) stays atomic. */
-static char *temp_template(const char *path)
-{
-    static const char suffix[] = ".tmp.XXXXXX";
-    size_t n = strlen(path);
-    char *t = malloc(n + sizeof suffix);
-    if (!t)
-        return NULL;
-    memcpy(t, path, n);
-    memcpy(t + n, suffix, sizeof suffix);
-    return t;
-}
-
-/* mkstemp creates mode 0600; a frame should get the mode any new file of
- * this process gets (0666 less the umask), and umask can only be read by
- * setting it. Rendering runs on one thread, so the brief change is safe. */
-static int give_default_mode(int fd)
-{
-    mode_t mask = umask(0);
-    umask(mask);
-    return fchmod(fd, 0666 & ~mask);
-}
-
-/* Writes into the already created temporary tmp (descriptor fd), closing
- * fd in every case. On failure *why says what went wrong. */
-static int write_temp(int fd, int width, int height, const unsigned char *rgba,
-                      png_text *text, int ntext, char *why, size_t whylen)
-{
-    if (give_default_mode(fd) != 0) {
-        snprintf(why, whylen, "%s", strerror(errno));
-        close(fd);
-        return -1;
-    }
-    png_io io = { 0 };
-    io.fp = fdopen(fd, "wb");
-    if (!io.fp) {
-        snprintf(why, whylen, "%s", strerror(errno));
-        close(fd);
-        return -1;
-    }
-    int rc = encode(&io, width, height, rgba, text, ntext);
-    if (rc != 0)
-        snprintf(why, whylen, "%s", io_reason(&io));
-    if (rc == 0 && fflush(io.fp) != 0) {
-        snprintf(why, whylen, "%s", strerror(errno));
-        rc = -1;
-    }
-    if (fclose(io.fp) != 0 && rc == 0) {
-        snprintf(why, whylen, "%s", strerror(errno));
-        rc = -1;
-    }
-    return rc;
-}
 
 static int check_image(const char *path, int width, int height,
                        const unsigned char *rgba, char *err, size_t errlen)
@@ -325,42 +202,26 @@ int lr_png_write(const char *path, int width, int height,
                  size_t ntext, char *err, size_t errlen)
 {
     if (check_image(path, width, height, rgba, err, errlen) != 0 ||
-        check_text(text, ntext, path, err, errlen) != 0 ||
-        make_parents(path, err, errlen) != 0 ||
-        check_target(path, err, errlen) != 0)
+        check_text(text, ntext, path, err, errlen) != 0)
         return -1;
-    char *tmp = temp_template(path);
     png_text *pt = make_png_text(text, ntext);
-    if (!tmp || !pt) {
+    if (!pt) {
         set_err(err, errlen, "cannot write '%s': out of memory", path);
-        free(tmp);
+        return -1;
+    }
+    lr_atomic out;
+    if (lr_atomic_open(&out, path, err, errlen) != 0) {
         free(pt);
         return -1;
     }
-    int fd = mkstemp(tmp);
-    if (fd < 0) {
-        set_err(err, errlen, "cannot write '%s': cannot create temporary "
-                "file: %s", path, strerror(errno));
-        free(tmp);
+    png_io io = { 0 };
+    io.fp = out.fp;
+    if (encode(&io, width, height, rgba, pt, (int)ntext) != 0) {
         free(pt);
-        return -1;
+        return lr_atomic_abort(&out, io_reason(&io), err, errlen);
     }
-    char why[256] = "";
-    int rc = write_temp(fd, width, height, rgba, pt, (int)ntext, why, sizeof why);
-    if (rc == 0 && rename(tmp, path) != 0) {
-        snprintf(why, sizeof why, "%s", strerror(errno));
-        rc = -1;
-    }
-    if (rc != 0) {
-        if (unlink(tmp) == 0)
-            set_err(err, errlen, "cannot write '%s': %s", path, why);
-        else
-            set_err(err, errlen, "cannot write '%s': %s (and cannot remove "
-                    "temporary '%s': %s)", path, why, tmp, strerror(errno));
-    }
-    free(tmp);
     free(pt);
-    return rc;
+    return lr_atomic_commit(&out, err, errlen);
 }
 
 /* ---- reading ---------------------------------------------------------- */

@@ -1,0 +1,188 @@
+/* atomic_file.c - temporary, then rename: see atomic_file.h. */
+#include "atomic_file.h"
+
+#include <errno.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+static void set_err(char *err, size_t errlen, const char *fmt, ...)
+{
+    if (!err || errlen == 0)
+        return;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(err, errlen, fmt, ap);
+    va_end(ap);
+}
+
+/* Makes sure dir exists as a directory, creating it if missing. */
+static int ensure_dir(const char *dir, const char *path, char *err, size_t errlen)
+{
+    struct stat st;
+    if (stat(dir, &st) != 0) {
+        if (errno != ENOENT) {
+            set_err(err, errlen, "cannot write '%s': '%s': %s", path, dir,
+                    strerror(errno));
+            return -1;
+        }
+        if (mkdir(dir, 0777) == 0)
+            return 0;
+        /* another process may have created it in between */
+        if (errno != EEXIST || stat(dir, &st) != 0) {
+            set_err(err, errlen, "cannot write '%s': cannot create directory "
+                    "'%s': %s", path, dir, strerror(errno));
+            return -1;
+        }
+    }
+    if (!S_ISDIR(st.st_mode)) {
+        set_err(err, errlen, "cannot write '%s': '%s' is not a directory",
+                path, dir);
+        return -1;
+    }
+    return 0;
+}
+
+/* mkdir -p for the directory part of path. */
+static int make_parents(const char *path, char *err, size_t errlen)
+{
+    const char *slash = strrchr(path, '/');
+    if (!slash || slash == path)
+        return 0;   /* the current directory or the root: both exist */
+    size_t len = (size_t)(slash - path);
+    char *dir = malloc(len + 1);
+    if (!dir) {
+        set_err(err, errlen, "cannot write '%s': out of memory", path);
+        return -1;
+    }
+    memcpy(dir, path, len);
+    dir[len] = '\0';
+    int rc = 0;
+    for (size_t i = 1; i <= len && rc == 0; i++) {
+        if (i < len && (dir[i] != '/' || dir[i - 1] == '/'))
+            continue;   /* not the end of a component (or a repeated '/') */
+        char keep = dir[i];
+        dir[i] = '\0';
+        rc = ensure_dir(dir, path, err, errlen);
+        dir[i] = keep;
+    }
+    free(dir);
+    return rc;
+}
+
+static int check_target(const char *path, char *err, size_t errlen)
+{
+    struct stat st;
+    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
+        set_err(err, errlen, "cannot write '%s': it exists and is not a "
+                "regular file", path);
+        return -1;
+    }
+    return 0;
+}
+
+/* "<path>.tmp.XXXXXX": same directory, so rename(2) stays atomic. */
+static char *temp_template(const char *path)
+{
+    static const char suffix[] = ".tmp.XXXXXX";
+    size_t n = strlen(path);
+    char *t = malloc(n + sizeof suffix);
+    if (!t)
+        return NULL;
+    memcpy(t, path, n);
+    memcpy(t + n, suffix, sizeof suffix);
+    return t;
+}
+
+/* mkstemp creates mode 0600; an output should get the mode any new file of
+ * this process gets (0666 less the umask), and umask can only be read by
+ * setting it. Output is written from one thread, so the brief change is
+ * safe. */
+static int give_default_mode(int fd)
+{
+    mode_t mask = umask(0);
+    umask(mask);
+    return fchmod(fd, 0666 & ~mask);
+}
+
+int lr_atomic_open(lr_atomic *a, const char *path, char *err, size_t errlen)
+{
+    memset(a, 0, sizeof *a);
+    if (!path || !*path) {
+        set_err(err, errlen, "cannot write: empty path");
+        return -1;
+    }
+    if (make_parents(path, err, errlen) != 0 || check_target(path, err, errlen) != 0)
+        return -1;
+    a->path = path;
+    a->tmp = temp_template(path);
+    if (!a->tmp) {
+        set_err(err, errlen, "cannot write '%s': out of memory", path);
+        return -1;
+    }
+    int fd = mkstemp(a->tmp);
+    if (fd < 0) {
+        set_err(err, errlen, "cannot write '%s': cannot create temporary "
+                "file: %s", path, strerror(errno));
+        free(a->tmp);
+        a->tmp = NULL;
+        return -1;
+    }
+    if (give_default_mode(fd) != 0 || !(a->fp = fdopen(fd, "wb"))) {
+        int e = errno;
+        close(fd);
+        unlink(a->tmp);
+        set_err(err, errlen, "cannot write '%s': %s", path, strerror(e));
+        free(a->tmp);
+        a->tmp = NULL;
+        return -1;
+    }
+    return 0;
+}
+
+int lr_atomic_abort(lr_atomic *a, const char *why, char *err, size_t errlen)
+{
+    if (a->fp)
+        fclose(a->fp);
+    a->fp = NULL;
+    if (a->tmp && unlink(a->tmp) != 0)
+        set_err(err, errlen, "cannot write '%s': %s (and cannot remove "
+                "temporary '%s': %s)", a->path, why, a->tmp, strerror(errno));
+    else
+        set_err(err, errlen, "cannot write '%s': %s", a->path, why);
+    free(a->tmp);
+    a->tmp = NULL;
+    return -1;
+}
+
+int lr_atomic_commit(lr_atomic *a, char *err, size_t errlen)
+{
+    int bad = ferror(a->fp) || fflush(a->fp) != 0;
+    int e = errno;
+    if (fclose(a->fp) != 0 && !bad) {
+        bad = 1;
+        e = errno;
+    }
+    a->fp = NULL;
+    if (!bad && rename(a->tmp, a->path) != 0) {
+        bad = 1;
+        e = errno;
+    }
+    if (bad)
+        return lr_atomic_abort(a, e ? strerror(e) : "write error", err, errlen);
+    free(a->tmp);
+    a->tmp = NULL;
+    return 0;
+}
+
+int lr_write_file(const char *path, const void *data, size_t n, char *err, size_t errlen)
+{
+    lr_atomic a;
+    if (lr_atomic_open(&a, path, err, errlen) != 0)
+        return -1;
+    if (n && fwrite(data, 1, n, a.fp) != n)
+        return lr_atomic_abort(&a, strerror(errno), err, errlen);
+    return lr_atomic_commit(&a, err, errlen);
+}
