@@ -3,5 +3,7 @@
 #define LAMINA_APP_H
 
 int cmd_run(int argc, char **argv);
+int cmd_diff(int argc, char **argv);
+int cmd_gallery(int argc, char **argv);
 
 #endif

@@ -27,7 +27,7 @@ static int hash_file(const char *path, char out[17])
     return bad ? -1 : 0;
 }
 
-static int parse_args(int argc, char **argv, lamina_run *run)
+static int parse_args(int argc, char **argv, lamina_run *run, const char **report)
 {
     for (int i = 0; i < argc; i++) {
         const char *a = argv[i];
@@ -53,6 +53,14 @@ static int parse_args(int argc, char **argv, lamina_run *run)
                     fprintf(stderr, "lamina run: --set %s given twice\n", name);
                     return -1;
                 }
+        } else if (strcmp(a, "--report") == 0 || strncmp(a, "--report=", 9) == 0) {
+            const char *f = a[8] == '=' ? a + 9 : (i + 1 < argc ? argv[++i] : NULL);
+            if (!f || !*f || *report) {
+                fprintf(stderr, "lamina run: %s\n", *report ? "--report given twice"
+                                                            : "--report needs a FILE");
+                return -1;
+            }
+            *report = f;
         } else if (strcmp(a, "--quiet") == 0 || strcmp(a, "-q") == 0) {
             run->quiet = 1;
         } else if (a[0] == '-' && a[1]) {
@@ -73,6 +81,23 @@ static int parse_args(int argc, char **argv, lamina_run *run)
     return 0;
 }
 
+/* --report FILE: lamina.report (l_report.c) rewrites FILE at every call.
+ * An empty report is written first, so that an unwritable path fails
+ * before the simulation instead of after it. */
+static int init_report(lua_State *L, const char *path)
+{
+    lua_pushstring(L, path);
+    lua_setfield(L, LUA_REGISTRYINDEX, "lamina.report.file");
+    lua_getglobal(L, "lamina");
+    lua_getfield(L, -1, "report");
+    lua_newtable(L);
+    int rc = lua_pcall(L, 1, 0, 0);
+    if (rc != LUA_OK)
+        fprintf(stderr, "lamina run: --report: %s\n", lua_tostring(L, -1));
+    lua_settop(L, 0);
+    return rc == LUA_OK ? 0 : -1;
+}
+
 static void free_sets(lamina_run *run)
 {
     for (int i = 0; i < run->nsets; i++) free((char *)run->sets[i].name);
@@ -85,7 +110,8 @@ int cmd_run(int argc, char **argv)
     memset(&run, 0, sizeof run);
     run.sets = calloc((size_t)argc + 1, sizeof *run.sets);
     if (!run.sets) return LAMINA_EXIT_USAGE;
-    if (parse_args(argc, argv, &run)) {
+    const char *report = NULL;
+    if (parse_args(argc, argv, &run, &report)) {
         free_sets(&run);
         return LAMINA_EXIT_USAGE;
     }
@@ -99,6 +125,12 @@ int cmd_run(int argc, char **argv)
     if (!L) {
         fprintf(stderr, "lamina run: cannot create a Lua state (out of memory)\n");
         free_sets(&run);
+        return LAMINA_EXIT_USAGE;
+    }
+    if (report && init_report(L, report)) {
+        lua_close(L);
+        free_sets(&run);
+        lr_shutdown();
         return LAMINA_EXIT_USAGE;
     }
     int rc = lamina_run_script(L, &run);

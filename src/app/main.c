@@ -12,6 +12,14 @@ static void usage(FILE *out)
             "usage:\n"
             "  lamina run SCRIPT.lua [--set name=value ...] [--quiet]\n"
             "                          run a scenario; its frames go where it says\n"
+            "                          (--report FILE: also write lamina.report values as JSON)\n"
+            "  lamina diff EXPECTED.png ACTUAL.png [--out DIFF.png] [--threshold T]\n"
+            "              [--max-pixels N] [--max-window N] [--hard-limit L] [--quiet]\n"
+            "                          compare two images: 0 same, 1 different, 2 error\n"
+            "  lamina gallery [--only PATTERN] [--force] [--check] [--compare]\n"
+            "                 [--update-baselines] [--scripts DIR] [--gallery DIR]\n"
+            "                 [--baselines DIR] [--work DIR] [--set name=value] [--quiet]\n"
+            "                          render scripts/paper/*.lua into gallery/ (docs/gallery.md)\n"
             "  lamina help             this text\n"
             "  lamina --version        the version\n"
             "\n"
@@ -29,6 +37,8 @@ int main(int argc, char **argv)
     }
     const char *cmd = argv[1];
     if (strcmp(cmd, "run") == 0) return cmd_run(argc - 2, argv + 2);
+    if (strcmp(cmd, "diff") == 0) return cmd_diff(argc - 2, argv + 2);
+    if (strcmp(cmd, "gallery") == 0) return cmd_gallery(argc - 2, argv + 2);
     if (strcmp(cmd, "help") == 0 || strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0) {
         usage(stdout);
         return 0;

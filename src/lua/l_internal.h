@@ -66,6 +66,16 @@ la_sim *la_check_sim(lua_State *L, int idx);
 /* Keeps the value at idx alive as long as the sim at sidx (its uservalue). */
 void la_sim_keep(lua_State *L, int sidx, int idx);
 
+/* Calls the function at fidx with the sim at `first` and then every
+ * `interval` (0: once), between steps. */
+void la_sim_add_event(lua_State *L, int sidx, double first, double interval, int fidx);
+
+/* l_record.c */
+int la_sim_record(lua_State *L);
+void la_open_record(lua_State *L);
+/* Writes the CSV files of the sim's recorders (at the end of run/step). */
+void la_record_flush(lua_State *L, int sidx);
+
 /* l_body.c */
 void la_open_body(lua_State *L);
 int la_sim_body(lua_State *L);
@@ -79,5 +89,12 @@ int la_sim_membrane(lua_State *L);
 
 /* l_frame.c */
 int la_sim_frame(lua_State *L);
+
+/* l_plot.c: lamina.plot{...}, time-series plots to PNG and CSV */
+int la_plot(lua_State *L);
+
+/* l_report.c: lamina.report{name = value, ...} (contract); writes the
+ * registry's "lamina.report.file" (set by `lamina run --report FILE`). */
+int la_report(lua_State *L);
 
 #endif

@@ -54,12 +54,15 @@ static int luaopen_lamina(lua_State *L)
                                      {"disk", la_disk},
                                      {"rect", la_rect},
                                      {"polygon", la_polygon},
+                                     {"plot", la_plot},
+                                     {"report", la_report},
                                      {NULL, NULL}};
     la_open_material(L);
     la_open_region(L);
     la_open_sim(L);
     la_open_body(L);
     la_open_curve(L);
+    la_open_record(L);
     luaL_newlib(L, funcs);
     la_register_curves(L);
     lua_pushstring(L, LAMINA_VERSION);
@@ -103,6 +106,26 @@ static void open_sandbox(lua_State *L)
     lua_pop(L, 1);
 }
 
+/* require() finds modules beside the script and lamina's own helpers in
+ * assets/lua (LAMINA_ASSETS overrides the folder fixed at build time). */
+static void set_package_path(lua_State *L, const char *script)
+{
+    const char *assets = getenv("LAMINA_ASSETS");
+    if (!assets || !*assets) assets = LAMINA_ASSETS_DIR;
+    const char *slash = script ? strrchr(script, '/') : NULL;
+    int dirlen = slash ? (int)(slash - script) : 1;
+    const char *dir = slash ? script : ".";
+    lua_getglobal(L, "package");
+    lua_pushfstring(L, "%s/lua/?.lua;", assets);
+    lua_pushlstring(L, dir, (size_t)dirlen);
+    lua_pushliteral(L, "/?.lua");
+    lua_concat(L, 3);
+    lua_setfield(L, -2, "path");
+    lua_pushliteral(L, "");
+    lua_setfield(L, -2, "cpath");
+    lua_pop(L, 1);
+}
+
 lua_State *lamina_open_state(lamina_run *run)
 {
     lua_State *L = luaL_newstate();
@@ -110,6 +133,7 @@ lua_State *lamina_open_state(lamina_run *run)
     lua_pushlightuserdata(L, run);
     lua_setfield(L, LUA_REGISTRYINDEX, "lamina.run");
     open_sandbox(L);
+    set_package_path(L, run ? run->script : NULL);
     luaL_requiref(L, "lamina", luaopen_lamina, 1);
     lua_pop(L, 1);
     return L;

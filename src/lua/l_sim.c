@@ -85,7 +85,7 @@ static void read_boundary(lua_State *L, const char *fn, lm_sim_def *d)
 int la_sim_new(lua_State *L)
 {
     static const char *const keys[] = {"domain", "cell", "dt", "scheme", "gravity",
-                                       "boundary", "courant", NULL};
+                                       "boundary", "courant", "pic", NULL};
     const char *fn = "lamina.sim";
     la_check_keys(L, 1, fn, keys);
     lm_sim_def d;
@@ -98,6 +98,8 @@ int la_sim_new(lua_State *L)
     if (la_has(L, 1, "gravity")) la_pair(L, 1, fn, "gravity", &d.gx, &d.gy);
     read_boundary(L, fn, &d);
     d.courant = la_opt_number(L, 1, fn, "courant", 1.0);
+    d.pic = la_opt_number(L, 1, fn, "pic", 0.0);
+    if (!(d.pic >= 0 && d.pic <= 1)) luaL_error(L, "%s: pic must lie in [0, 1] (got %f)", fn, d.pic);
 
     la_sim *s = lua_newuserdatauv(L, sizeof *s, 1);
     memset(s, 0, sizeof *s);
@@ -122,9 +124,12 @@ static int sim_gc(lua_State *L)
 
 /* ---- events ---------------------------------------------------------- */
 
-static void add_event(lua_State *L, la_sim *s, double first, double interval)
+void la_sim_add_event(lua_State *L, int sidx, double first, double interval, int fidx)
 {
-    luaL_checktype(L, 3, LUA_TFUNCTION);
+    sidx = lua_absindex(L, sidx);
+    fidx = lua_absindex(L, fidx);
+    la_sim *s = la_check_sim(L, sidx);
+    luaL_checktype(L, fidx, LUA_TFUNCTION);
     if (s->nev == s->capev) {
         int cap = s->capev ? 2 * s->capev : 8;
         la_event *e = realloc(s->ev, cap * sizeof *e);
@@ -136,8 +141,8 @@ static void add_event(lua_State *L, la_sim *s, double first, double interval)
     memset(e, 0, sizeof *e);
     e->interval = interval;
     e->t0 = e->next = first;
-    lua_getiuservalue(L, 1, 1);
-    lua_pushvalue(L, 3);
+    lua_getiuservalue(L, sidx, 1);
+    lua_pushvalue(L, fidx);
     e->ref = luaL_ref(L, -2);
     lua_pop(L, 1);
 }
@@ -149,15 +154,15 @@ static int sim_every(lua_State *L)
     la_sim *s = la_check_sim(L, 1);
     double dt = luaL_checknumber(L, 2);
     if (!(dt > 0)) return luaL_error(L, "sim:every: interval must be positive (got %f)", dt);
-    add_event(L, s, s->sim->t, dt);
+    la_sim_add_event(L, 1, s->sim->t, dt, 3);
     return 0;
 }
 
 /* sim:at(t, fn): fn(sim) once, at the first step boundary at or after t. */
 static int sim_at(lua_State *L)
 {
-    la_sim *s = la_check_sim(L, 1);
-    add_event(L, s, luaL_checknumber(L, 2), 0);
+    la_check_sim(L, 1);
+    la_sim_add_event(L, 1, luaL_checknumber(L, 2), 0, 3);
     return 0;
 }
 
@@ -225,12 +230,14 @@ static void advance(lua_State *L, la_sim *s, long nsteps)
             s->running = 0;
             run->active = NULL;
             run->sim_failed = 1;
+            la_record_flush(L, 1);   /* the history up to the failure is kept */
             luaL_error(L, "simulation failed: %s", s->sim->err);
         }
         fire_due(L, s);
     }
     s->running = 0;
     run->active = NULL;
+    la_record_flush(L, 1);
 }
 
 static int sim_run(lua_State *L)
@@ -358,6 +365,7 @@ void la_open_sim(lua_State *L)
                                     {NULL, NULL}};
     static const luaL_Reg methods[] = {{"body", la_sim_body},
                                        {"membrane", la_sim_membrane},
+                                       {"record", la_sim_record},
                                        {"every", sim_every},
                                        {"at", sim_at},
                                        {"run", sim_run},

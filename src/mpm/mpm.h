@@ -109,6 +109,8 @@ typedef struct lm_sim_def {
     double gx, gy;         /* gravity */
     lm_bc bc[4];
     double courant;        /* largest allowed dt*c_max/h */
+    double pic;            /* 0: FLIP velocity update (the papers'); 1: PIC;
+                              between: a blend that damps particle noise */
 } lm_sim_def;
 
 /* Fills a definition with lamina's defaults (unit square, cell 0.1, MUSL,

@@ -84,7 +84,7 @@ void lm_step_g2p(lm_sim *sim)
 {
     const lm_grid *g = &sim->grid;
     lm_particles *p = &sim->p;
-    double dt = sim->def.dt;
+    double dt = sim->def.dt, pic = sim->def.pic;
     for (size_t q = 0; q < p->n; q++) {
         double ax = 0, ay = 0, ux = 0, uy = 0;
         for (int k = 0; k < 4; k++) {
@@ -96,8 +96,10 @@ void lm_step_g2p(lm_sim *sim)
             ux += w * g->px[i];
             uy += w * g->py[i];
         }
-        p->vx[q] += dt * ax;
-        p->vy[q] += dt * ay;
+        /* FLIP, optionally blended with the PIC velocity sum_i N_ip v_i^L
+         * (pic = 0, the papers' scheme, by default) */
+        p->vx[q] = (1 - pic) * (p->vx[q] + dt * ax) + pic * ux;
+        p->vy[q] = (1 - pic) * (p->vy[q] + dt * ay) + pic * uy;
         p->x[q] += dt * ux;
         p->y[q] += dt * uy;
     }

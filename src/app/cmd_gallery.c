@@ -1,0 +1,324 @@
+/* cmd_gallery.c - `lamina gallery`: the command line, and its default mode,
+ * which renders every stale figure script into gallery/ and rewrites the
+ * index.
+ *
+ * A figure is stale when its meta.json is missing, records a failed run, or
+ * holds another hash of (script bytes, program version), or when a file it
+ * lists is gone (a fresh clone has the pages but not the full-size images).
+ * --force renders all. One figure failing does not stop the others; the
+ * exit status is 1 then. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "app.h"
+#include "gallery.h"
+
+static const char usage_text[] =
+    "usage: lamina gallery [--only PATTERN] [--force] [--check] [--compare]\n"
+    "                      [--update-baselines] [--scripts DIR] [--gallery DIR]\n"
+    "                      [--baselines DIR] [--work DIR] [--set name=value] [--quiet]\n"
+    "  (no mode)           render the stale scripts/paper/*.lua into gallery/, write the index\n"
+    "  --check             verify gallery/ against the scripts, running nothing\n"
+    "  --compare           visual regression: render small candidates into --work and\n"
+    "                      compare them with the baselines\n"
+    "  --update-baselines  the same, then rewrite only the baselines that failed\n"
+    "  --only PATTERN      only scripts whose name (without .lua) matches the glob\n"
+    "  --force             render even figures that are up to date\n"
+    "  --scripts DIR       the figure scripts (scripts/paper)\n"
+    "  --gallery DIR       the gallery (gallery)\n"
+    "  --baselines DIR     the baseline images (tests/visual/baselines)\n"
+    "  --work DIR          candidates and failure reports (out/visual)\n"
+    "  --set name=value    passed to every run (--compare only; for negative controls)\n"
+    "See docs/gallery.md.\n";
+
+static int usage_error(const char *fmt, const char *arg)
+{
+    fputs("lamina gallery: ", stderr);
+    fprintf(stderr, fmt, arg);
+    fprintf(stderr, "\n%s", usage_text);
+    return -1;
+}
+
+/* "--name value" or "--name=value" */
+static int take(int argc, char **argv, int *i, const char *name, const char **out)
+{
+    const char *a = argv[*i];
+    size_t n = strlen(name);
+    if (strncmp(a, name, n) != 0 || (a[n] != '\0' && a[n] != '='))
+        return 0;
+    const char *v = a[n] == '=' ? a + n + 1 : (*i + 1 < argc ? argv[++*i] : NULL);
+    if (!v || !*v)
+        return usage_error("%s needs a value", name);
+    *out = v;
+    return 1;
+}
+
+static int parse_args(int argc, char **argv, g_options *o)
+{
+    for (int i = 0; i < argc; i++) {
+        const char *a = argv[i], *set = NULL;
+        int r;
+        if ((r = take(argc, argv, &i, "--only", &o->only)) ||
+            (r = take(argc, argv, &i, "--scripts", &o->scripts)) ||
+            (r = take(argc, argv, &i, "--gallery", &o->gallery)) ||
+            (r = take(argc, argv, &i, "--baselines", &o->baselines)) ||
+            (r = take(argc, argv, &i, "--work", &o->work))) {
+            if (r < 0)
+                return -1;
+        } else if ((r = take(argc, argv, &i, "--set", &set))) {
+            if (r < 0)
+                return -1;
+            if (!strchr(set, '=') || set[0] == '=')
+                return usage_error("--set needs name=value (got '%s')", set);
+            o->sets[o->nsets++] = set;
+        } else if (!strcmp(a, "--force")) {
+            o->force = 1;
+        } else if (!strcmp(a, "--check")) {
+            o->check = 1;
+        } else if (!strcmp(a, "--compare")) {
+            o->compare = 1;
+        } else if (!strcmp(a, "--update-baselines")) {
+            o->update = 1;
+        } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) {
+            o->quiet = 1;
+        } else if (a[0] == '-') {
+            return usage_error("unknown option '%s'", a);
+        } else {
+            return usage_error("unexpected argument '%s' (scripts are found in --scripts DIR)",
+                               a);
+        }
+    }
+    if (o->check + o->compare + o->update > 1)
+        return usage_error("%s", "--check, --compare and --update-baselines exclude each other");
+    if (o->force && (o->check || o->compare || o->update))
+        return usage_error("%s", "--force is for rendering the gallery only");
+    if (o->nsets && !o->compare)
+        return usage_error("%s", "--set is for --compare only (a gallery figure is what "
+                                 "its script makes)");
+    return 0;
+}
+
+/* ---- rendering one figure ---------------------------------------------- */
+
+static void put_strs(FILE *f, const char *key, const g_strs *l)
+{
+    fprintf(f, "  \"%s\": [", key);
+    for (size_t i = 0; i < l->n; i++) {
+        fputs(i ? ", " : "", f);
+        gj_put_string(f, l->v[i]);
+    }
+    fputs("],\n", f);
+}
+
+static void put_opt_string(FILE *f, const char *key, const char *v)
+{
+    fprintf(f, "  \"%s\": ", key);
+    if (v)
+        gj_put_string(f, v);
+    else
+        fputs("null", f);
+    fputs(",\n", f);
+}
+
+/* meta.json: what the page and the index are written from, and what makes
+ * a figure up to date. */
+static int write_meta(const char *path, const g_script *s, const g_run_result *r,
+                      const char *key, int has_thumb, const g_strs *images,
+                      const g_strs *data, const gj *report, char *err, size_t errlen)
+{
+    g_text t;
+    g_text_open(&t);
+    FILE *f = t.f;
+    fputs("{\n", f);
+    put_opt_string(f, "stem", s->stem);
+    put_opt_string(f, "title", s->h.title);
+    put_opt_string(f, "version", LAMINA_VERSION);
+    put_opt_string(f, "script_hash", s->script_hash);
+    put_opt_string(f, "hash", s->hash);
+    fprintf(f, "  \"status\": %d,\n  \"seconds\": %.3f,\n", r->status, r->seconds);
+    put_opt_string(f, "key_image", key);
+    put_opt_string(f, "thumb", has_thumb ? G_THUMB : NULL);
+    put_strs(f, "images", images);
+    put_strs(f, "data", data);
+    const gj *values = gj_get(report, "values");
+    fputs("  \"values\": ", f);
+    if (values && values->type == GJ_ARRAY)
+        gj_put(f, values, 2);
+    else
+        fputs("[]", f);
+    fputs("\n}\n", f);
+    g_text_close(&t);
+    int rc = g_write_file(path, t.buf, t.len, err, errlen);
+    free(t.buf);
+    return rc;
+}
+
+static int up_to_date(const g_options *o, const g_script *s)
+{
+    char *dir = g_fmt("%s/%s", o->gallery, s->stem);
+    char *path = g_fmt("%s/%s", dir, G_META);
+    gj *meta = gj_read(path, NULL, 0);
+    int ok = meta && gj_string(meta, "hash") && !strcmp(gj_string(meta, "hash"), s->hash) &&
+             gj_number(meta, "status", -1) == 0;
+    char *page = g_fmt("%s/%s", dir, G_PAGE);
+    ok = ok && g_exists(page);
+    free(page);
+    const gj *imgs = gj_get(meta, "images");
+    for (size_t i = 0; ok && imgs && i < imgs->n; i++) {
+        char *p = g_fmt("%s/%s", dir, imgs->kids[i].text ? imgs->kids[i].text : "");
+        ok = g_exists(p);
+        free(p);
+    }
+    if (ok && gj_string(meta, "thumb")) {
+        char *p = g_fmt("%s/%s", dir, G_THUMB);
+        ok = g_exists(p);
+        free(p);
+    }
+    gj_free(meta);
+    free(path);
+    free(dir);
+    return ok;
+}
+
+/* 0 rendered, 1 the run failed, -1 the gallery could not be written. */
+static int render(const g_options *o, const g_script *s)
+{
+    char err[1024];
+    char *dir = g_fmt("%s/%s", o->gallery, s->stem);
+    char *report = g_fmt("%s/%s", dir, G_REPORT);
+    char *log = g_fmt("%s/%s", dir, G_LOG);
+    char *meta = g_fmt("%s/%s", dir, G_META);
+    char *thumb = g_fmt("%s/%s", dir, G_THUMB);
+    g_strs images = { 0 }, data = { 0 };
+    gj *rep = NULL;
+    g_run_result r = { 0 };
+    int rc = -1;
+    /* a fresh folder: a frame the script no longer writes must not linger */
+    if (g_clear_dir(dir, err, sizeof err) != 0 || g_mkdirs(dir, err, sizeof err) != 0 ||
+        g_run(s, dir, report, log, NULL, 0, &r, err, sizeof err) != 0 ||
+        g_outputs(dir, &images, &data, err, sizeof err) != 0)
+        goto done;
+    const char *key = r.status == 0 ? g_key_image(s, &images) : NULL;
+    if (key) {
+        char *src = g_fmt("%s/%s", dir, key);
+        int t = g_thumbnail(src, thumb, G_THUMB_WIDTH, err, sizeof err);
+        free(src);
+        if (t != 0)
+            goto done;
+    }
+    if (g_exists(report)) {
+        rep = gj_read(report, err, sizeof err);
+        if (!rep)
+            fprintf(stderr, "lamina gallery: %s: %s (numbers left out)\n", s->stem, err);
+    }
+    if (write_meta(meta, s, &r, key, key != NULL, &images, &data, rep, err, sizeof err))
+        goto done;
+    gj *m = gj_read(meta, err, sizeof err);
+    if (!m)
+        goto done;
+    int p = g_write_page(o, s, m, err, sizeof err);
+    gj_free(m);
+    if (p != 0)
+        goto done;
+    const gj *vals = gj_get(rep, "values");
+    if (r.status == 0) {
+        if (!o->quiet)
+            printf("gallery: %s: %.1f s, %zu image%s, %zu value%s%s\n", s->stem, r.seconds,
+                   images.n, images.n == 1 ? "" : "s", vals ? vals->n : 0,
+                   vals && vals->n == 1 ? "" : "s", key ? "" : " (no image: no thumbnail)");
+        rc = 0;
+    } else {
+        fprintf(stderr, "gallery: %s: FAILED (lamina run exit status %d) after %.1f s; "
+                        "the end of %s:\n", s->stem, r.status, r.seconds, log);
+        g_show_log_tail(log, 6);
+        rc = 1;
+    }
+done:
+    if (rc < 0)
+        fprintf(stderr, "lamina gallery: %s: %s\n", s->stem, err);
+    gj_free(rep);
+    g_strs_free(&images);
+    g_strs_free(&data);
+    free(thumb);
+    free(meta);
+    free(log);
+    free(report);
+    free(dir);
+    return rc;
+}
+
+static int render_all(const g_options *o)
+{
+    char err[1024];
+    g_scripts all, chosen;
+    if (g_find_scripts(o->scripts, NULL, &all, err, sizeof err) != 0) {
+        fprintf(stderr, "lamina gallery: %s\n", err);
+        return 2;
+    }
+    if (g_find_scripts(o->scripts, o->only, &chosen, err, sizeof err) != 0) {
+        fprintf(stderr, "lamina gallery: %s\n", err);
+        g_scripts_free(&all);
+        return 2;
+    }
+    if (o->only && chosen.n == 0) {
+        fprintf(stderr, "lamina gallery: no script in '%s' matches --only '%s'\n",
+                o->scripts, o->only);
+        g_scripts_free(&all);
+        g_scripts_free(&chosen);
+        return 2;
+    }
+    size_t ran = 0, fresh = 0, failed = 0;
+    int broken = 0;
+    for (size_t i = 0; i < chosen.n && !broken; i++) {
+        const g_script *s = &chosen.v[i];
+        if (!s->h.title || !s->h.source || !s->h.look)
+            fprintf(stderr, "lamina gallery: %s: the header lacks%s%s%s (docs/gallery.md)\n",
+                    s->path, s->h.title ? "" : " '-- title:'",
+                    s->h.source ? "" : " '-- source:'", s->h.look ? "" : " '-- look:'");
+        if (!o->force && up_to_date(o, s)) {
+            fresh++;
+            if (!o->quiet)
+                printf("gallery: %s: up to date\n", s->stem);
+            continue;
+        }
+        int rc = render(o, s);
+        ran += rc >= 0;
+        failed += rc == 1;
+        broken = rc < 0;
+    }
+    if (!broken && g_write_index(o, &all, err, sizeof err) != 0) {
+        fprintf(stderr, "lamina gallery: %s\n", err);
+        broken = 1;
+    }
+    if (!o->quiet && !broken)
+        printf("gallery: %zu figure%s: %zu rendered, %zu up to date, %zu failed; index: "
+               "%s/%s and %s/index.html\n", all.n, all.n == 1 ? "" : "s", ran - failed,
+               fresh, failed, o->gallery, G_PAGE, o->gallery);
+    g_scripts_free(&all);
+    g_scripts_free(&chosen);
+    return broken ? 2 : failed ? 1 : 0;
+}
+
+int cmd_gallery(int argc, char **argv)
+{
+    g_options o;
+    memset(&o, 0, sizeof o);
+    o.scripts = "scripts/paper";
+    o.gallery = "gallery";
+    o.baselines = "tests/visual/baselines";
+    o.work = "out/visual";
+    o.sets = calloc((size_t)argc + 1, sizeof *o.sets);
+    if (!o.sets)
+        return 2;
+    int rc;
+    if (parse_args(argc, argv, &o) != 0)
+        rc = 2;
+    else if (o.check)
+        rc = g_check(&o);
+    else if (o.compare || o.update)
+        rc = g_visual(&o);
+    else
+        rc = render_all(&o);
+    free(o.sets);
+    return rc;
+}

@@ -1,0 +1,179 @@
+/* gallery.h - `lamina gallery`, one job per file:
+ *
+ *   cmd_gallery.c     the command line; the default mode (render stale figures)
+ *   gallery_fs.c      files: read, atomic write, mkdir -p, list, remove, copy
+ *   gallery_json.c    a small JSON reader and writer (meta.json, report.json)
+ *   gallery_script.c  finding the scripts, their header comment, their hash
+ *   gallery_run.c     one script as a `lamina run` subprocess, timed
+ *   gallery_thumb.c   box-filtered thumbnails
+ *   gallery_index.c   the index (README.md, index.html) and the figure pages
+ *   gallery_check.c   --check: the gallery agrees with the scripts
+ *   gallery_visual.c  --compare / --update-baselines: visual regression
+ *
+ * Errors are values: functions return 0 or -1 with a message in err[].
+ * Running out of memory for a path or a line of text is the one exception:
+ * g_fmt and friends print it and exit with status 2, since a command-line
+ * tool can do nothing better then. */
+#ifndef LAMINA_GALLERY_H
+#define LAMINA_GALLERY_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#define G_THUMB_WIDTH 256            /* thumbnails and baselines: at most this wide */
+#define G_THUMB "thumb.png"          /* per figure: the index's thumbnail */
+#define G_PAGE "README.md"           /* per figure: its page */
+#define G_META "meta.json"           /* per figure: what the last run made */
+#define G_REPORT "report.json"       /* per figure: lamina.report's values */
+#define G_LOG "log.txt"              /* per figure: the run's stdout and stderr */
+
+/* ---- options --------------------------------------------------------- */
+
+typedef struct g_options {
+    const char *scripts;        /* --scripts DIR (scripts/paper) */
+    const char *gallery;        /* --gallery DIR (gallery) */
+    const char *baselines;      /* --baselines DIR (tests/visual/baselines) */
+    const char *work;           /* --work DIR (out/visual) */
+    const char *only;           /* --only PATTERN (a glob on the script's stem) */
+    int force, check, compare, update, quiet;
+    const char **sets;          /* --set name=value, for --compare */
+    int nsets;
+} g_options;
+
+/* ---- gallery_fs.c ---------------------------------------------------- */
+
+typedef struct g_strs {
+    char **v;
+    size_t n, cap;
+} g_strs;
+
+char *g_fmt(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+char *g_strdup(const char *s);
+void *g_alloc(size_t n);                  /* zeroed */
+void g_strs_add(g_strs *l, char *owned);
+void g_strs_sort(g_strs *l);
+void g_strs_free(g_strs *l);
+
+int g_exists(const char *path);
+int g_is_dir(const char *path);
+int g_read_file(const char *path, char **text, size_t *len, char *err, size_t errlen);
+/* Through a temporary beside path, then rename(2); creates missing folders. */
+int g_write_file(const char *path, const char *text, size_t len, char *err, size_t errlen);
+int g_copy_file(const char *from, const char *to, char *err, size_t errlen);
+int g_mkdirs(const char *dir, char *err, size_t errlen);
+/* Removes everything inside dir (not dir itself); a missing dir is fine. */
+int g_clear_dir(const char *dir, char *err, size_t errlen);
+/* Regular files under dir, recursively, as sorted paths relative to dir. */
+int g_list_files(const char *dir, g_strs *out, char *err, size_t errlen);
+/* Sub-folders of dir (not recursive), sorted names. */
+int g_list_dirs(const char *dir, g_strs *out, char *err, size_t errlen);
+/* A relative path from folder `from` to `to`, both existing; NULL if not known. */
+char *g_relpath(const char *from, const char *to);
+/* path made absolute (symbolic links resolved), or a copy of it if it does not exist. */
+char *g_abspath(const char *path);
+int g_has_suffix(const char *s, const char *suffix);
+
+/* A growing text buffer over open_memstream. */
+typedef struct g_text {
+    FILE *f;
+    char *buf;
+    size_t len;
+} g_text;
+void g_text_open(g_text *t);
+/* Closes the stream; t->buf/t->len hold the text (free t->buf). */
+void g_text_close(g_text *t);
+
+/* ---- gallery_json.c -------------------------------------------------- */
+
+typedef enum gj_type { GJ_NULL, GJ_BOOL, GJ_NUMBER, GJ_STRING, GJ_ARRAY, GJ_OBJECT } gj_type;
+
+typedef struct gj {
+    gj_type type;
+    int boolean;
+    double number;
+    char *text;             /* GJ_STRING: the string; GJ_NUMBER: as written */
+    char *key;              /* member name, inside an object */
+    struct gj *kids;        /* GJ_ARRAY / GJ_OBJECT */
+    size_t n;
+} gj;
+
+gj *gj_parse(const char *text, char *err, size_t errlen);
+gj *gj_read(const char *path, char *err, size_t errlen);
+void gj_free(gj *v);
+const gj *gj_get(const gj *obj, const char *key);
+const char *gj_string(const gj *obj, const char *key);     /* NULL unless a string */
+double gj_number(const gj *obj, const char *key, double def);
+void gj_put_string(FILE *f, const char *s);
+/* Writes v as JSON (objects one member per line at `indent`). */
+void gj_put(FILE *f, const gj *v, int indent);
+
+/* ---- gallery_script.c ------------------------------------------------ */
+
+typedef struct g_header {
+    char *title;    /* -- title: what the figure shows */
+    char *source;   /* -- source: paper and figure */
+    char *look;     /* -- look: what to look for */
+    char *checks;   /* -- checks: the numbers it checks */
+    char *assumed;  /* -- assumed: inputs the paper leaves out, and why */
+    char *thumb;    /* -- thumb: the image the index shows (default: the last) */
+    char *visual;   /* -- visual: name=value ... for the regression run */
+} g_header;
+
+typedef struct g_script {
+    char *stem;                 /* file name without .lua */
+    char *path;                 /* scripts dir/stem.lua */
+    g_header h;
+    char script_hash[17];       /* FNV-1a of the bytes (as in the PNGs' provenance) */
+    char hash[17];              /* of the bytes and the program version: staleness */
+} g_script;
+
+typedef struct g_scripts {
+    g_script *v;
+    size_t n;
+} g_scripts;
+
+/* The DIR/NAME.lua scripts whose NAME matches `only` (NULL: all), sorted. */
+int g_find_scripts(const char *dir, const char *only, g_scripts *out, char *err,
+                   size_t errlen);
+void g_scripts_free(g_scripts *s);
+/* Splits the header's `visual` field into name=value words. */
+void g_visual_sets(const g_script *s, g_strs *out);
+
+/* ---- gallery_run.c --------------------------------------------------- */
+
+typedef struct g_run_result {
+    int status;         /* lamina run's exit status; 128+N killed by signal N */
+    double seconds;     /* wall-clock */
+} g_run_result;
+
+/* `lamina run SCRIPT --set out=OUT --report REPORT [--set ...] --quiet`
+ * with stdout and stderr into log. */
+int g_run(const g_script *s, const char *out, const char *report, const char *log,
+          const char *const *sets, int nsets, g_run_result *r, char *err, size_t errlen);
+/* The last few lines of a log, to stderr, indented. */
+void g_show_log_tail(const char *log, int lines);
+
+/* ---- gallery_thumb.c ------------------------------------------------- */
+
+/* A copy of src at most max_width wide (box filter: each output pixel is
+ * the area-weighted mean of what it covers), written to dst as PNG. */
+int g_thumbnail(const char *src, const char *dst, int max_width, char *err, size_t errlen);
+
+/* ---- gallery_index.c ------------------------------------------------- */
+
+/* The PNG images and other outputs of a figure folder (reserved names excluded). */
+int g_outputs(const char *dir, g_strs *images, g_strs *data, char *err, size_t errlen);
+/* The image the index shows: the header's `thumb` if present, else the last. */
+const char *g_key_image(const g_script *s, const g_strs *images);
+void g_markdown_cell(FILE *f, const char *s);
+void g_html(FILE *f, const char *s);
+int g_write_page(const g_options *o, const g_script *s, const gj *meta, char *err,
+                 size_t errlen);
+int g_write_index(const g_options *o, const g_scripts *all, char *err, size_t errlen);
+
+/* ---- modes ----------------------------------------------------------- */
+
+int g_check(const g_options *o);       /* gallery_check.c */
+int g_visual(const g_options *o);      /* gallery_visual.c */
+
+#endif

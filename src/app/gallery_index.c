@@ -1,0 +1,370 @@
+/* gallery_index.c - what a person reads: the index (gallery/README.md for
+ * GitHub, gallery/index.html for a browser, same table) and a page per
+ * figure (gallery/<stem>/README.md).
+ *
+ * Everything is written from the scripts' headers and each figure's
+ * meta.json, never from memory of this run, so an index written after
+ * rendering one figure still lists all of them. Links are relative and the
+ * HTML has no external assets: the folder works when copied anywhere.
+ * Only thumbnails and pages are linked from the index (they are
+ * committed); the full-size images are linked from the pages. */
+#include "gallery.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int reserved(const char *name)
+{
+    return !strcmp(name, G_THUMB) || !strcmp(name, G_PAGE) || !strcmp(name, G_META) ||
+           !strcmp(name, G_REPORT) || !strcmp(name, G_LOG) || strstr(name, ".tmp.");
+}
+
+int g_outputs(const char *dir, g_strs *images, g_strs *data, char *err, size_t errlen)
+{
+    g_strs files = { 0 };
+    if (g_list_files(dir, &files, err, errlen) != 0)
+        return -1;
+    for (size_t i = 0; i < files.n; i++) {
+        char *f = files.v[i];
+        files.v[i] = NULL;
+        if (reserved(f))
+            free(f);
+        else if (g_has_suffix(f, ".png"))
+            g_strs_add(images, f);
+        else if (data)
+            g_strs_add(data, f);
+        else
+            free(f);
+    }
+    g_strs_free(&files);
+    return 0;
+}
+
+const char *g_key_image(const g_script *s, const g_strs *images)
+{
+    for (size_t i = 0; s->h.thumb && i < images->n; i++)
+        if (strcmp(images->v[i], s->h.thumb) == 0)
+            return images->v[i];
+    return images->n ? images->v[images->n - 1] : NULL;
+}
+
+/* ---- escaping ---------------------------------------------------------- */
+
+void g_markdown_cell(FILE *f, const char *s)
+{
+    for (; s && *s; s++) {
+        if (*s == '|')
+            fputs("\\|", f);
+        else if (*s == '\n' || *s == '\r')
+            fputc(' ', f);
+        else
+            fputc(*s, f);
+    }
+}
+
+void g_html(FILE *f, const char *s)
+{
+    for (; s && *s; s++) {
+        switch (*s) {
+        case '&': fputs("&amp;", f); break;
+        case '<': fputs("&lt;", f); break;
+        case '>': fputs("&gt;", f); break;
+        case '"': fputs("&quot;", f); break;
+        default: fputc(*s, f);
+        }
+    }
+}
+
+/* ---- reported values --------------------------------------------------- */
+
+/* A value for a table: integers as written, other numbers to 4 digits. */
+static char *show(const gj *v)
+{
+    if (!v)
+        return NULL;
+    switch (v->type) {
+    case GJ_NUMBER:
+        if (!strpbrk(v->text, ".eE"))
+            return g_strdup(v->text);
+        return g_fmt("%.4g", v->number);
+    case GJ_STRING: return g_strdup(v->text);
+    case GJ_BOOL: return g_strdup(v->boolean ? "true" : "false");
+    default: return g_strdup("null");
+    }
+}
+
+/* "✓" within tolerance of the paper, "✗" outside, "" when not comparable. */
+static const char *mark(const gj *e)
+{
+    const gj *v = gj_get(e, "value"), *p = gj_get(e, "paper"), *t = gj_get(e, "tol");
+    if (!v || !p || !t || v->type != GJ_NUMBER || p->type != GJ_NUMBER ||
+        t->type != GJ_NUMBER)
+        return "";
+    return fabs(v->number - p->number) <= t->number ? " ✓" : " ✗";
+}
+
+/* "name: 0.27 % (paper 0.3 ± 0.05 %) ✓" */
+static char *value_line(const gj *e)
+{
+    const char *unit = gj_string(e, "unit");
+    char *v = show(gj_get(e, "value")), *p = show(gj_get(e, "paper")),
+         *t = show(gj_get(e, "tol"));
+    const char *name = gj_string(e, "name");
+    char *paper = p ? g_fmt(" (paper %s%s%s%s%s)", p, t ? " ± " : "", t ? t : "",
+                            unit ? " " : "", unit ? unit : "")
+                    : g_strdup("");
+    char *line = g_fmt("%s: %s%s%s%s%s", name ? name : "?", v ? v : "?", unit ? " " : "",
+                       unit ? unit : "", paper, mark(e));
+    free(v);
+    free(p);
+    free(t);
+    free(paper);
+    return line;
+}
+
+static const gj *values_of(const gj *meta)
+{
+    const gj *v = gj_get(meta, "values");
+    return v && v->type == GJ_ARRAY ? v : NULL;
+}
+
+static char *run_time(const gj *meta)
+{
+    if (!meta)
+        return g_strdup("not rendered yet");
+    double status = gj_number(meta, "status", -1);
+    if (status != 0)
+        return g_fmt("failed (exit %g)", status);
+    double s = gj_number(meta, "seconds", 0);
+    return s < 60 ? g_fmt("%.1f s", s) : g_fmt("%.0f min %.0f s", floor(s / 60),
+                                               fmod(s, 60));
+}
+
+/* ---- the page of one figure -------------------------------------------- */
+
+static void page_field(FILE *f, const char *heading, const char *text)
+{
+    if (text && *text)
+        fprintf(f, "\n## %s\n\n%s\n", heading, text);
+}
+
+int g_write_page(const g_options *o, const g_script *s, const gj *meta, char *err,
+                 size_t errlen)
+{
+    char *dir = g_fmt("%s/%s", o->gallery, s->stem);
+    char *path = g_fmt("%s/%s", dir, G_PAGE);
+    char *rel = g_relpath(dir, s->path);
+    char *rt = run_time(meta);
+    g_text t;
+    g_text_open(&t);
+    FILE *f = t.f;
+    fprintf(f, "<!-- written by `lamina gallery` from %s.lua: edit the script, not "
+               "this page (docs/gallery.md) -->\n\n", s->stem);
+    fprintf(f, "# %s\n\n", s->h.title ? s->h.title : s->stem);
+    if (s->h.source)
+        fprintf(f, "**Source:** %s\n\n", s->h.source);
+    fprintf(f, "**Script:** [`%s.lua`](%s) · lamina %s · run time %s\n\n", s->stem,
+            rel ? rel : s->path, gj_string(meta, "version") ? gj_string(meta, "version")
+                                                              : LAMINA_VERSION, rt);
+    char *thumb = g_fmt("%s/%s", dir, G_THUMB);
+    if (g_exists(thumb))
+        fprintf(f, "![%s](%s)\n", s->stem, G_THUMB);
+    free(thumb);
+    page_field(f, "What to look for", s->h.look);
+    page_field(f, "What was assumed", s->h.assumed);
+    page_field(f, "Numbers it checks", s->h.checks);
+
+    const gj *vals = values_of(meta);
+    if (vals && vals->n) {
+        fputs("\n## Measured\n\n| Quantity | Measured | Paper | Tolerance | Unit | |\n"
+              "| --- | --- | --- | --- | --- | --- |\n", f);
+        for (size_t i = 0; i < vals->n; i++) {
+            const gj *e = &vals->kids[i];
+            char *v = show(gj_get(e, "value")), *p = show(gj_get(e, "paper")),
+                 *tol = show(gj_get(e, "tol"));
+            fputs("| ", f);
+            g_markdown_cell(f, gj_string(e, "name"));
+            fputs(" | ", f);
+            g_markdown_cell(f, v);
+            fputs(" | ", f);
+            g_markdown_cell(f, p ? p : "");
+            fputs(" | ", f);
+            g_markdown_cell(f, tol ? tol : "");
+            fputs(" | ", f);
+            g_markdown_cell(f, gj_string(e, "unit"));
+            fprintf(f, " |%s |\n", mark(e));
+            free(v);
+            free(p);
+            free(tol);
+        }
+    }
+
+    const gj *imgs = gj_get(meta, "images"), *data = gj_get(meta, "data");
+    if (imgs && imgs->type == GJ_ARRAY && imgs->n) {
+        fputs("\n## Images\n\nFull size, as the script wrote them. They are not committed "
+              "(`gallery/.gitignore`): run `lamina gallery` to see them here.\n", f);
+        for (size_t i = 0; i < imgs->n; i++)
+            if (imgs->kids[i].type == GJ_STRING)
+                fprintf(f, "\n### %s\n\n![%s](%s)\n", imgs->kids[i].text,
+                        imgs->kids[i].text, imgs->kids[i].text);
+    }
+    if (data && data->type == GJ_ARRAY && data->n) {
+        fputs("\n## Data\n\n", f);
+        for (size_t i = 0; i < data->n; i++)
+            if (data->kids[i].type == GJ_STRING)
+                fprintf(f, "- [%s](%s)\n", data->kids[i].text, data->kids[i].text);
+    }
+    if (meta && gj_number(meta, "status", -1) != 0)
+        fprintf(f, "\n## The last run failed\n\nExit status %g; its output is in "
+                   "[`%s`](%s).\n", gj_number(meta, "status", -1), G_LOG, G_LOG);
+    g_text_close(&t);
+    int rc = g_write_file(path, t.buf, t.len, err, errlen);
+    free(t.buf);
+    free(rt);
+    free(rel);
+    free(path);
+    free(dir);
+    return rc;
+}
+
+/* ---- the index ---------------------------------------------------------- */
+
+typedef struct row {
+    const g_script *s;
+    gj *meta;
+    int has_thumb;
+} row;
+
+static void index_markdown(FILE *f, const g_options *o, const row *rows, size_t n)
+{
+    fputs("<!-- written by `lamina gallery`: edit the scripts, not this file "
+          "(docs/gallery.md) -->\n\n# Gallery\n\n", f);
+    fprintf(f, "Every reproduced figure, made again from its script in `%s/` by "
+               "`lamina gallery`. A thumbnail leads to the figure's page: what to look "
+               "for, the numbers measured beside the paper's, the full-size images. "
+               "How to add a figure: `docs/gallery.md`. The same "
+               "table as a web page: [index.html](index.html).\n\n", o->scripts);
+    if (n == 0) {
+        fprintf(f, "No figures yet: `%s/` has no scripts.\n", o->scripts);
+        return;
+    }
+    fputs("| Figure | Title | Source | Measured vs paper | Run time |\n"
+          "| --- | --- | --- | --- | --- |\n", f);
+    for (size_t i = 0; i < n; i++) {
+        const g_script *s = rows[i].s;
+        if (rows[i].has_thumb)
+            fprintf(f, "| [![%s](%s/%s)](%s/%s) | ", s->stem, s->stem, G_THUMB, s->stem,
+                    G_PAGE);
+        else
+            fputs("| — | ", f);
+        fputc('[', f);
+        g_markdown_cell(f, s->h.title ? s->h.title : s->stem);
+        fprintf(f, "](%s/%s) | ", s->stem, G_PAGE);
+        g_markdown_cell(f, s->h.source ? s->h.source : "");
+        fputs(" | ", f);
+        const gj *vals = values_of(rows[i].meta);
+        for (size_t k = 0; vals && k < vals->n; k++) {
+            char *line = value_line(&vals->kids[k]);
+            if (k)
+                fputs("<br>", f);
+            g_markdown_cell(f, line);
+            free(line);
+        }
+        char *rt = run_time(rows[i].meta);
+        fprintf(f, " | %s |\n", rt);
+        free(rt);
+    }
+}
+
+static void index_html(FILE *f, const g_options *o, const row *rows, size_t n)
+{
+    fputs("<!DOCTYPE html>\n<!-- written by `lamina gallery`: edit the scripts, not this "
+          "file (docs/gallery.md) -->\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+          "<title>lamina gallery</title>\n<style>\n"
+          "body { font-family: sans-serif; margin: 2em; color: #222; }\n"
+          "table { border-collapse: collapse; }\n"
+          "th, td { border: 1px solid #ccc; padding: 6px 10px; vertical-align: top; "
+          "text-align: left; }\n"
+          "th { background: #f4f4f4; }\n"
+          "td.num { white-space: nowrap; }\n"
+          "</style>\n</head>\n<body>\n<h1>lamina gallery</h1>\n", f);
+    fputs("<p>Every reproduced figure, made again from its script in <code>", f);
+    g_html(f, o->scripts);
+    fputs("/</code> by <code>lamina gallery</code>. A thumbnail leads to the figure's page "
+          "(<a href=\"README.md\">README.md</a> is this table for GitHub).</p>\n", f);
+    if (n == 0) {
+        fputs("<p>No figures yet: <code>", f);
+        g_html(f, o->scripts);
+        fputs("/</code> has no scripts.</p>\n</body>\n</html>\n", f);
+        return;
+    }
+    fputs("<table>\n<tr><th>Figure</th><th>Title</th><th>Source</th>"
+          "<th>Measured vs paper</th><th>Run time</th></tr>\n", f);
+    for (size_t i = 0; i < n; i++) {
+        const g_script *s = rows[i].s;
+        fputs("<tr><td>", f);
+        if (rows[i].has_thumb) {
+            fprintf(f, "<a href=\"%s/%s\"><img src=\"%s/%s\" alt=\"", s->stem, G_PAGE,
+                    s->stem, G_THUMB);
+            g_html(f, s->stem);
+            fputs("\"></a>", f);
+        } else {
+            fputs("—", f);
+        }
+        fprintf(f, "</td><td><a href=\"%s/%s\">", s->stem, G_PAGE);
+        g_html(f, s->h.title ? s->h.title : s->stem);
+        fputs("</a></td><td>", f);
+        g_html(f, s->h.source);
+        fputs("</td><td class=\"num\">", f);
+        const gj *vals = values_of(rows[i].meta);
+        for (size_t k = 0; vals && k < vals->n; k++) {
+            char *line = value_line(&vals->kids[k]);
+            if (k)
+                fputs("<br>", f);
+            g_html(f, line);
+            free(line);
+        }
+        char *rt = run_time(rows[i].meta);
+        fputs("</td><td class=\"num\">", f);
+        g_html(f, rt);
+        fputs("</td></tr>\n", f);
+        free(rt);
+    }
+    fputs("</table>\n</body>\n</html>\n", f);
+}
+
+int g_write_index(const g_options *o, const g_scripts *all, char *err, size_t errlen)
+{
+    row *rows = g_alloc((all->n ? all->n : 1) * sizeof *rows);
+    for (size_t i = 0; i < all->n; i++) {
+        const g_script *s = &all->v[i];
+        char *meta = g_fmt("%s/%s/%s", o->gallery, s->stem, G_META);
+        char *thumb = g_fmt("%s/%s/%s", o->gallery, s->stem, G_THUMB);
+        rows[i].s = s;
+        rows[i].meta = g_exists(meta) ? gj_read(meta, NULL, 0) : NULL;
+        rows[i].has_thumb = g_exists(thumb);
+        free(meta);
+        free(thumb);
+    }
+    g_text md, html;
+    g_text_open(&md);
+    index_markdown(md.f, o, rows, all->n);
+    g_text_close(&md);
+    g_text_open(&html);
+    index_html(html.f, o, rows, all->n);
+    g_text_close(&html);
+    char *pmd = g_fmt("%s/%s", o->gallery, G_PAGE);
+    char *phtml = g_fmt("%s/index.html", o->gallery);
+    int rc = g_write_file(pmd, md.buf, md.len, err, errlen);
+    if (rc == 0)
+        rc = g_write_file(phtml, html.buf, html.len, err, errlen);
+    free(pmd);
+    free(phtml);
+    free(md.buf);
+    free(html.buf);
+    for (size_t i = 0; i < all->n; i++)
+        gj_free(rows[i].meta);
+    free(rows);
+    return rc;
+}

@@ -1,0 +1,107 @@
+/* gallery_run.c - one figure script run as `lamina run`, in a child process.
+ *
+ * A subprocess, not an in-process Lua state: a script that fails, leaks or
+ * crashes takes only its own figure down, its output goes to its own log,
+ * and what runs is exactly what a person gets from `lamina run`. The binary
+ * is /proc/self/exe, this very program, whatever the PATH says. */
+#include "gallery.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+static double now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+int g_run(const g_script *s, const char *out, const char *report, const char *log,
+          const char *const *sets, int nsets, g_run_result *r, char *err, size_t errlen)
+{
+    /* everything the child needs is built before fork: after it, the child
+     * may only call async-signal-safe functions */
+    int argc = 0;
+    char **argv = g_alloc((size_t)(10 + 2 * nsets) * sizeof *argv);
+    char *set_out = g_fmt("out=%s", out);
+    argv[argc++] = "lamina";
+    argv[argc++] = "run";
+    argv[argc++] = s->path;
+    argv[argc++] = "--set";
+    argv[argc++] = set_out;
+    argv[argc++] = "--report";
+    argv[argc++] = (char *)report;
+    for (int i = 0; i < nsets; i++) {
+        argv[argc++] = "--set";
+        argv[argc++] = (char *)sets[i];
+    }
+    argv[argc++] = "--quiet";
+    argv[argc] = NULL;
+
+    int fd = open(log, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    if (fd < 0) {
+        snprintf(err, errlen, "cannot write '%s': %s", log, strerror(errno));
+        free(argv);
+        free(set_out);
+        return -1;
+    }
+    fflush(NULL);   /* or the child would flush our buffered output again */
+    double t0 = now();
+    pid_t pid = fork();
+    if (pid == 0) {
+        dup2(fd, STDOUT_FILENO);
+        dup2(fd, STDERR_FILENO);
+        execv("/proc/self/exe", argv);
+        static const char msg[] = "lamina gallery: cannot run /proc/self/exe\n";
+        ssize_t ignored = write(STDERR_FILENO, msg, sizeof msg - 1);
+        (void)ignored;
+        _exit(127);
+    }
+    int e = errno;
+    close(fd);
+    free(argv);
+    free(set_out);
+    if (pid < 0) {
+        snprintf(err, errlen, "cannot start a process: %s", strerror(e));
+        return -1;
+    }
+    int status;
+    while (waitpid(pid, &status, 0) < 0) {
+        if (errno != EINTR) {
+            snprintf(err, errlen, "cannot wait for the run: %s", strerror(errno));
+            return -1;
+        }
+    }
+    r->seconds = now() - t0;
+    r->status = WIFEXITED(status) ? WEXITSTATUS(status)
+                                  : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+    return 0;
+}
+
+void g_show_log_tail(const char *log, int lines)
+{
+    char *text;
+    size_t len;
+    if (g_read_file(log, &text, &len, NULL, 0) != 0)
+        return;
+    while (len && text[len - 1] == '\n')
+        len--;
+    size_t start = len;
+    for (int k = 0; start > 0; start--)
+        if (text[start - 1] == '\n' && ++k == lines)
+            break;
+    for (size_t i = start; i < len;) {
+        size_t n = strcspn(text + i, "\n");
+        if (i + n > len)
+            n = len - i;
+        fprintf(stderr, "    %.*s\n", (int)n, text + i);
+        i += n + 1;
+    }
+    free(text);
+}

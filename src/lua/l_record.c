@@ -1,0 +1,479 @@
+/* l_record.c - sim:record{...}: a history of chosen quantities, kept in
+ * memory, readable from Lua, and written as CSV at the end of every
+ * run/step call (whole or not at all: atomic_file.h).
+ *
+ *   local rec = sim:record{ file = "out/h.csv", every = 1e-4, energy = true,
+ *                           points = { mass = {string, -1} },   -- x, y of a point
+ *                           angle = { theta = string },         -- first -> last point
+ *                           values = { d = function(s) return ... end },
+ *                           average = 0.01 }                    -- running means
+ *
+ * Columns come in a fixed order (t, step, energies, then points, angles and
+ * values sorted by name) so that the same script writes the same file. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "atomic_file.h"
+#include "l_internal.h"
+
+#define LA_RECORD "lamina.record"
+
+enum { SRC_T, SRC_STEP, SRC_ENERGY, SRC_POINT_X, SRC_POINT_Y, SRC_ANGLE, SRC_VALUE };
+
+typedef struct la_column {
+    char name[64];
+    int src;
+    int body;           /* points, angles */
+    long index;         /* points: particle within the body (0-based) */
+    int which;          /* energy component; value: ref in the uservalue */
+} la_column;
+
+typedef struct la_record {
+    la_column *cols;
+    int ncols;
+    double *rows;       /* nrows * ncols */
+    size_t nrows, cap;
+    double average;     /* running-mean window in time, 0: none */
+    int has_file;
+    int dirty;
+} la_record;
+
+static la_record *check_record(lua_State *L, int idx)
+{
+    return luaL_checkudata(L, idx, LA_RECORD);
+}
+
+/* uservalue slots: 1 the sim, 2 a table {file = ..., fns = {...}} */
+
+static la_column *add_column(lua_State *L, la_record *r, const char *name, int src)
+{
+    la_column *c = realloc(r->cols, (size_t)(r->ncols + 1) * sizeof *c);
+    if (!c) luaL_error(L, "sim:record: out of memory");
+    r->cols = c;
+    c = &r->cols[r->ncols++];
+    memset(c, 0, sizeof *c);
+    if (strlen(name) >= sizeof c->name)
+        luaL_error(L, "sim:record: column name '%s' is too long", name);
+    for (int i = 0; i < r->ncols - 1; i++)
+        if (strcmp(r->cols[i].name, name) == 0)
+            luaL_error(L, "sim:record: column '%s' is given twice", name);
+    strcpy(c->name, name);
+    c->src = src;
+    return c;
+}
+
+static int cmp_str(const void *a, const void *b)
+{
+    return strcmp(*(const char *const *)a, *(const char *const *)b);
+}
+
+/* The string keys of the table at idx, sorted (Lua's order is not fixed). */
+static int sorted_keys(lua_State *L, int idx, const char *what, const char ***out)
+{
+    idx = lua_absindex(L, idx);
+    int n = 0;
+    lua_pushnil(L);
+    while (lua_next(L, idx)) {
+        lua_pop(L, 1);
+        if (lua_type(L, -1) != LUA_TSTRING)
+            luaL_error(L, "sim:record: '%s' must be a table of named entries", what);
+        n++;
+    }
+    const char **k = lua_newuserdatauv(L, (size_t)(n ? n : 1) * sizeof *k, 0);
+    int i = 0;
+    lua_pushnil(L);
+    while (lua_next(L, idx)) {
+        lua_pop(L, 1);
+        k[i++] = lua_tostring(L, -1);   /* alive: the table holds the key */
+    }
+    qsort(k, (size_t)n, sizeof *k, cmp_str);
+    *out = k;
+    return n;
+}
+
+static void read_points(lua_State *L, la_record *r, lm_sim *sim)
+{
+    if (lua_getfield(L, 2, "points") == LUA_TNIL) { lua_pop(L, 1); return; }
+    int t = lua_gettop(L);
+    const char **k;
+    int n = sorted_keys(L, t, "points", &k);
+    for (int i = 0; i < n; i++) {
+        lua_getfield(L, t, k[i]);
+        if (!lua_istable(L, -1) || lua_rawlen(L, -1) != 2)
+            luaL_error(L, "sim:record: points.%s must be {body, index}", k[i]);
+        lua_rawgeti(L, -1, 1);
+        lm_sim *bs;
+        int b = la_check_body(L, -1, &bs);
+        if (bs != sim) luaL_error(L, "sim:record: points.%s: the body belongs to another sim", k[i]);
+        lua_rawgeti(L, -2, 2);
+        lua_Integer idx = luaL_checkinteger(L, -1);
+        long count = (long)sim->bodies[b].count;
+        long q = idx < 0 ? count + (long)idx : (long)idx - 1;
+        if (q < 0 || q >= count)
+            luaL_error(L, "sim:record: points.%s: index %d is outside the body's %d points",
+                       k[i], (int)idx, (int)count);
+        char name[64];
+        snprintf(name, sizeof name, "%s_x", k[i]);
+        la_column *c = add_column(L, r, name, SRC_POINT_X);
+        c->body = b; c->index = q;
+        snprintf(name, sizeof name, "%s_y", k[i]);
+        c = add_column(L, r, name, SRC_POINT_Y);
+        c->body = b; c->index = q;
+        lua_pop(L, 3);
+    }
+    lua_pop(L, 2);
+}
+
+static void read_angles(lua_State *L, la_record *r, lm_sim *sim)
+{
+    if (lua_getfield(L, 2, "angle") == LUA_TNIL) { lua_pop(L, 1); return; }
+    int t = lua_gettop(L);
+    const char **k;
+    int n = sorted_keys(L, t, "angle", &k);
+    for (int i = 0; i < n; i++) {
+        lua_getfield(L, t, k[i]);
+        lm_sim *bs;
+        int b = la_check_body(L, -1, &bs);
+        if (bs != sim || sim->bodies[b].count < 2)
+            luaL_error(L, "sim:record: angle.%s needs a body of this sim with 2 or more points", k[i]);
+        add_column(L, r, k[i], SRC_ANGLE)->body = b;
+        lua_pop(L, 1);
+    }
+    lua_pop(L, 2);
+}
+
+static void read_values(lua_State *L, la_record *r, int fns)
+{
+    if (lua_getfield(L, 2, "values") == LUA_TNIL) { lua_pop(L, 1); return; }
+    int t = lua_gettop(L);
+    const char **k;
+    int n = sorted_keys(L, t, "values", &k);
+    for (int i = 0; i < n; i++) {
+        lua_getfield(L, t, k[i]);
+        if (!lua_isfunction(L, -1))
+            luaL_error(L, "sim:record: values.%s must be a function(sim) -> number", k[i]);
+        la_column *c = add_column(L, r, k[i], SRC_VALUE);
+        c->which = luaL_ref(L, fns);
+    }
+    lua_pop(L, 2);
+}
+
+/* ---- sampling -------------------------------------------------------- */
+
+static double sample(lua_State *L, const la_column *c, lm_sim *sim, const lm_energy *e)
+{
+    const lm_particles *p = &sim->p;
+    switch (c->src) {
+    case SRC_T: return sim->t;
+    case SRC_STEP: return (double)sim->step;
+    case SRC_ENERGY: {
+        const double v[5] = {e->kinetic, e->strain, e->internal, e->potential, e->total};
+        return v[c->which];
+    }
+    case SRC_POINT_X: return p->x[sim->bodies[c->body].first + (size_t)c->index];
+    case SRC_POINT_Y: return p->y[sim->bodies[c->body].first + (size_t)c->index];
+    case SRC_ANGLE: {
+        /* [M] §3.1.2: the line joining the first and last points, in
+         * degrees from the downward vertical, positive towards +x */
+        const lm_body *b = &sim->bodies[c->body];
+        size_t a = b->first, z = b->first + b->count - 1;
+        return atan2(p->x[z] - p->x[a], -(p->y[z] - p->y[a])) * 180 / acos(-1.0);
+    }
+    case SRC_VALUE: {
+        lua_getiuservalue(L, lua_upvalueindex(1), 2);
+        lua_getfield(L, -1, "fns");
+        lua_rawgeti(L, -1, c->which);
+        lua_pushvalue(L, 1);    /* the sim */
+        lua_call(L, 1, 1);
+        int ok;
+        double v = lua_tonumberx(L, -1, &ok);
+        if (!ok) luaL_error(L, "sim:record: values.%s returned %s, not a number",
+                            c->name, luaL_typename(L, -1));
+        lua_pop(L, 3);
+        return v;
+    }
+    }
+    return 0;
+}
+
+/* The event function: upvalue 1 is the recorder, argument 1 the sim. */
+static int record_sample(lua_State *L)
+{
+    la_record *r = check_record(L, lua_upvalueindex(1));
+    lm_sim *sim = la_check_sim(L, 1)->sim;
+    if (r->nrows == r->cap) {
+        size_t cap = r->cap ? 2 * r->cap : 256;
+        double *rows = realloc(r->rows, cap * (size_t)r->ncols * sizeof *rows);
+        if (!rows) return luaL_error(L, "sim:record: out of memory");
+        r->rows = rows;
+        r->cap = cap;
+    }
+    lm_energy e = lm_sim_energy(sim);
+    double *row = r->rows + r->nrows * (size_t)r->ncols;
+    for (int i = 0; i < r->ncols; i++) row[i] = sample(L, &r->cols[i], sim, &e);
+    r->nrows++;
+    r->dirty = 1;
+    return 0;
+}
+
+/* ---- reading back ---------------------------------------------------- */
+
+static int find_column(const la_record *r, const char *name)
+{
+    for (int i = 0; i < r->ncols; i++)
+        if (strcmp(r->cols[i].name, name) == 0) return i;
+    return -1;
+}
+
+/* Running mean of column c over the window (t - average, t]. */
+static void running_mean(const la_record *r, int c, double *out)
+{
+    double sum = 0;
+    size_t lo = 0;
+    for (size_t i = 0; i < r->nrows; i++) {
+        sum += r->rows[i * r->ncols + c];
+        double t = r->rows[i * r->ncols];
+        while (r->rows[lo * r->ncols] <= t - r->average) {
+            sum -= r->rows[lo * r->ncols + c];
+            lo++;
+        }
+        out[i] = sum / (double)(i - lo + 1);
+    }
+}
+
+/* rec:column(name) -> array; "<name>_avg" gives the running mean. */
+static int rec_column(lua_State *L)
+{
+    la_record *r = check_record(L, 1);
+    const char *name = luaL_checkstring(L, 2);
+    int c = find_column(r, name);
+    int avg = 0;
+    size_t n = strlen(name);
+    if (c < 0 && r->average > 0 && n > 4 && strcmp(name + n - 4, "_avg") == 0) {
+        lua_pushlstring(L, name, n - 4);
+        c = find_column(r, lua_tostring(L, -1));
+        lua_pop(L, 1);
+        avg = 1;
+    }
+    if (c < 0) return luaL_error(L, "rec:column: no column '%s'", name);
+    double *m = NULL;
+    if (avg) {   /* stays on the stack, below the result, until we return */
+        m = lua_newuserdatauv(L, (r->nrows ? r->nrows : 1) * sizeof *m, 0);
+        running_mean(r, c, m);
+    }
+    lua_createtable(L, (int)r->nrows, 0);
+    for (size_t i = 0; i < r->nrows; i++) {
+        lua_pushnumber(L, avg ? m[i] : r->rows[i * r->ncols + c]);
+        lua_rawseti(L, -2, (lua_Integer)i + 1);
+    }
+    return 1;
+}
+
+/* rec:mean(name, t0, t1): the time average of a column over [t0, t1]
+ * (trapezoidal in t), for quantities that ring. */
+static int rec_mean(lua_State *L)
+{
+    la_record *r = check_record(L, 1);
+    const char *name = luaL_checkstring(L, 2);
+    int c = find_column(r, name);
+    if (c < 0) return luaL_error(L, "rec:mean: no column '%s'", name);
+    double t0 = luaL_optnumber(L, 3, -HUGE_VAL), t1 = luaL_optnumber(L, 4, HUGE_VAL);
+    double area = 0, span = 0;
+    for (size_t i = 1; i < r->nrows; i++) {
+        double ta = r->rows[(i - 1) * r->ncols], tb = r->rows[i * r->ncols];
+        if (ta < t0 || tb > t1) continue;
+        area += 0.5 * (tb - ta) * (r->rows[(i - 1) * r->ncols + c] + r->rows[i * r->ncols + c]);
+        span += tb - ta;
+    }
+    if (!(span > 0)) return luaL_error(L, "rec:mean: no samples between %f and %f", t0, t1);
+    lua_pushnumber(L, area / span);
+    return 1;
+}
+
+static int rec_columns(lua_State *L)
+{
+    la_record *r = check_record(L, 1);
+    lua_createtable(L, r->ncols, 0);
+    for (int i = 0; i < r->ncols; i++) {
+        lua_pushstring(L, r->cols[i].name);
+        lua_rawseti(L, -2, i + 1);
+    }
+    return 1;
+}
+
+static int rec_len(lua_State *L)
+{
+    lua_pushinteger(L, (lua_Integer)check_record(L, 1)->nrows);
+    return 1;
+}
+
+/* ---- CSV ------------------------------------------------------------- */
+
+static void csv_number(luaL_Buffer *b, double v)
+{
+    char s[32];
+    snprintf(s, sizeof s, "%.10g", v);
+    luaL_addstring(b, s);
+}
+
+/* Builds the CSV text; `file` from the uservalue. Returns 0 if no file. */
+static int write_csv(lua_State *L, int ridx)
+{
+    la_record *r = check_record(L, ridx);
+    if (!r->has_file) return 0;
+    lua_getiuservalue(L, ridx, 2);
+    lua_getfield(L, -1, "file");
+    const char *file = lua_tostring(L, -1);
+    double *avg = NULL;
+    int nav = r->average > 0 ? r->ncols - 2 : 0;
+    if (nav > 0) {
+        avg = lua_newuserdatauv(L, (size_t)nav * (r->nrows ? r->nrows : 1) * sizeof *avg, 0);
+        for (int c = 0; c < nav; c++) running_mean(r, c + 2, avg + (size_t)c * r->nrows);
+    }
+    luaL_Buffer b;
+    luaL_buffinit(L, &b);
+    for (int c = 0; c < r->ncols; c++) {
+        if (c) luaL_addchar(&b, ',');
+        luaL_addstring(&b, r->cols[c].name);
+    }
+    for (int c = 0; c < nav; c++) {
+        luaL_addchar(&b, ',');
+        luaL_addstring(&b, r->cols[c + 2].name);
+        luaL_addstring(&b, "_avg");
+    }
+    luaL_addchar(&b, '\n');
+    for (size_t i = 0; i < r->nrows; i++) {
+        for (int c = 0; c < r->ncols; c++) {
+            if (c) luaL_addchar(&b, ',');
+            csv_number(&b, r->rows[i * r->ncols + c]);
+        }
+        for (int c = 0; c < nav; c++) {
+            luaL_addchar(&b, ',');
+            csv_number(&b, avg[(size_t)c * r->nrows + i]);
+        }
+        luaL_addchar(&b, '\n');
+    }
+    luaL_pushresult(&b);
+    size_t len;
+    const char *text = lua_tolstring(L, -1, &len);
+    char err[512];
+    if (lr_write_file(file, text, len, err, sizeof err) != 0)
+        return luaL_error(L, "sim:record: %s", err);
+    r->dirty = 0;
+    lua_pop(L, nav > 0 ? 4 : 3);
+    return 1;
+}
+
+static int rec_write(lua_State *L)
+{
+    check_record(L, 1);
+    write_csv(L, 1);
+    return 0;
+}
+
+void la_record_flush(lua_State *L, int sidx)
+{
+    sidx = lua_absindex(L, sidx);
+    lua_getiuservalue(L, sidx, 1);
+    if (lua_getfield(L, -1, "recorders") == LUA_TTABLE) {
+        int t = lua_gettop(L);
+        lua_Integer n = (lua_Integer)lua_rawlen(L, t);
+        for (lua_Integer i = 1; i <= n; i++) {
+            lua_rawgeti(L, t, i);
+            la_record *r = check_record(L, -1);
+            if (r->dirty) write_csv(L, lua_gettop(L));
+            lua_pop(L, 1);
+        }
+    }
+    lua_pop(L, 2);
+}
+
+static int rec_gc(lua_State *L)
+{
+    la_record *r = check_record(L, 1);
+    free(r->cols);
+    free(r->rows);
+    r->cols = NULL;
+    r->rows = NULL;
+    return 0;
+}
+
+/* ---- the constructor ------------------------------------------------- */
+
+int la_sim_record(lua_State *L)
+{
+    static const char *const keys[] = {"file", "every", "energy", "points", "angle",
+                                       "values", "average", NULL};
+    static const char *const energies[] = {"kinetic", "strain", "internal", "potential", "total"};
+    const char *fn = "sim:record";
+    la_sim *s = la_check_sim(L, 1);
+    la_check_keys(L, 2, fn, keys);
+    double every = la_opt_number(L, 2, fn, "every", s->sim->def.dt);
+    if (!(every > 0)) return luaL_error(L, "%s: every must be positive (got %f)", fn, every);
+    const char *file = la_opt_string(L, 2, fn, "file", NULL);
+
+    la_record *r = lua_newuserdatauv(L, sizeof *r, 2);
+    memset(r, 0, sizeof *r);
+    luaL_setmetatable(L, LA_RECORD);
+    int ridx = lua_gettop(L);
+    lua_pushvalue(L, 1);
+    lua_setiuservalue(L, ridx, 1);
+    lua_createtable(L, 0, 2);
+    lua_newtable(L);
+    lua_setfield(L, -2, "fns");
+    if (file) {
+        lua_pushstring(L, file);
+        lua_setfield(L, -2, "file");
+        r->has_file = 1;
+    }
+    lua_setiuservalue(L, ridx, 2);
+    r->average = la_opt_number(L, 2, fn, "average", 0);
+    if (r->average < 0) return luaL_error(L, "%s: average must be >= 0", fn);
+
+    add_column(L, r, "t", SRC_T);
+    add_column(L, r, "step", SRC_STEP);
+    lua_getfield(L, 2, "energy");
+    int energy = lua_toboolean(L, -1);
+    lua_pop(L, 1);
+    for (int i = 0; energy && i < 5; i++) add_column(L, r, energies[i], SRC_ENERGY)->which = i;
+    read_points(L, r, s->sim);
+    read_angles(L, r, s->sim);
+    lua_getiuservalue(L, ridx, 2);
+    lua_getfield(L, -1, "fns");
+    read_values(L, r, lua_gettop(L));
+    lua_pop(L, 2);
+
+    /* the sim keeps its recorders (to flush them); the event samples */
+    lua_getiuservalue(L, 1, 1);
+    if (lua_getfield(L, -1, "recorders") != LUA_TTABLE) {
+        lua_pop(L, 1);
+        lua_newtable(L);
+        lua_pushvalue(L, -1);
+        lua_setfield(L, -3, "recorders");
+    }
+    lua_pushvalue(L, ridx);
+    lua_rawseti(L, -2, (lua_Integer)lua_rawlen(L, -2) + 1);
+    lua_pop(L, 2);
+    lua_pushvalue(L, ridx);
+    lua_pushcclosure(L, record_sample, 1);
+    la_sim_add_event(L, 1, s->sim->t, every, -1);
+    lua_pop(L, 1);
+    lua_settop(L, ridx);
+    return 1;
+}
+
+void la_open_record(lua_State *L)
+{
+    static const luaL_Reg meta[] = {{"__gc", rec_gc}, {"__len", rec_len}, {NULL, NULL}};
+    static const luaL_Reg methods[] = {{"column", rec_column},
+                                       {"columns", rec_columns},
+                                       {"mean", rec_mean},
+                                       {"write", rec_write},
+                                       {NULL, NULL}};
+    luaL_newmetatable(L, LA_RECORD);
+    luaL_setfuncs(L, meta, 0);
+    luaL_newlib(L, methods);
+    lua_setfield(L, -2, "__index");
+    lua_pop(L, 1);
+}

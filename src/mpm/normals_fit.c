@@ -1,0 +1,355 @@
+/* normals_fit.c - one element: assemble [S]{phi} = {phi0}, solve, evaluate.
+ *
+ * Steps, as the paper builds them:
+ *  1. logical coordinates of every point in the element ([N] eq 4);
+ *  2. one row per membrane point, S_pI = S(x_p - x_I), phi0_p = 1
+ *     ([N] eq 10);
+ *  3. one random point q in the element with phi0 = 0, so that phi = 1
+ *     everywhere is no longer a solution ([N] §4, "One Dimension");
+ *  4. optionally a second random point with phi0 = 2, so that 1 is not a
+ *     maximum of phi ([N] §8);
+ *  5. least squares by QR (minimum norm when underdetermined) or by the
+ *     normal equations ([N] eq 13, §6);
+ *  6. n_p = grad phi(x_p) / |grad phi(x_p)| ([N] eq 11, 16). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "normals.h"
+
+/* A random point closer than this (relative to the element) to a membrane
+ * point would make the system inconsistent: it is drawn again. */
+#define RANDOM_CLEARANCE 1e-6
+/* Points closer than this (relative) are the same point. */
+#define COINCIDENT_TOL 1e-12
+/* Allowed outside the element, relative to its size (rounding). */
+#define OUTSIDE_TOL 1e-9
+/* Draws of the random point when cond_limit asks for redraws. */
+#define MAX_DRAWS 100
+
+void lm_nfit_opts_default(lm_nfit_opts *o)
+{
+    memset(o, 0, sizeof *o);
+    o->basis = LM_NB_LINEAR;
+    o->solver = LM_NS_QR;
+    o->seed = 1;
+}
+
+/* "(x, y)" or "(x, y, z)" */
+static const char *fmt_point(char *buf, size_t len, int dim, const double p[3])
+{
+    if (dim == 3)
+        snprintf(buf, len, "(%g, %g, %g)", p[0], p[1], p[2]);
+    else
+        snprintf(buf, len, "(%g, %g)", p[0], p[1]);
+    return buf;
+}
+
+static void point_of(const double *const x[3], int dim, size_t i, double p[3])
+{
+    for (int a = 0; a < 3; a++)
+        p[a] = a < dim ? x[a][i] : 0.0;
+}
+
+static int same_point(const lm_nbox *b, const double p[3], const double q[3],
+                      double tol)
+{
+    for (int a = 0; a < b->dim; a++)
+        if (fabs(p[a] - q[a]) > tol * (b->hi[a] - b->lo[a]))
+            return 0;
+    return 1;
+}
+
+static lm_nerr check_box(const lm_nbox *b, char *err, size_t errlen)
+{
+    if (!b || (b->dim != 2 && b->dim != 3)) {
+        if (err && errlen)
+            snprintf(err, errlen, "the element must be 2D or 3D");
+        return LM_NERR_INPUT;
+    }
+    for (int a = 0; a < b->dim; a++)
+        if (!isfinite(b->lo[a]) || !isfinite(b->hi[a]) || !(b->hi[a] > b->lo[a])) {
+            if (err && errlen)
+                snprintf(err, errlen, "the element is empty or not finite "
+                         "(axis %d: [%g, %g])", a, b->lo[a], b->hi[a]);
+            return LM_NERR_INPUT;
+        }
+    return LM_NERR_NONE;
+}
+
+/* Step 1 checks: every point finite and inside the element. */
+static lm_nerr check_points(const lm_nbox *b, const double *const x[3],
+                            const size_t *idx, size_t k, char *err, size_t errlen)
+{
+    for (size_t i = 0; i < k; i++) {
+        size_t q = idx ? idx[i] : i;
+        double p[3];
+        point_of(x, b->dim, q, p);
+        char buf[96];
+        for (int a = 0; a < b->dim; a++) {
+            if (!isfinite(p[a])) {
+                if (err && errlen)
+                    snprintf(err, errlen, "point %zu %s is not finite", q + 1,
+                             fmt_point(buf, sizeof buf, b->dim, p));
+                return LM_NERR_NOT_FINITE;
+            }
+        }
+        for (int a = 0; a < b->dim; a++) {
+            double t = OUTSIDE_TOL * (b->hi[a] - b->lo[a]);
+            if (p[a] < b->lo[a] - t || p[a] > b->hi[a] + t) {
+                if (err && errlen) {
+                    char lo[96], hi[96];
+                    snprintf(err, errlen, "point %zu %s lies outside the element "
+                             "from %s to %s", q + 1,
+                             fmt_point(buf, sizeof buf, b->dim, p),
+                             fmt_point(lo, sizeof lo, b->dim, b->lo),
+                             fmt_point(hi, sizeof hi, b->dim, b->hi));
+                }
+                return LM_NERR_OUTSIDE;
+            }
+        }
+    }
+    return LM_NERR_NONE;
+}
+
+int lm_npoints_unique(const lm_nbox *b, const double *const x[3],
+                        const size_t *idx, size_t k)
+{
+    int u = 0;
+    for (size_t i = 0; i < k; i++) {
+        double p[3], q[3];
+        point_of(x, b->dim, idx ? idx[i] : i, p);
+        int seen = 0;
+        for (size_t j = 0; j < i && !seen; j++) {
+            point_of(x, b->dim, idx ? idx[j] : j, q);
+            seen = same_point(b, p, q, COINCIDENT_TOL);
+        }
+        u += !seen;
+    }
+    return u;
+}
+
+/* Steps 3-4: a uniform point in the element, clear of the membrane points. */
+static void draw_point(const lm_nbox *b, lm_nrng *rng, const double *const x[3],
+                       const size_t *idx, size_t k, double q[3])
+{
+    for (int attempt = 0; attempt < MAX_DRAWS; attempt++) {
+        double xi[3] = {0, 0, 0};
+        for (int a = 0; a < b->dim; a++)
+            xi[a] = lm_nrng_uniform(rng);
+        lm_nbox_to_world(b, xi, q);
+        int clear = 1;
+        for (size_t i = 0; i < k && clear; i++) {
+            double p[3];
+            point_of(x, b->dim, idx ? idx[i] : i, p);
+            clear = !same_point(b, p, q, RANDOM_CLEARANCE);
+        }
+        if (clear)
+            return;
+    }
+}
+
+/* Step 4, lamina's variant: q mirrored through the points' centroid. */
+static void mirror_point(const lm_nbox *b, const double *const x[3],
+                         const size_t *idx, size_t k, const double q[3],
+                         double q2[3], double *value)
+{
+    double c[3] = {0, 0, 0}, t = 1.0;
+    for (size_t i = 0; i < k; i++)
+        for (int a = 0; a < b->dim; a++)
+            c[a] += x[a][idx ? idx[i] : i] / (double)k;
+    for (int a = 0; a < b->dim; a++) {
+        double d = c[a] - q[a];
+        if (c[a] + t * d > b->hi[a])
+            t = (b->hi[a] - c[a]) / d;
+        if (c[a] + t * d < b->lo[a])
+            t = (b->lo[a] - c[a]) / d;
+    }
+    if (!(t >= 0))
+        t = 0;
+    for (int a = 0; a < 3; a++)
+        q2[a] = a < b->dim ? c[a] + t * (c[a] - q[a]) : 0.0;
+    *value = 1.0 + t;
+}
+
+/* Step 2: one row of [S]. */
+static void row(const lm_nfit *f, const double p[3], double *s)
+{
+    double xi[3], v[LM_NMAX];
+    lm_nbox_to_logical(&f->box, p, xi);
+    lm_nbasis_eval(f->basis, f->dim, xi, v, NULL);
+    memcpy(s, v, sizeof(double) * (size_t)f->n);
+}
+
+/* Steps 2-5 for the current random point(s). */
+static lm_nerr assemble_solve(lm_nfit *f, const double *const x[3],
+                              const size_t *idx, size_t k, double *S, double *rhs)
+{
+    int n = f->n;
+    for (size_t i = 0; i < k; i++) {
+        double p[3];
+        point_of(x, f->dim, idx ? idx[i] : i, p);
+        row(f, p, S + i * (size_t)n);
+        rhs[i] = 1.0;
+    }
+    row(f, f->q, S + k * (size_t)n);
+    rhs[k] = 0.0;
+    if (f->has_q2) {
+        row(f, f->q2, S + (k + 1) * (size_t)n);
+        rhs[k + 1] = f->q2_value;
+    }
+    if (f->solver == LM_NS_NORMAL)
+        return lm_lsq_normal(f->rows, n, S, rhs, f->phi, &f->info);
+    return lm_lsq_qr(f->rows, n, S, rhs, f->phi, &f->info);
+}
+
+lm_nerr lm_nfit_element(const lm_nbox *box, const double *const x[3],
+                        const size_t *idx, size_t k, const lm_nfit_opts *o,
+                        lm_nfit *fit, char *err, size_t errlen)
+{
+    lm_nerr e = check_box(box, err, errlen);
+    if (e)
+        return e;
+    if (o->basis != LM_NB_LINEAR && o->basis != LM_NB_QUADRATIC) {
+        if (err && errlen)
+            snprintf(err, errlen, "an element is fitted with the linear or the "
+                     "quadratic basis");
+        return LM_NERR_INPUT;
+    }
+    if (k == 0) {
+        if (err && errlen)
+            snprintf(err, errlen, "no membrane points in the element");
+        return LM_NERR_TOO_FEW;
+    }
+    if ((e = check_points(box, x, idx, k, err, errlen)))
+        return e;
+    memset(fit, 0, sizeof *fit);
+    fit->dim = box->dim;
+    fit->basis = o->basis;
+    fit->box = *box;
+    fit->n = lm_nbasis_count(o->basis, box->dim);
+    fit->solver = o->solver;
+    fit->npoints = (int)k;
+    fit->nunique = lm_npoints_unique(box, x, idx, k);
+    int need = o->min_points > 0 ? o->min_points : box->dim;
+    if (fit->nunique < need) {
+        if (err && errlen)
+            snprintf(err, errlen, "only %d distinct membrane point%s in the element: "
+                     "at least %d are needed for a normal in %dD", fit->nunique,
+                     fit->nunique == 1 ? "" : "s", need, box->dim);
+        return LM_NERR_TOO_FEW;
+    }
+    if (fit->nunique < fit->npoints)
+        fit->flags |= LM_NF_COINCIDENT;
+    fit->has_q2 = o->phi2 != LM_PHI2_NONE || o->phi2_given;
+    fit->q2_value = 2.0;
+    fit->rows = (int)k + 1 + fit->has_q2;
+
+    double *S = malloc(sizeof(double) * (size_t)fit->rows * (size_t)fit->n);
+    double *rhs = malloc(sizeof(double) * (size_t)fit->rows);
+    if (!S || !rhs) {
+        free(S);
+        free(rhs);
+        if (err && errlen)
+            snprintf(err, errlen, "out of memory (%d x %d system)", fit->rows, fit->n);
+        return LM_NERR_MEMORY;
+    }
+    lm_nrng rng;
+    lm_nrng_seed(&rng, o->seed);
+    for (;;) {
+        if (o->random_given)
+            memcpy(fit->q, o->random_point, sizeof fit->q);
+        else
+            draw_point(box, &rng, x, idx, k, fit->q);
+        if (o->phi2_given)
+            memcpy(fit->q2, o->phi2_point, sizeof fit->q2);
+        else if (o->phi2 == LM_PHI2_MIRROR)
+            mirror_point(box, x, idx, k, fit->q, fit->q2, &fit->q2_value);
+        else if (o->phi2 == LM_PHI2_RANDOM)
+            draw_point(box, &rng, x, idx, k, fit->q2);
+        fit->draws++;
+        e = assemble_solve(fit, x, idx, k, S, rhs);
+        if (e || o->random_given || !(o->cond_limit > 0) ||
+            !(fit->info.cond_t > o->cond_limit) || fit->draws >= MAX_DRAWS)
+            break;
+    }
+    free(S);
+    free(rhs);
+    if (e == LM_NERR_SINGULAR) {
+        if (err && errlen)
+            snprintf(err, errlen, "the normal equations are singular (a zero pivot): "
+                     "%d points, %d unknowns; use the QR solver", (int)k, fit->n);
+        return e;
+    }
+    if (e) {
+        if (err && errlen)
+            snprintf(err, errlen, "out of memory solving a %d x %d system", fit->rows,
+                     fit->n);
+        return e;
+    }
+    if (fit->draws > 1)
+        fit->flags |= LM_NF_REDRAWN;
+    if (fit->info.rank < fit->n)
+        fit->flags |= LM_NF_UNDERDETERMINED;
+    for (size_t i = 0; i < k; i++) {
+        double p[3];
+        point_of(x, fit->dim, idx ? idx[i] : i, p);
+        double r = fabs(lm_nfit_phi(fit, p) - 1.0);
+        if (!(r <= fit->residual))
+            fit->residual = r;
+    }
+    return LM_NERR_NONE;
+}
+
+double lm_nfit_phi(const lm_nfit *f, const double x[3])
+{
+    double xi[3], s[LM_NMAX];
+    lm_nbox_to_logical(&f->box, x, xi);
+    lm_nbasis_eval(f->basis, f->dim, xi, s, NULL);
+    double v = 0;
+    for (int I = 0; I < f->n; I++)
+        v += f->phi[I] * s[I];
+    return v;
+}
+
+/* grad phi in logical coordinates. */
+static void grad_logical(const lm_nfit *f, const double x[3], double g[3])
+{
+    double xi[3], s[LM_NMAX], ds[LM_NMAX][3];
+    lm_nbox_to_logical(&f->box, x, xi);
+    lm_nbasis_eval(f->basis, f->dim, xi, s, ds);
+    g[0] = g[1] = g[2] = 0.0;
+    for (int I = 0; I < f->n; I++)
+        for (int a = 0; a < f->dim; a++)
+            g[a] += f->phi[I] * ds[I][a];
+}
+
+void lm_nfit_grad(const lm_nfit *f, const double x[3], double g[3])
+{
+    grad_logical(f, x, g);
+    for (int a = 0; a < f->dim; a++)
+        g[a] /= f->box.hi[a] - f->box.lo[a];
+}
+
+int lm_nfit_normal(const lm_nfit *f, const double x[3], double n[3])
+{
+    double gl[3], scale = 1.0;
+    grad_logical(f, x, gl);
+    for (int I = 0; I < f->n; I++)
+        if (fabs(f->phi[I]) > scale)
+            scale = fabs(f->phi[I]);
+    double g[3] = {0, 0, 0}, len = 0;
+    for (int a = 0; a < f->dim; a++) {
+        g[a] = gl[a] / (f->box.hi[a] - f->box.lo[a]);
+        len += g[a] * g[a];
+    }
+    len = sqrt(len);
+    double llen = sqrt(gl[0] * gl[0] + gl[1] * gl[1] + gl[2] * gl[2]);
+    n[0] = n[1] = n[2] = 0.0;
+    if (!(llen > 1e-10 * scale) || !isfinite(len))
+        return -1;
+    for (int a = 0; a < f->dim; a++)
+        n[a] = g[a] / len;
+    return 0;
+}

@@ -1,0 +1,295 @@
+/* normals_qr.c - least squares by Householder QR on [S] itself ([N] §6:
+ * "Using a QR-decomposition to solve the least squares problem leads to a
+ * better conditioned system"), with the minimum-norm solution for the
+ * underdetermined systems the quadratic basis meets ([N] §6, Fig 9(a-b)).
+ *
+ * Method (Golub & Van Loan, "Matrix Computations", §5.4, used for ideas
+ * only; nothing here is copied from LAPACK):
+ *  1. Householder QR with column pivoting (Businger-Golub): at step k the
+ *     remaining column of largest norm is moved to position k, so |R_kk|
+ *     does not increase and the numerical rank r is the number of
+ *     |R_kk| > LM_LSQ_RANK_TOL |R_00|.
+ *  2. r = n: back substitution, R x = Q^T b.
+ *  3. r < n (rank deficient, or fewer rows than unknowns): a complete
+ *     orthogonal decomposition. Householder reflections applied from the
+ *     right turn [R11 R12] into [T11 0]; then x = P Z^T (T11^-1 c1, 0), the
+ *     least-squares solution of least Euclidean norm.
+ * The condition number is computed from the singular values of R (one-sided
+ * Jacobi, exact to rounding for these small matrices), and reported for
+ * T = S^T S as the paper's tables do: cond(T) = cond(R)^2. */
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "normals.h"
+
+#define AT(M, i, j, ld) ((M)[(size_t)(i) * (size_t)(ld) + (size_t)(j)])
+
+/* ---- singular values ------------------------------------------------------ */
+
+/* One-sided Jacobi (Hestenes): rotate pairs of columns of the rows x cols
+ * matrix G (column-major here: column c at G + c*rows) until all are
+ * orthogonal; the column norms are then the singular values. */
+static void jacobi_columns(int rows, int cols, double *G)
+{
+    for (int sweep = 0; sweep < 80; sweep++) {
+        int rotated = 0;
+        for (int p = 0; p < cols - 1; p++)
+            for (int q = p + 1; q < cols; q++) {
+                double *cp = G + (size_t)p * rows, *cq = G + (size_t)q * rows;
+                double a = 0, b = 0, g = 0;
+                for (int i = 0; i < rows; i++) {
+                    a += cp[i] * cp[i];
+                    b += cq[i] * cq[i];
+                    g += cp[i] * cq[i];
+                }
+                if (g == 0.0 || fabs(g) <= DBL_EPSILON * sqrt(a * b))
+                    continue;
+                double zeta = (b - a) / (2.0 * g);
+                double t = (zeta >= 0 ? 1.0 : -1.0) /
+                           (fabs(zeta) + sqrt(1.0 + zeta * zeta));
+                double c = 1.0 / sqrt(1.0 + t * t), s = c * t;
+                for (int i = 0; i < rows; i++) {
+                    double u = cp[i], v = cq[i];
+                    cp[i] = c * u - s * v;
+                    cq[i] = s * u + c * v;
+                }
+                rotated = 1;
+            }
+        if (!rotated)
+            break;
+    }
+}
+
+static int descending(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? 1 : x > y ? -1 : 0;
+}
+
+lm_nerr lm_singular_values(int m, int n, const double *A, double *sv)
+{
+    /* orthogonalise the shorter side: columns of A if m >= n, else of A^T */
+    int rows = m >= n ? m : n, cols = m >= n ? n : m;
+    double *G = malloc(sizeof(double) * (size_t)rows * (size_t)(cols ? cols : 1));
+    if (!G)
+        return LM_NERR_MEMORY;
+    for (int c = 0; c < cols; c++)
+        for (int i = 0; i < rows; i++)
+            G[(size_t)c * rows + i] = m >= n ? AT(A, i, c, n) : AT(A, c, i, n);
+    jacobi_columns(rows, cols, G);
+    for (int c = 0; c < n; c++) {
+        double s = 0;
+        if (c < cols)
+            for (int i = 0; i < rows; i++)
+                s += G[(size_t)c * rows + i] * G[(size_t)c * rows + i];
+        sv[c] = sqrt(s);
+    }
+    free(G);
+    qsort(sv, (size_t)n, sizeof *sv, descending);
+    return LM_NERR_NONE;
+}
+
+/* cond(T) over all n singular values and over the first r. */
+static void condition(const double *sv, int n, int r, lm_lsq_info *info)
+{
+    double c = sv[n - 1] > 0 ? sv[0] / sv[n - 1] : INFINITY;
+    double cr = r > 0 && sv[r - 1] > 0 ? sv[0] / sv[r - 1] : INFINITY;
+    info->cond_t = c * c;
+    info->cond_t_rank = cr * cr;
+}
+
+/* ---- Householder reflections ------------------------------------------------ */
+
+/* The reflection H = I - tau w w^T with H u = alpha e_0 for the vector u
+ * (len entries, stride apart): w overwrites u (w_0 = u_0 - alpha), returns
+ * tau; tau = 0 when u is already alpha e_0. */
+static double householder(double *u, int len, int stride, double *alpha)
+{
+    double tail = 0;
+    for (int i = 1; i < len; i++)
+        tail += u[(size_t)i * stride] * u[(size_t)i * stride];
+    double u0 = u[0];
+    if (tail == 0.0) {
+        *alpha = u0;
+        return 0.0;
+    }
+    double norm = sqrt(u0 * u0 + tail);
+    *alpha = u0 >= 0 ? -norm : norm;
+    double w0 = u0 - *alpha;
+    u[0] = w0;
+    return 2.0 / (w0 * w0 + tail);
+}
+
+/* ---- QR with column pivoting ------------------------------------------------ */
+
+/* Step 1: A P = Q R in place (R in the upper triangle, the Householder
+ * vectors are not kept: Q^T is applied to b on the way). */
+static void qr_pivoted(int m, int n, double *A, double *b, int *perm,
+                       double *col)
+{
+    int kmax = m < n ? m : n;
+    for (int k = 0; k < kmax; k++) {
+        int best = k;
+        double bn = -1;
+        for (int j = k; j < n; j++) {
+            double s = 0;
+            for (int i = k; i < m; i++)
+                s += AT(A, i, j, n) * AT(A, i, j, n);
+            if (s > bn) {
+                bn = s;
+                best = j;
+            }
+        }
+        if (best != k) {
+            for (int i = 0; i < m; i++) {
+                double t = AT(A, i, k, n);
+                AT(A, i, k, n) = AT(A, i, best, n);
+                AT(A, i, best, n) = t;
+            }
+            int t = perm[k];
+            perm[k] = perm[best];
+            perm[best] = t;
+        }
+        double alpha;
+        double tau = householder(&AT(A, k, k, n), m - k, n, &alpha);
+        if (tau != 0.0) {
+            for (int i = k; i < m; i++)
+                col[i] = AT(A, i, k, n);
+            for (int j = k + 1; j < n; j++) {
+                double d = 0;
+                for (int i = k; i < m; i++)
+                    d += col[i] * AT(A, i, j, n);
+                d *= tau;
+                for (int i = k; i < m; i++)
+                    AT(A, i, j, n) -= d * col[i];
+            }
+            double d = 0;
+            for (int i = k; i < m; i++)
+                d += col[i] * b[i];
+            d *= tau;
+            for (int i = k; i < m; i++)
+                b[i] -= d * col[i];
+        }
+        AT(A, k, k, n) = alpha;
+        for (int i = k + 1; i < m; i++)
+            AT(A, i, k, n) = 0.0;
+    }
+}
+
+/* Back substitution with the r x r upper triangle of R (leading dim n). */
+static void back_substitute(int r, int n, const double *R, const double *c,
+                            double *y)
+{
+    for (int k = r - 1; k >= 0; k--) {
+        double s = c[k];
+        for (int j = k + 1; j < r; j++)
+            s -= AT(R, k, j, n) * y[j];
+        y[k] = s / AT(R, k, k, n);
+    }
+}
+
+/* Step 3: [R11 R12] Z^T = [T11 0] by reflections from the right, row by row
+ * from the last; W (r x (1 + n - r)) keeps each reflection's vector, tau
+ * its factor. Row k's reflection acts on columns k and r..n-1 of rows
+ * 0..k (rows below are already zero there). */
+static void cod_right(int r, int n, double *R, double *W, double *tau)
+{
+    int len = 1 + n - r;
+    for (int k = r - 1; k >= 0; k--) {
+        double *w = W + (size_t)k * len;
+        w[0] = AT(R, k, k, n);
+        for (int j = r; j < n; j++)
+            w[1 + j - r] = AT(R, k, j, n);
+        double alpha;
+        tau[k] = householder(w, len, 1, &alpha);
+        if (tau[k] == 0.0)
+            continue;
+        for (int i = 0; i <= k; i++) {
+            double d = w[0] * AT(R, i, k, n);
+            for (int j = r; j < n; j++)
+                d += w[1 + j - r] * AT(R, i, j, n);
+            d *= tau[k];
+            AT(R, i, k, n) -= d * w[0];
+            for (int j = r; j < n; j++)
+                AT(R, i, j, n) -= d * w[1 + j - r];
+        }
+    }
+}
+
+/* y <- Z^T y: the reflections in the order H_0, H_1, ..., H_{r-1}. */
+static void cod_apply(int r, int n, const double *W, const double *tau,
+                      double *y)
+{
+    int len = 1 + n - r;
+    for (int k = 0; k < r; k++) {
+        if (tau[k] == 0.0)
+            continue;
+        const double *w = W + (size_t)k * len;
+        double d = w[0] * y[k];
+        for (int j = r; j < n; j++)
+            d += w[1 + j - r] * y[j];
+        d *= tau[k];
+        y[k] -= d * w[0];
+        for (int j = r; j < n; j++)
+            y[j] -= d * w[1 + j - r];
+    }
+}
+
+lm_nerr lm_lsq_qr(int m, int n, double *A, double *b, double *x,
+                  lm_lsq_info *info)
+{
+    lm_lsq_info dummy;
+    if (!info)
+        info = &dummy;
+    memset(info, 0, sizeof *info);
+    if (m <= 0 || n <= 0)
+        return LM_NERR_INPUT;
+    int kmax = m < n ? m : n;
+    size_t len = (size_t)(1 + n);
+    int *perm = malloc(sizeof(int) * (size_t)n);
+    double *col = malloc(sizeof(double) * (size_t)(m > n ? m : n));
+    double *y = calloc((size_t)n, sizeof(double));
+    double *sv = malloc(sizeof(double) * (size_t)n);
+    double *W = malloc(sizeof(double) * (size_t)kmax * len);
+    double *tau = malloc(sizeof(double) * (size_t)kmax);
+    lm_nerr e = LM_NERR_NONE;
+    if (!perm || !col || !y || !sv || !W || !tau) {
+        e = LM_NERR_MEMORY;
+        goto out;
+    }
+    for (int j = 0; j < n; j++)
+        perm[j] = j;
+    qr_pivoted(m, n, A, b, perm, col);
+
+    int r = 0;
+    double r00 = fabs(AT(A, 0, 0, n));
+    while (r < kmax && r00 > 0 && fabs(AT(A, r, r, n)) > LM_LSQ_RANK_TOL * r00)
+        r++;
+    info->rank = r;
+    /* cond from R's leading kmax rows (the rest of R is zero) */
+    if ((e = lm_singular_values(kmax, n, A, sv)) != LM_NERR_NONE)
+        goto out;
+    condition(sv, n, r, info);
+
+    if (r == n) {
+        back_substitute(n, n, A, b, y);
+    } else if (r > 0) {
+        cod_right(r, n, A, W, tau);
+        back_substitute(r, n, A, b, y);
+        for (int j = r; j < n; j++)
+            y[j] = 0.0;
+        cod_apply(r, n, W, tau, y);
+    }
+    for (int j = 0; j < n; j++)
+        x[perm[j]] = y[j];
+out:
+    free(perm);
+    free(col);
+    free(y);
+    free(sv);
+    free(W);
+    free(tau);
+    return e;
+}
