@@ -1,9 +1,11 @@
 /* gallery_fs.c - the file chores of the gallery: paths, whole-file reads,
- * atomic writes (a temporary beside the target, then rename, so a reader -
- * git, a browser, the next run - never sees half a file), folder listings
- * in a fixed (sorted) order so that output does not depend on readdir. */
+ * atomic writes (lr_write_file: a reader - git, a browser, the next run -
+ * never sees half a file), folder listings in a fixed (sorted) order so
+ * that output does not depend on readdir. */
 #define _XOPEN_SOURCE 700     /* realpath */
 #include "gallery.h"
+
+#include "atomic_file.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -161,57 +163,9 @@ int g_mkdirs(const char *dir, char *err, size_t errlen)
     return rc;
 }
 
-static int make_parent(const char *path, char *err, size_t errlen)
-{
-    const char *slash = strrchr(path, '/');
-    if (!slash || slash == path)
-        return 0;
-    char *dir = g_fmt("%.*s", (int)(slash - path), path);
-    int rc = g_mkdirs(dir, err, errlen);
-    free(dir);
-    return rc;
-}
-
 int g_write_file(const char *path, const char *text, size_t len, char *err, size_t errlen)
 {
-    if (make_parent(path, err, errlen) != 0)
-        return -1;
-    char *tmp = g_fmt("%s.tmp.XXXXXX", path);
-    int fd = mkstemp(tmp);
-    if (fd < 0) {
-        set_err(err, errlen, "cannot write '%s': %s", path, strerror(errno));
-        free(tmp);
-        return -1;
-    }
-    /* mkstemp makes 0600; a page or a record should be readable like any file */
-    mode_t mask = umask(0);
-    umask(mask);
-    int rc = fchmod(fd, 0666 & ~mask);
-    size_t done = 0;
-    while (rc == 0 && done < len) {
-        ssize_t w = write(fd, text + done, len - done);
-        if (w < 0 && errno == EINTR)
-            continue;
-        if (w <= 0)
-            rc = -1;
-        else
-            done += (size_t)w;
-    }
-    int e = errno;
-    if (close(fd) != 0 && rc == 0) {
-        rc = -1;
-        e = errno;
-    }
-    if (rc == 0 && rename(tmp, path) != 0) {
-        rc = -1;
-        e = errno;
-    }
-    if (rc != 0) {
-        unlink(tmp);
-        set_err(err, errlen, "cannot write '%s': %s", path, strerror(e));
-    }
-    free(tmp);
-    return rc;
+    return lr_write_file(path, text, len, err, errlen);
 }
 
 int g_copy_file(const char *from, const char *to, char *err, size_t errlen)

@@ -281,6 +281,10 @@ static int visual_one(const g_options *o, const g_script *s, int *rewritten)
                 printf("visual: %s: baseline %s (%s; %s)\n", s->stem,
                        c.missing ? "created" : "rewritten", c.summary, words);
             }
+        } else if ((c.missing || c.hash == HASH_NO_BASELINE) && o->nsets) {
+            /* a changed scene (a negative control) must never become a baseline */
+            fprintf(stderr, "visual: %s: FAILED: no baseline %s (not written: this run "
+                    "has --set changes)\n", s->stem, c.missing ? baseline : hashfile);
         } else if (c.missing || c.hash == HASH_NO_BASELINE) {
             /* the candidate goes where the baseline belongs, to be reviewed */
             if (accept(wdir, baseline, hashfile, &c) == 0)

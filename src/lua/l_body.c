@@ -87,6 +87,8 @@ int la_sim_body(lua_State *L)
     if (lua_isnil(L, -1)) return luaL_error(L, "%s: 'material' is required", fn);
     lm_material *mat = luaL_testudata(L, -1, LA_MATERIAL);
     if (!mat) return luaL_error(L, "%s: 'material' must be a material (lamina.elastic{...})", fn);
+    if (mat->kind == LM_MEMBRANE)
+        return luaL_error(L, "%s: a membrane material goes into sim:membrane{...}", fn);
     int midx = lua_gettop(L);
 
     lua_getfield(L, 2, "region");
@@ -216,6 +218,19 @@ static int body_particles(lua_State *L)
     push_array(L, p->sxx, a, n, "sxx");
     push_array(L, p->syy, a, n, "syy");
     push_array(L, p->sxy, a, n, "sxy");
+    const lm_material *mat = sim->mats[bd->mat];
+    if (mat->kind == LM_GAS) {
+        /* p without the artificial viscosity q (design.md) */
+        lua_createtable(L, (int)n, 0);
+        for (size_t i = 0; i < n; i++) {
+            lua_pushnumber(L, (mat->gamma - 1) * p->rho[a + i] * p->e[a + i]);
+            lua_rawseti(L, -2, (lua_Integer)i + 1);
+        }
+        lua_setfield(L, -2, "p");
+        push_array(L, p->e, a, n, "e");
+        push_array(L, p->q, a, n, "q");
+    }
+    if (mat->kind == LM_LINEAR_FLUID) push_array(L, p->ev, a, n, "ev");
     if (bd->membrane) {
         /* normal = tangent turned +90 degrees */
         lua_createtable(L, (int)n, 0);

@@ -34,6 +34,8 @@ lamina_run *la_run(lua_State *L);
 void la_open_material(lua_State *L);
 int la_elastic(lua_State *L);
 int la_membrane_material(lua_State *L);
+int la_gas(lua_State *L);
+int la_linear_fluid(lua_State *L);
 lm_material *la_check_material(lua_State *L, int idx);
 
 /* l_region.c */
@@ -96,5 +98,8 @@ int la_plot(lua_State *L);
 /* l_report.c: lamina.report{name = value, ...} (contract); writes the
  * registry's "lamina.report.file" (set by `lamina run --report FILE`). */
 int la_report(lua_State *L);
+
+/* l_normals.c: sets lamina.normals and lamina.figure in the table on top */
+void la_open_normals(lua_State *L);
 
 #endif

@@ -72,6 +72,77 @@ int la_membrane_material(lua_State *L)
     return 1;
 }
 
+/* lamina.gas{rho, e | p, gamma = 1.4, mu = 0, av} ([F] §3.3): av = true is
+ * the paper's Sod artificial viscosity (c1 = c2 = 1, lambda = 0.75,
+ * g = sqrt(2) h); a table {c1, c2, lambda, g} overrides; off when absent. */
+int la_gas(lua_State *L)
+{
+    static const char *const keys[] = {"rho", "e", "p", "gamma", "mu", "av", NULL};
+    static const char *const avkeys[] = {"c1", "c2", "lambda", "g", NULL};
+    const char *fn = "lamina.gas";
+    la_check_keys(L, 1, fn, keys);
+    lm_material *m = push_material(L);
+    m->kind = LM_GAS;
+    m->rho = la_number(L, 1, fn, "rho");
+    m->gamma = la_opt_number(L, 1, fn, "gamma", 1.4);
+    m->mu = la_opt_number(L, 1, fn, "mu", 0);
+    int has_e = la_has(L, 1, "e"), has_p = la_has(L, 1, "p");
+    if (has_e == has_p) luaL_error(L, "%s: give exactly one of 'e' (specific internal "
+                                   "energy) and 'p' (pressure)", fn);
+    if (!(m->rho > 0)) luaL_error(L, "%s: rho must be positive (got %f)", fn, m->rho);
+    if (!(m->gamma > 1)) luaL_error(L, "%s: gamma must be greater than 1 (got %f)", fn, m->gamma);
+    if (has_e) {
+        m->e0 = la_number(L, 1, fn, "e");
+    } else {
+        double pr = la_number(L, 1, fn, "p");
+        if (!(pr >= 0)) luaL_error(L, "%s: p must be >= 0 (got %f)", fn, pr);
+        m->e0 = pr / ((m->gamma - 1) * m->rho);   /* [F] eq 22 */
+    }
+    m->av_c1 = m->av_c2 = 1;
+    m->av_lambda = 0.75;
+    m->av_g = 0;
+    int t = lua_getfield(L, 1, "av");
+    if (t == LUA_TBOOLEAN) {
+        m->av = lua_toboolean(L, -1);
+    } else if (t == LUA_TTABLE) {
+        la_check_keys(L, -1, "lamina.gas av", avkeys);
+        m->av = 1;
+        m->av_c1 = la_opt_number(L, -1, fn, "c1", 1);
+        m->av_c2 = la_opt_number(L, -1, fn, "c2", 1);
+        m->av_lambda = la_opt_number(L, -1, fn, "lambda", 0.75);
+        m->av_g = la_opt_number(L, -1, fn, "g", 0);
+    } else if (t != LUA_TNIL) {
+        luaL_error(L, "%s: 'av' must be true/false or {c1, c2, lambda, g}", fn);
+    }
+    lua_pop(L, 1);
+    validate(L, fn, m);
+    return 1;
+}
+
+/* lamina.linear_fluid{rho, beta}: p = -beta div U ([F] eq 26). */
+int la_linear_fluid(lua_State *L)
+{
+    static const char *const keys[] = {"rho", "beta", NULL};
+    const char *fn = "lamina.linear_fluid";
+    la_check_keys(L, 1, fn, keys);
+    lm_material *m = push_material(L);
+    m->kind = LM_LINEAR_FLUID;
+    m->rho = la_number(L, 1, fn, "rho");
+    m->beta = la_number(L, 1, fn, "beta");
+    validate(L, fn, m);
+    return 1;
+}
+
+static const char *kind_name(const lm_material *m)
+{
+    switch (m->kind) {
+    case LM_MEMBRANE: return "membrane";
+    case LM_GAS: return "gas";
+    case LM_LINEAR_FLUID: return "linear_fluid";
+    default: return "elastic";
+    }
+}
+
 static int mat_index(lua_State *L)
 {
     lm_material *m = la_check_material(L, 1);
@@ -80,8 +151,14 @@ static int mat_index(lua_State *L)
     else if (strcmp(k, "E") == 0) lua_pushnumber(L, m->E);
     else if (strcmp(k, "nu") == 0) lua_pushnumber(L, m->nu);
     else if (strcmp(k, "plane") == 0) lua_pushstring(L, planes[m->plane]);
-    else if (strcmp(k, "kind") == 0)
-        lua_pushstring(L, m->kind == LM_MEMBRANE ? "membrane" : "elastic");
+    else if (strcmp(k, "kind") == 0) lua_pushstring(L, kind_name(m));
+    else if (strcmp(k, "gamma") == 0 && m->kind == LM_GAS) lua_pushnumber(L, m->gamma);
+    else if (strcmp(k, "mu") == 0 && m->kind == LM_GAS) lua_pushnumber(L, m->mu);
+    else if (strcmp(k, "e") == 0 && m->kind == LM_GAS) lua_pushnumber(L, m->e0);
+    else if (strcmp(k, "p") == 0 && m->kind == LM_GAS)
+        lua_pushnumber(L, (m->gamma - 1) * m->rho * m->e0);
+    else if (strcmp(k, "av") == 0 && m->kind == LM_GAS) lua_pushboolean(L, m->av);
+    else if (strcmp(k, "beta") == 0 && m->kind == LM_LINEAR_FLUID) lua_pushnumber(L, m->beta);
     else if (strcmp(k, "thickness") == 0 && m->kind == LM_MEMBRANE) lua_pushnumber(L, m->thickness);
     else if (strcmp(k, "law") == 0 && m->kind == LM_MEMBRANE) lua_pushstring(L, laws[m->law]);
     else if (strcmp(k, "one_way") == 0 && m->kind == LM_MEMBRANE) lua_pushboolean(L, m->one_way);
@@ -96,8 +173,13 @@ static int mat_newindex(lua_State *L)
     lm_material *m = la_check_material(L, 1);
     const char *k = luaL_checkstring(L, 2);
     lm_material next = *m;
-    if (strcmp(k, "E") == 0) next.E = luaL_checknumber(L, 3);
-    else if (strcmp(k, "nu") == 0) next.nu = luaL_checknumber(L, 3);
+    if (strcmp(k, "mu") == 0 && m->kind == LM_GAS) next.mu = luaL_checknumber(L, 3);
+    else if (strcmp(k, "av") == 0 && m->kind == LM_GAS) next.av = lua_toboolean(L, 3);
+    else if (strcmp(k, "beta") == 0 && m->kind == LM_LINEAR_FLUID) next.beta = luaL_checknumber(L, 3);
+    else if (strcmp(k, "E") == 0 && (m->kind == LM_ELASTIC || m->kind == LM_MEMBRANE))
+        next.E = luaL_checknumber(L, 3);
+    else if (strcmp(k, "nu") == 0 && (m->kind == LM_ELASTIC || m->kind == LM_MEMBRANE))
+        next.nu = luaL_checknumber(L, 3);
     else if (strcmp(k, "plane") == 0 && m->kind == LM_ELASTIC)
         next.plane = (lm_plane)la_option(L, "material", "plane", luaL_checkstring(L, 3), planes);
     else if (strcmp(k, "one_way") == 0 && m->kind == LM_MEMBRANE)
@@ -105,8 +187,10 @@ static int mat_newindex(lua_State *L)
     else if (strcmp(k, "law") == 0 && m->kind == LM_MEMBRANE)
         next.law = (lm_law)la_option(L, "material", "law", luaL_checkstring(L, 3), laws);
     else
-        return luaL_error(L, "material field '%s' cannot be changed (changeable: E, nu, %s)", k,
-                          m->kind == LM_MEMBRANE ? "law, one_way" : "plane");
+        return luaL_error(L, "material field '%s' cannot be changed (changeable: %s)", k,
+                          m->kind == LM_MEMBRANE ? "E, nu, law, one_way"
+                          : m->kind == LM_GAS ? "mu, av"
+                          : m->kind == LM_LINEAR_FLUID ? "beta" : "E, nu, plane");
     validate(L, "material", &next);
     *m = next;
     lamina_run *run = la_run(L);
@@ -119,6 +203,15 @@ static int mat_newindex(lua_State *L)
 static int mat_tostring(lua_State *L)
 {
     lm_material *m = la_check_material(L, 1);
+    if (m->kind == LM_GAS) {
+        lua_pushfstring(L, "lamina.gas{rho = %f, e = %f, gamma = %f, mu = %f, av = %s}",
+                        m->rho, m->e0, m->gamma, m->mu, m->av ? "true" : "false");
+        return 1;
+    }
+    if (m->kind == LM_LINEAR_FLUID) {
+        lua_pushfstring(L, "lamina.linear_fluid{rho = %f, beta = %f}", m->rho, m->beta);
+        return 1;
+    }
     if (m->kind == LM_MEMBRANE) {
         lua_pushfstring(L, "lamina.membrane{rho = %f, E = %f, nu = %f, thickness = %f, "
                         "law = \"%s\", one_way = %s}", m->rho, m->E, m->nu, m->thickness,

@@ -108,7 +108,13 @@ int la_sim_membrane(lua_State *L)
     if (la_has(L, 2, "end_mass") && !(end_mass > 0))
         return luaL_error(L, "%s: end_mass must be positive (got %f)", fn, end_mass);
     double vx = 0, vy = 0;
-    if (la_has(L, 2, "velocity")) la_pair(L, 2, fn, "velocity", &vx, &vy);
+    int vidx = 0;
+    int vt = lua_getfield(L, 2, "velocity");
+    if (vt == LUA_TFUNCTION) vidx = lua_gettop(L);
+    else {
+        lua_pop(L, 1);
+        if (vt != LUA_TNIL) la_pair(L, 2, fn, "velocity", &vx, &vy);
+    }
     int sidx = 0;
     int st = lua_getfield(L, 2, "initial_strain");
     if (st == LUA_TNUMBER || st == LUA_TFUNCTION) sidx = lua_gettop(L);
@@ -138,7 +144,20 @@ int la_sim_membrane(lua_State *L)
             return luaL_error(L, "%s: %s initial strain %f at point %d must be > -1",
                               fn, what, e, k + 1);
         size_t q = sim->p.n;
-        if (lm_sim_add_particle(sim, bi, px[k], py[k], vx, vy, m, mat->rho) != LM_OK ||
+        double ux = vx, uy = vy;
+        if (vidx) {
+            lua_pushvalue(L, vidx);
+            lua_pushnumber(L, u);
+            lua_pushinteger(L, k + 1);
+            lua_call(L, 2, 2);
+            int ok1, ok2;
+            ux = lua_tonumberx(L, -2, &ok1);
+            uy = lua_tonumberx(L, -1, &ok2);
+            if (!ok1 || !ok2)
+                return luaL_error(L, "%s: the velocity function must return two numbers", fn);
+            lua_pop(L, 2);
+        }
+        if (lm_sim_add_particle(sim, bi, px[k], py[k], ux, uy, m, mat->rho) != LM_OK ||
             lm_sim_set_membrane_point(sim, q, ds, e) != LM_OK)
             return luaL_error(L, "%s: %s", fn, sim->err);
     }

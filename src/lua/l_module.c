@@ -51,6 +51,8 @@ static int luaopen_lamina(lua_State *L)
                                      {"sim", la_sim_new},
                                      {"elastic", la_elastic},
                                      {"membrane", la_membrane_material},
+                                     {"gas", la_gas},
+                                     {"linear_fluid", la_linear_fluid},
                                      {"disk", la_disk},
                                      {"rect", la_rect},
                                      {"polygon", la_polygon},
@@ -65,6 +67,7 @@ static int luaopen_lamina(lua_State *L)
     la_open_record(L);
     luaL_newlib(L, funcs);
     la_register_curves(L);
+    la_open_normals(L);         /* lamina.normals, lamina.figure */
     lua_pushstring(L, LAMINA_VERSION);
     lua_setfield(L, -2, "version");
     return 1;

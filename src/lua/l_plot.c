@@ -37,6 +37,14 @@ static const char *push_set_line(lua_State *L, const lamina_run *run)
     return lua_tostring(L, -1);
 }
 
+/* A number for a message, as a person writes it (10.5, 1, 1e-07): Lua's
+ * own %f would print 1.0. */
+static const char *num(char buf[32], double v)
+{
+    snprintf(buf, 32, "%.10g", v);
+    return buf;
+}
+
 /* An optional boolean field; nil is false. */
 static int opt_flag(lua_State *L, int idx, const char *fn, const char *key)
 {
@@ -56,9 +64,10 @@ static int opt_range(lua_State *L, int idx, const char *fn, const char *key, dou
     if (!la_has(L, idx, key))
         return 0;
     la_pair(L, idx, fn, key, a, b);
+    char sa[32], sb[32];
     if (!(isfinite(*a) && isfinite(*b) && *a < *b))
-        luaL_error(L, "%s: '%s' = {%g, %g} must be finite with the first below the "
-                   "second", fn, key, *a, *b);
+        luaL_error(L, "%s: '%s' = {%s, %s} must be finite with the first below the "
+                   "second", fn, key, num(sa, *a), num(sb, *b));
     return 1;
 }
 
@@ -170,15 +179,16 @@ static void read_series(lua_State *L, int sidx, int k, int aidx, lr_plot_series 
     s->y = buf + nx;
     s->dashed = opt_flag(L, sidx, sfn, "dashed");
     s->markers = opt_flag(L, sidx, sfn, "markers");
+    char sv[32];
     double c = la_opt_number(L, sidx, sfn, "color", k);
     if (!(c >= 1 && c <= 1e6) || c != floor(c))
         luaL_error(L, "%s: 'color' must be a whole number >= 1 (1 = blue, 2 = "
-                   "vermilion, ... 8 = black; got %g)", sfn, c);
+                   "vermilion, ... 8 = black; got %s)", sfn, num(sv, c));
     s->colour = (int)c - 1;
     s->width = la_opt_number(L, sidx, sfn, "width", 1.5);
     if (!(s->width > 0 && s->width <= 100))
-        luaL_error(L, "%s: 'width' must be a line width in pixels in (0, 100] (got %g)",
-                   sfn, s->width);
+        luaL_error(L, "%s: 'width' must be a line width in pixels in (0, 100] (got %s)",
+                   sfn, num(sv, s->width));
     lua_pop(L, 1);   /* sfn */
 }
 
@@ -192,10 +202,11 @@ int la_plot(lua_State *L)
     if (!file || !*file) return luaL_error(L, "%s: 'file' is required (a PNG path)", fn);
     double w = la_opt_number(L, 1, fn, "width", 800);
     double h = la_opt_number(L, 1, fn, "height", 500);
+    char sw[32], sh[32];
     if (!(w >= 16 && w <= 16384) || !(h >= 16 && h <= 16384) || w != floor(w) ||
         h != floor(h))
         return luaL_error(L, "%s: width and height must be whole numbers in [16, 16384] "
-                          "(got %g x %g)", fn, w, h);
+                          "(got %s x %s)", fn, num(sw, w), num(sh, h));
     p.width = (int)w;
     p.height = (int)h;
     p.title = la_opt_string(L, 1, fn, "title", NULL);

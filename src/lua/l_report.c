@@ -4,19 +4,17 @@
  * Every value is printed as "report: name = value". When `lamina run` was
  * given --report FILE (cmd_run.c stores the path in the registry), the whole
  * report so far is rewritten to FILE after every call, atomically (a
- * temporary beside it, then rename): a run that fails later still leaves
- * what it had measured, and a reader never sees half a file.
+ * lr_write_file): a run that fails later still leaves what it had
+ * measured, and a reader never sees half a file.
  *
  * Order is deterministic: names within one call are sorted, calls append,
  * and reporting a name again replaces its value in place. */
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
+#include "atomic_file.h"
 #include "l_internal.h"
 
 #define REPORT_KEY "lamina.report"          /* registry: array of entries */
@@ -132,8 +130,8 @@ static void add_scalar_text(lua_State *L, luaL_Buffer *b, int idx)
 }
 
 /* "report: name = value unit  (paper x unit, tol t)" on stdout. The
- * buffer lives on the stack below the fields it reads, so fields are
- * fetched into locals' positions first. */
+ * fields are pushed first: a luaL_Buffer must stay on top of the stack
+ * while it is in use. */
 static void print_entry(lua_State *L, int e)
 {
     e = lua_absindex(L, e);
@@ -249,53 +247,8 @@ static void push_json(lua_State *L, int report)
     }
     luaL_addstring(&b, n ? "\n  ]\n}\n" : "]\n}\n");
     luaL_pushresult(&b);
-    lua_replace(L, base + 1);
+    lua_copy(L, -1, base + 1);   /* (lua_replace would drop it when n = 0) */
     lua_settop(L, base + 1);
-}
-
-/* mkdir -p of path's folder, as frames do: outputs name their own place. */
-static int make_parents(char *path)
-{
-    for (char *p = path + 1; *p; p++) {
-        if (*p != '/')
-            continue;
-        *p = '\0';
-        int rc = mkdir(path, 0777);
-        int e = errno;
-        *p = '/';
-        if (rc != 0 && e != EEXIST)
-            return -1;
-    }
-    return 0;
-}
-
-/* Writes text to path through a temporary and rename(2); NULL on success,
- * else why not (strerror's text). Leaves a scratch userdata on the stack. */
-static const char *write_atomic(lua_State *L, const char *path, const char *text, size_t len)
-{
-    char *tmp = (char *)lua_newuserdatauv(L, strlen(path) + 12, 0);
-    strcpy(tmp, path);
-    if (make_parents(tmp) != 0)
-        return strerror(errno);
-    strcat(tmp, ".tmp.XXXXXX");
-    int fd = mkstemp(tmp);
-    if (fd < 0)
-        return strerror(errno);
-    mode_t mask = umask(0);
-    umask(mask);
-    const char *why = NULL;
-    FILE *f = fdopen(fd, "w");
-    if (!f || fchmod(fd, 0666 & ~mask) != 0)
-        why = strerror(errno);
-    if (!why && fwrite(text, 1, len, f) != len)
-        why = strerror(errno);
-    if (f ? fclose(f) != 0 : close(fd) != 0)
-        why = why ? why : strerror(errno);
-    if (!why && rename(tmp, path) != 0)
-        why = strerror(errno);
-    if (why)
-        unlink(tmp);
-    return why;
 }
 
 static void write_report(lua_State *L, int report)
@@ -308,10 +261,10 @@ static void write_report(lua_State *L, int report)
     push_json(L, report);
     size_t len;
     const char *text = lua_tolstring(L, -1, &len);
-    const char *why = write_atomic(L, path, text, len);
-    if (why)
-        luaL_error(L, "%s: cannot write '%s': %s", FN, path, why);
-    lua_pop(L, 3);
+    char err[1024];
+    if (lr_write_file(path, text, len, err, sizeof err) != 0)
+        luaL_error(L, "%s: %s", FN, err);
+    lua_pop(L, 2);
 }
 
 /* ---- lamina.report ---------------------------------------------------- */

@@ -23,6 +23,14 @@ lm_energy lm_sim_energy(const lm_sim *sim)
         case LM_MEMBRANE:
             e.strain += lm_membrane_energy(mat, V, p->et[q]);
             break;
+        case LM_GAS:
+            e.internal += p->m[q] * p->e[q];
+            break;
+        case LM_LINEAR_FLUID:
+            /* stored energy of p = -beta div U: 1/2 beta ev^2 per unit of
+             * the undeformed volume */
+            e.strain += 0.5 * mat->beta * p->ev[q] * p->ev[q] * V / (1 + p->ev[q]);
+            break;
         }
         gx += p->m[q] * (sim->def.gx * p->x[q] + sim->def.gy * p->y[q]);
     }
@@ -102,7 +110,7 @@ uint64_t lm_sim_hash(const lm_sim *sim)
     const lm_particles *p = &sim->p;
     uint64_t h = 14695981039346656037ull;
     const double *f[] = {p->x, p->y, p->vx, p->vy, p->rho,
-                         p->sxx, p->syy, p->sxy, p->szz, p->et};
+                         p->sxx, p->syy, p->sxy, p->szz, p->et, p->e, p->ev};
     for (size_t k = 0; k < sizeof f / sizeof f[0]; k++)
         if (p->n) h = fnv1a(h, f[k], p->n * sizeof(double));
     h = fnv1a(h, &sim->step, sizeof sim->step);

@@ -32,7 +32,12 @@ enum { LM_LEFT = 0, LM_RIGHT = 1, LM_BOTTOM = 2, LM_TOP = 3 };
 
 /* ---- materials (material.c, material_elastic.c) ---------------------- */
 
-typedef enum lm_kind { LM_ELASTIC = 1, LM_MEMBRANE = 2 } lm_kind;
+typedef enum lm_kind {
+    LM_ELASTIC = 1,
+    LM_MEMBRANE = 2,
+    LM_GAS = 3,            /* compressible viscous gas, [F] §3.3 */
+    LM_LINEAR_FLUID = 4    /* p = -beta div U, the piston problem, [F] eq 26 */
+} lm_kind;
 typedef enum lm_plane { LM_PLANE_STRAIN = 0, LM_PLANE_STRESS = 1 } lm_plane;
 /* Membrane laws ([T] eqs 5.9, 5.15): a string/wire carries only the
  * tangential stress; a plane-stress membrane also sigma_z = nu sigma_t. */
@@ -46,6 +51,11 @@ typedef struct lm_material {
     double thickness;      /* membrane: mass per length is rho * thickness */
     lm_law law;            /* membrane */
     int one_way;           /* membrane: no stress in compression ([M] §3.2) */
+    double gamma, mu;      /* gas: ratio of specific heats, shear viscosity */
+    double e0;             /* gas: initial specific internal energy */
+    int av;                /* gas: Wilkins artificial viscosity on ([F] eq 24) */
+    double av_c1, av_c2, av_lambda, av_g;   /* its constants; g <= 0: sqrt(2) h */
+    double beta;           /* linear fluid: bulk modulus */
 } lm_material;
 
 /* Fastest wave speed of the material (physics.md §5), for the Courant check. */
@@ -79,6 +89,10 @@ typedef struct lm_particles {
      * length of membrane Delta s a point stands for, and the unit tangent
      * of the step (the normal is the tangent turned +90 degrees). */
     double *et, *ds, *tx, *ty;
+    /* Gas: specific internal energy e and the artificial viscosity q of the
+     * step (pressure p = (gamma - 1) rho e is reported without q). Linear
+     * fluid: ev, the accumulated volumetric strain div U. */
+    double *e, *q, *ev;
     int *body;             /* owning body index */
     int *mat;              /* material index into sim->mats */
     /* Shape functions of the step, evaluated once at x^k ([F] eqs 13-14):

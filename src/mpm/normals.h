@@ -129,15 +129,11 @@ lm_nerr lm_singular_values(int m, int n, const double *A, double *sv);
 
 /* ---- one element: the fit (normals_fit.c) -------------------------------- */
 
-/* The extra point that keeps phi = 1 from being a maximum ([N] §8):
- * RANDOM is the paper's, a second random point with phi = 2; it lands on
- * the phi = 0 point's side half the time, and then the least squares
- * cannot honour both and the fit degrades. MIRROR is lamina's: the phi = 0
- * point q reflected through the centroid c of the element's points,
- * q2 = c + t (c - q), with the largest t <= 1 that keeps q2 in the element,
- * and phi = 1 + t there, which a straight membrane through c satisfies
- * exactly (phi is then linear across it). */
-enum { LM_PHI2_NONE = 0, LM_PHI2_RANDOM = 1, LM_PHI2_MIRROR = 2 };
+/* The extra point that keeps phi = 1 from being a maximum ([N] §8): a
+ * second random point with phi = 2. It lands on the phi = 0 point's side
+ * about half the time; the least squares then cannot honour both, and the
+ * fit degrades (measured in docs/normals.md). Off by default. */
+enum { LM_PHI2_NONE = 0, LM_PHI2_RANDOM = 1 };
 
 typedef struct lm_nfit_opts {
     lm_nbasis basis;            /* LINEAR or QUADRATIC */
@@ -164,8 +160,7 @@ typedef struct lm_nfit {
     double phi[LM_NMAX];        /* phi_I at the basis nodes */
     double q[3];                /* the phi = 0 point */
     int has_q2;
-    double q2[3];               /* the extra point (LM_PHI2_*) */
-    double q2_value;            /* phi there: 2, or 1 + t for MIRROR */
+    double q2[3];               /* the phi = 2 point */
     int rows;                   /* equations: points + 1 (+ 1) */
     int npoints, nunique;       /* membrane points, distinct ones */
     lm_lsq_info info;

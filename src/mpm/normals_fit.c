@@ -150,29 +150,6 @@ static void draw_point(const lm_nbox *b, lm_nrng *rng, const double *const x[3],
     }
 }
 
-/* Step 4, lamina's variant: q mirrored through the points' centroid. */
-static void mirror_point(const lm_nbox *b, const double *const x[3],
-                         const size_t *idx, size_t k, const double q[3],
-                         double q2[3], double *value)
-{
-    double c[3] = {0, 0, 0}, t = 1.0;
-    for (size_t i = 0; i < k; i++)
-        for (int a = 0; a < b->dim; a++)
-            c[a] += x[a][idx ? idx[i] : i] / (double)k;
-    for (int a = 0; a < b->dim; a++) {
-        double d = c[a] - q[a];
-        if (c[a] + t * d > b->hi[a])
-            t = (b->hi[a] - c[a]) / d;
-        if (c[a] + t * d < b->lo[a])
-            t = (b->lo[a] - c[a]) / d;
-    }
-    if (!(t >= 0))
-        t = 0;
-    for (int a = 0; a < 3; a++)
-        q2[a] = a < b->dim ? c[a] + t * (c[a] - q[a]) : 0.0;
-    *value = 1.0 + t;
-}
-
 /* Step 2: one row of [S]. */
 static void row(const lm_nfit *f, const double p[3], double *s)
 {
@@ -197,7 +174,7 @@ static lm_nerr assemble_solve(lm_nfit *f, const double *const x[3],
     rhs[k] = 0.0;
     if (f->has_q2) {
         row(f, f->q2, S + (k + 1) * (size_t)n);
-        rhs[k + 1] = f->q2_value;
+        rhs[k + 1] = 2.0;
     }
     if (f->solver == LM_NS_NORMAL)
         return lm_lsq_normal(f->rows, n, S, rhs, f->phi, &f->info);
@@ -243,7 +220,6 @@ lm_nerr lm_nfit_element(const lm_nbox *box, const double *const x[3],
     if (fit->nunique < fit->npoints)
         fit->flags |= LM_NF_COINCIDENT;
     fit->has_q2 = o->phi2 != LM_PHI2_NONE || o->phi2_given;
-    fit->q2_value = 2.0;
     fit->rows = (int)k + 1 + fit->has_q2;
 
     double *S = malloc(sizeof(double) * (size_t)fit->rows * (size_t)fit->n);
@@ -264,8 +240,6 @@ lm_nerr lm_nfit_element(const lm_nbox *box, const double *const x[3],
             draw_point(box, &rng, x, idx, k, fit->q);
         if (o->phi2_given)
             memcpy(fit->q2, o->phi2_point, sizeof fit->q2);
-        else if (o->phi2 == LM_PHI2_MIRROR)
-            mirror_point(box, x, idx, k, fit->q, fit->q2, &fit->q2_value);
         else if (o->phi2 == LM_PHI2_RANDOM)
             draw_point(box, &rng, x, idx, k, fit->q2);
         fit->draws++;

@@ -197,20 +197,38 @@ lm_status lm_sim_add_particle(lm_sim *sim, int body, double x, double y,
     p->rho[q] = rho;
     p->sxx[q] = p->syy[q] = p->sxy[q] = p->szz[q] = 0;
     p->et[q] = p->ds[q] = p->tx[q] = p->ty[q] = 0;
+    p->e[q] = p->q[q] = p->ev[q] = 0;
     p->body[q] = body;
     p->mat[q] = sim->bodies[body].mat;
     p->node[q] = 0;
+    const lm_material *mat = sim->mats[p->mat[q]];
+    if (mat->kind == LM_GAS) {
+        /* the initial pressure as an isotropic stress, [F] eq 21 at rest */
+        p->e[q] = mat->e0;
+        double pr = (mat->gamma - 1) * rho * mat->e0;
+        p->sxx[q] = p->syy[q] = p->szz[q] = -pr;
+    }
     sim->bodies[body].count++;
     sim->pe_ref += mass * (sim->def.gx * x + sim->def.gy * y);
     return LM_OK;
 }
 
-/* physics.md §5: dt_c = h / c_max; the number is dt / dt_c. */
+/* physics.md §5: dt_c = h / c_max; the number is dt / dt_c. A gas's
+ * speed is its particles' sound speed plus their speed, at this moment. */
 double lm_sim_courant(const lm_sim *sim, double *c_max)
 {
     double c = 0;
     for (int b = 0; b < sim->nbodies; b++) {
-        double cb = lm_material_wave_speed(sim->mats[sim->bodies[b].mat]);
+        const lm_body *bd = &sim->bodies[b];
+        const lm_material *mat = sim->mats[bd->mat];
+        double cb = lm_material_wave_speed(mat);
+        if (mat->kind == LM_GAS) {
+            for (size_t q = bd->first; q < bd->first + bd->count; q++) {
+                double cq = lm_gas_sound_speed(mat, sim->p.e[q]) +
+                            hypot(sim->p.vx[q], sim->p.vy[q]);
+                if (cq > cb) cb = cq;
+            }
+        }
         if (cb > c) c = cb;
     }
     if (c_max) *c_max = c;

@@ -138,6 +138,43 @@ void lm_step_strain_velocity(lm_sim *sim)
     lm_grid_apply_bc(g, g->vx, g->vy);
 }
 
+/* L = sum_i v_i (x) G_ip (L = dv/dx) at particle q. */
+static void velocity_gradient(const lm_grid *g, const lm_particles *p, size_t q, double L[4])
+{
+    double Lxx = 0, Lxy = 0, Lyx = 0, Lyy = 0;
+    for (int k = 0; k < 4; k++) {
+        int i = corner(g, p->node[q], k);
+        double gx = p->Gx[4 * q + k], gy = p->Gy[4 * q + k];
+        Lxx += g->vx[i] * gx;
+        Lxy += g->vx[i] * gy;
+        Lyx += g->vy[i] * gx;
+        Lyy += g->vy[i] * gy;
+    }
+    L[0] = Lxx; L[1] = Lxy; L[2] = Lyx; L[3] = Lyy;
+}
+
+/* The artificial viscosity of [F] eq 24 needs, before any gas point is
+ * updated, the largest |div v| and the largest sound speed over the gas of
+ * the step. Returns 0 when no gas uses it. */
+static int gas_maxima(lm_sim *sim, double *max_div, double *c_max)
+{
+    const lm_particles *p = &sim->p;
+    int any = 0;
+    *max_div = *c_max = 0;
+    for (size_t q = 0; q < p->n; q++) {
+        const lm_material *mat = sim->mats[p->mat[q]];
+        if (mat->kind != LM_GAS || !mat->av) continue;
+        double L[4];
+        velocity_gradient(&sim->grid, p, q, L);
+        double div = fabs(L[0] + L[3]);
+        double c = lm_gas_sound_speed(mat, p->e[q]);
+        if (div > *max_div) *max_div = div;
+        if (c > *c_max) *c_max = c;
+        any = 1;
+    }
+    return any;
+}
+
 /* Steps 6-8: L = sum_i v_i (x) G_ip; strain increment (dt/2)(L + L^T) and
  * spin (1/2)(L - L^T); density rho/(1 + tr de) ([F] eq 16); stress by the
  * particle's constitutive law. */
@@ -146,20 +183,16 @@ void lm_step_stress(lm_sim *sim)
     const lm_grid *g = &sim->grid;
     lm_particles *p = &sim->p;
     double dt = sim->def.dt;
+    double h = fmin(g->hx, g->hy);
     lm_membrane_tangents(sim);      /* the current tangent, at x^{k+1} */
+    double max_div = 0, c_max = 0;
+    gas_maxima(sim, &max_div, &c_max);
     for (size_t q = 0; q < p->n; q++) {
-        double Lxx = 0, Lxy = 0, Lyx = 0, Lyy = 0;
-        for (int k = 0; k < 4; k++) {
-            int i = corner(g, p->node[q], k);
-            double gx = p->Gx[4 * q + k], gy = p->Gy[4 * q + k];
-            Lxx += g->vx[i] * gx;
-            Lxy += g->vx[i] * gy;
-            Lyx += g->vy[i] * gx;
-            Lyy += g->vy[i] * gy;
-        }
-        double dexx = dt * Lxx, deyy = dt * Lyy;
-        double dexy = 0.5 * dt * (Lxy + Lyx);
-        double w = 0.5 * (Lxy - Lyx);
+        double L[4];
+        velocity_gradient(g, p, q, L);
+        double dexx = dt * L[0], deyy = dt * L[3];
+        double dexy = 0.5 * dt * (L[1] + L[2]);
+        double w = 0.5 * (L[1] - L[2]);
         const lm_material *mat = sim->mats[p->mat[q]];
         switch (mat->kind) {
         case LM_ELASTIC:
@@ -171,6 +204,17 @@ void lm_step_stress(lm_sim *sim)
             lm_membrane_update(mat, dexx, deyy, dexy, p->tx[q], p->ty[q], p->m[q],
                                p->ds[q], &p->et[q], &p->rho[q], &p->sxx[q],
                                &p->syy[q], &p->sxy[q], &p->szz[q]);
+            break;
+        case LM_GAS:
+            p->rho[q] /= 1 + dexx + deyy;
+            p->q[q] = lm_gas_av(mat, p->rho[q], L[0] + L[3], max_div, c_max, h);
+            lm_gas_update(mat, dexx, deyy, dexy, dt, p->rho[q], p->q[q], &p->e[q],
+                          &p->sxx[q], &p->syy[q], &p->sxy[q], &p->szz[q]);
+            break;
+        case LM_LINEAR_FLUID:
+            p->rho[q] /= 1 + dexx + deyy;
+            lm_linear_fluid_update(mat, dexx, deyy, &p->ev[q], &p->sxx[q], &p->syy[q],
+                                   &p->sxy[q], &p->szz[q]);
             break;
         }
     }

@@ -50,4 +50,19 @@ double lm_membrane_energy(const lm_material *mat, double V, double et);
  * current tangents (before the first step, once bodies are complete). */
 void lm_membrane_prepare(lm_sim *sim);
 
+/* material_gas.c: [F] §3.3 eqs 21-25, [F] eq 26. */
+double lm_gas_sound_speed(const lm_material *mat, double e);
+/* Wilkins artificial viscosity ([F] eqs 24-25, as reconstructed in
+ * material_gas.c), zero unless the point is in compression. */
+double lm_gas_av(const lm_material *mat, double rho, double div, double max_div,
+                 double c_max, double h);
+/* sigma = 2 mu edot - 2/3 mu tr(edot) I - (p + q) I with p from e^k and
+ * rho^{k+1}; then e += sigma:de / rho ([F] eq 23). */
+void lm_gas_update(const lm_material *mat, double dexx, double deyy, double dexy,
+                   double dt, double rho, double q, double *e, double *sxx, double *syy,
+                   double *sxy, double *szz);
+/* p = -beta div U: ev += tr de, sigma = -p I. */
+void lm_linear_fluid_update(const lm_material *mat, double dexx, double deyy, double *ev,
+                            double *sxx, double *syy, double *sxy, double *szz);
+
 #endif

@@ -11,7 +11,6 @@
 
 #include "render.h"
 
-#include <limits.h>
 #include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>

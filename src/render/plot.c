@@ -346,7 +346,7 @@ static int lay_out(const lr_plot *p, layout *L, meter *m)
            (has_text(p->xlabel) ? 1.5 * L->font : 0.0);
     if (L->b - L->t < MIN_AREA_PX)
         return -1;
-    axis_ticks(&L->y, L->b - L->t, fmax(40.0, 3.2 * L->font), 0, m, L->font);
+    axis_ticks(&L->y, L->b - L->t, fmax(50.0, 4.0 * L->font), 0, m, L->font);
     L->l = L->pad + max_width(&L->y) + L->tick_len + 0.4 * L->font;
     L->r = W - L->pad;
     for (int pass = 0; pass < 2; pass++) {

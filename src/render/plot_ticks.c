@@ -99,7 +99,19 @@ void lr_plot_tick_labels(const double *ticks, int n, double step,
     for (int i = 0; i < n; i++)
         if (isfinite(ticks[i]))
             maxabs = fmax(maxabs, fabs(ticks[i]));
-    int se = step > 0 && isfinite(step) ? decade(step) : 0;
+    /* the place of the step's last significant digit: 10^-3 for 0.005,
+     * and also for a step of 0.0025 given by a caller (1 digit more) */
+    int se = 0;
+    if (step > 0 && isfinite(step)) {
+        se = decade(step);
+        for (int extra = 0; extra <= 3; extra++) {
+            double v = step / pow(10.0, se - extra);
+            if (fabs(v - round(v)) < 1e-6 * v) {
+                se -= extra;
+                break;
+            }
+        }
+    }
     int sci = maxabs >= 1e5 || (step > 0 && step < 1e-4);
     for (int i = 0; i < n; i++) {
         char *s = labels[i];

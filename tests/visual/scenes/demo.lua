@@ -15,7 +15,8 @@
 -- with tests/visual/baselines/scenes/demo.png.
 local out       = lamina.param("out", "out/demo")
 local t_end     = lamina.param("t_end", 0.7)
-local tracer_dx = lamina.param("tracer_dx", 0)   -- the negative control's change
+local tracer_dx = lamina.param("tracer_dx", 0)   -- negative control: a changed simulation
+local title     = lamina.param("title", "two disks meet")   -- ... a changed drawing
 
 local cell = 0.05
 local sim = lamina.sim{ domain = {0, 0, 1, 1}, cell = cell, dt = 1e-3 }
@@ -34,7 +35,7 @@ local worst = 0
 sim:every(0.1, function(s)
   worst = math.max(worst, math.abs(s:energy().total - e0) / e0)
   s:frame{ file = string.format("%s/frame_%04d.png", out, s.step), width = 320, height = 320,
-           title = "two disks meet" }
+           title = title }
 end)
 sim:run{ t_end = t_end }
 

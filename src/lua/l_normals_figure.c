@@ -1,0 +1,794 @@
+/* l_normals_figure.c - lamina.figure{...}: a picture of points, normals
+ * and phi, panel by panel, as the normals paper draws them (Figs 3-11):
+ * phi contours (phi = 1 bold, phi = 0 through the random point), membrane
+ * points as open circles, the random point as an asterisk, computed
+ * normals solid and exact normals dashed, the element outline; 3D panels
+ * show the cube, points and arrows in an orthographic projection.
+ *
+ *   local fig = lamina.figure{ width = 800, height = 800, panels = {2, 2},
+ *                              title = "..." }
+ *   fig:panel{ index = 1, window = {0, 0, 1, 1}, title = "(a)" }
+ *   fig:normals{ result = r, points = pts, exact = exact_normals }
+ *   fig:write("out/fig.png")
+ *
+ * Bindings only: the drawing is src/render/layers.h. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "l_internal.h"
+#include "l_normals.h"
+#include "layers.h"
+#include "render.h"
+
+#define MAX_PANELS 36
+
+typedef struct la_panel {
+    int set;                    /* a window or box was given */
+    lr_view view;
+    double px, py, pw, ph;      /* the panel's cell, pixels */
+    double font;
+    double lo[3], hi[3];        /* its world window (2D) or box (3D) */
+    int dim;
+    int captions;               /* caption lines drawn so far */
+} la_panel;
+
+typedef struct la_figure {
+    lr_canvas *canvas;
+    int width, height, cols, rows, cur;
+    la_panel panels[MAX_PANELS];
+} la_figure;
+
+static const lr_rgba BLACK = {0, 0, 0, 1};
+static const lr_rgba WHITE = {1, 1, 1, 1};
+static const lr_rgba GREY = {0.62, 0.62, 0.62, 1};
+static const lr_rgba TEXT = {0.15, 0.15, 0.15, 1};
+/* Okabe & Ito: blue for computed normals, vermilion for exact ones */
+static const lr_rgba BLUE = {0x00 / 255.0, 0x72 / 255.0, 0xB2 / 255.0, 1};
+static const lr_rgba VERMILION = {0xD5 / 255.0, 0x5E / 255.0, 0x00 / 255.0, 1};
+static const lr_rgba GREEN = {0x00 / 255.0, 0x9E / 255.0, 0x73 / 255.0, 1};
+
+/* ---- arguments ---------------------------------------------------------- */
+
+static la_figure *check_fig(lua_State *L)
+{
+    la_figure *f = luaL_checkudata(L, 1, LA_FIGURE);
+    if (!f->canvas)
+        luaL_error(L, "figure: already freed");
+    return f;
+}
+
+static la_panel *current(lua_State *L, la_figure *f, const char *fn)
+{
+    la_panel *p = &f->panels[f->cur];
+    if (!p->set)
+        luaL_error(L, "%s: panel %d has no window yet: call fig:panel{window = "
+                   "{x0, y0, x1, y1}} (or box = {...} for 3D) first", fn, f->cur + 1);
+    return p;
+}
+
+static lr_rgba read_colour(lua_State *L, int idx, const char *fn, const char *key,
+                           lr_rgba def)
+{
+    int t = lua_getfield(L, idx, key);
+    lr_rgba c = def;
+    if (t == LUA_TSTRING) {
+        static const char *const names[] = {"black", "grey", "computed", "exact",
+                                            "green", "white", NULL};
+        const lr_rgba cols[] = {BLACK, GREY, BLUE, VERMILION, GREEN, WHITE};
+        c = cols[la_option(L, fn, key, lua_tostring(L, -1), names)];
+    } else if (t == LUA_TTABLE) {
+        int n = (int)lua_rawlen(L, -1);
+        if (n != 3 && n != 4)
+            luaL_error(L, "%s: '%s' must be a name or {r, g, b[, a]} in 0..1", fn, key);
+        double v[4] = {0, 0, 0, 1};
+        for (int i = 0; i < n; i++) {
+            lua_rawgeti(L, -1, i + 1);
+            v[i] = luaL_checknumber(L, -1);
+            lua_pop(L, 1);
+        }
+        c = (lr_rgba){v[0], v[1], v[2], v[3]};
+    } else if (t != LUA_TNIL) {
+        luaL_error(L, "%s: '%s' must be a colour name or {r, g, b}", fn, key);
+    }
+    lua_pop(L, 1);
+    return c;
+}
+
+/* A list of points {{x, y[, z]}, ...} at key into SoA arrays kept alive in
+ * a userdata left on the stack. Returns the count; dim from the panel. */
+static size_t read_list(lua_State *L, int idx, const char *fn, const char *key,
+                        int dim, double *p[3])
+{
+    lua_getfield(L, idx, key);
+    if (!lua_istable(L, -1))
+        luaL_error(L, "%s: '%s' must be a list of {x, y%s}", fn, key,
+                   dim == 3 ? ", z" : "");
+    size_t n = lua_rawlen(L, -1);
+    double *buf = lua_newuserdatauv(L, sizeof(double) * 3 * (n ? n : 1), 0);
+    lua_insert(L, -2);
+    for (int a = 0; a < 3; a++)
+        p[a] = buf + (size_t)a * n;
+    for (size_t i = 0; i < n; i++) {
+        lua_rawgeti(L, -1, (lua_Integer)i + 1);
+        int len = lua_istable(L, -1) ? (int)lua_rawlen(L, -1) : 0;
+        if (len < dim)
+            luaL_error(L, "%s: %s[%d] must be {x, y%s}", fn, key, (int)i + 1,
+                       dim == 3 ? ", z" : "");
+        for (int a = 0; a < 3; a++) {
+            p[a][i] = 0.0;
+            if (a < dim) {
+                lua_rawgeti(L, -1, a + 1);
+                p[a][i] = luaL_checknumber(L, -1);
+                lua_pop(L, 1);
+            }
+        }
+        lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+    return n;
+}
+
+/* {x0, y0, x1, y1} or {x0, y0, z0, x1, y1, z1} at key; returns dim or 0 if
+ * absent. */
+static int read_box(lua_State *L, int idx, const char *fn, const char *key,
+                    double lo[3], double hi[3])
+{
+    int t = lua_getfield(L, idx, key);
+    if (t == LUA_TNIL) {
+        lua_pop(L, 1);
+        return 0;
+    }
+    int len = t == LUA_TTABLE ? (int)lua_rawlen(L, -1) : 0;
+    if (len != 4 && len != 6)
+        luaL_error(L, "%s: '%s' must be {x0, y0, x1, y1} or {x0, y0, z0, x1, y1, z1}",
+                   fn, key);
+    int dim = len / 2;
+    double v[6];
+    for (int i = 0; i < len; i++) {
+        lua_rawgeti(L, -1, i + 1);
+        v[i] = luaL_checknumber(L, -1);
+        lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+    lo[2] = hi[2] = 0;
+    for (int a = 0; a < dim; a++) {
+        lo[a] = v[a];
+        hi[a] = v[dim + a];
+        if (!(hi[a] > lo[a]) || !isfinite(lo[a]) || !isfinite(hi[a]))
+            luaL_error(L, "%s: '%s' is empty along axis %d", fn, key, a + 1);
+    }
+    return dim;
+}
+
+/* ---- lamina.figure{...} ------------------------------------------------- */
+
+int la_figure_new(lua_State *L)
+{
+    static const char *const keys[] = {"width", "height", "panels", "title", NULL};
+    const char *fn = "lamina.figure";
+    if (lua_isnoneornil(L, 1))
+        lua_newtable(L);
+    la_check_keys(L, 1, fn, keys);
+    double w = la_opt_number(L, 1, fn, "width", 800);
+    double h = la_opt_number(L, 1, fn, "height", 800);
+    if (!(w >= 16 && w <= 16384) || !(h >= 16 && h <= 16384) || w != floor(w) ||
+        h != floor(h))
+        return luaL_error(L, "%s: width and height must be whole numbers in "
+                          "[16, 16384]", fn);
+    double cols = 1, rows = 1;
+    if (la_has(L, 1, "panels"))
+        la_pair(L, 1, fn, "panels", &cols, &rows);
+    if (!(cols >= 1) || !(rows >= 1) || cols != floor(cols) || rows != floor(rows) ||
+        cols * rows > MAX_PANELS)
+        return luaL_error(L, "%s: 'panels' must be {columns, rows}, at most %d panels",
+                          fn, MAX_PANELS);
+    const char *title = la_opt_string(L, 1, fn, "title", NULL);
+    la_figure *f = lua_newuserdatauv(L, sizeof *f, 0);
+    memset(f, 0, sizeof *f);
+    luaL_setmetatable(L, LA_FIGURE);
+    char err[256];
+    f->canvas = lr_canvas_cairo_new((int)w, (int)h, err, sizeof err);
+    if (!f->canvas)
+        return luaL_error(L, "%s: %s", fn, err);
+    lr_canvas_clear(f->canvas, WHITE);
+    f->width = (int)w;
+    f->height = (int)h;
+    f->cols = (int)cols;
+    f->rows = (int)rows;
+    double font = fmax(13.0, fmin(w, h) / 40.0);
+    double top = 0;
+    if (title && *title) {
+        top = 2.0 * font;
+        lr_canvas_text(f->canvas, 0.5 * w, 1.4 * font, 1.1 * font, TEXT,
+                       LR_ALIGN_CENTER, title);
+    }
+    double cw = w / cols, ch = (h - top) / rows;
+    for (int r = 0; r < f->rows; r++)
+        for (int c = 0; c < f->cols; c++) {
+            la_panel *p = &f->panels[r * f->cols + c];
+            p->px = c * cw;
+            p->py = top + r * ch;
+            p->pw = cw;
+            p->ph = ch;
+            p->font = fmax(11.0, fmin(cw, ch) / 34.0);
+        }
+    return 1;
+}
+
+#define BAND 1.7                /* title and caption lines, in font sizes */
+
+/* Baseline of caption line k under panel p (two lines fit). */
+static double caption_y(const la_panel *p, int k)
+{
+    return p->py + p->ph - 2.0 * BAND * p->font + (k + 1) * 1.3 * p->font;
+}
+
+/* fig:panel{index =, window = | box =, azimuth =, elevation =, title =,
+ * caption =}: selects a panel and sets its view. */
+static int l_panel(lua_State *L)
+{
+    static const char *const keys[] = {"index", "window", "box", "azimuth",
+                                       "elevation", "title", "caption", NULL};
+    const char *fn = "figure:panel";
+    la_figure *f = check_fig(L);
+    la_check_keys(L, 2, fn, keys);
+    double k = la_opt_number(L, 2, fn, "index", f->cur + 1);
+    if (!(k >= 1 && k <= f->cols * f->rows) || k != floor(k))
+        return luaL_error(L, "%s: index must be 1..%d", fn, f->cols * f->rows);
+    f->cur = (int)k - 1;
+    la_panel *p = &f->panels[f->cur];
+    double lo[3], hi[3];
+    int d2 = read_box(L, 2, fn, "window", lo, hi);
+    int d3 = read_box(L, 2, fn, "box", lo, hi);
+    if (d2 && d2 != 2)
+        return luaL_error(L, "%s: 'window' is {x0, y0, x1, y1}; 3D uses 'box'", fn);
+    if (d3 && d3 != 3)
+        return luaL_error(L, "%s: 'box' is {x0, y0, z0, x1, y1, z1}; 2D uses 'window'",
+                          fn);
+    if (d2 && d3)
+        return luaL_error(L, "%s: give 'window' (2D) or 'box' (3D), not both", fn);
+    double band = BAND * p->font;
+    double vx = p->px, vy = p->py + band, vw = p->pw, vh = p->ph - 3.0 * band;
+    double m = 0.05 * fmin(vw, vh);
+    if (d2 || d3) {
+        p->set = 1;
+        p->dim = d3 ? 3 : 2;
+        memcpy(p->lo, lo, sizeof lo);
+        memcpy(p->hi, hi, sizeof hi);
+        p->captions = 0;
+        if (d3)
+            lr_view_3d(&p->view, vx + m, vy + m, vw - 2 * m, vh - 2 * m, lo, hi,
+                       la_opt_number(L, 2, fn, "azimuth", -60),
+                       la_opt_number(L, 2, fn, "elevation", 25));
+        else
+            lr_view_2d(&p->view, vx + m, vy + m, vw - 2 * m, vh - 2 * m, lo[0], lo[1],
+                       hi[0], hi[1]);
+    }
+    const char *title = la_opt_string(L, 2, fn, "title", NULL);
+    if (title)
+        lr_canvas_text(f->canvas, p->px + 0.5 * p->pw, p->py + 1.25 * p->font,
+                       p->font, TEXT, LR_ALIGN_CENTER, title);
+    const char *cap = la_opt_string(L, 2, fn, "caption", NULL);
+    if (cap) {
+        lr_canvas_text(f->canvas, p->px + 0.5 * p->pw, caption_y(p, p->captions),
+                       0.9 * p->font, TEXT, LR_ALIGN_CENTER, cap);
+        p->captions++;
+    }
+    lua_settop(L, 1);
+    return 1;
+}
+
+/* fig:caption{text = "..."}: one more line under the current panel. */
+static int l_caption(lua_State *L)
+{
+    static const char *const keys[] = {"text", NULL};
+    la_figure *f = check_fig(L);
+    la_check_keys(L, 2, "figure:caption", keys);
+    la_panel *p = &f->panels[f->cur];
+    const char *t = la_opt_string(L, 2, "figure:caption", "text", "");
+    lr_canvas_text(f->canvas, p->px + 0.5 * p->pw, caption_y(p, p->captions),
+                   0.9 * p->font, TEXT, LR_ALIGN_CENTER, t);
+    p->captions++;
+    lua_settop(L, 1);
+    return 1;
+}
+
+/* fig:outline{box =, width =, colour =}: the element (a rectangle, or the
+ * cube with hidden edges dashed); default the panel's own window/box. */
+static int l_outline(lua_State *L)
+{
+    static const char *const keys[] = {"box", "width", "colour", NULL};
+    const char *fn = "figure:outline";
+    la_figure *f = check_fig(L);
+    if (lua_isnoneornil(L, 2))
+        lua_newtable(L);
+    la_check_keys(L, 2, fn, keys);
+    la_panel *p = current(L, f, fn);
+    double lo[3], hi[3];
+    if (!read_box(L, 2, fn, "box", lo, hi)) {
+        memcpy(lo, p->lo, sizeof lo);
+        memcpy(hi, p->hi, sizeof hi);
+    }
+    lr_layer_box(f->canvas, &p->view, lo, hi, la_opt_number(L, 2, fn, "width", 1.5),
+                 read_colour(L, 2, fn, "colour", BLACK));
+    if (p->view.is3d) {                   /* axis names at the far ends */
+        static const char *const names[] = {"x", "y", "z"};
+        for (int a = 0; a < 3; a++) {
+            double q[3] = {lo[0], lo[1], lo[2]}, px, py;
+            q[a] = hi[a] + 0.08 * (hi[a] - lo[a]);
+            lr_view_map(&p->view, q, &px, &py);
+            lr_canvas_text(f->canvas, px, py + 0.35 * p->font, p->font, TEXT,
+                           LR_ALIGN_CENTER, names[a]);
+        }
+    }
+    lua_settop(L, 1);
+    return 1;
+}
+
+/* fig:grid{box =, cells = {nx, ny}, colour =}: cell lines (2D). */
+static int l_grid(lua_State *L)
+{
+    static const char *const keys[] = {"box", "cells", "colour", "width", NULL};
+    const char *fn = "figure:grid";
+    la_figure *f = check_fig(L);
+    la_check_keys(L, 2, fn, keys);
+    la_panel *p = current(L, f, fn);
+    double lo[3], hi[3], nx, ny;
+    if (read_box(L, 2, fn, "box", lo, hi) != 2)
+        return luaL_error(L, "%s: 'box' = {x0, y0, x1, y1} is required", fn);
+    la_pair(L, 2, fn, "cells", &nx, &ny);
+    if (!(nx >= 1 && ny >= 1 && nx <= 4096 && ny <= 4096))
+        return luaL_error(L, "%s: 'cells' must be {nx, ny} in 1..4096", fn);
+    lr_rgba k = read_colour(L, 2, fn, "colour", GREY);
+    double w = la_opt_number(L, 2, fn, "width", 1.0);
+    for (int i = 0; i <= (int)nx; i++)
+        for (int j = 0; j <= (int)ny; j++) {
+            double a[3] = {lo[0] + (hi[0] - lo[0]) * i / nx, lo[1], 0};
+            double b[3] = {a[0], hi[1], 0};
+            double c[3] = {lo[0], lo[1] + (hi[1] - lo[1]) * j / ny, 0};
+            double d[3] = {hi[0], c[1], 0};
+            double ax, ay, bx, by;
+            if (j == 0) {
+                lr_view_map(&p->view, a, &ax, &ay);
+                lr_view_map(&p->view, b, &bx, &by);
+                lr_canvas_line(f->canvas, ax, ay, bx, by, w, k, 0.0);
+            }
+            if (i == 0) {
+                lr_view_map(&p->view, c, &ax, &ay);
+                lr_view_map(&p->view, d, &bx, &by);
+                lr_canvas_line(f->canvas, ax, ay, bx, by, w, k, 0.0);
+            }
+        }
+    lua_settop(L, 1);
+    return 1;
+}
+
+/* ---- contours ----------------------------------------------------------------- */
+
+/* phi sampled on (s+1)^2 points over lo..hi: from a lamina.normals result
+ * (in C), or a Lua function f(x, y) -> number (nil: no value). */
+static double *sample(lua_State *L, int fidx, const la_nfield *field, int s,
+                      const double lo[3], const double hi[3])
+{
+    size_t n = (size_t)(s + 1) * (size_t)(s + 1);
+    double *v = lua_newuserdatauv(L, sizeof(double) * n, 0);
+    for (int j = 0; j <= s; j++)
+        for (int i = 0; i <= s; i++) {
+            double x[3] = {lo[0] + (hi[0] - lo[0]) * i / s,
+                           lo[1] + (hi[1] - lo[1]) * j / s, 0.0};
+            double *out = &v[i + (s + 1) * j];
+            if (field) {
+                *out = la_nfield_phi(field, x);
+                continue;
+            }
+            lua_pushvalue(L, fidx);
+            lua_pushnumber(L, x[0]);
+            lua_pushnumber(L, x[1]);
+            lua_call(L, 2, 1);
+            *out = lua_isnil(L, -1) ? NAN : luaL_checknumber(L, -1);
+            lua_pop(L, 1);
+        }
+    return v;
+}
+
+static void draw_contours(lua_State *L, la_figure *f, la_panel *p, const double *v,
+                          int s, const double lo[3], const double hi[3], int lidx,
+                          double bold)
+{
+    size_t nl = lua_rawlen(L, lidx);
+    for (size_t k = 1; k <= nl; k++) {
+        lua_rawgeti(L, lidx, (lua_Integer)k);
+        double level = luaL_checknumber(L, -1);
+        lua_pop(L, 1);
+        int is_bold = level == bold, is_zero = level == 0.0;
+        lr_layer_contour(f->canvas, &p->view, v, s, s, lo[0], lo[1], hi[0], hi[1],
+                         level, is_bold ? 2.6 : is_zero ? 1.3 : 0.8,
+                         is_bold || is_zero ? BLACK : GREY);
+    }
+}
+
+static void default_levels(lua_State *L)
+{
+    lua_createtable(L, 11, 0);
+    for (int k = 0; k <= 10; k++) {
+        lua_pushnumber(L, -2.0 + 0.5 * k);
+        lua_rawseti(L, -2, k + 1);
+    }
+}
+
+/* fig:contours{phi = result | function, levels = {...}, bold = 1, box =,
+ * samples = 160}: marching squares on phi sampled over box (default: the
+ * result's box, else the panel window). */
+static int l_contours(lua_State *L)
+{
+    static const char *const keys[] = {"phi", "levels", "bold", "box", "samples", NULL};
+    const char *fn = "figure:contours";
+    la_figure *f = check_fig(L);
+    la_check_keys(L, 2, fn, keys);
+    la_panel *p = current(L, f, fn);
+    if (p->view.is3d)
+        return luaL_error(L, "%s: contours are drawn in 2D panels only", fn);
+    lua_getfield(L, 2, "phi");
+    int fidx = lua_gettop(L);
+    la_nfield *field = la_to_nfield(L, fidx);
+    if (!field && !lua_isfunction(L, fidx))
+        return luaL_error(L, "%s: 'phi' must be a lamina.normals result or a "
+                          "function f(x, y)", fn);
+    if (field && field->dim != 2)
+        return luaL_error(L, "%s: the result is 3D; contours need a 2D result", fn);
+    double lo[3], hi[3];
+    if (!read_box(L, 2, fn, "box", lo, hi)) {
+        memcpy(lo, field ? field->lo : p->lo, sizeof lo);
+        memcpy(hi, field ? field->hi : p->hi, sizeof hi);
+    }
+    double s = la_opt_number(L, 2, fn, "samples", 160);
+    if (!(s >= 2 && s <= 2000) || s != floor(s))
+        return luaL_error(L, "%s: 'samples' must be a whole number in [2, 2000]", fn);
+    if (lua_getfield(L, 2, "levels") == LUA_TNIL) {
+        lua_pop(L, 1);
+        default_levels(L);
+    } else if (!lua_istable(L, -1)) {
+        return luaL_error(L, "%s: 'levels' must be a list of numbers", fn);
+    }
+    int lidx = lua_gettop(L);
+    double *v = sample(L, fidx, field, (int)s, lo, hi);
+    draw_contours(L, f, p, v, (int)s, lo, hi, lidx, la_opt_number(L, 2, fn, "bold", 1));
+    lua_settop(L, 1);
+    return 1;
+}
+
+/* ---- points, arrows, lines, text ------------------------------------------------- */
+
+/* fig:points{points =, style = "circle" | "asterisk" | "dot", size =,
+ * colour =, width =} */
+static int l_points(lua_State *L)
+{
+    static const char *const keys[] = {"points", "style", "size", "colour", "width",
+                                       NULL};
+    static const char *const styles[] = {"circle", "asterisk", "dot", NULL};
+    const char *fn = "figure:points";
+    la_figure *f = check_fig(L);
+    la_check_keys(L, 2, fn, keys);
+    la_panel *p = current(L, f, fn);
+    double *q[3];
+    size_t n = read_list(L, 2, fn, "points", p->dim, q);
+    int style = la_option(L, fn, "style", la_opt_string(L, 2, fn, "style", "circle"),
+                          styles);
+    double size = la_opt_number(L, 2, fn, "size", style == 1 ? 14 : 6);
+    double w = la_opt_number(L, 2, fn, "width", 1.4);
+    lr_rgba k = read_colour(L, 2, fn, "colour", BLACK);
+    const double *const cq[3] = {q[0], q[1], q[2]};
+    if (style == 0)
+        lr_layer_circles(f->canvas, &p->view, n, p->dim, cq, size, w, k);
+    else if (style == 2)
+        lr_layer_dots(f->canvas, &p->view, n, p->dim, cq, size, k);
+    else
+        for (size_t i = 0; i < n; i++) {
+            double x[3] = {q[0][i], q[1][i], q[2][i]};
+            lr_layer_asterisk(f->canvas, &p->view, x, size, w, k);
+        }
+    lua_settop(L, 1);
+    return 1;
+}
+
+static double panel_size(const la_panel *p)
+{
+    double s = 0;
+    for (int a = 0; a < p->dim; a++)
+        s = fmax(s, p->hi[a] - p->lo[a]);
+    return s;
+}
+
+static void arrows(lua_State *L, la_figure *f, la_panel *p, int at, int dir,
+                   double length, double width, lr_rgba k, int dashed, const char *fn)
+{
+    double *q[3], *d[3];
+    size_t n = read_list(L, at, fn, "at", p->dim, q);
+    size_t m = read_list(L, dir, fn, "dir", p->dim, d);
+    if (m != n)
+        luaL_error(L, "%s: %d points but %d directions", fn, (int)n, (int)m);
+    const double *const cq[3] = {q[0], q[1], q[2]}, *const cd[3] = {d[0], d[1], d[2]};
+    lr_layer_arrows(f->canvas, &p->view, n, p->dim, cq, cd, length, width,
+                    fmax(7.0, 3.5 * width), k, dashed ? 5.0 : 0.0);
+}
+
+/* fig:arrows{at =, dir =, length =, style = "solid" | "dashed", colour =,
+ * width =}: arrows from the points along the (unit) directions. */
+static int l_arrows(lua_State *L)
+{
+    static const char *const keys[] = {"at", "dir", "length", "style", "colour",
+                                       "width", NULL};
+    static const char *const styles[] = {"solid", "dashed", NULL};
+    const char *fn = "figure:arrows";
+    la_figure *f = check_fig(L);
+    la_check_keys(L, 2, fn, keys);
+    la_panel *p = current(L, f, fn);
+    int dashed = la_option(L, fn, "style", la_opt_string(L, 2, fn, "style", "solid"),
+                           styles);
+    double len = la_opt_number(L, 2, fn, "length", 0.15 * panel_size(p));
+    lr_rgba k = read_colour(L, 2, fn, "colour", dashed ? VERMILION : BLUE);
+    arrows(L, f, p, 2, 2, len, la_opt_number(L, 2, fn, "width", 1.6), k, dashed, fn);
+    lua_settop(L, 1);
+    return 1;
+}
+
+/* fig:polyline{points =, colour =, width =, dashed =} */
+static int l_polyline(lua_State *L)
+{
+    static const char *const keys[] = {"points", "colour", "width", "dashed", NULL};
+    const char *fn = "figure:polyline";
+    la_figure *f = check_fig(L);
+    la_check_keys(L, 2, fn, keys);
+    la_panel *p = current(L, f, fn);
+    double *q[3];
+    size_t n = read_list(L, 2, fn, "points", p->dim, q);
+    lua_getfield(L, 2, "dashed");
+    int dashed = lua_toboolean(L, -1);
+    lua_pop(L, 1);
+    const double *const cq[3] = {q[0], q[1], q[2]};
+    lr_layer_polyline(f->canvas, &p->view, n, p->dim, cq,
+                      la_opt_number(L, 2, fn, "width", 1.0),
+                      read_colour(L, 2, fn, "colour", GREY), dashed ? 4.0 : 0.0);
+    lua_settop(L, 1);
+    return 1;
+}
+
+/* fig:text{text =, at = {x, y[, z]}, size =, colour =, align =} */
+static int l_text(lua_State *L)
+{
+    static const char *const keys[] = {"text", "at", "size", "colour", "align", NULL};
+    static const char *const aligns[] = {"left", "center", "right", NULL};
+    const char *fn = "figure:text";
+    la_figure *f = check_fig(L);
+    la_check_keys(L, 2, fn, keys);
+    la_panel *p = current(L, f, fn);
+    const char *t = la_opt_string(L, 2, fn, "text", NULL);
+    if (!t)
+        return luaL_error(L, "%s: 'text' is required", fn);
+    double v[3] = {0, 0, 0}, x, y;
+    lua_getfield(L, 2, "at");
+    if (!lua_istable(L, -1) || (int)lua_rawlen(L, -1) < p->dim)
+        return luaL_error(L, "%s: 'at' must be a point {x, y%s}", fn,
+                          p->dim == 3 ? ", z" : "");
+    for (int a = 0; a < p->dim; a++) {
+        lua_rawgeti(L, -1, a + 1);
+        v[a] = luaL_checknumber(L, -1);
+        lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+    int al = la_option(L, fn, "align", la_opt_string(L, 2, fn, "align", "left"), aligns);
+    lr_view_map(&p->view, v, &x, &y);
+    lr_canvas_text(f->canvas, x, y, la_opt_number(L, 2, fn, "size", 0.9 * p->font),
+                   read_colour(L, 2, fn, "colour", TEXT), (lr_align)al, t);
+    lua_settop(L, 1);
+    return 1;
+}
+
+/* ---- the paper's composite ------------------------------------------------------- */
+
+/* The asterisks of a result's random point (black) and phi = 2 point
+ * (vermilion), if present. */
+static void draw_random_points(lua_State *L, la_figure *f, la_panel *p, int tbl)
+{
+    for (int which = 0; which < 2; which++) {
+        if (lua_getfield(L, tbl, which ? "phi2_point" : "random_point") == LUA_TTABLE) {
+            double x[3] = {0, 0, 0};
+            for (int a = 0; a < p->dim; a++) {
+                lua_rawgeti(L, -1, a + 1);
+                x[a] = lua_tonumber(L, -1);
+                lua_pop(L, 1);
+            }
+            lr_layer_asterisk(f->canvas, &p->view, x, 14, 1.5,
+                              which ? VERMILION : BLACK);
+        }
+        lua_pop(L, 1);
+    }
+}
+
+/* Element outlines of a result: its box, or every element's block. */
+static void draw_elements(lua_State *L, la_figure *f, la_panel *p, int res)
+{
+    int t = lua_getfield(L, res, "elements");
+    if (t == LUA_TTABLE) {
+        size_t n = lua_rawlen(L, -1);
+        for (size_t k = 1; k <= n; k++) {
+            lua_rawgeti(L, -1, (lua_Integer)k);
+            double lo[3], hi[3];
+            if (read_box(L, lua_gettop(L), "figure:normals", "box", lo, hi))
+                lr_layer_box(f->canvas, &p->view, lo, hi, 1.2, BLACK);
+            draw_random_points(L, f, p, lua_gettop(L));
+            lua_pop(L, 1);
+        }
+    } else {
+        double lo[3], hi[3];
+        if (read_box(L, res, "figure:normals", "box", lo, hi))
+            lr_layer_box(f->canvas, &p->view, lo, hi, 1.5, BLACK);
+    }
+    lua_pop(L, 1);
+}
+
+/* fig:normals{result =, points =, exact =, length =, levels =, samples =}:
+ * what [N] Figs 3-11 show - contours of phi (2D), the element, exact
+ * normals dashed, computed normals solid, membrane points as open circles,
+ * the random point as an asterisk. */
+static int l_normals(lua_State *L)
+{
+    static const char *const keys[] = {"result", "points", "exact", "length", "levels",
+                                       "samples", NULL};
+    const char *fn = "figure:normals";
+    la_figure *f = check_fig(L);
+    la_check_keys(L, 2, fn, keys);
+    la_panel *p = current(L, f, fn);
+    if (lua_getfield(L, 2, "result") != LUA_TTABLE)
+        return luaL_error(L, "%s: 'result' must be what lamina.normals returned", fn);
+    int res = lua_gettop(L);
+    double len = la_opt_number(L, 2, fn, "length", 0.15 * panel_size(p));
+    la_nfield *field = la_to_nfield(L, res);
+    if (field && !p->view.is3d) {
+        lua_createtable(L, 0, 4);
+        lua_pushvalue(L, res);
+        lua_setfield(L, -2, "phi");
+        for (int k = 0; k < 2; k++) {
+            const char *key = k ? "samples" : "levels";
+            lua_getfield(L, 2, key);
+            lua_setfield(L, -2, key);
+        }
+        lua_pushcfunction(L, l_contours);
+        lua_pushvalue(L, 1);
+        lua_pushvalue(L, -3);
+        lua_call(L, 2, 0);
+        lua_pop(L, 1);
+    }
+    draw_elements(L, f, p, res);
+    if (!la_has(L, 2, "points"))
+        return luaL_error(L, "%s: 'points' (the membrane points given to "
+                          "lamina.normals) is required", fn);
+    /* a table {at = points, dir = ...} for the arrow reader */
+    lua_createtable(L, 0, 2);
+    int args = lua_gettop(L);
+    lua_getfield(L, 2, "points");
+    lua_setfield(L, args, "at");
+    if (la_has(L, 2, "exact")) {
+        lua_getfield(L, 2, "exact");
+        lua_setfield(L, args, "dir");
+        arrows(L, f, p, args, args, len, 1.5, VERMILION, 1, fn);
+    }
+    lua_getfield(L, res, "normals");
+    lua_setfield(L, args, "dir");
+    arrows(L, f, p, args, args, len, 1.8, BLUE, 0, fn);
+    double *q[3];
+    size_t n = read_list(L, 2, fn, "points", p->dim, q);
+    const double *const cq[3] = {q[0], q[1], q[2]};
+    lr_layer_circles(f->canvas, &p->view, n, p->dim, cq, 6.0, 1.4, BLACK);
+    draw_random_points(L, f, p, res);
+    lua_settop(L, 1);
+    return 1;
+}
+
+/* ---- output ----------------------------------------------------------------------- */
+
+static const char *set_line(lua_State *L, const lamina_run *run)
+{
+    luaL_Buffer b;
+    luaL_buffinit(L, &b);
+    for (int i = 0; run && i < run->nsets; i++) {
+        if (i)
+            luaL_addchar(&b, ' ');
+        luaL_addstring(&b, run->sets[i].name);
+        luaL_addchar(&b, '=');
+        luaL_addstring(&b, run->sets[i].value);
+    }
+    luaL_pushresult(&b);
+    return lua_tostring(L, -1);
+}
+
+/* The folder of the last PNG, for `lamina run`'s closing line (as
+ * sim:frame keeps it). */
+static void remember_dir(lamina_run *run, const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    size_t n = slash ? (size_t)(slash - path) + 1 : 0;
+    if (n >= sizeof run->frame_dir)
+        n = sizeof run->frame_dir - 1;
+    memcpy(run->frame_dir, path, n);
+    run->frame_dir[n] = 0;
+    if (n == 0)
+        strcpy(run->frame_dir, "./");
+}
+
+/* fig:write(path) or fig:write{file = path}: the PNG, atomically, with the
+ * provenance of sim:frame (Software, lamina:script, -hash, lamina:set). */
+static int l_write(lua_State *L)
+{
+    const char *fn = "figure:write";
+    la_figure *f = check_fig(L);
+    const char *file = NULL;
+    if (lua_type(L, 2) == LUA_TSTRING) {
+        file = lua_tostring(L, 2);
+    } else {
+        static const char *const keys[] = {"file", NULL};
+        la_check_keys(L, 2, fn, keys);
+        file = la_opt_string(L, 2, fn, "file", NULL);
+    }
+    if (!file || !*file)
+        return luaL_error(L, "%s: a file name is required", fn);
+    lamina_run *run = la_run(L);
+    char ver[64], hash[32];
+    snprintf(ver, sizeof ver, "lamina %s", LAMINA_VERSION);
+    snprintf(hash, sizeof hash, "%s", run ? run->script_hash : "");
+    lr_text_chunk text[4] = {{"Software", ver},
+                             {"lamina:script", run && run->script ? run->script : ""},
+                             {"lamina:script-hash", hash},
+                             {"lamina:set", set_line(L, run)}};
+    unsigned char *rgba = lr_canvas_read_rgba(f->canvas);
+    if (!rgba)
+        return luaL_error(L, "%s: the drawing failed (cairo error or out of memory)",
+                          fn);
+    char err[512];
+    int rc = lr_png_write(file, f->width, f->height, rgba, text, 4, err, sizeof err);
+    free(rgba);
+    if (rc)
+        return luaL_error(L, "%s: %s", fn, err);
+    if (run) {
+        run->frames++;
+        remember_dir(run, file);
+    }
+    lua_pushstring(L, file);
+    return 1;
+}
+
+static int l_gc(lua_State *L)
+{
+    la_figure *f = luaL_checkudata(L, 1, LA_FIGURE);
+    lr_canvas_free(f->canvas);
+    f->canvas = NULL;
+    return 0;
+}
+
+static int l_tostring(lua_State *L)
+{
+    la_figure *f = luaL_checkudata(L, 1, LA_FIGURE);
+    lua_pushfstring(L, "lamina.figure (%dx%d, %d panel%s)", f->width, f->height,
+                    f->cols * f->rows, f->cols * f->rows == 1 ? "" : "s");
+    return 1;
+}
+
+void la_open_figure(lua_State *L)
+{
+    static const luaL_Reg methods[] = {{"panel", l_panel},       {"caption", l_caption},
+                                       {"outline", l_outline},   {"grid", l_grid},
+                                       {"contours", l_contours}, {"points", l_points},
+                                       {"arrows", l_arrows},     {"polyline", l_polyline},
+                                       {"text", l_text},         {"normals", l_normals},
+                                       {"write", l_write},       {NULL, NULL}};
+    luaL_newmetatable(L, LA_FIGURE);
+    luaL_newlib(L, methods);
+    lua_setfield(L, -2, "__index");
+    lua_pushcfunction(L, l_gc);
+    lua_setfield(L, -2, "__gc");
+    lua_pushcfunction(L, l_tostring);
+    lua_setfield(L, -2, "__tostring");
+    lua_pop(L, 1);
+}

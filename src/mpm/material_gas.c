@@ -1,0 +1,54 @@
+/* material_gas.c - compressible viscous gas ([F] §3.3, [T] Ch. 4) and the
+ * linear fluid of the piston problem ([F] eq 26). */
+#include <math.h>
+
+#include "step.h"
+
+/* c = sqrt(gamma p / rho) with p = (gamma - 1) rho e ([F] eq 22). */
+double lm_gas_sound_speed(const lm_material *mat, double e)
+{
+    return sqrt(mat->gamma * (mat->gamma - 1) * (e > 0 ? e : 0));
+}
+
+/* [F] eq 24 prints q = sqrt(c_max^2 g) rho lambda D [c1 + c2 |div v| / max|div v|].
+ * As printed its units are not a pressure (sqrt(c^2 g) is m^1.5/s); Wilkins'
+ * linear term, which it follows, is rho c l |D|. We read the lost square as
+ * sqrt(c_max^2 g^2) = c_max g, and use |D| so that q >= 0 (physics.md §2,
+ * reconstructed): q = c_max g rho lambda |D| [c1 + c2 |D| / max|D|], with D
+ * = div v only in compression ([F] eq 25). The Sod test checks it. */
+double lm_gas_av(const lm_material *mat, double rho, double div, double max_div,
+                 double c_max, double h)
+{
+    if (!mat->av || !(div < 0)) return 0;
+    double g = mat->av_g > 0 ? mat->av_g : sqrt(2.0) * h;
+    double D = -div;
+    double ratio = max_div > 0 ? D / max_div : 0;
+    return c_max * g * rho * mat->av_lambda * D * (mat->av_c1 + mat->av_c2 * ratio);
+}
+
+void lm_gas_update(const lm_material *mat, double dexx, double deyy, double dexy,
+                   double dt, double rho, double q, double *e, double *sxx, double *syy,
+                   double *sxy, double *szz)
+{
+    double mu = mat->mu;
+    double exx = dexx / dt, eyy = deyy / dt, exy = dexy / dt;   /* strain rate */
+    double tr = exx + eyy;                  /* plane strain: edot_zz = 0 */
+    double p = (mat->gamma - 1) * rho * *e; /* e^k, rho^{k+1} (physics.md §2) */
+    double iso = -(2.0 / 3.0) * mu * tr - p - q;
+    *sxx = 2 * mu * exx + iso;
+    *syy = 2 * mu * eyy + iso;
+    *sxy = 2 * mu * exy;
+    *szz = iso;
+    /* [F] eq 23: the work of the new stress on the step's strain */
+    double work = *sxx * dexx + *syy * deyy + 2 * *sxy * dexy;
+    *e += work / rho;
+}
+
+void lm_linear_fluid_update(const lm_material *mat, double dexx, double deyy, double *ev,
+                            double *sxx, double *syy, double *sxy, double *szz)
+{
+    *ev += dexx + deyy;
+    double p = -mat->beta * *ev;
+    *sxx = *syy = *szz = -p;
+    *sxy = 0;
+}

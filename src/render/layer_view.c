@@ -1,0 +1,69 @@
+/* layer_view.c - world to pixels: a 2D window fit, or an orthographic
+ * projection of a 3D box (the unit cube of [N] Figs 5 and 11). */
+#include <math.h>
+
+#include "layers.h"
+
+#define DEG 0.017453292519943295769
+
+void lr_view_2d(lr_view *v, double px, double py, double pw, double ph,
+                double wx0, double wy0, double wx1, double wy1)
+{
+    double ww = wx1 - wx0, wh = wy1 - wy0;
+    v->is3d = 0;
+    v->s = fmin(pw / ww, ph / wh);
+    if (!(v->s > 0) || !isfinite(v->s))
+        v->s = 1.0;
+    v->ox = px + 0.5 * (pw - v->s * ww) - v->s * wx0;
+    v->oy = py + 0.5 * (ph - v->s * wh) + v->s * wy1;
+}
+
+static double dot3(const double a[3], const double b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+void lr_view_3d(lr_view *v, double px, double py, double pw, double ph,
+                const double lo[3], const double hi[3], double azimuth,
+                double elevation)
+{
+    double a = azimuth * DEG, e = elevation * DEG;
+    v->is3d = 1;
+    v->toward[0] = cos(e) * cos(a);
+    v->toward[1] = cos(e) * sin(a);
+    v->toward[2] = sin(e);
+    v->right[0] = -sin(a);
+    v->right[1] = cos(a);
+    v->right[2] = 0.0;
+    v->up[0] = -sin(e) * cos(a);
+    v->up[1] = -sin(e) * sin(a);
+    v->up[2] = cos(e);
+    for (int k = 0; k < 3; k++)
+        v->c[k] = 0.5 * (lo[k] + hi[k]);
+    /* the projected box's extent around c sets the scale */
+    double rx = 0, ry = 0;
+    for (int corner = 0; corner < 8; corner++) {
+        double p[3];
+        for (int k = 0; k < 3; k++)
+            p[k] = ((corner >> k) & 1 ? hi[k] : lo[k]) - v->c[k];
+        rx = fmax(rx, fabs(dot3(p, v->right)));
+        ry = fmax(ry, fabs(dot3(p, v->up)));
+    }
+    v->s = fmin(pw / (2 * rx), ph / (2 * ry));
+    if (!(v->s > 0) || !isfinite(v->s))
+        v->s = 1.0;
+    v->ox = px + 0.5 * pw;
+    v->oy = py + 0.5 * ph;
+}
+
+void lr_view_map(const lr_view *v, const double p[3], double *x, double *y)
+{
+    if (!v->is3d) {
+        *x = v->ox + v->s * p[0];
+        *y = v->oy - v->s * p[1];
+        return;
+    }
+    double q[3] = {p[0] - v->c[0], p[1] - v->c[1], p[2] - v->c[2]};
+    *x = v->ox + v->s * dot3(q, v->right);
+    *y = v->oy - v->s * dot3(q, v->up);
+}
