@@ -239,13 +239,15 @@ static void compare(const char *baseline, const char *hashfile, const char *wdir
     free(diff);
 }
 
-/* Writes the candidate (and its state hash) as the baseline. */
+/* Writes the candidate (and its state hash) as the baseline; a picture
+ * that passed keeps its bytes when only the hash is new. */
 static int accept(const char *wdir, const char *baseline, const char *hashfile,
                   const outcome *c)
 {
     char err[1024];
     char *actual = g_fmt("%s/actual.png", wdir);
-    int rc = g_copy_file(actual, baseline, err, sizeof err);
+    int rc = c->missing || !c->image_same ? g_copy_file(actual, baseline, err, sizeof err)
+                                          : 0;
     if (rc == 0 && c->state_hash[0]) {
         char *line = g_fmt("%s\n", c->state_hash);
         rc = g_write_file(hashfile, line, strlen(line), err, sizeof err);
@@ -278,8 +280,10 @@ static int visual_one(const g_options *o, const g_script *s, int *rewritten)
             if (accept(wdir, baseline, hashfile, &c) == 0) {
                 *rewritten = 1;
                 rc = 0;
-                printf("visual: %s: baseline %s (%s; %s)\n", s->stem,
-                       c.missing ? "created" : "rewritten", c.summary, words);
+                printf("visual: %s: %s (%s; %s)\n", s->stem,
+                       c.missing ? "baseline created"
+                       : c.image_same ? "state hash baseline rewritten, picture kept"
+                                      : "baseline rewritten", c.summary, words);
             }
         } else if ((c.missing || c.hash == HASH_NO_BASELINE) && o->nsets) {
             /* a changed scene (a negative control) must never become a baseline */

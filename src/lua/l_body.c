@@ -189,6 +189,82 @@ static int body_mass(lua_State *L)
     return 1;
 }
 
+/* body:energy() - this body's share of sim:energy(). */
+static int body_energy(lua_State *L)
+{
+    lm_sim *sim;
+    la_body *b = check_body(L, 1, &sim);
+    la_push_energy(L, lm_body_energy(sim, b->index));
+    return 1;
+}
+
+/* body:pressure() - the mean gas pressure (without q). */
+static int body_pressure(lua_State *L)
+{
+    lm_sim *sim;
+    la_body *b = check_body(L, 1, &sim);
+    if (sim->mats[sim->bodies[b->index].mat]->kind != LM_GAS)
+        return luaL_error(L, "body:pressure(): the body is not a gas");
+    lua_pushnumber(L, lm_body_mean_pressure(sim, b->index));
+    return 1;
+}
+
+/* membrane:hoop_stress() - the mean tangential stress sigma_t. */
+static int body_hoop_stress(lua_State *L)
+{
+    lm_sim *sim;
+    la_body *b = check_body(L, 1, &sim);
+    if (!sim->bodies[b->index].membrane)
+        return luaL_error(L, "body:hoop_stress(): the body is not a membrane");
+    lua_pushnumber(L, lm_body_mean_tangential_stress(sim, b->index));
+    return 1;
+}
+
+static void center_arg(lua_State *L, int idx, double *cx, double *cy)
+{
+    *cx = *cy = 0;
+    if (lua_isnoneornil(L, idx)) return;
+    luaL_checktype(L, idx, LUA_TTABLE);
+    lua_rawgeti(L, idx, 1);
+    lua_rawgeti(L, idx, 2);
+    *cx = luaL_checknumber(L, -2);
+    *cy = luaL_checknumber(L, -1);
+    lua_pop(L, 2);
+}
+
+/* membrane:radius_at(deg [, {cx, cy}]) - where the ray from the centre
+ * (default the origin) at deg degrees meets the membrane; nil if it
+ * misses. */
+static int body_radius_at(lua_State *L)
+{
+    lm_sim *sim;
+    la_body *b = check_body(L, 1, &sim);
+    if (!sim->bodies[b->index].membrane)
+        return luaL_error(L, "body:radius_at(): the body is not a membrane");
+    double cx, cy;
+    center_arg(L, 3, &cx, &cy);
+    double r = lm_membrane_radius_at(sim, b->index, luaL_checknumber(L, 2), cx, cy);
+    if (r < 0) lua_pushnil(L);
+    else lua_pushnumber(L, r);
+    return 1;
+}
+
+/* membrane:escaped(gas [, {cx, cy}]) - how many gas particles are outside
+ * the membrane (closed through the centre when open: quarter models). */
+static int body_escaped(lua_State *L)
+{
+    lm_sim *sim, *sim2;
+    la_body *b = check_body(L, 1, &sim);
+    int g = la_check_body(L, 2, &sim2);
+    if (sim != sim2 || !sim->bodies[b->index].membrane ||
+        sim->mats[sim->bodies[g].mat]->kind != LM_GAS)
+        return luaL_error(L, "membrane:escaped(gas): needs a membrane and a gas of one sim");
+    double cx, cy;
+    center_arg(L, 3, &cx, &cy);
+    lua_pushinteger(L, (lua_Integer)lm_count_outside(sim, g, b->index, cx, cy));
+    return 1;
+}
+
 static void push_array(lua_State *L, const double *a, size_t first, size_t n, const char *name)
 {
     lua_createtable(L, (int)n, 0);
@@ -299,6 +375,11 @@ void la_open_body(lua_State *L)
                                        {"velocity", body_velocity},
                                        {"mass", body_mass},
                                        {"particles", body_particles},
+                                       {"pressure", body_pressure},
+                                       {"energy", body_energy},
+                                       {"hoop_stress", body_hoop_stress},
+                                       {"radius_at", body_radius_at},
+                                       {"escaped", body_escaped},
                                        {NULL, NULL}};
     luaL_newmetatable(L, LA_BODY);
     luaL_setfuncs(L, meta, 0);

@@ -187,9 +187,19 @@ void la_curve_place(const la_curve_points *cp, int n, double *px, double *py)
         double d2r = acos(-1.0) / 180;
         int div = cp->closed ? n : n - 1;
         for (int k = 0; k < n; k++) {
-            double a = (c->a0 + (c->a1 - c->a0) * (div > 0 ? (double)k / div : 0)) * d2r;
-            px[k] = c->cx + c->r * cos(a);
-            py[k] = c->cy + c->r * sin(a);
+            double deg = c->a0 + (c->a1 - c->a0) * (div > 0 ? (double)k / div : 0);
+            double cs = cos(deg * d2r), sn = sin(deg * d2r);
+            /* exact on the axes, so that points meant for a symmetry line
+             * (quarter models) are on it, not 3e-17 off */
+            double r90 = deg / 90;
+            if (r90 == floor(r90)) {
+                static const double C[4] = {1, 0, -1, 0}, S[4] = {0, 1, 0, -1};
+                int k4 = (int)(((long)r90 % 4 + 4) % 4);
+                cs = C[k4];
+                sn = S[k4];
+            }
+            px[k] = c->cx + c->r * cs;
+            py[k] = c->cy + c->r * sn;
         }
         return;
     }

@@ -67,6 +67,8 @@ int la_sim_new(lua_State *L);
 la_sim *la_check_sim(lua_State *L, int idx);
 /* Keeps the value at idx alive as long as the sim at sidx (its uservalue). */
 void la_sim_keep(lua_State *L, int sidx, int idx);
+/* {kinetic, strain, internal, potential, total} */
+void la_push_energy(lua_State *L, lm_energy e);
 
 /* Calls the function at fidx with the sim at `first` and then every
  * `interval` (0: once), between steps. */

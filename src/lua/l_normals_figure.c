@@ -295,6 +295,24 @@ static int l_caption(lua_State *L)
     return 1;
 }
 
+/* The element: a rectangle, or in 3D the box with its hidden edges dashed
+ * and the axis names at the far ends of the three edges from lo. */
+static void draw_box(la_figure *f, const la_panel *p, const double lo[3],
+                     const double hi[3], double width, lr_rgba colour)
+{
+    lr_layer_box(f->canvas, &p->view, lo, hi, width, colour);
+    if (!p->view.is3d)
+        return;
+    static const char *const names[] = {"x", "y", "z"};
+    for (int a = 0; a < 3; a++) {
+        double q[3] = {lo[0], lo[1], lo[2]}, px, py;
+        q[a] = hi[a] + 0.1 * (hi[a] - lo[a]);
+        lr_view_map(&p->view, q, &px, &py);
+        lr_canvas_text(f->canvas, px, py + 0.35 * p->font, p->font, TEXT,
+                       LR_ALIGN_CENTER, names[a]);
+    }
+}
+
 /* fig:outline{box =, width =, colour =}: the element (a rectangle, or the
  * cube with hidden edges dashed); default the panel's own window/box. */
 static int l_outline(lua_State *L)
@@ -311,18 +329,8 @@ static int l_outline(lua_State *L)
         memcpy(lo, p->lo, sizeof lo);
         memcpy(hi, p->hi, sizeof hi);
     }
-    lr_layer_box(f->canvas, &p->view, lo, hi, la_opt_number(L, 2, fn, "width", 1.5),
-                 read_colour(L, 2, fn, "colour", BLACK));
-    if (p->view.is3d) {                   /* axis names at the far ends */
-        static const char *const names[] = {"x", "y", "z"};
-        for (int a = 0; a < 3; a++) {
-            double q[3] = {lo[0], lo[1], lo[2]}, px, py;
-            q[a] = hi[a] + 0.08 * (hi[a] - lo[a]);
-            lr_view_map(&p->view, q, &px, &py);
-            lr_canvas_text(f->canvas, px, py + 0.35 * p->font, p->font, TEXT,
-                           LR_ALIGN_CENTER, names[a]);
-        }
-    }
+    draw_box(f, p, lo, hi, la_opt_number(L, 2, fn, "width", 1.5),
+             read_colour(L, 2, fn, "colour", BLACK));
     lua_settop(L, 1);
     return 1;
 }
@@ -617,14 +625,14 @@ static void draw_elements(lua_State *L, la_figure *f, la_panel *p, int res)
             lua_rawgeti(L, -1, (lua_Integer)k);
             double lo[3], hi[3];
             if (read_box(L, lua_gettop(L), "figure:normals", "box", lo, hi))
-                lr_layer_box(f->canvas, &p->view, lo, hi, 1.2, BLACK);
+                draw_box(f, p, lo, hi, 1.2, BLACK);
             draw_random_points(L, f, p, lua_gettop(L));
             lua_pop(L, 1);
         }
     } else {
         double lo[3], hi[3];
         if (read_box(L, res, "figure:normals", "box", lo, hi))
-            lr_layer_box(f->canvas, &p->view, lo, hi, 1.5, BLACK);
+            draw_box(f, p, lo, hi, 1.5, BLACK);
     }
     lua_pop(L, 1);
 }

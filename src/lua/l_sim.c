@@ -263,16 +263,20 @@ static int sim_step(lua_State *L)
 
 /* ---- diagnostics ----------------------------------------------------- */
 
-static int sim_energy(lua_State *L)
+void la_push_energy(lua_State *L, lm_energy e)
 {
-    la_sim *s = la_check_sim(L, 1);
-    lm_energy e = lm_sim_energy(s->sim);
     lua_createtable(L, 0, 5);
     lua_pushnumber(L, e.kinetic); lua_setfield(L, -2, "kinetic");
     lua_pushnumber(L, e.strain); lua_setfield(L, -2, "strain");
     lua_pushnumber(L, e.internal); lua_setfield(L, -2, "internal");
     lua_pushnumber(L, e.potential); lua_setfield(L, -2, "potential");
     lua_pushnumber(L, e.total); lua_setfield(L, -2, "total");
+}
+
+static int sim_energy(lua_State *L)
+{
+    la_sim *s = la_check_sim(L, 1);
+    la_push_energy(L, lm_sim_energy(s->sim));
     return 1;
 }
 

@@ -1,4 +1,5 @@
 /* diag.c - energies, centres of mass, momentum, the state hash. */
+#include <math.h>
 #include <string.h>
 
 #include "step.h"
@@ -6,12 +7,12 @@
 /* physics.md §1: kinetic sum 1/2 m v^2; strain sum V 1/2 sigma:C^-1:sigma
  * (from the stress, so it stays objective); potential -sum m g.x with the
  * initial positions as datum. */
-lm_energy lm_sim_energy(const lm_sim *sim)
+static lm_energy energy_of(const lm_sim *sim, size_t first, size_t last, double ref)
 {
     lm_energy e = {0, 0, 0, 0, 0};
     const lm_particles *p = &sim->p;
     double gx = 0;
-    for (size_t q = 0; q < p->n; q++) {
+    for (size_t q = first; q < last; q++) {
         e.kinetic += 0.5 * p->m[q] * (p->vx[q] * p->vx[q] + p->vy[q] * p->vy[q]);
         const lm_material *mat = sim->mats[p->mat[q]];
         double V = p->m[q] / p->rho[q];
@@ -34,9 +35,25 @@ lm_energy lm_sim_energy(const lm_sim *sim)
         }
         gx += p->m[q] * (sim->def.gx * p->x[q] + sim->def.gy * p->y[q]);
     }
-    e.potential = sim->pe_ref - gx;
+    e.potential = ref - gx;
     e.total = e.kinetic + e.strain + e.internal + e.potential;
     return e;
+}
+
+/* physics.md §1: kinetic sum 1/2 m v^2; strain sum V 1/2 sigma:C^-1:sigma
+ * (from the stress, so it stays objective; membranes 1/2 V sigma_t eps_t);
+ * gas internal sum m e; potential -sum m g.x with the initial positions as
+ * datum. */
+lm_energy lm_sim_energy(const lm_sim *sim)
+{
+    return energy_of(sim, 0, sim->p.n, sim->pe_ref);
+}
+
+/* One body's share (its potential energy datum is its own seeding). */
+lm_energy lm_body_energy(const lm_sim *sim, int body)
+{
+    const lm_body *b = &sim->bodies[body];
+    return energy_of(sim, b->first, b->first + b->count, b->pe_ref);
 }
 
 static void range(const lm_sim *sim, int body, size_t *a, size_t *b)
@@ -115,4 +132,88 @@ uint64_t lm_sim_hash(const lm_sim *sim)
         if (p->n) h = fnv1a(h, f[k], p->n * sizeof(double));
     h = fnv1a(h, &sim->step, sizeof sim->step);
     return h;
+}
+
+/* ---- gas and membrane diagnostics (issue 8: mean pressure, hoop stress,
+ * radii at 0 and 90 degrees, containment) ------------------------------- */
+
+double lm_body_mean_pressure(const lm_sim *sim, int body)
+{
+    const lm_body *b = &sim->bodies[body];
+    const lm_material *mat = sim->mats[b->mat];
+    if (mat->kind != LM_GAS || b->count == 0) return 0;
+    double s = 0;
+    for (size_t q = b->first; q < b->first + b->count; q++)
+        s += (mat->gamma - 1) * sim->p.rho[q] * sim->p.e[q];
+    return s / (double)b->count;
+}
+
+double lm_body_mean_tangential_stress(const lm_sim *sim, int body)
+{
+    const lm_body *b = &sim->bodies[body];
+    const lm_material *mat = sim->mats[b->mat];
+    if (mat->kind != LM_MEMBRANE || b->count == 0) return 0;
+    double s = 0;
+    for (size_t q = b->first; q < b->first + b->count; q++)
+        s += lm_membrane_stress(mat, sim->p.et[q]);
+    return s / (double)b->count;
+}
+
+/* Where the ray from (cx, cy) at `deg` degrees crosses the membrane's
+ * polyline: the distance to the first crossing, or -1 if none. */
+double lm_membrane_radius_at(const lm_sim *sim, int body, double deg, double cx, double cy)
+{
+    const lm_body *b = &sim->bodies[body];
+    const double *x = sim->p.x, *y = sim->p.y;
+    double a = deg * acos(-1.0) / 180;
+    double dx = cos(a), dy = sin(a);
+    if (fabs(deg - 90 * floor(deg / 90 + 0.5)) < 1e-12) {   /* exact on the axes */
+        long k = ((long)floor(deg / 90 + 0.5) % 4 + 4) % 4;
+        dx = (k == 0) - (k == 2);
+        dy = (k == 1) - (k == 3);
+    }
+    double best = -1;
+    size_t n = b->count;
+    for (size_t k = 0; k + 1 < n + (b->closed ? 1 : 0); k++) {
+        size_t i = b->first + k, j = b->first + (k + 1) % n;
+        double ex = x[j] - x[i], ey = y[j] - y[i];
+        double wx = x[i] - cx, wy = y[i] - cy;
+        double den = dx * ey - dy * ex;
+        if (den == 0) continue;
+        double t = (wx * ey - wy * ex) / den;     /* along the ray */
+        double u = (wx * dy - wy * dx) / den;     /* along the segment */
+        if (t >= 0 && u >= -1e-12 && u <= 1 + 1e-12 && (best < 0 || t < best)) best = t;
+    }
+    /* a quarter model's end point lies on the axis itself */
+    for (size_t q = b->first; best < 0 && q < b->first + n; q++) {
+        double wx = x[q] - cx, wy = y[q] - cy;
+        double along = wx * dx + wy * dy, off = fabs(wx * dy - wy * dx);
+        if (along > 0 && off <= 1e-9 * along) best = along;
+    }
+    return best;
+}
+
+/* Gas particles outside the polygon of the membrane's points (closed
+ * through (cx, cy) when the membrane is open, as in quarter models). */
+size_t lm_count_outside(const lm_sim *sim, int gas, int membrane, double cx, double cy)
+{
+    const lm_body *m = &sim->bodies[membrane], *g = &sim->bodies[gas];
+    size_t nv = m->count + (m->closed ? 0 : 1);
+    size_t out = 0;
+    for (size_t q = g->first; q < g->first + g->count; q++) {
+        double px = sim->p.x[q], py = sim->p.y[q];
+        int in = 0;
+        for (size_t a = 0, b = nv - 1; a < nv; b = a++) {
+            double xa = a < m->count ? sim->p.x[m->first + a] : cx;
+            double ya = a < m->count ? sim->p.y[m->first + a] : cy;
+            double xb = b < m->count ? sim->p.x[m->first + b] : cx;
+            double yb = b < m->count ? sim->p.y[m->first + b] : cy;
+            if ((ya > py) != (yb > py)) {
+                double xc = xa + (py - ya) * (xb - xa) / (yb - ya);
+                if (px < xc) in = !in;
+            }
+        }
+        if (!in) out++;
+    }
+    return out;
 }

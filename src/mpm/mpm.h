@@ -111,6 +111,7 @@ typedef struct lm_body {
     int membrane;          /* points in curve order, tangents from neighbours */
     int closed;            /* membrane: the last point neighbours the first */
     lm_normals normals;
+    double pe_ref;         /* this body's share of sim->pe_ref */
 } lm_body;
 
 /* ---- the simulation (sim.c) ---------------------------------------------- */
@@ -209,12 +210,22 @@ typedef struct lm_energy {
 } lm_energy;
 
 lm_energy lm_sim_energy(const lm_sim *sim);
+lm_energy lm_body_energy(const lm_sim *sim, int body);
 /* Mass-weighted centre and velocity of a body (body < 0: all particles). */
 void lm_body_com(const lm_sim *sim, int body, double *x, double *y);
 void lm_body_velocity(const lm_sim *sim, int body, double *vx, double *vy);
 double lm_body_mass(const lm_sim *sim, int body);
 /* Linear momentum of all particles. */
 void lm_sim_momentum(const lm_sim *sim, double *px, double *py);
+/* Mean gas pressure (gamma - 1) rho e, without q, over a gas body. */
+double lm_body_mean_pressure(const lm_sim *sim, int body);
+/* Mean tangential (hoop) stress sigma_t over a membrane. */
+double lm_body_mean_tangential_stress(const lm_sim *sim, int body);
+/* Distance from (cx, cy) to the membrane along the ray at `deg` degrees;
+ * -1 if the ray misses it. */
+double lm_membrane_radius_at(const lm_sim *sim, int body, double deg, double cx, double cy);
+/* Gas particles outside the membrane (closed through (cx, cy) if open). */
+size_t lm_count_outside(const lm_sim *sim, int gas, int membrane, double cx, double cy);
 /* FNV-1a hash of the particle state: equal hashes, equal states. */
 uint64_t lm_sim_hash(const lm_sim *sim);
 

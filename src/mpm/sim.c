@@ -210,6 +210,7 @@ lm_status lm_sim_add_particle(lm_sim *sim, int body, double x, double y,
     }
     sim->bodies[body].count++;
     sim->pe_ref += mass * (sim->def.gx * x + sim->def.gy * y);
+    sim->bodies[body].pe_ref += mass * (sim->def.gx * x + sim->def.gy * y);
     return LM_OK;
 }
 

@@ -251,10 +251,18 @@ lm_status lm_step_check(lm_sim *sim)
                         "was compressed to zero or negative volume",
                         "element inversion: the time step is too large or "
                         "the material too soft for the load");
-        if (p->x[q] < g->x0 || p->x[q] > x1 || p->y[q] < g->y0 || p->y[q] > y1)
-            return fail(sim, LM_ERR_DOMAIN, q, "left the domain",
-                        "the domain is too small for the motion, or a "
-                        "'free' side let the body out");
+        if (p->x[q] < g->x0 || p->x[q] > x1 || p->y[q] < g->y0 || p->y[q] > y1) {
+            /* A point on a wall or symmetry line can stray by rounding
+             * (1e-17 of a cell per step); that is put back, not reported. */
+            double tx = 1e-6 * g->hx, ty = 1e-6 * g->hy;
+            if (p->x[q] < g->x0 - tx || p->x[q] > x1 + tx || p->y[q] < g->y0 - ty ||
+                p->y[q] > y1 + ty)
+                return fail(sim, LM_ERR_DOMAIN, q, "left the domain",
+                            "the domain is too small for the motion, or a "
+                            "'free' side let the body out");
+            p->x[q] = fmin(fmax(p->x[q], g->x0), x1);
+            p->y[q] = fmin(fmax(p->y[q], g->y0), y1);
+        }
     }
     return LM_OK;
 }
