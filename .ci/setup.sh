@@ -8,7 +8,7 @@ set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 PACKAGES=(cmake make gcc pkg-config liblua5.4-dev libcairo2-dev libpng-dev
-          libfontconfig-dev fonts-dejavu-core libosmesa6-dev valgrind)
+          libfontconfig-dev fonts-dejavu-core libosmesa6-dev valgrind libreadline-dev)
 
 missing=()
 for p in "${PACKAGES[@]}"; do

@@ -109,7 +109,7 @@ for i, p in ipairs(panels) do
   local r = lamina.normals{points = pts, box = {0, 0, 1, 1}, basis = "linear", seed = p.seed,
                            orient = {1, 0}}
   local err = max_angle(r.normals, exact_normals(1.0, p.n))
-  fig:panel{index = i, window = {0, 0, 1, 1}, title = p.label,
+  fig:panel{index = i, window = {-0.1, -0.1, 1.1, 1.1}, title = p.label,
             caption = string.format("cond(T) = %.2g%s, max error %.1e rad", r.cond,
               p.paper and string.format(" (paper %.1e)", p.paper) or "", err)}
   fig:normals{result = r, points = pts, exact = exact_normals(1.0, p.n), length = 0.16}

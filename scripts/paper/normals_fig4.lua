@@ -63,7 +63,7 @@ local fig = lamina.figure{width = 900, height = 520, panels = {2, 1},
 local pa, ea = bilinear_points(3)
 local ra = lamina.normals{points = pa, box = {-1, 0, 0, 1}, seed = seed, orient = {0, 0}}
 local ma = errors(ra.normals, ea)
-fig:panel{index = 1, window = {-1, 0, 0, 1}, title = "(a) xy + 0.1x + 0.3 = 0 in [-1,0] x [0,1]",
+fig:panel{index = 1, window = {-1.1, -0.1, 0.1, 1.1}, title = "(a) xy + 0.1x + 0.3 = 0 in [-1,0] x [0,1]",
           caption = string.format("max error %.1e rad (paper: exact)", ma)}
 fig:normals{result = ra, points = pa, exact = ea}
 print(string.format("Fig 4(a): max error %.2e rad, cond(T) %.3g (paper: exact)", ma, ra.cond))
@@ -71,7 +71,7 @@ print(string.format("Fig 4(a): max error %.2e rad, cond(T) %.3g (paper: exact)",
 local pb, eb = circle_points(3)
 local rb = lamina.normals{points = pb, box = {0, 0, 1, 1}, seed = seed, orient = {0, 0}}
 local mb = errors(rb.normals, eb)
-fig:panel{index = 2, window = {0, 0, 1, 1}, title = "(b) x^2 + y^2 = 0.8^2",
+fig:panel{index = 2, window = {-0.1, -0.1, 1.1, 1.1}, title = "(b) x^2 + y^2 = 0.8^2",
           caption = string.format("max error %.1f deg (paper 7 deg), cond(T) %.2g", math.deg(mb),
                                   rb.cond)}
 fig:polyline{points = (function() local c = {} for k = 0, 60 do local t = math.pi / 120 * k

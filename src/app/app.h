@@ -5,5 +5,8 @@
 int cmd_run(int argc, char **argv);
 int cmd_diff(int argc, char **argv);
 int cmd_gallery(int argc, char **argv);
+int cmd_repl(int argc, char **argv);    /* the workbench, docs/workbench.md */
+int cmd_watch(int argc, char **argv);
+int cmd_sweep(int argc, char **argv);
 
 #endif

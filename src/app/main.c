@@ -20,6 +20,16 @@ static void usage(FILE *out)
             "                 [--update-baselines] [--scripts DIR] [--gallery DIR]\n"
             "                 [--baselines DIR] [--work DIR] [--set name=value] [--quiet]\n"
             "                          render scripts/paper/*.lua into gallery/ (docs/gallery.md)\n"
+            "  lamina repl [SCRIPT.lua] [--set name=value ...] [--quiet]\n"
+            "                          a Lua prompt over the script's simulation, paused\n"
+            "                          before its first sim:run (docs/workbench.md)\n"
+            "  lamina watch SCRIPT.lua [--steps N] [--set ...] [--max-runs N | --once]\n"
+            "               [--interval S] [--log FILE] [--quiet]\n"
+            "                          run again each time the script changes\n"
+            "  lamina sweep SCRIPT.lua --set name=v1,v2,... [--set ...] [--jobs N]\n"
+            "               [--out DIR] [--emit-jobs] [--quiet]\n"
+            "  lamina sweep --collect DIR\n"
+            "                          one run per combination, a summary table\n"
             "  lamina help             this text\n"
             "  lamina --version        the version\n"
             "\n"
@@ -39,6 +49,9 @@ int main(int argc, char **argv)
     if (strcmp(cmd, "run") == 0) return cmd_run(argc - 2, argv + 2);
     if (strcmp(cmd, "diff") == 0) return cmd_diff(argc - 2, argv + 2);
     if (strcmp(cmd, "gallery") == 0) return cmd_gallery(argc - 2, argv + 2);
+    if (strcmp(cmd, "repl") == 0) return cmd_repl(argc - 2, argv + 2);
+    if (strcmp(cmd, "watch") == 0) return cmd_watch(argc - 2, argv + 2);
+    if (strcmp(cmd, "sweep") == 0) return cmd_sweep(argc - 2, argv + 2);
     if (strcmp(cmd, "help") == 0 || strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0) {
         usage(stdout);
         return 0;

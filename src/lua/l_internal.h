@@ -104,4 +104,27 @@ int la_report(lua_State *L);
 /* l_normals.c: sets lamina.normals and lamina.figure in the table on top */
 void la_open_normals(lua_State *L);
 
+/* l_progress.c, l_interrupt.c: hooks of advance() (l_sim.c). begin/end
+ * bracket a run or step call of the sim at sidx; tick follows every step:
+ * it counts the step, shows progress, polls, and returns nonzero when the
+ * run must stop at this boundary (Ctrl-C, watch --steps, a changed script);
+ * la_interrupt_raise then raises "interrupted at t = ..., step ...". */
+void la_progress_begin(lua_State *L, int sidx, long nsteps);
+int la_progress_tick(lua_State *L, const lm_sim *sim);
+void la_progress_end(lua_State *L);
+int la_interrupt_raise(lua_State *L, const lm_sim *sim);
+
+/* l_runlog.c: the run log. A live parameter change (from sim:at, sim:every
+ * or the repl's prompt) is echoed to stderr and run->log with its time and
+ * step, and recorded for lamina.changes(). */
+void la_log_change(lua_State *L, const char *what, const char *key, int validx);
+int la_changes(lua_State *L);
+/* The simulation that stepped or paused last (the prompt's clock). */
+void la_set_last_sim(lua_State *L, int sidx);
+const lm_sim *la_last_sim(lua_State *L);
+
+/* l_pause.c: lamina.pause() and lamina.resume() (the repl's script) */
+int la_pause(lua_State *L);
+int la_resume(lua_State *L);
+
 #endif

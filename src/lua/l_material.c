@@ -22,6 +22,7 @@ static lm_material *push_material(lua_State *L)
 {
     lm_material *m = lua_newuserdatauv(L, sizeof *m, 0);
     memset(m, 0, sizeof *m);
+    m->pic = -1;   /* the simulation's velocity update */
     luaL_setmetatable(L, LA_MATERIAL);
     return m;
 }
@@ -53,7 +54,8 @@ int la_elastic(lua_State *L)
  * mass per unit length rho * thickness (per unit depth). */
 int la_membrane_material(lua_State *L)
 {
-    static const char *const keys[] = {"rho", "E", "nu", "thickness", "law", "one_way", NULL};
+    static const char *const keys[] = {"rho", "E", "nu", "thickness", "law", "one_way",
+                                       "pic", NULL};
     const char *fn = "lamina.membrane";
     la_check_keys(L, 1, fn, keys);
     lm_material *m = push_material(L);
@@ -68,6 +70,12 @@ int la_membrane_material(lua_State *L)
         luaL_error(L, "%s: 'one_way' must be true or false", fn);
     m->one_way = lua_toboolean(L, -1);
     lua_pop(L, 1);
+    /* pic: the FLIP/PIC blend of the membrane's points alone (see
+     * docs/api.md: light membrane points carry FLIP noise the grid does not
+     * see); default: the simulation's */
+    m->pic = la_opt_number(L, 1, fn, "pic", -1);
+    if (la_has(L, 1, "pic") && !(m->pic >= 0 && m->pic <= 1))
+        luaL_error(L, "%s: pic must lie in [0, 1] (got %f)", fn, m->pic);
     validate(L, fn, m);
     return 1;
 }
@@ -193,10 +201,7 @@ static int mat_newindex(lua_State *L)
                           : m->kind == LM_LINEAR_FLUID ? "beta" : "E, nu, plane");
     validate(L, "material", &next);
     *m = next;
-    lamina_run *run = la_run(L);
-    if (run && run->active)
-        fprintf(stderr, "lamina: t = %.9g step %ld: material.%s = %s\n",
-                run->active->t, run->active->step, k, luaL_tolstring(L, 3, NULL));
+    la_log_change(L, "material", k, 3);   /* l_runlog.c: stderr and the run log */
     return 0;
 }
 

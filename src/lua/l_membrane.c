@@ -3,7 +3,8 @@
  *
  * Points are evenly spaced along the curve including both ends; the count
  * is rounded up from length / spacing (design.md). Each point stands for
- * ds = length / intervals of membrane and weighs rho * thickness * ds per
+ * ds = length / intervals of membrane (ds exp(-e) unstrained, with an
+ * initial logarithmic strain e) and weighs rho * thickness * ds exp(-e) per
  * unit depth; `end_mass` replaces the last point's mass (the papers' heavy
  * point). Points keep their curve order for connectivity normals. */
 #include <math.h>
@@ -135,14 +136,19 @@ int la_sim_membrane(lua_State *L)
     int bi = mi < 0 ? -1 : lm_sim_add_membrane(sim, mi, cp.closed);
     if (bi < 0) return luaL_error(L, "%s: out of memory", fn);
     la_sim_keep(L, 1, midx);
-    double mass = mat->rho * mat->thickness * ds;
     for (int k = 0; k < n; k++) {
         double u = cp.closed ? (double)k / n : (n > 1 ? (double)k / (n - 1) : 0);
         double e = strain_at(L, sidx, u, k + 1);
-        double m = (k == n - 1 && end_mass > 0) ? end_mass : mass;
-        if (!(e > -1) || !isfinite(e))
-            return luaL_error(L, "%s: %s initial strain %f at point %d must be > -1",
+        if (!(e > -5 && e < 5))
+            return luaL_error(L, "%s: %s initial strain %f at point %d must lie in (-5, 5)",
                               fn, what, e, k + 1);
+        /* Strains are logarithmic (membrane.c): a point placed ds apart with
+         * strain e stands for ds exp(-e) of unstrained membrane: that is its
+         * mass (a slack membrane carries its extra material) and its
+         * reference length. */
+        double ds_ref = ds * exp(-e);
+        double m = (k == n - 1 && end_mass > 0) ? end_mass
+                                                : mat->rho * mat->thickness * ds_ref;
         size_t q = sim->p.n;
         double ux = vx, uy = vy;
         if (vidx) {
@@ -158,7 +164,7 @@ int la_sim_membrane(lua_State *L)
             lua_pop(L, 2);
         }
         if (lm_sim_add_particle(sim, bi, px[k], py[k], ux, uy, m, mat->rho) != LM_OK ||
-            lm_sim_set_membrane_point(sim, q, ds, e) != LM_OK)
+            lm_sim_set_membrane_point(sim, q, ds_ref, e) != LM_OK)
             return luaL_error(L, "%s: %s", fn, sim->err);
     }
     lm_sim_prepare(sim);

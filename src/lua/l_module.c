@@ -58,6 +58,9 @@ static int luaopen_lamina(lua_State *L)
                                      {"polygon", la_polygon},
                                      {"plot", la_plot},
                                      {"report", la_report},
+                                     {"pause", la_pause},
+                                     {"resume", la_resume},
+                                     {"changes", la_changes},
                                      {NULL, NULL}};
     la_open_material(L);
     la_open_region(L);

@@ -13,6 +13,7 @@
  * elements. Bindings only: every number comes from src/mpm/normals*.c. */
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "l_internal.h"
@@ -74,7 +75,7 @@ static int read_box(lua_State *L, double lo[3], double hi[3])
         lo[a] = v[a];
         hi[a] = v[dim + a];
         if (!isfinite(lo[a]) || !isfinite(hi[a]) || !(hi[a] > lo[a]))
-            luaL_error(L, "%s: 'box' is empty along axis %d ([%g, %g])", FN, a + 1,
+            luaL_error(L, "%s: 'box' is empty along axis %d ([%f, %f])", FN, a + 1,
                        lo[a], hi[a]);
     }
     return dim;
@@ -130,7 +131,7 @@ static uint64_t read_seed(lua_State *L)
 {
     double s = la_opt_number(L, 1, FN, "seed", 1);
     if (!(s >= 0) || s != floor(s) || s > 9007199254740992.0)
-        luaL_error(L, "%s: 'seed' must be a whole number >= 0 (got %g)", FN, s);
+        luaL_error(L, "%s: 'seed' must be a whole number >= 0 (got %f)", FN, s);
     return (uint64_t)s;
 }
 
@@ -306,12 +307,17 @@ static void check_defined(lua_State *L, int dim, size_t n, const double *const x
                           const unsigned char *flags)
 {
     for (size_t i = 0; i < n; i++)
-        if (flags[i] & LM_NF_UNDEFINED)
-            luaL_error(L, "%s: the normal at point %d (%g, %g%s) is undefined: "
-                       "grad phi = 0 there (phi is flat or has an extremum on the "
-                       "membrane, [N] §8); try another seed or random_point, or "
-                       "phi2_point = true", FN, (int)i + 1, x[0][i], x[1][i],
-                       dim == 3 ? ", ..." : "");
+        if (flags[i] & LM_NF_UNDEFINED) {
+            char at[128];    /* lua_pushfstring knows no %g */
+            if (dim == 3)
+                snprintf(at, sizeof at, "(%g, %g, %g)", x[0][i], x[1][i], x[2][i]);
+            else
+                snprintf(at, sizeof at, "(%g, %g)", x[0][i], x[1][i]);
+            luaL_error(L, "%s: the normal at point %d %s is undefined: grad phi = 0 "
+                       "there (phi is flat or has an extremum on the membrane, [N] §8); "
+                       "try another seed or random_point, or phi2_point = true", FN,
+                       (int)i + 1, at);
+        }
 }
 
 /* ---- one element ------------------------------------------------------------ */
@@ -515,7 +521,8 @@ static int grid_variant(lua_State *L, const lm_ngrid *g, int method, size_t n,
         lm_normals_orient(n, g->dim, cx, nrm, o.orient, o.orient_point);
     lua_newtable(L);
     push_normals(L, g->dim, n, nrm);
-    set_number(L, "cond", cond);
+    if (method == M_MASS_GLOBAL)
+        set_number(L, "cond", cond);
     return 1;
 }
 

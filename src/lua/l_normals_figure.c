@@ -265,6 +265,19 @@ static int l_panel(lua_State *L)
         else
             lr_view_2d(&p->view, vx + m, vy + m, vw - 2 * m, vh - 2 * m, lo[0], lo[1],
                        hi[0], hi[1]);
+        /* drawing stays in the panel, off its title and caption lines, and
+         * in 2D within the margin around the window */
+        double c0 = vx, c1 = vy, c2 = vx + vw, c3 = vy + vh;
+        if (!d3) {
+            double a[3] = {lo[0], hi[1], 0}, b[3] = {hi[0], lo[1], 0}, ax, ay, bx, by;
+            lr_view_map(&p->view, a, &ax, &ay);
+            lr_view_map(&p->view, b, &bx, &by);
+            c0 = fmax(c0, ax - m);
+            c1 = fmax(c1, ay - m);
+            c2 = fmin(c2, bx + m);
+            c3 = fmin(c3, by + m);
+        }
+        lr_view_clip(&p->view, c0, c1, c2, c3);
     }
     const char *title = la_opt_string(L, 2, fn, "title", NULL);
     if (title)
@@ -361,12 +374,12 @@ static int l_grid(lua_State *L)
             if (j == 0) {
                 lr_view_map(&p->view, a, &ax, &ay);
                 lr_view_map(&p->view, b, &bx, &by);
-                lr_canvas_line(f->canvas, ax, ay, bx, by, w, k, 0.0);
+                lr_view_line(f->canvas, &p->view, ax, ay, bx, by, w, k, 0.0);
             }
             if (i == 0) {
                 lr_view_map(&p->view, c, &ax, &ay);
                 lr_view_map(&p->view, d, &bx, &by);
-                lr_canvas_line(f->canvas, ax, ay, bx, by, w, k, 0.0);
+                lr_view_line(f->canvas, &p->view, ax, ay, bx, by, w, k, 0.0);
             }
         }
     lua_settop(L, 1);

@@ -223,6 +223,7 @@ static void advance(lua_State *L, la_sim *s, long nsteps)
     lamina_run *run = la_run(L);
     s->running = 1;
     run->active = s->sim;
+    la_progress_begin(L, 1, nsteps);
     fire_due(L, s);
     for (long n = 0; n < nsteps; n++) {
         lm_status st = lm_sim_step(s->sim);
@@ -230,13 +231,22 @@ static void advance(lua_State *L, la_sim *s, long nsteps)
             s->running = 0;
             run->active = NULL;
             run->sim_failed = 1;
+            la_progress_end(L);
             la_record_flush(L, 1);   /* the history up to the failure is kept */
             luaL_error(L, "simulation failed: %s", s->sim->err);
         }
         fire_due(L, s);
+        if (la_progress_tick(L, s->sim)) {   /* Ctrl-C, watch: stop between steps */
+            s->running = 0;
+            run->active = NULL;
+            la_progress_end(L);
+            la_record_flush(L, 1);
+            la_interrupt_raise(L, s->sim);
+        }
     }
     s->running = 0;
     run->active = NULL;
+    la_progress_end(L);
     la_record_flush(L, 1);
 }
 

@@ -8,11 +8,15 @@
 #define LAMINA_LUA_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 typedef struct lua_State lua_State;
 struct lm_sim;
 
 enum { LAMINA_EXIT_OK = 0, LAMINA_EXIT_SIM = 1, LAMINA_EXIT_USAGE = 2 };
+
+/* Why a run stopped at a step boundary before its end (lamina_run.stopped). */
+enum { LAMINA_STOP_NONE = 0, LAMINA_STOP_SIGINT, LAMINA_STOP_STEPS, LAMINA_STOP_POLL };
 
 typedef struct lamina_set {
     const char *name, *value;   /* from --set name=value */
@@ -29,6 +33,17 @@ typedef struct lamina_run {
     const struct lm_sim *active;/* the simulation being stepped, for logs */
     long frames;                /* PNGs written */
     char frame_dir[512];        /* folder of the last one */
+    /* the workbench (lamina repl/watch/sweep, docs/workbench.md) */
+    long steps;                 /* steps taken by every sim so far */
+    double t_last;              /* time of the sim that stepped last */
+    long max_steps;             /* > 0: stop after this many steps (watch --steps) */
+    const char *(*poll)(void *ud);  /* between steps, every ~0.2 s: a reason stops the run */
+    void *poll_ud;
+    int stopped;                /* LAMINA_STOP_* of the last stop */
+    const char *stop_why;       /* the poll's reason */
+    int at_prompt;              /* the repl is running a line typed at its prompt */
+    long changes;               /* live parameter changes logged */
+    FILE *log;                  /* NULL, or a copy of the run log */
 } lamina_run;
 
 /* A Lua state with the safe standard libraries and `lamina` as a global. */
@@ -36,5 +51,39 @@ lua_State *lamina_open_state(lamina_run *run);
 /* Loads and runs run->script in L; prints errors with file:line and a
  * traceback to stderr; returns the exit status. */
 int lamina_run_script(lua_State *L, lamina_run *run);
+
+/* ---- the workbench: lamina repl / watch / sweep (docs/workbench.md) ---- */
+
+/* l_interrupt.c: SIGINT sets a flag instead of ending the process; a run
+ * stops at its next step boundary and Lua code at its next instruction (a
+ * count hook on the registered threads, as lua.c does) with the error
+ * "interrupted at t = ..., step ...". */
+void lamina_interrupt_install(lua_State *L);
+void lamina_interrupt_add_thread(lua_State *thread);
+void lamina_interrupt_uninstall(void);
+int lamina_interrupt_pending(void);
+void lamina_interrupt_clear(void);
+
+/* l_progress.c: forget a progress line left by a run that ended in error. */
+void lamina_progress_reset(void);
+/* Ends a progress line shown in place on a terminal, so that other output
+ * starts on a fresh line. */
+void lamina_progress_clear_line(void);
+
+/* l_pause.c: the repl's script. Runs run->script in a coroutine up to its
+ * first sim:run, or, when the script mentions lamina.pause, up to its first
+ * lamina.pause() (else its end). At the pause the main chunk's locals become
+ * globals and the paused simulation is `sim` (unless that name is taken).
+ * Errors are printed; returns LAMINA_SCRIPT_*. */
+enum { LAMINA_SCRIPT_PAUSED, LAMINA_SCRIPT_DONE, LAMINA_SCRIPT_FAILED, LAMINA_SCRIPT_BAD };
+int lamina_script_start(lua_State *L, lamina_run *run);
+
+/* l_session.c: runs run->script once for `lamina watch`: like
+ * lamina_run_script, but a stop at a step boundary (--steps, a changed file,
+ * Ctrl-C) is not an error (run->stopped says which). The first line of an
+ * error goes to msg. Returns the exit status `lamina run` would give. */
+int lamina_run_watched(lua_State *L, lamina_run *run, char *msg, size_t len);
+/* "name = value, ..." of what the script reported through lamina.report. */
+void lamina_report_line(lua_State *L, char *buf, size_t len);
 
 #endif

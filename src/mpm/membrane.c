@@ -4,8 +4,12 @@
  * The objective form: eps_t accumulates t.de.t with the current unit tangent
  * (t.D.t is the stretching rate along the membrane); sigma is rebuilt from
  * sigma_t every step and never rotated as increments ([T] §5.1's warning).
- * The point's volume is thickness * ds * (1 + eps_t), not updated from
- * tr(de), which would include the gas's strain across the membrane. */
+ * Accumulating t.de.t = dl/l makes eps_t the logarithmic strain of the
+ * point's length: l = ds exp(eps_t) for a point of unstrained length ds.
+ * Its volume is thickness * ds * exp(eps_t) (physics.md writes the
+ * small-strain form thickness * ds * (1 + eps_t); the two differ only for
+ * large slack, such as the dog-bone's), never updated from tr(de), which
+ * would include the gas's strain across the membrane. */
 #include <math.h>
 
 #include "step.h"
@@ -60,7 +64,7 @@ void lm_membrane_update(const lm_material *mat, double dexx, double deyy, double
 {
     *et += tx * tx * dexx + 2 * tx * ty * dexy + ty * ty * deyy;
     rebuild(mat, lm_membrane_stress(mat, *et), tx, ty, sxx, syy, sxy, szz);
-    *rho = m / (mat->thickness * ds * (1 + *et));
+    *rho = m / (mat->thickness * ds * exp(*et));
 }
 
 double lm_membrane_energy(const lm_material *mat, double V, double et)

@@ -56,6 +56,8 @@ typedef struct lm_material {
     int av;                /* gas: Wilkins artificial viscosity on ([F] eq 24) */
     double av_c1, av_c2, av_lambda, av_g;   /* its constants; g <= 0: sqrt(2) h */
     double beta;           /* linear fluid: bulk modulus */
+    double pic;            /* FLIP/PIC blend for this material's particles;
+                              < 0: the simulation's (lm_sim_def.pic) */
 } lm_material;
 
 /* Fastest wave speed of the material (physics.md §5), for the Courant check. */

@@ -145,22 +145,23 @@ int lm_sim_add_membrane(lm_sim *sim, int mat, int closed)
     return b;
 }
 
-/* The point's volume is thickness * ds * (1 + eps_t) (physics.md §2), kept
+/* ds is the point's unstrained length. The point's volume is
+ * thickness * ds * exp(eps_t) (membrane.c, physics.md §2), kept
  * as rho = m / V so that the force loop treats every particle alike; the
  * initial stress follows the law from the initial strain. */
 lm_status lm_sim_set_membrane_point(lm_sim *sim, size_t q, double ds, double et)
 {
     lm_particles *p = &sim->p;
     const lm_material *mat = q < p->n ? sim->mats[p->mat[q]] : NULL;
-    if (!mat || mat->kind != LM_MEMBRANE || !(ds > 0) || !(et > -1)) {
+    if (!mat || mat->kind != LM_MEMBRANE || !(ds > 0) || !isfinite(et)) {
         snprintf(sim->err, sizeof sim->err,
-                 "membrane point %zu: ds = %g and strain = %g (need ds > 0, strain > -1)",
+                 "membrane point %zu: ds = %g and strain = %g (need ds > 0, a finite strain)",
                  q + 1, ds, et);
         return LM_ERR_INPUT;
     }
     p->ds[q] = ds;
     p->et[q] = et;
-    p->rho[q] = p->m[q] / (mat->thickness * ds * (1 + et));
+    p->rho[q] = p->m[q] / (mat->thickness * ds * exp(et));
     double st = lm_membrane_stress(mat, et);
     p->sxx[q] = p->syy[q] = p->sxy[q] = 0;
     p->szz[q] = mat->law == LM_LAW_PLANE_STRESS ? mat->nu * st : 0;

@@ -84,8 +84,10 @@ void lm_step_g2p(lm_sim *sim)
 {
     const lm_grid *g = &sim->grid;
     lm_particles *p = &sim->p;
-    double dt = sim->def.dt, pic = sim->def.pic;
+    double dt = sim->def.dt;
     for (size_t q = 0; q < p->n; q++) {
+        double pic = sim->mats[p->mat[q]]->pic;
+        if (pic < 0) pic = sim->def.pic;
         double ax = 0, ay = 0, ux = 0, uy = 0;
         for (int k = 0; k < 4; k++) {
             int i = corner(g, p->node[q], k);

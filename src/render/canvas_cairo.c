@@ -1,28 +1,45 @@
-/* canvas_cairo.c - the lr_canvas interface over a cairo ARGB32 image surface.
+/* canvas_cairo.c - the lr_canvas interface over a cairo ARGB32 image
+ * surface, or over an SVG / PDF surface for vector output.
  *
- * Every drawing call is void (the interface is shared with future backends
- * that cannot fail per call); cairo keeps a sticky error status instead, and
- * lr_canvas_read_rgba reports it by returning NULL, so a frame is never
- * written from a half-drawn surface. Because that status is sticky, inputs
- * that would put cairo into an error state (invalid UTF-8, non-finite
- * coordinates) are filtered here rather than passed on. */
-#include "render.h"
+ * Every drawing call is void (the interface is shared with the OSMesa
+ * backend, which cannot fail per call); cairo keeps a sticky error status
+ * instead, and lr_canvas_read_rgba / lr_canvas_finish report it, so a frame
+ * is never written from a half-drawn surface. Because that status is
+ * sticky, inputs that would put cairo into an error state (invalid UTF-8,
+ * non-finite coordinates) are filtered before they get here (canvas.c). */
+#include "atomic_file.h"
+#include "canvas_backend.h"
 
+#include <cairo-pdf.h>
+#include <cairo-svg.h>
 #include <cairo.h>
+#include <errno.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-struct lr_canvas {
+typedef struct cairo_canvas {
+    lr_canvas base;
     cairo_surface_t *surface;
     cairo_t *cr;
     int width, height;
     cairo_surface_t *stamps;    /* disc coverage masks, NULL until needed */
     double stamp_r;             /* the radius they were drawn for */
     int stamp_reach, stamp_size;
-};
+    /* where stamped discs may write: the canvas, or the clip rectangle */
+    int bx0, by0, bx1, by1;
+    /* vector output: the file being written (lr_atomic), its state */
+    int vector;
+    lr_atomic out;
+    int out_open;
+    int write_errno;            /* of a failed write into out */
+} cairo_canvas;
+
+static const lr_canvas_ops cairo_ops;
+
+static cairo_canvas *cc(lr_canvas *c) { return (cairo_canvas *)c; }
 
 /* Discs per path fill: one fill per colour run, but bounded so that a long
  * run does not build a path of megabytes first. */
@@ -47,25 +64,33 @@ static void set_err(char *err, size_t errlen, const char *msg, const char *why)
         snprintf(err, errlen, "%s: %s", msg, why);
 }
 
-/* Images must match across machines, so nothing may depend on the local
- * fontconfig setup: no hinting, unhinted metrics, greyscale antialiasing
- * (never subpixel). The face is still looked up by name through cairo's
- * "toy" API; bundling the font file and loading it directly comes later. */
-static int setup_font(cairo_t *cr)
+static cairo_canvas *canvas_alloc(int width, int height)
 {
-    cairo_font_options_t *fo = cairo_font_options_create();
-    if (cairo_font_options_status(fo) != CAIRO_STATUS_SUCCESS) {
-        cairo_font_options_destroy(fo);
-        return -1;
+    cairo_canvas *c = calloc(1, sizeof *c);
+    if (!c)
+        return NULL;
+    c->base.ops = &cairo_ops;
+    c->base.width = c->width = width;
+    c->base.height = c->height = height;
+    c->bx1 = width;
+    c->by1 = height;
+    return c;
+}
+
+/* Creates the context on c->surface with lamina's font; cairo's status. */
+static cairo_status_t canvas_start(cairo_canvas *c)
+{
+    cairo_status_t st = cairo_surface_status(c->surface);
+    if (st == CAIRO_STATUS_SUCCESS) {
+        c->cr = cairo_create(c->surface);
+        st = cairo_status(c->cr);
     }
-    cairo_font_options_set_hint_style(fo, CAIRO_HINT_STYLE_NONE);
-    cairo_font_options_set_hint_metrics(fo, CAIRO_HINT_METRICS_OFF);
-    cairo_font_options_set_antialias(fo, CAIRO_ANTIALIAS_GRAY);
-    cairo_set_font_options(cr, fo);
-    cairo_font_options_destroy(fo);
-    cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
-                           CAIRO_FONT_WEIGHT_NORMAL);
-    return cairo_status(cr) == CAIRO_STATUS_SUCCESS ? 0 : -1;
+    if (st == CAIRO_STATUS_SUCCESS && lr_font_setup(c->cr) != 0)
+        st = cairo_status(c->cr) != CAIRO_STATUS_SUCCESS ? cairo_status(c->cr)
+                                                         : CAIRO_STATUS_NO_MEMORY;
+    if (st == CAIRO_STATUS_SUCCESS)
+        cairo_set_antialias(c->cr, CAIRO_ANTIALIAS_DEFAULT);
+    return st;
 }
 
 lr_canvas *lr_canvas_cairo_new(int width, int height, char *err, size_t errlen)
@@ -77,53 +102,163 @@ lr_canvas *lr_canvas_cairo_new(int width, int height, char *err, size_t errlen)
         set_err(err, errlen, "cannot create canvas", why);
         return NULL;
     }
-    lr_canvas *c = calloc(1, sizeof *c);
+    cairo_canvas *c = canvas_alloc(width, height);
     if (!c) {
         set_err(err, errlen, "cannot create canvas", "out of memory");
         return NULL;
     }
-    c->width = width;
-    c->height = height;
     c->surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height);
-    cairo_status_t st = cairo_surface_status(c->surface);
-    if (st == CAIRO_STATUS_SUCCESS) {
-        c->cr = cairo_create(c->surface);
-        st = cairo_status(c->cr);
-    }
-    if (st == CAIRO_STATUS_SUCCESS && setup_font(c->cr) != 0)
-        st = cairo_status(c->cr) != CAIRO_STATUS_SUCCESS ? cairo_status(c->cr)
-                                                         : CAIRO_STATUS_NO_MEMORY;
+    cairo_status_t st = canvas_start(c);
     if (st != CAIRO_STATUS_SUCCESS) {
         set_err(err, errlen, "cannot create canvas", cairo_status_to_string(st));
-        lr_canvas_free(c);
+        lr_canvas_free(&c->base);
         return NULL;
     }
-    cairo_set_antialias(c->cr, CAIRO_ANTIALIAS_DEFAULT);
-    return c;
+    return &c->base;
 }
 
-void lr_canvas_free(lr_canvas *c)
+static void cairo_destroy_canvas(lr_canvas *base)
 {
-    if (!c)
-        return;
+    cairo_canvas *c = cc(base);
     /* cairo_destroy / cairo_surface_destroy accept NULL */
     cairo_destroy(c->cr);
+    if (c->vector && c->surface)
+        cairo_surface_finish(c->surface);   /* before the file goes */
     cairo_surface_destroy(c->surface);
     cairo_surface_destroy(c->stamps);
+    if (c->out_open)
+        lr_atomic_abort(&c->out, "not finished", NULL, 0);
     free(c);
 }
 
-int lr_canvas_width(const lr_canvas *c) { return c ? c->width : 0; }
-int lr_canvas_height(const lr_canvas *c) { return c ? c->height : 0; }
+/* ---- vector output ----------------------------------------------------- */
+
+static cairo_status_t write_out(void *closure, const unsigned char *data,
+                                unsigned int length)
+{
+    cairo_canvas *c = closure;
+    errno = 0;
+    if (length && fwrite(data, 1, length, c->out.fp) != length) {
+        c->write_errno = errno ? errno : EIO;
+        return CAIRO_STATUS_WRITE_ERROR;
+    }
+    return CAIRO_STATUS_SUCCESS;
+}
+
+static const char *chunk(const lr_text_chunk *text, size_t ntext, const char *key)
+{
+    for (size_t i = 0; i < ntext; i++)
+        if (text[i].key && strcmp(text[i].key, key) == 0)
+            return text[i].value;
+    return NULL;
+}
+
+/* PDF keeps provenance in its document information; cairo 1.16 stamps the
+ * creation time too, which is replaced by a fixed one so that the same
+ * frame gives the same bytes (like the PNGs, which carry no tIME). */
+static void pdf_metadata(cairo_surface_t *s, const lr_text_chunk *text, size_t ntext)
+{
+    static const struct { const char *key; cairo_pdf_metadata_t field; } map[] = {
+        { "Software", CAIRO_PDF_METADATA_CREATOR },
+        { "lamina:script", CAIRO_PDF_METADATA_SUBJECT },
+        { "lamina:set", CAIRO_PDF_METADATA_KEYWORDS },
+    };
+    for (size_t i = 0; i < sizeof map / sizeof map[0]; i++) {
+        const char *v = chunk(text, ntext, map[i].key);
+        if (v && *v)
+            cairo_pdf_surface_set_metadata(s, map[i].field, v);
+    }
+    cairo_pdf_surface_set_metadata(s, CAIRO_PDF_METADATA_CREATE_DATE,
+                                   "2000-01-01T00:00:00Z");
+}
+
+lr_canvas *lr_canvas_vector_new(const char *path, lr_format format, int width,
+                                int height, const lr_text_chunk *text, size_t ntext,
+                                char *err, size_t errlen)
+{
+    if (format != LR_FORMAT_SVG && format != LR_FORMAT_PDF) {
+        set_err(err, errlen, "cannot create a vector canvas", "not SVG or PDF");
+        return NULL;
+    }
+    if (width <= 0 || height <= 0 || width > LR_CANVAS_MAX_SIZE ||
+        height > LR_CANVAS_MAX_SIZE) {
+        char why[64];
+        snprintf(why, sizeof why, "invalid size %dx%d (1..%d each)", width,
+                 height, LR_CANVAS_MAX_SIZE);
+        set_err(err, errlen, "cannot create canvas", why);
+        return NULL;
+    }
+    cairo_canvas *c = canvas_alloc(width, height);
+    if (!c) {
+        set_err(err, errlen, "cannot create canvas", "out of memory");
+        return NULL;
+    }
+    c->vector = 1;
+    if (lr_atomic_open(&c->out, path, err, errlen) != 0) {
+        free(c);
+        return NULL;
+    }
+    c->out_open = 1;
+    if (format == LR_FORMAT_SVG)
+        c->surface = cairo_svg_surface_create_for_stream(write_out, c, width, height);
+    else
+        c->surface = cairo_pdf_surface_create_for_stream(write_out, c, width, height);
+    if (format == LR_FORMAT_PDF &&
+        cairo_surface_status(c->surface) == CAIRO_STATUS_SUCCESS)
+        pdf_metadata(c->surface, text, ntext);
+    cairo_status_t st = canvas_start(c);
+    if (st != CAIRO_STATUS_SUCCESS) {
+        char why[256];
+        snprintf(why, sizeof why, "cairo: %s", cairo_status_to_string(st));
+        cairo_destroy(c->cr);
+        c->cr = NULL;
+        cairo_surface_destroy(c->surface);
+        c->surface = NULL;
+        c->out_open = 0;
+        lr_atomic_abort(&c->out, why, err, errlen);
+        free(c);
+        return NULL;
+    }
+    return &c->base;
+}
+
+static int cairo_finish(lr_canvas *base, char *err, size_t errlen)
+{
+    cairo_canvas *c = cc(base);
+    if (!c->vector || !c->out_open) {
+        set_err(err, errlen, "cannot finish", "not an open vector canvas");
+        return -1;
+    }
+    cairo_status_t st = cairo_status(c->cr);
+    cairo_destroy(c->cr);
+    c->cr = NULL;
+    cairo_surface_finish(c->surface);
+    if (st == CAIRO_STATUS_SUCCESS)
+        st = cairo_surface_status(c->surface);
+    c->out_open = 0;
+    if (st != CAIRO_STATUS_SUCCESS) {
+        char why[256];
+        snprintf(why, sizeof why, "%s", c->write_errno ? strerror(c->write_errno)
+                                                       : cairo_status_to_string(st));
+        return lr_atomic_abort(&c->out, why, err, errlen);
+    }
+    return lr_atomic_commit(&c->out, err, errlen);
+}
+
+/* ---- drawing ----------------------------------------------------------- */
 
 static void set_colour(cairo_t *cr, lr_rgba k)
 {
     cairo_set_source_rgba(cr, k.r, k.g, k.b, k.a);
 }
 
-void lr_canvas_clear(lr_canvas *c, lr_rgba colour)
+/* A finished vector canvas has no context left to draw into. */
+static int drawable(const cairo_canvas *c) { return c->cr != NULL; }
+
+static void cairo_clear(lr_canvas *base, lr_rgba colour)
 {
-    if (!c)
+    cairo_canvas *c = cc(base);
+    if (!drawable(c))
         return;
     /* SOURCE, not OVER: a translucent clear colour must replace, not blend */
     cairo_save(c->cr);
@@ -135,11 +270,11 @@ void lr_canvas_clear(lr_canvas *c, lr_rgba colour)
 
 static int finite2(double a, double b) { return isfinite(a) && isfinite(b); }
 
-void lr_canvas_line(lr_canvas *c, double x0, double y0, double x1, double y1,
-                    double width, lr_rgba colour, double dash)
+static void cairo_line(lr_canvas *base, double x0, double y0, double x1, double y1,
+                       double width, lr_rgba colour, double dash)
 {
-    if (!c || !finite2(x0, y0) || !finite2(x1, y1) || !(width > 0) ||
-        !isfinite(width))
+    cairo_canvas *c = cc(base);
+    if (!drawable(c))
         return;
     cairo_t *cr = c->cr;
     cairo_save(cr);
@@ -155,11 +290,11 @@ void lr_canvas_line(lr_canvas *c, double x0, double y0, double x1, double y1,
     cairo_restore(cr);
 }
 
-void lr_canvas_rect(lr_canvas *c, double x, double y, double w, double h,
-                    double line_width, lr_rgba stroke)
+static void cairo_rect(lr_canvas *base, double x, double y, double w, double h,
+                       double line_width, lr_rgba stroke)
 {
-    if (!c || !finite2(x, y) || !finite2(w, h) || !(line_width > 0) ||
-        !isfinite(line_width))
+    cairo_canvas *c = cc(base);
+    if (!drawable(c))
         return;
     cairo_t *cr = c->cr;
     cairo_save(cr);
@@ -181,8 +316,10 @@ void lr_canvas_rect(lr_canvas *c, double x, double y, double w, double h,
  * its colour through the nearest mask straight into the surface (OVER,
  * premultiplied, integer arithmetic: deterministic). That bypasses the
  * cairo context, which is equivalent only because this canvas never sets
- * a clip or a transform. Large discs, which are few and cover many pixels,
- * still go through cairo's paths. */
+ * a transform and its only clips are whole-pixel rectangles, which the
+ * stamps honour themselves (bx0..by1). Large discs, which are few and
+ * cover many pixels, still go through cairo's paths, as do all discs of a
+ * vector canvas (it has no pixels). */
 
 static int same_colour(const lr_rgba *a, const lr_rgba *b)
 {
@@ -199,7 +336,7 @@ static void fill_run(cairo_t *cr, const lr_rgba *colour, size_t *in_path)
 }
 
 /* Culling also keeps far-away points out of cairo's fixed-point range. */
-static int near_canvas(const lr_canvas *c, double x, double y, double reach)
+static int near_canvas(const cairo_canvas *c, double x, double y, double reach)
 {
     return finite2(x, y) && x + reach >= 0 && y + reach >= 0 &&
            x - reach <= c->width && y - reach <= c->height;
@@ -207,7 +344,7 @@ static int near_canvas(const lr_canvas *c, double x, double y, double reach)
 
 /* Path fill, one fill per colour run. Arcs are traced clockwise on screen,
  * so under the default winding rule overlapping discs unite. */
-static void discs_filled(lr_canvas *c, size_t n, const double *px,
+static void discs_filled(cairo_canvas *c, size_t n, const double *px,
                          const double *py, double r, const lr_rgba *colours)
 {
     cairo_t *cr = c->cr;
@@ -235,7 +372,7 @@ static void discs_filled(lr_canvas *c, size_t n, const double *px,
 /* Builds (or keeps) the coverage masks for radius r; -1 on failure. The
  * mask for phase (qx, qy) is tile qy*STAMP_PHASES+qx, tiles stacked
  * vertically; its pixel (reach, reach) holds the disc centre's pixel. */
-static int prepare_stamps(lr_canvas *c, double r)
+static int prepare_stamps(cairo_canvas *c, double r)
 {
     if (c->stamps && c->stamp_r == r)
         return 0;
@@ -314,7 +451,7 @@ static int phase(double frac)
     return q < 0 ? 0 : q >= STAMP_PHASES ? STAMP_PHASES - 1 : q;
 }
 
-static void stamp_disc(lr_canvas *c, unsigned char *img, int istride,
+static void stamp_disc(cairo_canvas *c, unsigned char *img, int istride,
                        double x, double y, const argb8 *k)
 {
     double fx = floor(x), fy = floor(y);
@@ -324,8 +461,10 @@ static void stamp_disc(lr_canvas *c, unsigned char *img, int istride,
     int mstride = cairo_image_surface_get_stride(c->stamps);
     const unsigned char *tile = cairo_image_surface_get_data(c->stamps) +
                                 (size_t)q * size * mstride;
-    int j0 = y0 < 0 ? -y0 : 0, j1 = c->height - y0 < size ? c->height - y0 : size;
-    int i0 = x0 < 0 ? -x0 : 0, i1 = c->width - x0 < size ? c->width - x0 : size;
+    int j0 = y0 < c->by0 ? c->by0 - y0 : 0;
+    int j1 = c->by1 - y0 < size ? c->by1 - y0 : size;
+    int i0 = x0 < c->bx0 ? c->bx0 - x0 : 0;
+    int i1 = c->bx1 - x0 < size ? c->bx1 - x0 : size;
     for (int j = j0; j < j1; j++) {
         const unsigned char *cov = tile + (size_t)j * mstride;
         unsigned char *row = img + (size_t)(y0 + j) * istride + 4 * (size_t)x0;
@@ -337,7 +476,7 @@ static void stamp_disc(lr_canvas *c, unsigned char *img, int istride,
 
 /* Below DISC_MIN_ARC_RADIUS a disc is the pixel holding its centre, so
  * a dot stays crisp; otherwise a stamp from prepare_stamps. */
-static void discs_stamped(lr_canvas *c, size_t n, const double *px,
+static void discs_stamped(cairo_canvas *c, size_t n, const double *px,
                           const double *py, double r, const lr_rgba *colours)
 {
     cairo_surface_flush(c->surface);
@@ -356,7 +495,7 @@ static void discs_stamped(lr_canvas *c, size_t n, const double *px,
         }
         if (!dot) {
             stamp_disc(c, img, istride, x, y, &k);
-        } else if (x >= 0 && y >= 0 && x < c->width && y < c->height) {
+        } else if (x >= c->bx0 && y >= c->by0 && x < c->bx1 && y < c->by1) {
             size_t at = (size_t)floor(y) * istride + 4 * (size_t)floor(x);
             blend(img + at, &k, 255);
         }
@@ -364,75 +503,27 @@ static void discs_stamped(lr_canvas *c, size_t n, const double *px,
     cairo_surface_mark_dirty(c->surface);
 }
 
-void lr_canvas_discs(lr_canvas *c, size_t n, const double *px, const double *py,
-                     double r, const lr_rgba *colours)
+static void cairo_discs(lr_canvas *base, size_t n, const double *px,
+                        const double *py, double r, const lr_rgba *colours)
 {
-    if (!c || n == 0 || !px || !py || !colours || !(r > 0) || !isfinite(r) ||
-        cairo_status(c->cr) != CAIRO_STATUS_SUCCESS)
+    cairo_canvas *c = cc(base);
+    if (!drawable(c) || cairo_status(c->cr) != CAIRO_STATUS_SUCCESS)
         return;
-    if (r < DISC_MIN_ARC_RADIUS ||
+    if (c->vector)
+        discs_filled(c, n, px, py, r, colours);
+    else if (r < DISC_MIN_ARC_RADIUS ||
         (r <= STAMP_MAX_RADIUS && prepare_stamps(c, r) == 0))
         discs_stamped(c, n, px, py, r, colours);
     else
         discs_filled(c, n, px, py, r, colours);
 }
 
-/* Decodes one UTF-8 sequence at s the way cairo accepts it; returns its
- * length, or 0 if cairo would reject it (malformed, overlong, surrogate,
- * beyond U+10FFFF, or a Unicode noncharacter). */
-static size_t utf8_len(const unsigned char *s)
+/* text is already valid for cairo (canvas.c cleaned it) */
+static void cairo_text(lr_canvas *base, double x, double y, double size,
+                       lr_rgba colour, lr_align align, const char *clean)
 {
-    size_t len;
-    uint32_t cp, min;
-    if (s[0] < 0x80)
-        return 1;
-    if ((s[0] & 0xE0) == 0xC0) { len = 2; cp = s[0] & 0x1F; min = 0x80; }
-    else if ((s[0] & 0xF0) == 0xE0) { len = 3; cp = s[0] & 0x0F; min = 0x800; }
-    else if ((s[0] & 0xF8) == 0xF0) { len = 4; cp = s[0] & 0x07; min = 0x10000; }
-    else return 0;
-    for (size_t k = 1; k < len; k++) {
-        if ((s[k] & 0xC0) != 0x80)
-            return 0;   /* also stops at the terminating NUL */
-        cp = (cp << 6) | (s[k] & 0x3F);
-    }
-    if (cp < min || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF) ||
-        (cp >= 0xFDD0 && cp <= 0xFDEF) || (cp & 0xFFFE) == 0xFFFE)
-        return 0;
-    return len;
-}
-
-/* A copy of text that cairo will accept: each rejected byte becomes '?'.
- * Labels come from user scripts, and one bad byte must not poison the
- * canvas (cairo errors are sticky). NULL on OOM. */
-static char *utf8_clean(const char *text)
-{
-    size_t n = strlen(text);
-    char *out = malloc(n + 1);
-    if (!out)
-        return NULL;
-    const unsigned char *s = (const unsigned char *)text;
-    size_t i = 0;
-    while (i < n) {
-        size_t k = utf8_len(s + i);
-        if (k == 0) {
-            out[i++] = '?';
-            continue;
-        }
-        memcpy(out + i, s + i, k);
-        i += k;
-    }
-    out[n] = '\0';
-    return out;
-}
-
-void lr_canvas_text(lr_canvas *c, double x, double y, double size,
-                    lr_rgba colour, lr_align align, const char *text)
-{
-    if (!c || !text || !*text || !finite2(x, y) || !(size > 0) ||
-        !isfinite(size))
-        return;
-    char *clean = utf8_clean(text);
-    if (!clean)
+    cairo_canvas *c = cc(base);
+    if (!drawable(c))
         return;
     cairo_t *cr = c->cr;
     cairo_save(cr);
@@ -447,7 +538,55 @@ void lr_canvas_text(lr_canvas *c, double x, double y, double size,
     cairo_move_to(cr, x, y);
     cairo_show_text(cr, clean);
     cairo_restore(cr);
-    free(clean);
+}
+
+/* ---- fills and clips --------------------------------------------------- */
+
+static void cairo_fill_polys(lr_canvas *base, size_t npoly, const size_t *counts,
+                             const double *xy, lr_rgba colour)
+{
+    cairo_canvas *c = cc(base);
+    if (!drawable(c))
+        return;
+    cairo_t *cr = c->cr;
+    cairo_save(cr);
+    cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
+    cairo_new_path(cr);
+    const double *p = xy;
+    for (size_t k = 0; k < npoly; k++) {
+        if (counts[k] >= 3) {
+            cairo_move_to(cr, p[0], p[1]);
+            for (size_t i = 1; i < counts[k]; i++)
+                cairo_line_to(cr, p[2 * i], p[2 * i + 1]);
+            cairo_close_path(cr);
+        }
+        p += 2 * counts[k];
+    }
+    set_colour(cr, colour);
+    cairo_fill(cr);
+    cairo_restore(cr);
+}
+
+static void cairo_clip_rect(lr_canvas *base, int x, int y, int w, int h)
+{
+    cairo_canvas *c = cc(base);
+    if (!drawable(c))
+        return;
+    cairo_reset_clip(c->cr);
+    if (w == 0) {
+        c->bx0 = c->by0 = 0;
+        c->bx1 = c->width;
+        c->by1 = c->height;
+        return;
+    }
+    if (w < 0)
+        x = y = w = h = 0;      /* nothing */
+    cairo_rectangle(c->cr, x, y, w, h);
+    cairo_clip(c->cr);
+    c->bx0 = x;
+    c->by0 = y;
+    c->bx1 = x + w;
+    c->by1 = y + h;
 }
 
 /* ARGB32 is a native-endian uint32 per pixel with premultiplied colour;
@@ -470,9 +609,10 @@ static void unpremultiply_row(const unsigned char *src, unsigned char *dst,
     }
 }
 
-unsigned char *lr_canvas_read_rgba(lr_canvas *c)
+static unsigned char *cairo_read_rgba(lr_canvas *base)
 {
-    if (!c || cairo_status(c->cr) != CAIRO_STATUS_SUCCESS)
+    cairo_canvas *c = cc(base);
+    if (c->vector || !drawable(c) || cairo_status(c->cr) != CAIRO_STATUS_SUCCESS)
         return NULL;
     cairo_surface_flush(c->surface);
     if (cairo_surface_status(c->surface) != CAIRO_STATUS_SUCCESS)
@@ -490,3 +630,17 @@ unsigned char *lr_canvas_read_rgba(lr_canvas *c)
                           c->width);
     return out;
 }
+
+static const lr_canvas_ops cairo_ops = {
+    .backend = LR_BACKEND_CAIRO,
+    .destroy = cairo_destroy_canvas,
+    .clear = cairo_clear,
+    .line = cairo_line,
+    .rect = cairo_rect,
+    .discs = cairo_discs,
+    .text = cairo_text,
+    .fill = cairo_fill_polys,
+    .clip = cairo_clip_rect,
+    .read_rgba = cairo_read_rgba,
+    .finish = cairo_finish,
+};

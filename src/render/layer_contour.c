@@ -97,7 +97,7 @@ static void draw_segment(void *p, double i0, double j0, double i1, double j1)
         bx += ex;
         by += ey;
     }
-    lr_canvas_line(d->c, ax, ay, bx, by, d->width, d->colour, 0.0);
+    lr_view_line(d->c, d->v, ax, ay, bx, by, d->width, d->colour, 0.0);
 }
 
 size_t lr_layer_contour(lr_canvas *c, const lr_view *v, const double *f,

@@ -1,7 +1,7 @@
 /* layer_glyphs.c - the marks of the normals figures ([N] Figs 3-11):
  * membrane points as open circles, the random point as an asterisk,
  * computed normals as solid arrows and exact normals dashed, the element
- * (a rectangle, or a cube in 3D) - all from lr_canvas_line. */
+ * (a rectangle, or a cube in 3D) - all from lines, clipped to the view. */
 #include <math.h>
 
 #include "layers.h"
@@ -18,8 +18,8 @@ static void point_at(const double *const p[3], int dim, size_t i, double q[3])
 }
 
 /* A segment with its ends pushed out by `ext` pixels (closes joints). */
-static void line_ext(lr_canvas *c, double ax, double ay, double bx, double by,
-                     double width, lr_rgba k, double dash, double ext)
+static void line_ext(lr_canvas *c, const lr_view *v, double ax, double ay, double bx,
+                     double by, double width, lr_rgba k, double dash, double ext)
 {
     double len = hypot(bx - ax, by - ay);
     if (len > 0 && ext > 0) {
@@ -29,7 +29,7 @@ static void line_ext(lr_canvas *c, double ax, double ay, double bx, double by,
         bx += ex;
         by += ey;
     }
-    lr_canvas_line(c, ax, ay, bx, by, width, k, dash);
+    lr_view_line(c, v, ax, ay, bx, by, width, k, dash);
 }
 
 void lr_layer_circles(lr_canvas *c, const lr_view *v, size_t n, int dim,
@@ -43,7 +43,7 @@ void lr_layer_circles(lr_canvas *c, const lr_view *v, size_t n, int dim,
         for (int k = 0; k < CIRCLE_SEGMENTS; k++) {
             double a0 = TWO_PI * k / CIRCLE_SEGMENTS;
             double a1 = TWO_PI * (k + 1) / CIRCLE_SEGMENTS;
-            line_ext(c, x + radius_px * cos(a0), y + radius_px * sin(a0),
+            line_ext(c, v, x + radius_px * cos(a0), y + radius_px * sin(a0),
                      x + radius_px * cos(a1), y + radius_px * sin(a1), width,
                      colour, 0.0, 0.25 * width);
         }
@@ -68,8 +68,8 @@ void lr_layer_asterisk(lr_canvas *c, const lr_view *v, const double p[3],
     lr_view_map(v, p, &x, &y);
     for (int k = 0; k < 3; k++) {
         double a = TWO_PI * (0.25 + k / 6.0);
-        lr_canvas_line(c, x - r * cos(a), y - r * sin(a), x + r * cos(a),
-                       y + r * sin(a), width, colour, 0.0);
+        lr_view_line(c, v, x - r * cos(a), y - r * sin(a), x + r * cos(a),
+                     y + r * sin(a), width, colour, 0.0);
     }
 }
 
@@ -91,13 +91,13 @@ void lr_layer_arrows(lr_canvas *c, const lr_view *v, size_t n, int dim,
         double len = hypot(bx - ax, by - ay);
         if (!(len > 0))
             continue;
-        lr_canvas_line(c, ax, ay, bx, by, width, colour, dash);
+        lr_view_line(c, v, ax, ay, bx, by, width, colour, dash);
         double h = fmin(head_px, 0.6 * len);
         double ux = (ax - bx) / len, uy = (ay - by) / len;
         for (int s = -1; s <= 1; s += 2) {
             double ca = cos(HEAD_ANGLE), sa = s * sin(HEAD_ANGLE);
             double hx = ux * ca - uy * sa, hy = ux * sa + uy * ca;
-            line_ext(c, bx, by, bx + h * hx, by + h * hy, width, colour, 0.0,
+            line_ext(c, v, bx, by, bx + h * hx, by + h * hy, width, colour, 0.0,
                      0.5 * width);
         }
     }
@@ -113,7 +113,7 @@ void lr_layer_polyline(lr_canvas *c, const lr_view *v, size_t n, int dim,
         point_at(p, dim, i + 1, b);
         lr_view_map(v, a, &ax, &ay);
         lr_view_map(v, b, &bx, &by);
-        line_ext(c, ax, ay, bx, by, width, colour, dash,
+        line_ext(c, v, ax, ay, bx, by, width, colour, dash,
                  dash > 0 ? 0.0 : 0.25 * width);
     }
 }
@@ -151,7 +151,7 @@ void lr_layer_box(lr_canvas *c, const lr_view *v, const double lo[3],
                 int hidden = !facing(v, k1, s1) && !facing(v, k2, s2);
                 lr_view_map(v, a, &ax, &ay);
                 lr_view_map(v, b, &bx, &by);
-                line_ext(c, ax, ay, bx, by, hidden ? 0.6 * width : width,
+                line_ext(c, v, ax, ay, bx, by, hidden ? 0.6 * width : width,
                          colour, hidden ? 4.0 : 0.0, hidden ? 0.0 : 0.5 * width);
             }
     }

@@ -11,6 +11,7 @@ void lr_view_2d(lr_view *v, double px, double py, double pw, double ph,
 {
     double ww = wx1 - wx0, wh = wy1 - wy0;
     v->is3d = 0;
+    v->clip[0] = v->clip[1] = v->clip[2] = v->clip[3] = 0.0;
     v->s = fmin(pw / ww, ph / wh);
     if (!(v->s > 0) || !isfinite(v->s))
         v->s = 1.0;
@@ -29,6 +30,7 @@ void lr_view_3d(lr_view *v, double px, double py, double pw, double ph,
 {
     double a = azimuth * DEG, e = elevation * DEG;
     v->is3d = 1;
+    v->clip[0] = v->clip[1] = v->clip[2] = v->clip[3] = 0.0;
     v->toward[0] = cos(e) * cos(a);
     v->toward[1] = cos(e) * sin(a);
     v->toward[2] = sin(e);
@@ -66,4 +68,49 @@ void lr_view_map(const lr_view *v, const double p[3], double *x, double *y)
     double q[3] = {p[0] - v->c[0], p[1] - v->c[1], p[2] - v->c[2]};
     *x = v->ox + v->s * dot3(q, v->right);
     *y = v->oy - v->s * dot3(q, v->up);
+}
+
+void lr_view_clip(lr_view *v, double x0, double y0, double x1, double y1)
+{
+    v->clip[0] = x0;
+    v->clip[1] = y0;
+    v->clip[2] = x1;
+    v->clip[3] = y1;
+}
+
+/* Liang & Barsky (1984): the parameter range of a + t (b - a) inside the
+ * rectangle, one edge at a time. */
+void lr_view_line(lr_canvas *c, const lr_view *v, double ax, double ay, double bx,
+                  double by, double width, lr_rgba colour, double dash)
+{
+    if (v->clip[2] > v->clip[0]) {
+        double dx = bx - ax, dy = by - ay, t0 = 0.0, t1 = 1.0;
+        double p[4] = {-dx, dx, -dy, dy};
+        double q[4] = {ax - v->clip[0], v->clip[2] - ax, ay - v->clip[1], v->clip[3] - ay};
+        for (int k = 0; k < 4; k++) {
+            if (p[k] == 0.0) {
+                if (q[k] < 0.0)
+                    return;
+                continue;
+            }
+            double t = q[k] / p[k];
+            if (p[k] < 0.0) {
+                if (t > t1)
+                    return;
+                if (t > t0)
+                    t0 = t;
+            } else {
+                if (t < t0)
+                    return;
+                if (t < t1)
+                    t1 = t;
+            }
+        }
+        double x0 = ax + t0 * dx, y0 = ay + t0 * dy;
+        bx = ax + t1 * dx;
+        by = ay + t1 * dy;
+        ax = x0;
+        ay = y0;
+    }
+    lr_canvas_line(c, ax, ay, bx, by, width, colour, dash);
 }

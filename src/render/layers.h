@@ -23,6 +23,8 @@ typedef struct lr_view {
     double c[3];              /* 3D: world point drawn at (ox, oy) */
     double right[3], up[3];   /* 3D: screen axes in world coordinates */
     double toward[3];         /* 3D: unit vector towards the viewer */
+    double clip[4];           /* pixels x0, y0, x1, y1 the layers draw in;
+                                 x1 <= x0: no clipping (the default) */
 } lr_view;
 
 /* World window [wx0, wx1] x [wy0, wy1] into the pixel rectangle at (px, py)
@@ -38,6 +40,11 @@ void lr_view_3d(lr_view *v, double px, double py, double pw, double ph,
                 double elevation);
 /* Pixel position of world point p (p[2] ignored in 2D). */
 void lr_view_map(const lr_view *v, const double p[3], double *x, double *y);
+/* Layers draw inside this pixel rectangle only (a panel of a figure). */
+void lr_view_clip(lr_view *v, double x0, double y0, double x1, double y1);
+/* A line in pixels, clipped to the view's rectangle (Liang-Barsky). */
+void lr_view_line(lr_canvas *c, const lr_view *v, double ax, double ay, double bx,
+                  double by, double width, lr_rgba colour, double dash);
 
 /* ---- contours (layer_contour.c) ------------------------------------------ */
 

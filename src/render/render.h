@@ -56,6 +56,57 @@ int lr_png_write(const char *path, int width, int height,
 int lr_png_read(const char *path, int *width, int *height,
                 unsigned char **rgba, char *err, size_t errlen);
 
+/* ---- backends (canvas.c; issue 5) --------------------------------------
+ *
+ * The same lr_canvas calls draw through cairo (always built; vector output)
+ * or OSMesa (software OpenGL; built when pkg-config finds osmesa, then
+ * LAMINA_HAVE_OSMESA is defined). Both take pixel coordinates with the
+ * origin top-left, y down, and give straight RGBA8 rows top to bottom. */
+
+typedef enum lr_backend { LR_BACKEND_CAIRO = 0, LR_BACKEND_OSMESA = 1 } lr_backend;
+
+/* "cairo" or "osmesa" into *b; -1 with "unknown backend 'x' (known: cairo,
+ * osmesa)" otherwise. Does not check that the backend was built. */
+int lr_backend_parse(const char *name, lr_backend *b, char *err, size_t errlen);
+const char *lr_backend_name(lr_backend b);
+/* 0 if this build has backend b, else -1 with "this lamina was built
+ * without OSMesa". */
+int lr_backend_check(lr_backend b, char *err, size_t errlen);
+/* A raster canvas of either backend (the OSMesa one fails cleanly in a
+ * build without it). Sizes: 1..LR_CANVAS_MAX_SIZE each side, and OSMesa's
+ * own maximum, which it reports. */
+#define LR_CANVAS_MAX_SIZE 16384
+lr_canvas *lr_canvas_new(lr_backend b, int width, int height, char *err, size_t errlen);
+lr_canvas *lr_canvas_osmesa_new(int width, int height, char *err, size_t errlen);
+lr_backend lr_canvas_backend(const lr_canvas *c);
+
+/* Vector output through cairo: a canvas that draws into an SVG or PDF file
+ * (atomically: into a temporary beside `path`, renamed by lr_canvas_finish;
+ * lr_canvas_free without a successful finish removes it). width x height
+ * is the page size in points (1 px = 1 pt). lr_canvas_read_rgba returns
+ * NULL for these. `text` becomes the PDF's metadata (Creator, Subject,
+ * Keywords from "Software", "lamina:script", "lamina:set"); SVG has none. */
+typedef enum lr_format { LR_FORMAT_PNG = 0, LR_FORMAT_SVG, LR_FORMAT_PDF } lr_format;
+/* By the file name's ending (.svg, .pdf, case-insensitive), else PNG. */
+lr_format lr_format_of(const char *path);
+lr_canvas *lr_canvas_vector_new(const char *path, lr_format format, int width,
+                                int height, const lr_text_chunk *text, size_t ntext,
+                                char *err, size_t errlen);
+int lr_canvas_finish(lr_canvas *c, char *err, size_t errlen);
+
+/* Filled polygons: npoly rings, ring k with counts[k] vertices, all vertices
+ * in xy as x, y pairs (pixels). Nonzero winding, as cairo's default: rings
+ * of one orientation unite, an opposite ring cuts a hole. */
+void lr_canvas_fill(lr_canvas *c, size_t npoly, const size_t *counts,
+                    const double *xy, lr_rgba colour);
+/* Restricts drawing (clear too) to the pixel rectangle x, y, w, h (whole
+ * pixels, clamped to the canvas); lr_canvas_unclip lifts it. */
+void lr_canvas_clip(lr_canvas *c, int x, int y, int w, int h);
+void lr_canvas_unclip(lr_canvas *c);
+/* The advance width of text as lr_canvas_text draws it at size px. Needs no
+ * canvas: every backend draws text with the same face (font.c). */
+double lr_text_width(double size, const char *text);
+
 /* ---- frames ---------------------------------------------------------- */
 
 typedef struct lr_grid {
@@ -78,12 +129,14 @@ typedef struct lr_frame {
     const char *title;            /* top, centred; may be NULL */
     const lr_text_chunk *text;    /* provenance, into the PNG */
     size_t ntext;
+    lr_backend backend;           /* 0 (memset): cairo */
 } lr_frame;
 
 /* The colour of group g (a fixed, colour-blind-safe palette, cycled). */
 lr_rgba lr_palette(int g);
 
-/* Draws the frame with cairo and writes it to `path` (PNG). */
+/* Draws the frame with f->backend and writes it to `path`: PNG, or SVG /
+ * PDF (cairo only) when the name ends so. */
 int lr_frame_write(const lr_frame *f, const char *path, char *err, size_t errlen);
 
 /* Frees cairo's and fontconfig's static caches; call once at exit. */

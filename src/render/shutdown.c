@@ -6,10 +6,12 @@
 #include <cairo.h>
 #include <fontconfig/fontconfig.h>
 
+#include "canvas_backend.h"
 #include "render.h"
 
 void lr_shutdown(void)
 {
+    lr_font_release();      /* lamina's cached face first: cairo's reset frees what it held */
     cairo_debug_reset_static_data();
     FcFini();
 }

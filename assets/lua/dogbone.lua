@@ -1,0 +1,80 @@
+-- dogbone.lua - the quarter dog-bone of the membrane expansion problem
+-- ([F] §4.3, Fig 10; [T] §6.2, Fig 47; physics.md V7).
+--
+-- The texts keep only the labels "x = 0.5", "y = 1", "Pi = 100", the 0 and
+-- 90 degree directions and a 0.1 cell for scale. Our construction, in the
+-- quarter x >= 0, y >= 0 (symmetry lines x = 0 and y = 0):
+--   * a lobe: the superellipse |x/0.5|^3 + |(y - 0.5)/0.5|^3 = 1, so the
+--     labelled extents are x = 0.5 (its widest) and y = 1 (its top);
+--   * a neck: the straight x = neck (0.35) from the 0-degree axis up to
+--     where it meets the lobe, so the waist at y = 0 is narrower than the
+--     lobe (the full shape, mirrored, is two lobes joined by a neck);
+--   * quarter gas area 0.447 (physics.md: 0.44-0.47 from [F]'s total mass),
+--     geometric quarter length 1.390;
+--   * the membrane is slack: it carries natural_length = 2.2 of material
+--     (physics.md: ~2.2, the quarter circle of the final radius ~1.39-1.40)
+--     pressed into 1.390, i.e. an initial (logarithmic) strain of
+--     ln(1.390/2.2) = -0.459, with the one-way (wrinkle) law on ([T] Table
+--     4: "wrinkle algorithm on"). Taut, it is the quarter circle of radius
+--     2.2 / (pi/2) = 1.40; energy conservation then gives
+--     p = 0.447 * 250 * 0.4 / (pi/4 1.40^2) = 29.0, beside [T] Table 5's
+--     1.394-1.396 and 29.0.
+local M = { neck = 0.35, a = 0.5, b = 0.5, yc = 0.5, n = 3, natural_length = 2.2 }
+
+-- The lobe's half-width at height y (0 outside it).
+local function lobe_x(y)
+  local s = math.abs(y - M.yc) / M.b
+  if s >= 1 then return 0 end
+  return M.a * (1 - s ^ M.n) ^ (1 / M.n)
+end
+
+-- The quarter boundary as a polyline from the 0-degree axis to the
+-- 90-degree axis, dense enough for sim:membrane to place points on.
+function M.polyline(samples)
+  samples = samples or 2000
+  local pts = {}
+  -- neck: from (neck, 0) up to where the lobe is as wide as the neck
+  local lo, hi = 0, M.yc
+  for _ = 1, 60 do
+    local mid = 0.5 * (lo + hi)
+    if lobe_x(mid) < M.neck then lo = mid else hi = mid end
+  end
+  local y_meet = 0.5 * (lo + hi)
+  pts[#pts + 1] = {M.neck, 0}
+  pts[#pts + 1] = {M.neck, y_meet}
+  -- lobe: the superellipse parametrised by angle, from the meeting point
+  -- round its right side to the top (0, yc + b)
+  local function at(t)
+    local c, s = math.cos(t), math.sin(t)
+    local sc = (c >= 0 and 1 or -1) * math.abs(c) ^ (2 / M.n)
+    local ss = (s >= 0 and 1 or -1) * math.abs(s) ^ (2 / M.n)
+    return M.a * sc, M.yc + M.b * ss
+  end
+  local t0 = -math.asin(((M.yc - y_meet) / M.b) ^ (M.n / 2))
+  for i = 1, samples do
+    local t = t0 + (math.pi / 2 - t0) * i / samples
+    local x, y = at(t)
+    if i == samples then x, y = 0, M.yc + M.b end
+    pts[#pts + 1] = {x, y}
+  end
+  return pts
+end
+
+-- The region inside the quarter boundary (for seeding the gas).
+function M.contains(x, y)
+  if x < 0 or y < 0 then return false end
+  local w = lobe_x(y)
+  if y < M.yc and w < M.neck then w = M.neck end
+  if y < M.yc and lobe_x(y) >= M.neck then w = lobe_x(y) end
+  return x <= w and y <= M.yc + M.b
+end
+
+function M.length(pts)
+  local l = 0
+  for i = 2, #pts do
+    l = l + math.sqrt((pts[i][1] - pts[i - 1][1])^2 + (pts[i][2] - pts[i - 1][2])^2)
+  end
+  return l
+end
+
+return M

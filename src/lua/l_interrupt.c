@@ -1,0 +1,108 @@
+/* l_interrupt.c - Ctrl-C stops a run, not the program (lamina repl, watch).
+ *
+ * As lua.c does it: the SIGINT handler only sets a flag and arms a count
+ * hook on the registered Lua threads (lua_sethook may be called from a
+ * signal handler). A run notices the flag at its next step boundary
+ * (la_progress_tick, called by advance()), so the simulation is left
+ * between two steps, exactly as after a completed sim:step; plain Lua code
+ * (a loop typed at the prompt) notices the hook at its next instruction.
+ * Either raises an ordinary Lua error that the prompt catches. */
+#include <signal.h>
+#include <string.h>
+
+#include "l_internal.h"
+
+#define MAX_THREADS 4
+
+static volatile sig_atomic_t pending;
+static lua_State *volatile threads[MAX_THREADS];
+static int installed;
+static struct sigaction saved;
+
+static void clear_hooks(void)
+{
+    for (int i = 0; i < MAX_THREADS; i++)
+        if (threads[i]) lua_sethook(threads[i], NULL, 0, 0);
+}
+
+/* Raises the error for whatever stopped the run, after recording why in
+ * run->stopped (the watch tells a stop from a failure by it). */
+int la_interrupt_raise(lua_State *L, const lm_sim *sim)
+{
+    lamina_run *run = la_run(L);
+    int why = run && run->stopped ? run->stopped : LAMINA_STOP_SIGINT;
+    if (run) run->stopped = why;
+    pending = 0;
+    clear_hooks();
+    if (!sim) return luaL_error(L, "interrupted");
+    if (why == LAMINA_STOP_STEPS)
+        return luaL_error(L, "stopped after %I steps (--steps) at t = %f, step %I",
+                          (lua_Integer)run->steps, sim->t, (lua_Integer)sim->step);
+    if (why == LAMINA_STOP_POLL)
+        return luaL_error(L, "stopped at t = %f, step %I: %s", sim->t, (lua_Integer)sim->step,
+                          run->stop_why ? run->stop_why : "asked to stop");
+    return luaL_error(L, "interrupted at t = %f, step %I", sim->t, (lua_Integer)sim->step);
+}
+
+/* The count hook: Lua code running when Ctrl-C came. Inside a run (a
+ * callback between steps) the message names the simulation's clock. */
+static void hook(lua_State *L, lua_Debug *ar)
+{
+    (void)ar;
+    lua_sethook(L, NULL, 0, 0);
+    if (!pending) return;
+    lamina_run *run = la_run(L);
+    if (run) run->stopped = LAMINA_STOP_SIGINT;
+    la_interrupt_raise(L, run ? run->active : NULL);
+}
+
+static void on_sigint(int sig)
+{
+    (void)sig;
+    pending = 1;
+    for (int i = 0; i < MAX_THREADS; i++)
+        if (threads[i]) lua_sethook(threads[i], hook, LUA_MASKCOUNT, 1);
+}
+
+void lamina_interrupt_install(lua_State *L)
+{
+    memset((void *)threads, 0, sizeof threads);
+    lamina_interrupt_add_thread(L);
+    pending = 0;
+    if (installed) return;
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_sigint;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = 0;   /* no SA_RESTART: a blocking read at the prompt returns */
+    if (sigaction(SIGINT, &sa, &saved) == 0) installed = 1;
+}
+
+void lamina_interrupt_add_thread(lua_State *thread)
+{
+    for (int i = 0; i < MAX_THREADS; i++)
+        if (!threads[i] || threads[i] == thread) {
+            threads[i] = thread;
+            return;
+        }
+}
+
+void lamina_interrupt_uninstall(void)
+{
+    if (installed) sigaction(SIGINT, &saved, NULL);
+    installed = 0;
+    clear_hooks();
+    memset((void *)threads, 0, sizeof threads);
+    pending = 0;
+}
+
+int lamina_interrupt_pending(void)
+{
+    return pending != 0;
+}
+
+void lamina_interrupt_clear(void)
+{
+    pending = 0;
+    clear_hooks();
+}

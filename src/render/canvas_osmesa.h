@@ -1,0 +1,113 @@
+/* canvas_osmesa.h - the OSMesa canvas backend's parts (private).
+ *
+ * One OSMesa context per canvas, rendering into a buffer the canvas owns.
+ * Colours are premultiplied in GL (blend ONE, ONE_MINUS_SRC_ALPHA), as in
+ * cairo's image surfaces, and straightened on read-back, so a translucent
+ * clear colour or particle composites the way it does through cairo.
+ *
+ * Antialiasing is computed, not sampled: each shape's fragment shader
+ * knows the pixel centre's distance to the shape's edges (interpolated
+ * along with the vertices) and turns it into the pixel's coverage. Small
+ * shapes are batched: consecutive lines (and fills' edge fringes) share one
+ * draw call, consecutive discs of one radius another; a call of another
+ * kind, a clip, text or a read flushes the batch first, so drawing order
+ * is kept. */
+#ifndef LAMINA_CANVAS_OSMESA_H
+#define LAMINA_CANVAS_OSMESA_H
+
+#define GL_GLEXT_PROTOTYPES 1
+#include <GL/osmesa.h>
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include "canvas_backend.h"
+
+/* Shape vertex: x, y (pixels), e (across, along, half width, length, in
+ * pixels), m (dash length, mode), straight RGBA. */
+#define LRGL_VERT_FLOATS 12
+
+enum lrgl_mode {
+    LRGL_STROKE = 0,     /* a line: box-filtered across and along, dashes */
+    LRGL_FRINGE = 1,     /* a fill's outside edge: 0.5 - |distance| */
+    LRGL_SOLID = 2,      /* full coverage (fill cover, stencil passes) */
+    LRGL_DISC = 3        /* a large disc: r + 0.5 - distance to centre */
+};
+
+enum lrgl_batch { LRGL_BATCH_NONE = 0, LRGL_BATCH_SHAPES, LRGL_BATCH_POINTS };
+
+typedef struct gl_canvas {
+    lr_canvas base;
+    OSMesaContext ctx;
+    unsigned char *buf;         /* OSMesa's colour buffer, rows bottom-up */
+    int pad;                    /* viewport overhang, see gl_viewport */
+    int failed;                 /* a GL error or OOM: read_rgba gives NULL */
+    /* programs and their uniform locations */
+    GLuint shape_prog, point_prog, text_prog;
+    GLint shape_vp, point_vp, u_point_r, point_size, point_dot, text_vp, text_col,
+          text_tex;
+    GLuint text_texture;
+    /* fills: an off-screen coverage buffer (canvas_osmesa_fill.c) */
+    GLuint fill_fbo, fill_tex, fill_stencil;
+    int fill_w, fill_h;
+    /* the pending batch */
+    enum lrgl_batch batch;
+    float *verts;               /* shapes: LRGL_VERT_FLOATS per vertex */
+    size_t nverts, capverts;
+    float *pxy;                 /* points: x, y */
+    unsigned char *prgba;       /* points: straight RGBA8 */
+    size_t npoints, cappoints;
+    double point_r;             /* the radius of the pending points */
+} gl_canvas;
+
+static inline gl_canvas *glc(lr_canvas *c) { return (gl_canvas *)c; }
+
+/* canvas_osmesa.c */
+/* Makes c's context current (one per thread at a time; cheap when it
+ * already is). */
+void gl_use(gl_canvas *c);
+
+/* canvas_osmesa_gl.c */
+int gl_programs_init(gl_canvas *c, char *err, size_t errlen);
+void gl_programs_free(gl_canvas *c);
+/* Draws and empties the pending batch. */
+void gl_flush(gl_canvas *c);
+/* Room for n more shape vertices in the batch (flushing another kind
+ * first); NULL on OOM (c->failed is set). */
+float *gl_shape_verts(gl_canvas *c, size_t n);
+/* Appends one point of radius r (flushing points of another radius). */
+void gl_point(gl_canvas *c, double x, double y, double r, lr_rgba k);
+/* Draws n shape vertices at once as triangles, without batching (for the
+ * stencil passes of fills). */
+void gl_draw_triangles(gl_canvas *c, const float *v, size_t n);
+/* One vertex of a shape. */
+void gl_vert(float *v, double x, double y, double across, double along,
+             double hw, double len, double dash, enum lrgl_mode mode, lr_rgba k);
+
+/* canvas_osmesa_draw.c */
+/* A line from a to b (pixels) of half width hw as two triangles. */
+void gl_line_quad(gl_canvas *c, double ax, double ay, double bx, double by,
+                  double hw, double dash, enum lrgl_mode mode, lr_rgba k);
+void gl_line(lr_canvas *c, double x0, double y0, double x1, double y1,
+             double width, lr_rgba colour, double dash);
+void gl_discs(lr_canvas *c, size_t n, const double *px, const double *py,
+              double r, const lr_rgba *colours);
+
+/* canvas_osmesa_fill.c */
+void gl_fill(lr_canvas *c, size_t npoly, const size_t *counts,
+             const double *xy, lr_rgba colour);
+void gl_rect(lr_canvas *c, double x, double y, double w, double h,
+             double line_width, lr_rgba stroke);
+void gl_fill_free(gl_canvas *c);
+
+/* canvas_osmesa_text.c */
+/* Blends colour through the coverage in the alpha of texels 0..w-1,
+ * 0..h-1 of texture tex (tw x th) onto canvas pixels x .. x+w, y .. y+h;
+ * flip: the texture's rows run bottom-up (rendered by GL). */
+void gl_blend_coverage(gl_canvas *c, GLuint tex, double x, double y, int w,
+                       int h, int tw, int th, int flip, lr_rgba colour);
+
+/* canvas_osmesa_text.c */
+void gl_text(lr_canvas *c, double x, double y, double size, lr_rgba colour,
+             lr_align align, const char *text);
+
+#endif

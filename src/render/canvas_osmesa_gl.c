@@ -1,0 +1,380 @@
+/* canvas_osmesa_gl.c - the OSMesa backend's shaders and vertex batches.
+ *
+ * GLSL 1.20 (OpenGL 2.1), which every OSMesa since Mesa 7 provides. Three
+ * programs: shapes (lines, fills, large discs; coverage from interpolated
+ * distances), points (discs as point sprites; coverage from gl_PointCoord)
+ * and text (a coverage texture rasterised by cairo). All output
+ * premultiplied colour times coverage. */
+#include "canvas_osmesa.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Vertices are given in canvas pixels (origin top-left, y down); u_vp is
+ * (offset x, offset y, viewport width, viewport height): normally the
+ * offsets are the pad by which the viewport overhangs the canvas on every
+ * side (canvas_osmesa.c says why); fills move them (canvas_osmesa_fill.c). */
+#define TO_CLIP                                                              \
+    "vec4 to_clip(vec2 p) {\n"                                               \
+    "  return vec4(2.0 * (p.x + u_vp.x) / u_vp.z - 1.0,\n"                   \
+    "              1.0 - 2.0 * (p.y + u_vp.y) / u_vp.w, 0.0, 1.0);\n"        \
+    "}\n"
+
+static const char *const shape_vs =
+    "#version 120\n"
+    "uniform vec4 u_vp;\n"
+    "attribute vec2 a_pos;\n"
+    "attribute vec4 a_e;\n"
+    "attribute vec2 a_m;\n"
+    "attribute vec4 a_col;\n"
+    "varying vec4 v_e;\n"
+    "varying vec2 v_m;\n"
+    "varying vec4 v_col;\n"
+    TO_CLIP
+    "void main() {\n"
+    "  v_e = a_e; v_m = a_m; v_col = a_col;\n"
+    "  gl_Position = to_clip(a_pos);\n"
+    "}\n";
+
+/* span(): how much of the pixel [c - 0.5, c + 0.5] lies in [lo, hi] - a box
+ * filter, exact for edges along the pixel grid. A dash pattern is "on" for
+ * d, "off" for d, from the line's start, as cairo's {d} dash array. */
+static const char *const shape_fs =
+    "#version 120\n"
+    "varying vec4 v_e;\n"
+    "varying vec2 v_m;\n"
+    "varying vec4 v_col;\n"
+    "float span(float lo, float hi, float c) {\n"
+    "  return max(0.0, min(c + 0.5, hi) - max(c - 0.5, lo));\n"
+    "}\n"
+    "float along(float v, float len, float d) {\n"
+    "  if (d <= 0.0) return span(0.0, len, v);\n"
+    "  if (d < 0.5) return 0.5 * span(0.0, len, v);\n"
+    "  float p = 2.0 * d;\n"
+    "  float a = floor((v - 0.5) / p) * p;\n"
+    "  float c = 0.0;\n"
+    "  for (int i = 0; i < 2; i++) {\n"
+    "    float s0 = max(a, 0.0), s1 = min(a + d, len);\n"
+    "    if (s1 > s0) c += span(s0, s1, v);\n"
+    "    a += p;\n"
+    "  }\n"
+    "  return min(c, 1.0);\n"
+    "}\n"
+    "void main() {\n"
+    "  float cov;\n"
+    "  if (v_m.y < 0.5) cov = span(-v_e.z, v_e.z, v_e.x) * along(v_e.y, v_e.w, v_m.x);\n"
+    "  else if (v_m.y < 1.5) {\n"
+    "    cov = clamp(0.5 - abs(v_e.x), 0.0, 1.0);\n"
+    "    if (cov <= 0.0) discard;\n"    /* leaves the stencil for another edge */
+    "  } else if (v_m.y < 2.5) cov = 1.0;\n"
+    "  else cov = clamp(v_e.z + 0.5 - length(v_e.xy), 0.0, 1.0);\n"
+    "  gl_FragColor = vec4(v_col.rgb * v_col.a, v_col.a) * cov;\n"
+    "}\n";
+
+static const char *const point_vs =
+    "#version 120\n"
+    "uniform vec4 u_vp;\n"
+    "attribute vec2 a_pos;\n"
+    "attribute vec4 a_col;\n"
+    "varying vec4 v_col;\n"
+    TO_CLIP
+    "void main() {\n"
+    "  v_col = a_col;\n"
+    "  gl_Position = to_clip(a_pos);\n"
+    "}\n";
+
+/* gl_PointCoord spans the sprite's square (side u_size, centred on the
+ * point) and is evaluated at the fragment's centre, so this is the exact
+ * distance from the pixel centre to the disc centre. u_dot: a disc smaller
+ * than a pixel is the one pixel holding its centre, as in cairo's stamps. */
+static const char *const point_fs =
+    "#version 120\n"
+    "uniform float u_r;\n"
+    "uniform float u_size;\n"
+    "uniform float u_dot;\n"
+    "varying vec4 v_col;\n"
+    "void main() {\n"
+    "  float cov = 1.0;\n"
+    "  if (u_dot < 0.5) {\n"
+    "    vec2 d = (gl_PointCoord - vec2(0.5)) * u_size;\n"
+    "    cov = clamp(u_r + 0.5 - length(d), 0.0, 1.0);\n"
+    "    if (cov <= 0.0) discard;\n"
+    "  }\n"
+    "  gl_FragColor = vec4(v_col.rgb * v_col.a, v_col.a) * cov;\n"
+    "}\n";
+
+static const char *const text_vs =
+    "#version 120\n"
+    "uniform vec4 u_vp;\n"
+    "attribute vec2 a_pos;\n"
+    "attribute vec2 a_uv;\n"
+    "varying vec2 v_uv;\n"
+    TO_CLIP
+    "void main() {\n"
+    "  v_uv = a_uv;\n"
+    "  gl_Position = to_clip(a_pos);\n"
+    "}\n";
+
+static const char *const text_fs =
+    "#version 120\n"
+    "uniform sampler2D u_tex;\n"
+    "uniform vec4 u_col;\n"
+    "varying vec2 v_uv;\n"
+    "void main() {\n"
+    "  float cov = texture2D(u_tex, v_uv).a;\n"
+    "  gl_FragColor = vec4(u_col.rgb * u_col.a, u_col.a) * cov;\n"
+    "}\n";
+
+/* Attribute locations, fixed before linking so the batches need no lookup. */
+enum { A_POS = 0, A_E = 1, A_M = 2, A_COL = 3, A_UV = 1 };
+
+static GLuint compile(GLenum type, const char *src, char *err, size_t errlen)
+{
+    GLuint s = glCreateShader(type);
+    glShaderSource(s, 1, &src, NULL);
+    glCompileShader(s);
+    GLint ok = 0;
+    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        char log[512] = "";
+        glGetShaderInfoLog(s, sizeof log, NULL, log);
+        snprintf(err, errlen, "OSMesa: a shader does not compile: %s", log);
+        glDeleteShader(s);
+        return 0;
+    }
+    return s;
+}
+
+static GLuint link(const char *vs, const char *fs, const char *const *attribs,
+                   const GLuint *locs, int nattribs, char *err, size_t errlen)
+{
+    GLuint v = compile(GL_VERTEX_SHADER, vs, err, errlen);
+    GLuint f = v ? compile(GL_FRAGMENT_SHADER, fs, err, errlen) : 0;
+    if (!f) {
+        glDeleteShader(v);
+        return 0;
+    }
+    GLuint p = glCreateProgram();
+    glAttachShader(p, v);
+    glAttachShader(p, f);
+    for (int i = 0; i < nattribs; i++)
+        glBindAttribLocation(p, locs[i], attribs[i]);
+    glLinkProgram(p);
+    glDeleteShader(v);      /* flagged; freed with the program */
+    glDeleteShader(f);
+    GLint ok = 0;
+    glGetProgramiv(p, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        char log[512] = "";
+        glGetProgramInfoLog(p, sizeof log, NULL, log);
+        snprintf(err, errlen, "OSMesa: a shader program does not link: %s", log);
+        glDeleteProgram(p);
+        return 0;
+    }
+    return p;
+}
+
+int gl_programs_init(gl_canvas *c, char *err, size_t errlen)
+{
+    static const char *const shape_attr[] = { "a_pos", "a_e", "a_m", "a_col" };
+    static const GLuint shape_loc[] = { A_POS, A_E, A_M, A_COL };
+    static const char *const point_attr[] = { "a_pos", "a_col" };
+    static const GLuint point_loc[] = { A_POS, A_COL };
+    static const char *const text_attr[] = { "a_pos", "a_uv" };
+    static const GLuint text_loc[] = { A_POS, A_UV };
+    c->shape_prog = link(shape_vs, shape_fs, shape_attr, shape_loc, 4, err, errlen);
+    if (c->shape_prog)
+        c->point_prog = link(point_vs, point_fs, point_attr, point_loc, 2, err, errlen);
+    if (c->point_prog)
+        c->text_prog = link(text_vs, text_fs, text_attr, text_loc, 2, err, errlen);
+    if (!c->text_prog)
+        return -1;
+    c->shape_vp = glGetUniformLocation(c->shape_prog, "u_vp");
+    c->point_vp = glGetUniformLocation(c->point_prog, "u_vp");
+    c->u_point_r = glGetUniformLocation(c->point_prog, "u_r");
+    c->point_size = glGetUniformLocation(c->point_prog, "u_size");
+    c->point_dot = glGetUniformLocation(c->point_prog, "u_dot");
+    c->text_vp = glGetUniformLocation(c->text_prog, "u_vp");
+    c->text_col = glGetUniformLocation(c->text_prog, "u_col");
+    c->text_tex = glGetUniformLocation(c->text_prog, "u_tex");
+    float vp[4] = { (float)c->pad, (float)c->pad, (float)(c->base.width + 2 * c->pad),
+                    (float)(c->base.height + 2 * c->pad) };
+    glUseProgram(c->shape_prog);
+    glUniform4fv(c->shape_vp, 1, vp);
+    glUseProgram(c->point_prog);
+    glUniform4fv(c->point_vp, 1, vp);
+    glUseProgram(c->text_prog);
+    glUniform4fv(c->text_vp, 1, vp);
+    glUniform1i(c->text_tex, 0);
+    glUseProgram(0);
+    glGenTextures(1, &c->text_texture);
+    return 0;
+}
+
+void gl_programs_free(gl_canvas *c)
+{
+    glDeleteProgram(c->shape_prog);     /* 0 is ignored */
+    glDeleteProgram(c->point_prog);
+    glDeleteProgram(c->text_prog);
+    if (c->text_texture)
+        glDeleteTextures(1, &c->text_texture);
+    gl_fill_free(c);
+    free(c->verts);
+    free(c->pxy);
+    free(c->prgba);
+}
+
+/* ---- batches ----------------------------------------------------------- */
+
+static unsigned char to8(double v)
+{
+    return v <= 0 ? 0 : v >= 1 ? 255 : (unsigned char)lround(v * 255.0);
+}
+
+void gl_vert(float *v, double x, double y, double across, double along,
+             double hw, double len, double dash, enum lrgl_mode mode, lr_rgba k)
+{
+    v[0] = (float)x;
+    v[1] = (float)y;
+    v[2] = (float)across;
+    v[3] = (float)along;
+    v[4] = (float)hw;
+    v[5] = (float)len;
+    v[6] = (float)dash;
+    v[7] = (float)mode;
+    v[8] = (float)k.r;
+    v[9] = (float)k.g;
+    v[10] = (float)k.b;
+    v[11] = (float)k.a;
+}
+
+void gl_draw_triangles(gl_canvas *c, const float *v, size_t n)
+{
+    if (n == 0)
+        return;
+    const GLsizei stride = LRGL_VERT_FLOATS * sizeof(float);
+    glUseProgram(c->shape_prog);
+    glEnableVertexAttribArray(A_POS);
+    glEnableVertexAttribArray(A_E);
+    glEnableVertexAttribArray(A_M);
+    glEnableVertexAttribArray(A_COL);
+    glVertexAttribPointer(A_POS, 2, GL_FLOAT, GL_FALSE, stride, v);
+    glVertexAttribPointer(A_E, 4, GL_FLOAT, GL_FALSE, stride, v + 2);
+    glVertexAttribPointer(A_M, 2, GL_FLOAT, GL_FALSE, stride, v + 6);
+    glVertexAttribPointer(A_COL, 4, GL_FLOAT, GL_FALSE, stride, v + 8);
+    glDrawArrays(GL_TRIANGLES, 0, (GLsizei)n);
+    glDisableVertexAttribArray(A_POS);
+    glDisableVertexAttribArray(A_E);
+    glDisableVertexAttribArray(A_M);
+    glDisableVertexAttribArray(A_COL);
+}
+
+/* Sprites are squares of this side; beyond it discs are drawn as quads
+ * (llvmpipe's largest point is 255 px). */
+#define POINT_MAX_SIZE 255.0
+/* Below this radius a disc is the pixel holding its centre (as cairo's
+ * stamps do: DISC_MIN_ARC_RADIUS there). */
+#define DOT_RADIUS 0.8
+
+static void flush_points(gl_canvas *c)
+{
+    double r = c->point_r;
+    int dot = r < DOT_RADIUS;
+    /* the square must hold the antialiased rim: half a pixel past r */
+    double size = dot ? 1.0 : 2.0 * r + 2.0;
+    glUseProgram(c->point_prog);
+    glUniform1f(c->u_point_r, (float)r);
+    glUniform1f(c->point_size, (float)size);
+    glUniform1f(c->point_dot, dot ? 1.0f : 0.0f);
+    glPointSize((float)size);
+    glEnableVertexAttribArray(A_POS);
+    glEnableVertexAttribArray(A_COL);
+    glVertexAttribPointer(A_POS, 2, GL_FLOAT, GL_FALSE, 0, c->pxy);
+    glVertexAttribPointer(A_COL, 4, GL_UNSIGNED_BYTE, GL_TRUE, 0, c->prgba);
+    glDrawArrays(GL_POINTS, 0, (GLsizei)c->npoints);
+    glDisableVertexAttribArray(A_POS);
+    glDisableVertexAttribArray(A_COL);
+}
+
+void gl_flush(gl_canvas *c)
+{
+    gl_use(c);
+    if (c->batch == LRGL_BATCH_SHAPES)
+        gl_draw_triangles(c, c->verts, c->nverts);
+    else if (c->batch == LRGL_BATCH_POINTS && c->npoints > 0)
+        flush_points(c);
+    c->batch = LRGL_BATCH_NONE;
+    c->nverts = 0;
+    c->npoints = 0;
+}
+
+/* A batch is drawn when it gets this big, to bound its memory. */
+#define BATCH_MAX_VERTS (6u << 16)
+#define BATCH_MAX_POINTS (1u << 22)
+
+static int grow(void **p, size_t *cap, size_t need, size_t size)
+{
+    if (need <= *cap)
+        return 0;
+    size_t n = *cap ? *cap : 1024;
+    while (n < need)
+        n *= 2;
+    void *q = realloc(*p, n * size);
+    if (!q)
+        return -1;
+    *p = q;
+    *cap = n;
+    return 0;
+}
+
+float *gl_shape_verts(gl_canvas *c, size_t n)
+{
+    if (c->batch != LRGL_BATCH_SHAPES || c->nverts + n > BATCH_MAX_VERTS)
+        gl_flush(c);
+    c->batch = LRGL_BATCH_SHAPES;
+    void *p = c->verts;
+    if (grow(&p, &c->capverts, c->nverts + n, LRGL_VERT_FLOATS * sizeof(float))) {
+        c->failed = 1;
+        return NULL;
+    }
+    c->verts = p;
+    float *v = c->verts + c->nverts * LRGL_VERT_FLOATS;
+    c->nverts += n;
+    return v;
+}
+
+void gl_point(gl_canvas *c, double x, double y, double r, lr_rgba k)
+{
+    if (c->batch != LRGL_BATCH_POINTS || c->point_r != r ||
+        c->npoints == BATCH_MAX_POINTS)
+        gl_flush(c);
+    c->batch = LRGL_BATCH_POINTS;
+    c->point_r = r;
+    size_t need = c->npoints + 1;
+    if (need > c->cappoints) {
+        size_t cap = c->cappoints, cap2 = c->cappoints;
+        void *a = c->pxy, *b = c->prgba;
+        if (grow(&a, &cap, need, 2 * sizeof(float))) {
+            c->failed = 1;
+            return;
+        }
+        c->pxy = a;
+        if (grow(&b, &cap2, need, 4)) {
+            c->failed = 1;
+            return;
+        }
+        c->prgba = b;
+        c->cappoints = cap;
+    }
+    float *p = c->pxy + 2 * c->npoints;
+    unsigned char *q = c->prgba + 4 * c->npoints;
+    p[0] = (float)x;
+    p[1] = (float)y;
+    q[0] = to8(k.r);
+    q[1] = to8(k.g);
+    q[2] = to8(k.b);
+    q[3] = to8(k.a);
+    c->npoints++;
+}

@@ -1,0 +1,255 @@
+/* figure_layers.c - a panel's layers in pixels: grid, particles, curves,
+ * arrows, each possibly a mirror copy.
+ *
+ * The grid and particle drawing is frame.c's, moved here unchanged in its
+ * arithmetic, so single-panel frames keep their exact pixels: lines are
+ * snapped to the pixel grid so that 1-px grid lines are crisp instead of
+ * 2-px grey smears, and particles are converted in fixed chunks. */
+#include "figure_internal.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+#define MIN_CELL_PX 3.0     /* denser grid lines would just paint grey */
+#define PARTICLE_CHUNK 4096 /* particles converted per lr_canvas_discs call */
+#define HEAD_HALF_ANGLE 0.4363323129985824   /* 25 degrees */
+
+/* ---- grid ------------------------------------------------------------- */
+
+typedef struct pen {
+    double width;       /* pixels */
+    double extend;      /* pixels added at both ends (to close corners) */
+    lr_rgba colour;
+    double dash;        /* pixels; 0: solid */
+} pen;
+
+/* Odd widths sit on pixel centres, even widths on pixel edges: crisp. */
+static double snap(double p, double width)
+{
+    return ((long)lround(width) % 2) ? floor(p) + 0.5 : floor(p + 0.5);
+}
+
+/* Clips world interval [a, b] to [lo, hi]; 0 if nothing is left. */
+static int clip(double *a, double *b, double lo, double hi)
+{
+    if (*a > *b) {
+        double t = *a;
+        *a = *b;
+        *b = t;
+    }
+    *a = fmax(*a, lo);
+    *b = fmin(*b, hi);
+    return *a <= *b;
+}
+
+/* Lines exactly on the window's edge must survive rounding (x0 + n*h). */
+static double tolerance(double lo, double hi) { return 1e-9 * (hi - lo); }
+
+/* The part of world segment x = const, y in [ya, yb] inside the window. */
+static void draw_vline(lr_canvas *c, const fig_view *v, double x, double ya,
+                       double yb, const pen *p)
+{
+    double t = tolerance(v->wx0, v->wx1);
+    if (x < v->wx0 - t || x > v->wx1 + t || !clip(&ya, &yb, v->wy0, v->wy1))
+        return;
+    double px, pa, pb;
+    fig_to_pixel(v, x, ya, &px, &pa);
+    fig_to_pixel(v, x, yb, &px, &pb);
+    px = snap(px, p->width);
+    lr_canvas_line(c, px, snap(pa, p->width) + p->extend, px,
+                   snap(pb, p->width) - p->extend, p->width, p->colour, p->dash);
+}
+
+/* The part of world segment y = const, x in [xa, xb] inside the window. */
+static void draw_hline(lr_canvas *c, const fig_view *v, double y, double xa,
+                       double xb, const pen *p)
+{
+    double t = tolerance(v->wy0, v->wy1);
+    if (y < v->wy0 - t || y > v->wy1 + t || !clip(&xa, &xb, v->wx0, v->wx1))
+        return;
+    double py, pa, pb;
+    fig_to_pixel(v, xa, y, &pa, &py);
+    fig_to_pixel(v, xb, y, &pb, &py);
+    py = snap(py, p->width);
+    lr_canvas_line(c, snap(pa, p->width) - p->extend, py,
+                   snap(pb, p->width) + p->extend, py, p->width, p->colour, p->dash);
+}
+
+/* Interior line indices 1..n-1 whose position origin + i*h lies in
+ * [lo, hi]; computed, not scanned, so a huge grid seen through a small
+ * window costs nothing. Empty when *i0 > *i1. */
+static void line_range(double origin, double h, int n, double lo, double hi,
+                       int *i0, int *i1)
+{
+    /* the slack lets draw_vline/draw_hline judge lines on the window edge */
+    double a = ceil((lo - origin) / h - 1e-6), b = floor((hi - origin) / h + 1e-6);
+    *i0 = a > 1.0 ? (a < n ? (int)a : n) : 1;
+    *i1 = b < n - 1.0 ? (b > 0.0 ? (int)b : 0) : n - 1;
+}
+
+void fig_draw_grid(lr_canvas *c, const fig_view *v, const lr_grid *g, int skip)
+{
+    const pen cell = { 1.0, 0.0, LR_FIG_GRID, 0.0 };
+    const pen outline = { 2.0, 1.0, LR_FIG_OUTLINE, 0.0 };
+    double gx1 = g->x0 + g->nx * g->hx, gy1 = g->y0 + g->ny * g->hy;
+    int i0, i1;
+    if (v->s * g->hx >= MIN_CELL_PX) {
+        line_range(g->x0, g->hx, g->nx, v->wx0, v->wx1, &i0, &i1);
+        for (int i = i0; i <= i1; i++)
+            draw_vline(c, v, g->x0 + i * g->hx, g->y0, gy1, &cell);
+    }
+    if (v->s * g->hy >= MIN_CELL_PX) {
+        line_range(g->y0, g->hy, g->ny, v->wy0, v->wy1, &i0, &i1);
+        for (int j = i0; j <= i1; j++)
+            draw_hline(c, v, g->y0 + j * g->hy, g->x0, gx1, &cell);
+    }
+    /* a side on a mirror axis is no wall: a dashed line marks the axis */
+    const pen axis = { 1.0, 0.0, LR_FIG_OUTLINE, 6.0 };
+    if (skip & FIG_SKIP_LEFT)
+        draw_vline(c, v, g->x0, g->y0, gy1, &axis);
+    else
+        draw_vline(c, v, g->x0, g->y0, gy1, &outline);
+    if (!(skip & FIG_SKIP_RIGHT))
+        draw_vline(c, v, gx1, g->y0, gy1, &outline);
+    if (skip & FIG_SKIP_BOTTOM)
+        draw_hline(c, v, g->y0, g->x0, gx1, &axis);
+    else
+        draw_hline(c, v, g->y0, g->x0, gx1, &outline);
+    if (!(skip & FIG_SKIP_TOP))
+        draw_hline(c, v, gy1, g->x0, gx1, &outline);
+}
+
+/* ---- particles -------------------------------------------------------- */
+
+int fig_value_range(const lr_panel *p, double *lo, double *hi)
+{
+    int found = 0;
+    double a = INFINITY, b = -INFINITY;
+    for (int s = 0; s < (p->split ? 2 : 1); s++)
+        for (size_t k = 0; k < p->side[s].npoints; k++) {
+            const lr_points *pts = &p->side[s].points[k];
+            if (!pts->value)
+                continue;
+            for (size_t i = 0; i < pts->n; i++)
+                if (isfinite(pts->value[i])) {
+                    a = fmin(a, pts->value[i]);
+                    b = fmax(b, pts->value[i]);
+                    found = 1;
+                }
+        }
+    *lo = a;
+    *hi = b;
+    return found;
+}
+
+static lr_rgba point_colour(const lr_points *pts, size_t i, const lr_panel *p,
+                            double vmin, double vmax)
+{
+    if (!pts->value)
+        return lr_palette(pts->group ? pts->group[i] : 0);
+    return lr_cmap_colour(p->cmap, (pts->value[i] - vmin) / (vmax - vmin));
+}
+
+/* Converted in fixed chunks so a million particles need no big buffers. */
+int fig_draw_points(lr_canvas *c, const fig_view *v, const fig_mirror *m,
+                    const lr_points *pts, const lr_panel *p, double vmin, double vmax)
+{
+    if (pts->n == 0)
+        return 0;
+    double *px = malloc(PARTICLE_CHUNK * sizeof *px);
+    double *py = malloc(PARTICLE_CHUNK * sizeof *py);
+    lr_rgba *colour = malloc(PARTICLE_CHUNK * sizeof *colour);
+    int rc = px && py && colour ? 0 : -1;
+    double r = fmax(1.0, pts->radius * v->s);
+    double reach = r / v->s;    /* a disc partly inside the window is shown */
+    size_t k = 0;
+    for (size_t i = 0; i < pts->n && rc == 0; i++) {
+        double x = fig_mx(m, pts->x[i]), y = fig_my(m, pts->y[i]);
+        if (!(x >= v->wx0 - reach && x <= v->wx1 + reach &&
+              y >= v->wy0 - reach && y <= v->wy1 + reach))
+            continue;   /* outside, or NaN */
+        fig_to_pixel(v, x, y, &px[k], &py[k]);
+        colour[k] = point_colour(pts, i, p, vmin, vmax);
+        if (++k == PARTICLE_CHUNK) {
+            lr_canvas_discs(c, k, px, py, r, colour);
+            k = 0;
+        }
+    }
+    if (rc == 0 && k > 0)
+        lr_canvas_discs(c, k, px, py, r, colour);
+    free(px);
+    free(py);
+    free(colour);
+    return rc;
+}
+
+/* ---- curves and arrows ------------------------------------------------ */
+
+static void map(const fig_view *v, const fig_mirror *m, double x, double y,
+                double *px, double *py)
+{
+    fig_to_pixel(v, fig_mx(m, x), fig_my(m, y), px, py);
+}
+
+void fig_draw_curve(lr_canvas *c, const fig_view *v, const fig_mirror *m,
+                    const lr_curve *cv)
+{
+    size_t segments = cv->closed && cv->n > 2 ? cv->n : cv->n - (cv->n > 0);
+    /* solid pieces overlap a little so that the joints have no notches */
+    double ext = cv->dash > 0 ? 0.0 : 0.25 * cv->width;
+    for (size_t i = 0; i < segments; i++) {
+        size_t j = (i + 1) % cv->n;
+        double ax, ay, bx, by;
+        map(v, m, cv->x[i], cv->y[i], &ax, &ay);
+        map(v, m, cv->x[j], cv->y[j], &bx, &by);
+        double len = hypot(bx - ax, by - ay);
+        if (!(len > 0))
+            continue;
+        double ex = ext * (bx - ax) / len, ey = ext * (by - ay) / len;
+        lr_canvas_line(c, ax - ex, ay - ey, bx + ex, by + ey, cv->width,
+                       cv->colour, cv->dash);
+    }
+}
+
+/* Shafts as lines; the heads, filled triangles, in one fill. */
+int fig_draw_arrows(lr_canvas *c, const fig_view *v, const fig_mirror *m,
+                    const lr_arrows *a)
+{
+    if (a->n == 0)
+        return 0;
+    double *heads = malloc(6 * a->n * sizeof *heads);
+    size_t *counts = malloc(a->n * sizeof *counts);
+    if (!heads || !counts) {
+        free(heads);
+        free(counts);
+        return -1;
+    }
+    size_t nh = 0;
+    for (size_t i = 0; i < a->n; i++) {
+        double ux = m->fx ? -a->ux[i] : a->ux[i], uy = m->fy ? -a->uy[i] : a->uy[i];
+        double x = fig_mx(m, a->x[i]), y = fig_my(m, a->y[i]);
+        double ax, ay, bx, by;
+        fig_to_pixel(v, x, y, &ax, &ay);
+        fig_to_pixel(v, x + a->length * ux, y + a->length * uy, &bx, &by);
+        double len = hypot(bx - ax, by - ay);
+        if (!(len > 0) || !isfinite(len))
+            continue;   /* zero or bad direction */
+        double dx = (bx - ax) / len, dy = (by - ay) / len;
+        double h = fmin(a->head, 0.6 * len), w = h * tan(HEAD_HALF_ANGLE);
+        double cx = bx - h * dx, cy = by - h * dy;  /* the head's base */
+        lr_canvas_line(c, ax, ay, cx + 0.5 * dx, cy + 0.5 * dy, a->width,
+                       a->colour, a->dash);
+        double *t = heads + 6 * nh;
+        t[0] = bx;
+        t[1] = by;
+        t[2] = cx - w * dy;
+        t[3] = cy + w * dx;
+        t[4] = cx + w * dy;
+        t[5] = cy - w * dx;
+        counts[nh++] = 3;
+    }
+    lr_canvas_fill(c, nh, counts, heads, a->colour);
+    free(heads);
+    free(counts);
+    return 0;
+}
