@@ -90,7 +90,7 @@ static void prompt_loop(lua_State *L, lamina_run *run, repl_input *in)
             lua_pop(L, 1);
         }
     }
-    if (in->tty) fputc('\n', stdout);
+    if (in->tty && !in->readline) fputc('\n', stdout);
 }
 
 /* A --set the script has not read yet may be read at the prompt: a note,
@@ -137,7 +137,7 @@ int cmd_repl(int argc, char **argv)
     if (run.script && lamina_script_start(L, &run) == LAMINA_SCRIPT_BAD) {
         status = LAMINA_EXIT_USAGE;
     } else {
-        note_unused_sets(&run);
+        if (run.script) note_unused_sets(&run);
         repl_input in;
         repl_input_open(&in);
         if (in.tty)

@@ -61,6 +61,21 @@ static int parse_args(int argc, char **argv, lamina_run *run, const char **repor
                 return -1;
             }
             *report = f;
+        } else if (strcmp(a, "--backend") == 0 || strncmp(a, "--backend=", 10) == 0) {
+            /* sim:frame's default renderer for this run (docs/rendering.md) */
+            const char *b = a[9] == '=' ? a + 10 : (i + 1 < argc ? argv[++i] : NULL);
+            lr_backend which;
+            char why[160];
+            if (!b || !*b) {
+                fprintf(stderr, "lamina run: --backend needs a NAME (cairo or osmesa)\n");
+                return -1;
+            }
+            if (lr_backend_parse(b, &which, why, sizeof why) != 0 ||
+                lr_backend_check(which, why, sizeof why) != 0) {
+                fprintf(stderr, "lamina run: --backend %s: %s\n", b, why);
+                return -1;
+            }
+            run->backend = b;
         } else if (strcmp(a, "--quiet") == 0 || strcmp(a, "-q") == 0) {
             run->quiet = 1;
         } else if (a[0] == '-' && a[1]) {

@@ -44,6 +44,7 @@ void repl_input_open(repl_input *in)
         rl_readline_name = "lamina";
         rl_catch_signals = 0;
         rl_signal_event_hook = on_signal_event;
+        rl_bind_key('\t', rl_insert);   /* indentation, not file names */
         const char *home = getenv("HOME");
         if (home && *home) {
             snprintf(history_path, sizeof history_path, "%s/.lamina_history", home);

@@ -1,30 +1,19 @@
-/* l_frame.c - sim:frame{...}: the simulation's state drawn to a PNG.
+/* l_frame.c - sim:frame{...}: the simulation's state drawn to a PNG (or an
+ * SVG / PDF), as one panel or several (docs/api.md).
  *
- * The binding only gathers what render.h's lr_frame asks for; the drawing is
- * src/render's. Every PNG carries provenance (design.md, Rendering). */
+ * The binding only gathers what figure.h's lr_figure asks for; the panels'
+ * keys are read in l_frame_panel.c, the drawing is src/render's. Every
+ * file carries provenance (design.md, Rendering). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "l_frame_panel.h"
 #include "l_internal.h"
 #include "render.h"
 
-/* Particle radius in world units: half the smallest particle spacing, from
- * the volume a particle started with. */
-static double particle_radius(const lm_sim *sim)
-{
-    double r = 0;
-    for (int b = 0; b < sim->nbodies; b++) {
-        const lm_body *bd = &sim->bodies[b];
-        if (bd->count == 0) continue;
-        size_t q = bd->first;
-        double v = sim->p.m[q] / sim->mats[bd->mat]->rho;
-        double rb = 0.5 * sqrt(v);
-        if (r == 0 || rb < r) r = rb;
-    }
-    return r;
-}
+#define MAX_PANELS 64
 
 /* The --set parameters as one line, "name=value name=value". */
 static const char *set_line(lua_State *L, const lamina_run *run)
@@ -51,15 +40,89 @@ static void remember_dir(lamina_run *run, const char *path)
     if (n == 0) strcpy(run->frame_dir, "./");
 }
 
+/* backend = "cairo" | "osmesa"; else `lamina run --backend`; else cairo.
+ * SVG and PDF are cairo's: a run-wide osmesa does not apply to them, an
+ * explicit one is refused when the file is written. */
+static lr_backend backend(lua_State *L, const char *fn, const char *file,
+                          const lamina_run *run)
+{
+    const char *name = la_opt_string(L, 2, fn, "backend", NULL);
+    if (!name && lr_format_of(file) != LR_FORMAT_PNG)
+        return LR_BACKEND_CAIRO;
+    if (!name)
+        name = run && run->backend ? run->backend : "cairo";
+    lr_backend b;
+    char why[160];
+    if (lr_backend_parse(name, &b, why, sizeof why) != 0)
+        luaL_error(L, "%s: %s", fn, why);
+    if (lr_backend_check(b, why, sizeof why) != 0)
+        luaL_error(L, "%s: backend = \"%s\": %s", fn, name, why);
+    return b;
+}
+
+/* panels = { {...}, ... }: each panel's table; the frame's own panel keys
+ * are their defaults. Returns the count. */
+static size_t panels(lua_State *L, la_frame_ctx *ctx, lr_panel **out)
+{
+    static const char *const panel_keys[] = { "sim", "title", LA_PANEL_KEYS, NULL };
+    if (lua_getfield(L, 2, "panels") == LUA_TNIL) {
+        lua_pop(L, 1);
+        *out = la_frame_scratch(L, ctx, sizeof **out);
+        la_frame_panel(L, ctx, 2, 0, 1, *out);
+        return 1;
+    }
+    int idx = lua_gettop(L);
+    size_t n = lua_istable(L, idx) ? lua_rawlen(L, idx) : 0;
+    if (n < 1 || n > MAX_PANELS)
+        luaL_error(L, "%s: 'panels' must be a list of 1 to %d panel tables", ctx->fn,
+                   MAX_PANELS);
+    *out = la_frame_scratch(L, ctx, n * sizeof **out);
+    for (size_t i = 0; i < n; i++) {
+        char name[48];
+        snprintf(name, sizeof name, "%s: panels[%zu]", ctx->fn, i + 1);
+        if (lua_rawgeti(L, idx, (lua_Integer)i + 1) != LUA_TTABLE)
+            luaL_error(L, "%s must be a table", name);
+        la_check_keys(L, -1, name, panel_keys);
+        la_frame_panel(L, ctx, 2, lua_gettop(L), 1, &(*out)[i]);
+        lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+    return n;
+}
+
+/* layout = {rows, cols} */
+static void layout(lua_State *L, const char *fn, size_t n, lr_figure *f)
+{
+    if (lua_getfield(L, 2, "layout") != LUA_TNIL) {
+        double r = 0, c = 0;
+        if (lua_istable(L, -1) && lua_rawlen(L, -1) == 2) {
+            lua_rawgeti(L, -1, 1);
+            lua_rawgeti(L, -2, 2);
+            r = lua_tonumber(L, -2);
+            c = lua_tonumber(L, -1);
+            lua_pop(L, 2);
+        }
+        if (!(r >= 1 && c >= 1 && r <= MAX_PANELS && c <= MAX_PANELS) ||
+            r != floor(r) || c != floor(c))
+            luaL_error(L, "%s: 'layout' must be {rows, cols}, whole numbers >= 1", fn);
+        if (r * c < (double)n)
+            luaL_error(L, "%s: 'layout' {%d, %d} has fewer cells than the %d panels",
+                       fn, (int)r, (int)c, (int)n);
+        f->rows = (int)r;
+        f->cols = (int)c;
+    }
+    lua_pop(L, 1);
+}
+
 int la_sim_frame(lua_State *L)
 {
-    static const char *const keys[] = {"file", "width", "height", "title", "grid",
-                                       "window", "label", NULL};
+    static const char *const keys[] = { "file", "width", "height", "title", "label",
+                                        "backend", "layout", "panels", LA_PANEL_KEYS,
+                                        NULL };
     const char *fn = "sim:frame";
     la_sim *s = la_check_sim(L, 1);
     la_check_keys(L, 2, fn, keys);
     const lm_sim *sim = s->sim;
-    const lm_grid *g = &sim->grid;
     const char *file = la_opt_string(L, 2, fn, "file", NULL);
     if (!file) return luaL_error(L, "%s: 'file' is required", fn);
     double w = la_opt_number(L, 2, fn, "width", 800);
@@ -67,39 +130,20 @@ int la_sim_frame(lua_State *L)
     if (!(w >= 16 && w <= 16384) || !(h >= 16 && h <= 16384) || w != (int)w || h != (int)h)
         return luaL_error(L, "%s: width and height must be whole numbers in [16, 16384] "
                           "(got %f x %f)", fn, w, h);
+    lamina_run *run = la_run(L);
 
-    lr_frame f;
+    lr_figure f;
     memset(&f, 0, sizeof f);
     f.width = (int)w;
     f.height = (int)h;
-    f.wx0 = g->x0;
-    f.wy0 = g->y0;
-    f.wx1 = g->x0 + g->nx * g->hx;
-    f.wy1 = g->y0 + g->ny * g->hy;
-    if (la_has(L, 2, "window")) {
-        lua_getfield(L, 2, "window");
-        if (!lua_istable(L, -1) || lua_rawlen(L, -1) != 4)
-            return luaL_error(L, "%s: 'window' must be {x0, y0, x1, y1}", fn);
-        double v[4];
-        for (int i = 0; i < 4; i++) {
-            lua_rawgeti(L, -1, i + 1);
-            v[i] = luaL_checknumber(L, -1);
-            lua_pop(L, 1);
-        }
-        lua_pop(L, 1);
-        if (!(v[2] > v[0]) || !(v[3] > v[1]))
-            return luaL_error(L, "%s: 'window' is empty", fn);
-        f.wx0 = v[0]; f.wy0 = v[1]; f.wx1 = v[2]; f.wy1 = v[3];
-    }
-    lr_grid grid = {g->x0, g->y0, g->hx, g->hy, g->nx, g->ny};
-    lua_getfield(L, 2, "grid");
-    f.grid = (lua_isnil(L, -1) || lua_toboolean(L, -1)) ? &grid : NULL;
-    lua_pop(L, 1);
-    f.n = sim->p.n;
-    f.x = sim->p.x;
-    f.y = sim->p.y;
-    f.group = sim->p.body;
-    f.radius = particle_radius(sim);
+    f.backend = backend(L, fn, file, run);
+    la_frame_ctx ctx = { fn, 0, 0 };
+    lua_newtable(L);
+    ctx.anchor = lua_gettop(L);
+    lr_panel *p = NULL;
+    f.npanels = panels(L, &ctx, &p);
+    f.panels = p;
+    layout(L, fn, f.npanels, &f);
     f.title = la_opt_string(L, 2, fn, "title", NULL);
     lua_getfield(L, 2, "label");
     if (lua_isstring(L, -1)) f.label = lua_tostring(L, -1);
@@ -110,7 +154,6 @@ int la_sim_frame(lua_State *L)
     }
     /* label and title strings stay on the stack until we return */
 
-    lamina_run *run = la_run(L);
     char ver[64], hash[32];
     snprintf(ver, sizeof ver, "lamina %s", LAMINA_VERSION);
     snprintf(hash, sizeof hash, "%s", run ? run->script_hash : "");
@@ -121,7 +164,7 @@ int la_sim_frame(lua_State *L)
     f.text = text;
     f.ntext = 4;
     char err[512];
-    if (lr_frame_write(&f, file, err, sizeof err))
+    if (lr_figure_write(&f, file, err, sizeof err))
         return luaL_error(L, "%s: %s", fn, err);
     if (run) {
         run->frames++;

@@ -14,7 +14,9 @@
 
 #include "l_curve.h"
 
-static const char *const normal_methods[] = {"connectivity", NULL};
+/* In the order of lm_normals (mpm.h). */
+static const char *const normal_methods[] = {"connectivity", "isosurface", "hybrid", "linear",
+                                             "colour", "quadratic_colour", "mass_matrix", NULL};
 
 /* initial_strain: a number for every point, or a function (u, i) -> strain
  * of the curve parameter u in [0, 1] and the point's index i (1-based). */
@@ -70,7 +72,8 @@ static int point_count(lua_State *L, const char *fn, const la_curve_points *cp, 
 int la_sim_membrane(lua_State *L)
 {
     static const char *const keys[] = {"material", "curve", "spacing", "count", "normals",
-                                       "initial_strain", "end_mass", "velocity", "name", NULL};
+                                       "initial_strain", "end_mass", "velocity", "name",
+                                       "orient", NULL};
     const char *fn = "sim:membrane";
     la_sim *s = la_check_sim(L, 1);
     la_check_keys(L, 2, fn, keys);
@@ -102,8 +105,25 @@ int la_sim_membrane(lua_State *L)
         return luaL_error(L, "%s: %s spacing %f is larger than a cell (%f): neighbouring "
                           "points must stay within one cell or the membrane breaks",
                           fn, what, ds, h);
-    (void)la_option(L, fn, "normals", la_opt_string(L, 2, fn, "normals", "connectivity"),
-                    normal_methods);
+    int method = la_option(L, fn, "normals",
+                           la_opt_string(L, 2, fn, "normals", "connectivity"), normal_methods);
+    /* orient = {x, y}: normals point away from that point (the gas's
+     * centre); "neighbours": agree with their neighbours; default: away
+     * from the curve's centroid for the constructions without connectivity */
+    int orient = 0;
+    double ox = 0, oy = 0;
+    int ot = lua_getfield(L, 2, "orient");
+    lua_pop(L, 1);
+    if (ot == LUA_TTABLE) {
+        la_pair(L, 2, fn, "orient", &ox, &oy);
+        orient = 1;
+    } else if (ot == LUA_TSTRING) {
+        static const char *const orients[] = {"none", "away", "neighbours", NULL};
+        orient = la_option(L, fn, "orient", la_opt_string(L, 2, fn, "orient", "none"), orients);
+        if (orient == 1) luaL_error(L, "%s: orient = \"away\" needs a point: orient = {x, y}", fn);
+    } else if (ot != LUA_TNIL) {
+        luaL_error(L, "%s: 'orient' must be {x, y} or \"neighbours\" or \"none\"", fn);
+    }
 
     double end_mass = la_opt_number(L, 2, fn, "end_mass", 0);
     if (la_has(L, 2, "end_mass") && !(end_mass > 0))
@@ -167,7 +187,24 @@ int la_sim_membrane(lua_State *L)
             lm_sim_set_membrane_point(sim, q, ds_ref, e) != LM_OK)
             return luaL_error(L, "%s: %s", fn, sim->err);
     }
-    lm_sim_prepare(sim);
+    lm_body *bd = &sim->bodies[bi];
+    bd->normals = (lm_normals)method;
+    bd->orient = orient;
+    bd->ox = ox;
+    bd->oy = oy;
+    if (method != LM_NORMALS_CONNECTIVITY && ot == LUA_TNIL) {
+        /* away from the centroid of the points: outward for a convex
+         * membrane, and for quarter models use orient = {0, 0} */
+        double cx = 0, cy = 0;
+        for (size_t q = bd->first; q < bd->first + bd->count; q++) {
+            cx += sim->p.x[q];
+            cy += sim->p.y[q];
+        }
+        bd->orient = 1;
+        bd->ox = cx / (double)bd->count;
+        bd->oy = cy / (double)bd->count;
+    }
+    if (lm_sim_prepare(sim) != LM_OK) return luaL_error(L, "%s: %s", fn, sim->err);
     la_push_body(L, 1, bi, nameidx);
     return 1;
 }

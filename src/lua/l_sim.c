@@ -85,7 +85,7 @@ static void read_boundary(lua_State *L, const char *fn, lm_sim_def *d)
 int la_sim_new(lua_State *L)
 {
     static const char *const keys[] = {"domain", "cell", "dt", "scheme", "gravity",
-                                       "boundary", "courant", "pic", NULL};
+                                       "boundary", "courant", "pic", "seed", NULL};
     const char *fn = "lamina.sim";
     la_check_keys(L, 1, fn, keys);
     lm_sim_def d;
@@ -99,6 +99,10 @@ int la_sim_new(lua_State *L)
     read_boundary(L, fn, &d);
     d.courant = la_opt_number(L, 1, fn, "courant", 1.0);
     d.pic = la_opt_number(L, 1, fn, "pic", 0.0);
+    double seed = la_opt_number(L, 1, fn, "seed", 1);
+    if (!(seed >= 0 && seed < 9007199254740992.0) || seed != floor(seed))
+        luaL_error(L, "%s: seed must be a whole number >= 0 (got %f)", fn, seed);
+    d.seed = (uint64_t)seed;
     if (!(d.pic >= 0 && d.pic <= 1)) luaL_error(L, "%s: pic must lie in [0, 1] (got %f)", fn, d.pic);
 
     la_sim *s = lua_newuserdatauv(L, sizeof *s, 1);

@@ -44,6 +44,8 @@ typedef struct lamina_run {
     int at_prompt;              /* the repl is running a line typed at its prompt */
     long changes;               /* live parameter changes logged */
     FILE *log;                  /* NULL, or a copy of the run log */
+    const char *backend;        /* --backend NAME: sim:frame's default
+                                   ("cairo" or "osmesa"); NULL: cairo */
 } lamina_run;
 
 /* A Lua state with the safe standard libraries and `lamina` as a global. */

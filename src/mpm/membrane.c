@@ -11,6 +11,10 @@
  * large slack, such as the dog-bone's), never updated from tr(de), which
  * would include the gas's strain across the membrane. */
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "normals.h"
 
 #include "step.h"
 
@@ -25,19 +29,103 @@ static void tangent_of(const lm_particles *p, size_t a, size_t b, double *tx, do
     /* coincident neighbours: keep the previous tangent */
 }
 
-void lm_membrane_tangents(lm_sim *sim)
+static void connectivity(lm_particles *p, const lm_body *bd)
+{
+    size_t first = bd->first, last = bd->first + bd->count - 1;
+    for (size_t q = first; q <= last; q++) {
+        size_t prev = q > first ? q - 1 : (bd->closed ? last : q);
+        size_t next = q < last ? q + 1 : (bd->closed ? first : q);
+        tangent_of(p, prev, next, &p->tx[q], &p->ty[q]);
+    }
+}
+
+/* The normals paper's construction (or a dissertation variant) on the
+ * simulation's own grid, from the points alone. The random points come
+ * from the simulation's seed, the body and the step, so a run is
+ * reproducible. A point whose normal is undefined keeps last step's
+ * tangent. The sign of the normal does not matter to the stress
+ * (sigma_t t(x)t, t.de.t); it is oriented only for drawing. */
+static lm_status without_connectivity(lm_sim *sim, int b)
+{
+    const lm_body *bd = &sim->bodies[b];
+    lm_particles *p = &sim->p;
+    size_t n = bd->count;
+    lm_ngrid g = {2, {sim->grid.x0, sim->grid.y0, 0}, {sim->grid.hx, sim->grid.hy, 1},
+                  {sim->grid.nx, sim->grid.ny, 1}};
+    lm_nopts o;
+    lm_nopts_default(&o);
+    o.seed = lm_nrng_mix(sim->def.seed, ((uint64_t)b << 40) ^ (uint64_t)sim->step);
+    o.orient = bd->orient == 1 ? LM_NORIENT_AWAY
+             : bd->orient == 2 ? LM_NORIENT_NEIGHBOURS : LM_NORIENT_NONE;
+    o.orient_point[0] = bd->ox;
+    o.orient_point[1] = bd->oy;
+    double *nx = malloc(2 * n * sizeof *nx);
+    unsigned char *flags = malloc(n);
+    if (!nx || !flags) {
+        free(nx);
+        free(flags);
+        snprintf(sim->err, sizeof sim->err, "out of memory for the normals of body %d", b + 1);
+        return LM_ERR_MEMORY;
+    }
+    double *ny = nx + n;
+    const double *x[3] = {p->x + bd->first, p->y + bd->first, NULL};
+    double *nrm[3] = {nx, ny, NULL};
+    char why[256] = "";
+    lm_nerr e;
+    switch (bd->normals) {
+    case LM_NORMALS_COLOUR:
+        e = lm_normals_colour(&g, n, x, nrm, flags, why, sizeof why);
+        break;
+    case LM_NORMALS_QUADRATIC_COLOUR:
+        e = lm_normals_quadratic_colour(&g, n, x, nrm, flags, why, sizeof why);
+        break;
+    default:
+        o.basis = bd->normals == LM_NORMALS_ISOSURFACE ? LM_NB_QUADRATIC
+                : bd->normals == LM_NORMALS_HYBRID ? LM_NB_HYBRID : LM_NB_LINEAR;
+        o.solver = bd->normals == LM_NORMALS_MASS_MATRIX ? LM_NS_NORMAL : LM_NS_QR;
+        e = lm_normals_grid(&g, n, x, &o, nrm, flags, NULL, why, sizeof why);
+        break;
+    }
+    if (e == LM_NERR_NONE && (bd->normals == LM_NORMALS_COLOUR ||
+                              bd->normals == LM_NORMALS_QUADRATIC_COLOUR) && bd->orient)
+        lm_normals_orient(n, 2, x, nrm, o.orient, o.orient_point);
+    if (e != LM_NERR_NONE) {
+        free(nx);
+        free(flags);
+        snprintf(sim->err, sizeof sim->err,
+                 "at t = %.6g (step %ld): the normals of membrane %d failed: %s; likely "
+                 "cause: too few points in a cell region, or points outside the grid",
+                 sim->t, sim->step, b + 1, why);
+        return LM_ERR_UNSTABLE;
+    }
+    for (size_t k = 0; k < n; k++) {
+        if (flags[k] & LM_NF_UNDEFINED) continue;
+        /* tangent = normal turned -90 degrees, so that normal = tangent
+         * turned +90 as everywhere else */
+        p->tx[bd->first + k] = ny[k];
+        p->ty[bd->first + k] = -nx[k];
+    }
+    free(nx);
+    free(flags);
+    return LM_OK;
+}
+
+lm_status lm_membrane_tangents(lm_sim *sim)
 {
     lm_particles *p = &sim->p;
     for (int b = 0; b < sim->nbodies; b++) {
         const lm_body *bd = &sim->bodies[b];
         if (!bd->membrane || bd->count < 2) continue;
-        size_t first = bd->first, last = bd->first + bd->count - 1;
-        for (size_t q = first; q <= last; q++) {
-            size_t prev = q > first ? q - 1 : (bd->closed ? last : q);
-            size_t next = q < last ? q + 1 : (bd->closed ? first : q);
-            tangent_of(p, prev, next, &p->tx[q], &p->ty[q]);
+        if (bd->normals == LM_NORMALS_CONNECTIVITY) {
+            connectivity(p, bd);
+        } else {
+            /* a first guess for points whose normal is undefined */
+            if (!sim->prepared) connectivity(p, bd);
+            lm_status st = without_connectivity(sim, b);
+            if (st != LM_OK) return st;
         }
     }
+    return LM_OK;
 }
 
 /* [T] eq 5.9 (uniaxial) and 5.15 (plane stress); [M] §3.2 / Fig 13 the
@@ -72,14 +160,16 @@ double lm_membrane_energy(const lm_material *mat, double V, double et)
     return 0.5 * V * lm_membrane_stress(mat, et) * et;
 }
 
-void lm_membrane_prepare(lm_sim *sim)
+lm_status lm_membrane_prepare(lm_sim *sim)
 {
     lm_particles *p = &sim->p;
-    lm_membrane_tangents(sim);
+    lm_status st = lm_membrane_tangents(sim);
+    if (st != LM_OK) return st;
     for (size_t q = 0; q < p->n; q++) {
         const lm_material *mat = sim->mats[p->mat[q]];
         if (mat->kind != LM_MEMBRANE) continue;
         rebuild(mat, lm_membrane_stress(mat, p->et[q]), p->tx[q], p->ty[q],
                 &p->sxx[q], &p->syy[q], &p->sxy[q], &p->szz[q]);
     }
+    return LM_OK;
 }

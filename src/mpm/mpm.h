@@ -105,7 +105,15 @@ typedef struct lm_particles {
 } lm_particles;
 
 /* How a membrane finds its normals (physics.md §3). */
-typedef enum lm_normals { LM_NORMALS_CONNECTIVITY = 0 } lm_normals;
+typedef enum lm_normals {
+    LM_NORMALS_CONNECTIVITY = 0, /* neighbours in curve order ([F] §3.2) */
+    LM_NORMALS_ISOSURFACE,       /* phi = 1 of a per-cell quadratic fit ([N] §5) */
+    LM_NORMALS_HYBRID,           /* [N] §8: quadratic / linear / merged by count */
+    LM_NORMALS_LINEAR,           /* per-cell linear fit ([N] §4) */
+    LM_NORMALS_COLOUR,           /* [T] §7.1 simple colour function */
+    LM_NORMALS_QUADRATIC_COLOUR, /* [T] §7.2 */
+    LM_NORMALS_MASS_MATRIX       /* [T] §7.4 per cell (linear, normal equations) */
+} lm_normals;
 
 typedef struct lm_body {
     int mat;               /* index into sim->mats */
@@ -113,6 +121,8 @@ typedef struct lm_body {
     int membrane;          /* points in curve order, tangents from neighbours */
     int closed;            /* membrane: the last point neighbours the first */
     lm_normals normals;
+    int orient;            /* normals: 0 none, 1 away from (ox, oy), 2 neighbours */
+    double ox, oy;
     double pe_ref;         /* this body's share of sim->pe_ref */
 } lm_body;
 
@@ -128,6 +138,7 @@ typedef struct lm_sim_def {
     double courant;        /* largest allowed dt*c_max/h */
     double pic;            /* 0: FLIP velocity update (the papers'); 1: PIC;
                               between: a blend that damps particle noise */
+    uint64_t seed;         /* random points of the normals construction */
 } lm_sim_def;
 
 /* Fills a definition with lamina's defaults (unit square, cell 0.1, MUSL,
@@ -170,7 +181,7 @@ lm_status lm_sim_set_membrane_point(lm_sim *sim, size_t q, double ds, double et)
 /* Builds what depends on whole bodies (membrane tangents and stresses from
  * their strains); called by the first step, and by anyone who needs the
  * tangents before it. */
-void lm_sim_prepare(lm_sim *sim);
+lm_status lm_sim_prepare(lm_sim *sim);
 
 /* Courant number dt * c_max / min(hx, hy) over the materials in use. */
 double lm_sim_courant(const lm_sim *sim, double *c_max);

@@ -244,9 +244,10 @@ void lm_nreport_free(lm_nreport *r);
 /* Normals at n points x[0..dim) in the grid g, one element at a time:
  * each occupied cell's points are fitted on that cell (basis by the
  * options; HYBRID: quadratic with >= quad_min distinct points, linear with
- * >= lin_min, otherwise the cell joins a 2x2 block of cells, then 4x4, ...,
- * solved with the linear basis, [N] §4 and §8), and take the normal of
- * that fit. nrm[0..dim) receives unit normals; flags[n] (optional) LM_NF_*
+ * >= lin_min), and a cell with fewer than lin_min distinct points joins a
+ * 2x2 block of cells, then 4x4, ... ([N] §4), solved with the linear basis
+ * under HYBRID ([N] §8) or the fixed basis otherwise; the cell's points
+ * take the normal of that fit. nrm[0..dim) receives unit normals; flags[n] (optional) LM_NF_*
  * per point; rep (optional) the elements, to be freed with
  * lm_nreport_free. Points outside the grid, non-finite coordinates, or a
  * grid with fewer distinct points than the dimension are errors. */

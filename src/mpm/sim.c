@@ -17,6 +17,7 @@ void lm_sim_def_default(lm_sim_def *def)
     def->scheme = LM_MUSL;
     for (int s = 0; s < 4; s++) def->bc[s] = LM_BC_FIXED;
     def->courant = 1;
+    def->seed = 1;
 }
 
 /* Whole cells cover the domain; a domain that is a multiple of the cell

@@ -180,13 +180,14 @@ static int gas_maxima(lm_sim *sim, double *max_div, double *c_max)
 /* Steps 6-8: L = sum_i v_i (x) G_ip; strain increment (dt/2)(L + L^T) and
  * spin (1/2)(L - L^T); density rho/(1 + tr de) ([F] eq 16); stress by the
  * particle's constitutive law. */
-void lm_step_stress(lm_sim *sim)
+lm_status lm_step_stress(lm_sim *sim)
 {
     const lm_grid *g = &sim->grid;
     lm_particles *p = &sim->p;
     double dt = sim->def.dt;
     double h = fmin(g->hx, g->hy);
-    lm_membrane_tangents(sim);      /* the current tangent, at x^{k+1} */
+    lm_status st = lm_membrane_tangents(sim);   /* the current tangent, at x^{k+1} */
+    if (st != LM_OK) return st;
     double max_div = 0, c_max = 0;
     gas_maxima(sim, &max_div, &c_max);
     for (size_t q = 0; q < p->n; q++) {
@@ -220,6 +221,7 @@ void lm_step_stress(lm_sim *sim)
             break;
         }
     }
+    return LM_OK;
 }
 
 static lm_status fail(lm_sim *sim, lm_status st, size_t q, const char *what,
@@ -269,10 +271,11 @@ lm_status lm_step_check(lm_sim *sim)
     return LM_OK;
 }
 
-void lm_sim_prepare(lm_sim *sim)
+lm_status lm_sim_prepare(lm_sim *sim)
 {
-    lm_membrane_prepare(sim);
+    lm_status st = lm_membrane_prepare(sim);
     sim->prepared = 1;
+    return st;
 }
 
 lm_status lm_sim_step(lm_sim *sim)
@@ -282,7 +285,10 @@ lm_status lm_sim_step(lm_sim *sim)
         sim->t = sim->step * sim->def.dt;
         return LM_OK;
     }
-    if (!sim->prepared) lm_sim_prepare(sim);
+    if (!sim->prepared) {
+        lm_status st = lm_sim_prepare(sim);
+        if (st != LM_OK) return st;
+    }
     lm_grid_clear(&sim->grid);
     lm_step_shape(sim);
     lm_step_p2g(sim);
@@ -290,8 +296,9 @@ lm_status lm_sim_step(lm_sim *sim)
     lm_step_grid_update(sim);
     lm_step_g2p(sim);
     lm_step_strain_velocity(sim);
-    lm_step_stress(sim);
+    lm_status st = lm_step_stress(sim);
     sim->step++;
+    if (st != LM_OK) return st;
     /* t from the step count, so that long runs do not accumulate dt's
      * rounding error. */
     sim->t = sim->step * sim->def.dt;

@@ -17,7 +17,7 @@ void lm_step_forces(lm_sim *sim);           /* 2. f_i^int + f_i^ext */
 void lm_step_grid_update(lm_sim *sim);      /* 3. p_i^L, boundary conditions */
 void lm_step_g2p(lm_sim *sim);              /* 4. v_p, x_p */
 void lm_step_strain_velocity(lm_sim *sim);  /* 5. MUSL re-map or USL */
-void lm_step_stress(lm_sim *sim);           /* 6-8. strain, density, stress */
+lm_status lm_step_stress(lm_sim *sim);      /* 6-8. strain, density, stress */
 lm_status lm_step_check(lm_sim *sim);       /* NaN, inversion, domain */
 
 /* Zeroes the boundary-constrained components of a nodal vector field. */
@@ -34,9 +34,11 @@ double lm_elastic_energy_density(const lm_material *mat, double sxx,
                                  double syy, double sxy, double szz);
 
 /* membrane.c: [M] §3, [T] §5.1, physics.md §2 "Membrane". */
-/* Unit tangents of every membrane point from its curve neighbours
- * (connectivity, [F] §3.2): x_{p+1} - x_{p-1}, one-sided at open ends. */
-void lm_membrane_tangents(lm_sim *sim);
+/* Unit tangents of every membrane point, by the body's normals method:
+ * from its curve neighbours (connectivity, [F] §3.2: x_{p+1} - x_{p-1},
+ * one-sided at open ends), or the normal of a construction without
+ * connectivity (normals.h) turned -90 degrees. */
+lm_status lm_membrane_tangents(lm_sim *sim);
 /* sigma_t from eps_t by the law (one-way: none in compression). */
 double lm_membrane_stress(const lm_material *mat, double et);
 /* eps_t += t.de.t with the current tangent; sigma rebuilt as sigma_t t(x)t;
@@ -48,7 +50,7 @@ void lm_membrane_update(const lm_material *mat, double dexx, double deyy, double
 double lm_membrane_energy(const lm_material *mat, double V, double et);
 /* Rebuilds the stress tensors of the membrane points from eps_t along the
  * current tangents (before the first step, once bodies are complete). */
-void lm_membrane_prepare(lm_sim *sim);
+lm_status lm_membrane_prepare(lm_sim *sim);
 
 /* material_gas.c: [F] §3.3 eqs 21-25, [F] eq 26. */
 double lm_gas_sound_speed(const lm_material *mat, double e);

@@ -1,0 +1,325 @@
+/* cmd_animate.c - `lamina animate FRAMES... [--out FILE] [--fps N]
+ * [--loop N] [--quiet]`: a run's frames as one animated file.
+ *
+ * FRAMES are folders (their .png files, in name order: frame_%04d names
+ * sort by step) or PNG files in the order given. The output is an APNG
+ * written by lamina itself (apng.h), or an MP4 when FILE ends in .mp4 and
+ * ffmpeg is on PATH. When the MP4 cannot be made the APNG is written
+ * instead, and when no animation can be written at all (frames of
+ * different sizes, an unreadable frame, an unwritable target) the frames
+ * are left as they are - they are never touched - and the message says
+ * why. Exit status: 0 written, 1 nothing written, 2 a wrong command line. */
+#include <dirent.h>
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <sys/stat.h>
+
+#include "apng.h"
+#include "app.h"
+#include "cmd_animate.h"
+#include "render.h"
+
+typedef struct frames {
+    char **path;
+    size_t n, cap;
+} frames;
+
+typedef struct options {
+    const char *out;
+    double fps;
+    unsigned loops;
+    int quiet;
+} options;
+
+static int ends_with(const char *s, const char *suffix)
+{
+    size_t n = strlen(s), k = strlen(suffix);
+    return n >= k && strcasecmp(s + n - k, suffix) == 0;
+}
+
+static int add_frame(frames *f, const char *path)
+{
+    if (f->n == f->cap) {
+        size_t cap = f->cap ? 2 * f->cap : 64;
+        char **p = realloc(f->path, cap * sizeof *p);
+        if (!p)
+            return -1;
+        f->path = p;
+        f->cap = cap;
+    }
+    f->path[f->n] = strdup(path);
+    if (!f->path[f->n])
+        return -1;
+    f->n++;
+    return 0;
+}
+
+static void free_frames(frames *f)
+{
+    for (size_t i = 0; i < f->n; i++)
+        free(f->path[i]);
+    free(f->path);
+}
+
+static int by_name(const void *a, const void *b)
+{
+    return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+/* The folder's PNG files in name order; hidden files, lamina's
+ * temporaries and the output itself are not frames. */
+static int add_folder(frames *f, const char *dir, const char *out)
+{
+    DIR *d = opendir(dir);
+    if (!d) {
+        fprintf(stderr, "lamina animate: cannot read folder '%s': %s\n", dir,
+                strerror(errno));
+        return -1;
+    }
+    size_t first = f->n;
+    struct dirent *e;
+    int rc = 0;
+    while (rc == 0 && (e = readdir(d))) {
+        if (e->d_name[0] == '.' || !ends_with(e->d_name, ".png") ||
+            strstr(e->d_name, ".tmp."))
+            continue;
+        char path[4096];
+        size_t n = strlen(dir);
+        snprintf(path, sizeof path, "%s%s%s", dir, n && dir[n - 1] == '/' ? "" : "/",
+                 e->d_name);
+        if (out && strcmp(path, out) == 0)
+            continue;
+        rc = add_frame(f, path);
+    }
+    closedir(d);
+    if (rc == 0)
+        qsort(f->path + first, f->n - first, sizeof *f->path, by_name);
+    else
+        fprintf(stderr, "lamina animate: out of memory\n");
+    return rc;
+}
+
+static int parse_number(const char *opt, const char *v, double lo, double hi, double *out)
+{
+    char *end = NULL;
+    double x = v ? strtod(v, &end) : 0;
+    if (!v || end == v || *end || !(x >= lo && x <= hi)) {
+        fprintf(stderr, "lamina animate: %s needs a number in [%g, %g] (got '%s')\n",
+                opt, lo, hi, v ? v : "");
+        return -1;
+    }
+    *out = x;
+    return 0;
+}
+
+static int parse_args(int argc, char **argv, options *o, char ***inputs, int *ninputs)
+{
+    *inputs = calloc((size_t)argc + 1, sizeof **inputs);
+    if (!*inputs)
+        return -1;
+    for (int i = 0; i < argc; i++) {
+        const char *a = argv[i];
+        const char *v = i + 1 < argc ? argv[i + 1] : NULL;
+        double x;
+        if (strcmp(a, "--out") == 0 || strcmp(a, "-o") == 0) {
+            if (!v || !*v) {
+                fprintf(stderr, "lamina animate: --out needs a FILE\n");
+                return -1;
+            }
+            o->out = v;
+            i++;
+        } else if (strcmp(a, "--fps") == 0) {
+            if (parse_number("--fps", v, 0.02, 1000, &o->fps) != 0)
+                return -1;
+            i++;
+        } else if (strcmp(a, "--loop") == 0) {
+            if (parse_number("--loop", v, 0, 65535, &x) != 0)
+                return -1;
+            if (x != (unsigned)x) {
+                fprintf(stderr, "lamina animate: --loop needs a whole number (got '%s')\n", v);
+                return -1;
+            }
+            o->loops = (unsigned)x;
+            i++;
+        } else if (strcmp(a, "--quiet") == 0 || strcmp(a, "-q") == 0) {
+            o->quiet = 1;
+        } else if (a[0] == '-' && a[1]) {
+            fprintf(stderr, "lamina animate: unknown option '%s' (try 'lamina help')\n", a);
+            return -1;
+        } else {
+            (*inputs)[(*ninputs)++] = argv[i];
+        }
+    }
+    if (*ninputs == 0) {
+        fprintf(stderr, "lamina animate: no frames given (usage: lamina animate "
+                "FOLDER|FRAME.png... [--out FILE])\n");
+        return -1;
+    }
+    return 0;
+}
+
+/* FOLDER -> FOLDER.apng beside it; files -> their folder's name + .apng. */
+static char *default_out(const char *input, int is_dir)
+{
+    char base[4096];
+    snprintf(base, sizeof base, "%s", input);
+    if (!is_dir) {
+        char *slash = strrchr(base, '/');
+        if (slash)
+            *slash = 0;
+        else
+            snprintf(base, sizeof base, ".");
+    }
+    size_t n = strlen(base);
+    while (n > 1 && base[n - 1] == '/')
+        base[--n] = 0;
+    char *out = malloc(n + 16);
+    if (!out)
+        return NULL;
+    if (strcmp(base, ".") == 0 || strcmp(base, "/") == 0)
+        snprintf(out, n + 16, "animation.apng");
+    else
+        snprintf(out, n + 16, "%s.apng", base);
+    return out;
+}
+
+static int is_folder(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0 && S_ISDIR(st.st_mode);
+}
+
+/* Writes the APNG; -1 with the reason in why. */
+static int write_apng(const frames *f, const options *o, const char *out,
+                      char *why, size_t len, int *w, int *h)
+{
+    unsigned char *img = NULL;
+    char err[512];
+    if (lr_png_read(f->path[0], w, h, &img, err, sizeof err) != 0) {
+        snprintf(why, len, "%s", err);
+        return -1;
+    }
+    char ver[64], count[64];
+    snprintf(ver, sizeof ver, "lamina %s", LAMINA_VERSION);
+    snprintf(count, sizeof count, "%zu frames from %s", f->n, f->path[0]);
+    lr_text_chunk text[] = { { "Software", ver }, { "lamina:frames", count } };
+    lr_apng *a = lr_apng_open(out, *w, *h, (unsigned)f->n, o->fps, o->loops, text, 2,
+                              err, sizeof err);
+    if (!a) {
+        free(img);
+        snprintf(why, len, "%s", err);
+        return -1;
+    }
+    for (size_t i = 0; i < f->n; i++) {
+        int wi = *w, hi = *h;
+        if (i > 0 && lr_png_read(f->path[i], &wi, &hi, &img, err, sizeof err) != 0) {
+            snprintf(why, len, "%s", err);
+            lr_apng_abort(a);
+            return -1;
+        }
+        if (wi != *w || hi != *h) {
+            snprintf(why, len, "'%s' is %dx%d but the first frame '%s' is %dx%d "
+                     "(an animation needs one size)", f->path[i], wi, hi, f->path[0],
+                     *w, *h);
+            free(img);
+            lr_apng_abort(a);
+            return -1;
+        }
+        int rc = lr_apng_add(a, img, err, sizeof err);
+        free(img);
+        img = NULL;
+        if (rc != 0) {
+            snprintf(why, len, "%s", err);
+            lr_apng_abort(a);
+            return -1;
+        }
+    }
+    if (lr_apng_close(a, err, sizeof err) != 0) {
+        snprintf(why, len, "%s", err);
+        return -1;
+    }
+    return 0;
+}
+
+static long file_size(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0 ? (long)st.st_size : -1;
+}
+
+/* X.mp4 -> X.apng */
+static char *apng_name(const char *mp4)
+{
+    size_t n = strlen(mp4);
+    char *s = malloc(n + 8);
+    if (s)
+        snprintf(s, n + 8, "%.*s.apng", (int)(n - 4), mp4);
+    return s;
+}
+
+int cmd_animate(int argc, char **argv)
+{
+    options o = { NULL, 10.0, 0, 0 };
+    char **inputs = NULL;
+    int ninputs = 0;
+    if (parse_args(argc, argv, &o, &inputs, &ninputs) != 0) {
+        free(inputs);
+        return 2;
+    }
+    char *out_owned = o.out ? NULL : default_out(inputs[0], is_folder(inputs[0]));
+    const char *out = o.out ? o.out : out_owned;
+    frames f = { NULL, 0, 0 };
+    int status = out ? 0 : 1;
+    for (int i = 0; i < ninputs && status == 0; i++) {
+        if (is_folder(inputs[i]))
+            status = add_folder(&f, inputs[i], out) ? 2 : 0;
+        else if (add_frame(&f, inputs[i]) != 0)
+            status = 1;
+    }
+    if (status == 0 && f.n == 0) {
+        fprintf(stderr, "lamina animate: no .png frames in '%s'\n", inputs[0]);
+        status = 2;
+    }
+    const char *where = ninputs == 1 ? inputs[0] : "their files";
+    char why[1024] = "";
+    char *fallback = NULL;
+    if (status == 0 && ends_with(out, ".mp4")) {
+        char ffmpeg[4096];
+        if (animate_find_ffmpeg(ffmpeg, sizeof ffmpeg) != 0)
+            snprintf(why, sizeof why, "ffmpeg is not installed (not on PATH)");
+        else if (animate_mp4(ffmpeg, f.path, f.n, o.fps, out, why, sizeof why) == 0) {
+            if (!o.quiet)
+                fprintf(stderr, "lamina animate: %zu frames -> %s (MP4 by ffmpeg, %ld "
+                        "bytes)\n", f.n, out, file_size(out));
+            goto done;
+        }
+        fallback = apng_name(out);
+        if (!fallback) {
+            status = 1;
+            goto done;
+        }
+        fprintf(stderr, "lamina animate: no MP4: %s; writing an APNG instead: %s\n",
+                why, fallback);
+        out = fallback;
+    }
+    if (status == 0) {
+        int w = 0, h = 0;
+        if (write_apng(&f, &o, out, why, sizeof why, &w, &h) != 0) {
+            fprintf(stderr, "lamina animate: no animation written: %s; the %zu "
+                    "frames stay in %s\n", why, f.n, where);
+            status = 1;
+        } else if (!o.quiet) {
+            fprintf(stderr, "lamina animate: %zu frames (%dx%d, %g fps) -> %s (APNG, "
+                    "%ld bytes)\n", f.n, w, h, o.fps, out, file_size(out));
+        }
+    }
+done:
+    free(fallback);
+    free(out_owned);
+    free_frames(&f);
+    free(inputs);
+    return status;
+}

@@ -1,0 +1,375 @@
+/* l_frame_panel.c - one panel of sim:frame: which simulation(s), which
+ * window, what colours, which extras (docs/api.md, sim:frame).
+ *
+ * Only gathering happens here; src/render draws. Arrays the renderer needs
+ * beyond the engine's own (values through a colour map, normal arrows) are
+ * Lua userdata anchored for the call, so a Lua error leaks nothing. */
+#include <math.h>
+#include <string.h>
+
+#include "l_frame_panel.h"
+
+void *la_frame_scratch(lua_State *L, la_frame_ctx *ctx, size_t n)
+{
+    void *p = lua_newuserdatauv(L, n ? n : 1, 0);
+    memset(p, 0, n ? n : 1);
+    lua_rawseti(L, ctx->anchor, ++ctx->nanchored);
+    return p;
+}
+
+/* Pushes the value of key from the panel table, else the frame table. */
+static int get(lua_State *L, int fidx, int pidx, const char *key)
+{
+    if (!fidx && !pidx) {
+        lua_pushnil(L);
+        return LUA_TNIL;
+    }
+    if (pidx) {
+        int t = lua_getfield(L, pidx, key);
+        if (t != LUA_TNIL || !fidx)
+            return t;
+        lua_pop(L, 1);
+    }
+    return lua_getfield(L, fidx, key);
+}
+
+/* ---- what particles show ------------------------------------------------ */
+
+typedef enum field {
+    F_BODY, F_SPEED, F_VX, F_VY, F_PRESSURE, F_SXX, F_SYY, F_SXY, F_RHO, F_MASS,
+    F_STRAIN
+} field;
+
+static const char *const field_names[] = { "body", "speed", "vx", "vy", "pressure",
+                                           "sxx", "syy", "sxy", "rho", "mass",
+                                           "strain", NULL };
+
+/* Signed quantities get the diverging map by default (zero in the middle). */
+static int signed_field(field f)
+{
+    return f == F_VX || f == F_VY || f == F_PRESSURE || f == F_SXX || f == F_SYY ||
+           f == F_SXY || f == F_STRAIN;
+}
+
+static double field_value(const lm_particles *p, size_t i, field f)
+{
+    switch (f) {
+    case F_SPEED: return hypot(p->vx[i], p->vy[i]);
+    case F_VX: return p->vx[i];
+    case F_VY: return p->vy[i];
+    case F_PRESSURE: return -(p->sxx[i] + p->syy[i] + p->szz[i]) / 3.0;
+    case F_SXX: return p->sxx[i];
+    case F_SYY: return p->syy[i];
+    case F_SXY: return p->sxy[i];
+    case F_RHO: return p->rho[i];
+    case F_MASS: return p->m[i];
+    case F_STRAIN: return p->et[i];
+    default: return 0.0;
+    }
+}
+
+/* Particle radius in world units: half the smallest particle spacing, from
+ * the volume a particle started with. */
+static double particle_radius(const lm_sim *sim)
+{
+    double r = 0;
+    for (int b = 0; b < sim->nbodies; b++) {
+        const lm_body *bd = &sim->bodies[b];
+        if (bd->count == 0) continue;
+        size_t q = bd->first;
+        double v = sim->p.m[q] / sim->mats[bd->mat]->rho;
+        double rb = 0.5 * sqrt(v);
+        if (r == 0 || rb < r) r = rb;
+    }
+    return r;
+}
+
+/* ---- a side: one simulation's layers ------------------------------------ */
+
+typedef struct side_store {
+    lr_grid grid;
+    lr_points points;
+    lr_arrows arrows;
+} side_store;
+
+/* Membrane normals (the tangent turned +90 degrees, [M] section 3) as
+ * arrows one cell long. */
+static void normals(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, lr_arrows *a)
+{
+    if (!sim->prepared)
+        lm_sim_prepare(sim);    /* tangents exist from the first step on */
+    size_t n = 0;
+    for (int b = 0; b < sim->nbodies; b++)
+        if (sim->bodies[b].membrane)
+            n += sim->bodies[b].count;
+    double *buf = la_frame_scratch(L, ctx, 4 * (n ? n : 1) * sizeof *buf);
+    double *x = buf, *y = buf + n, *ux = buf + 2 * n, *uy = buf + 3 * n;
+    size_t k = 0;
+    for (int b = 0; b < sim->nbodies; b++) {
+        const lm_body *bd = &sim->bodies[b];
+        for (size_t q = bd->first; bd->membrane && q < bd->first + bd->count; q++, k++) {
+            x[k] = sim->p.x[q];
+            y[k] = sim->p.y[q];
+            ux[k] = -sim->p.ty[q];
+            uy[k] = sim->p.tx[q];
+        }
+    }
+    const lr_rgba dark = { 0.1, 0.1, 0.1, 1.0 };
+    a->n = n;
+    a->x = x;
+    a->y = y;
+    a->ux = ux;
+    a->uy = uy;
+    a->length = fmin(sim->grid.hx, sim->grid.hy);
+    a->width = 1.5;
+    a->head = 7.0;
+    a->colour = dark;
+}
+
+static void fill_side(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int grid,
+                      field f, int with_normals, lr_layers *l)
+{
+    side_store *st = la_frame_scratch(L, ctx, sizeof *st);
+    const lm_grid *g = &sim->grid;
+    st->grid.x0 = g->x0;
+    st->grid.y0 = g->y0;
+    st->grid.hx = g->hx;
+    st->grid.hy = g->hy;
+    st->grid.nx = g->nx;
+    st->grid.ny = g->ny;
+    l->grid = grid ? &st->grid : NULL;
+    lr_points *pts = &st->points;
+    pts->n = sim->p.n;
+    pts->x = sim->p.x;
+    pts->y = sim->p.y;
+    pts->group = sim->p.body;
+    pts->radius = particle_radius(sim);
+    if (f != F_BODY) {
+        double *v = la_frame_scratch(L, ctx, (sim->p.n ? sim->p.n : 1) * sizeof *v);
+        for (size_t i = 0; i < sim->p.n; i++)
+            v[i] = field_value(&sim->p, i, f);
+        pts->value = v;
+    }
+    l->points = pts;
+    l->npoints = 1;
+    if (with_normals) {
+        normals(L, ctx, sim, &st->arrows);
+        l->arrows = &st->arrows;
+        l->narrows = 1;
+    }
+}
+
+/* ---- the keys ----------------------------------------------------------- */
+
+static lm_sim *sim_at(lua_State *L, const la_frame_ctx *ctx, int idx, const char *key)
+{
+    la_sim *s = luaL_testudata(L, idx, LA_SIM);
+    if (!s)
+        luaL_error(L, "%s: '%s' must be a simulation (lamina.sim), got %s", ctx->fn,
+                   key, luaL_typename(L, idx));
+    return s->sim;
+}
+
+static int boolean(lua_State *L, const la_frame_ctx *ctx, int fidx, int pidx,
+                   const char *key, int def)
+{
+    int t = get(L, fidx, pidx, key), v = def;
+    if (t == LUA_TBOOLEAN)
+        v = lua_toboolean(L, -1);
+    else if (t != LUA_TNIL)
+        luaL_error(L, "%s: '%s' must be true or false (got %s)", ctx->fn, key,
+                   luaL_typename(L, -1));
+    lua_pop(L, 1);
+    return v;
+}
+
+/* A string kept alive by its table (which outlives the call). */
+static const char *string(lua_State *L, const la_frame_ctx *ctx, int fidx, int pidx,
+                          const char *key)
+{
+    int t = get(L, fidx, pidx, key);
+    const char *s = NULL;
+    if (t == LUA_TSTRING)
+        s = lua_tostring(L, -1);
+    else if (t != LUA_TNIL)
+        luaL_error(L, "%s: '%s' must be a string (got %s)", ctx->fn, key,
+                   luaL_typename(L, -1));
+    lua_pop(L, 1);
+    return s;
+}
+
+/* {a, b, ...}: n numbers. */
+static void numbers(lua_State *L, const la_frame_ctx *ctx, int idx, const char *key,
+                    const char *shape, int n, double *v)
+{
+    if (!lua_istable(L, idx) || (int)lua_rawlen(L, idx) != n)
+        luaL_error(L, "%s: '%s' must be %s", ctx->fn, key, shape);
+    for (int i = 0; i < n; i++) {
+        lua_rawgeti(L, idx, i + 1);
+        int isnum;
+        v[i] = lua_tonumberx(L, -1, &isnum);
+        if (!isnum || !isfinite(v[i]))
+            luaL_error(L, "%s: '%s' must be %s of finite numbers", ctx->fn, key, shape);
+        lua_pop(L, 1);
+    }
+}
+
+static void window(lua_State *L, const la_frame_ctx *ctx, int fidx, int pidx,
+                   const lm_sim *sim, lr_panel *p)
+{
+    const lm_grid *g = &sim->grid;
+    double w[4] = { g->x0, g->y0, g->x0 + g->nx * g->hx, g->y0 + g->ny * g->hy };
+    if (get(L, fidx, pidx, "window") != LUA_TNIL) {
+        numbers(L, ctx, lua_gettop(L), "window", "{x0, y0, x1, y1}", 4, w);
+        if (!(w[2] > w[0]) || !(w[3] > w[1]))
+            luaL_error(L, "%s: 'window' is empty", ctx->fn);
+    } else {
+        lr_panel_mirror_window(p, w);   /* the domain and its mirror images */
+    }
+    lua_pop(L, 1);
+    p->wx0 = w[0];
+    p->wy0 = w[1];
+    p->wx1 = w[2];
+    p->wy1 = w[3];
+}
+
+/* "x", "y", "xy" (about the domain's left / bottom side, where a symmetry
+ * wall of a quarter model lies), or {x = a, y = b} (about those lines). */
+static void mirror(lua_State *L, const la_frame_ctx *ctx, int fidx, int pidx,
+                   const lm_sim *sim, lr_panel *p)
+{
+    int t = get(L, fidx, pidx, "mirror");
+    p->mirror_ax = sim->grid.x0;
+    p->mirror_ay = sim->grid.y0;
+    if (t == LUA_TSTRING) {
+        const char *s = lua_tostring(L, -1);
+        static const char *const names[] = { "x", "y", "xy", NULL };
+        int k = la_option(L, ctx->fn, "mirror", s, names);
+        p->mirror_x = k == 0 || k == 2;
+        p->mirror_y = k == 1 || k == 2;
+    } else if (t == LUA_TTABLE) {
+        int idx = lua_gettop(L);
+        static const char *const keys[] = { "x", "y", NULL };
+        la_check_keys(L, idx, "sim:frame: mirror", keys);
+        if (la_has(L, idx, "x")) {
+            p->mirror_x = 1;
+            p->mirror_ax = la_opt_number(L, idx, "sim:frame: mirror", "x", 0);
+        }
+        if (la_has(L, idx, "y")) {
+            p->mirror_y = 1;
+            p->mirror_ay = la_opt_number(L, idx, "sim:frame: mirror", "y", 0);
+        }
+    } else if (t != LUA_TNIL && !(t == LUA_TBOOLEAN && !lua_toboolean(L, -1))) {
+        luaL_error(L, "%s: 'mirror' must be \"x\", \"y\", \"xy\" or {x = ..., y = ...}",
+                   ctx->fn);
+    }
+    lua_pop(L, 1);
+}
+
+/* colour, colourmap, range, colourbar */
+static field colours(lua_State *L, const la_frame_ctx *ctx, int fidx, int pidx,
+                     lr_panel *p)
+{
+    const char *name = string(L, ctx, fidx, pidx, "colour");
+    field f = name ? (field)la_option(L, ctx->fn, "colour", name, field_names) : F_BODY;
+    p->cmap = signed_field(f) ? LR_CMAP_RDBU : LR_CMAP_VIRIDIS;
+    const char *map = string(L, ctx, fidx, pidx, "colourmap");
+    char why[128];
+    if (map && lr_cmap_parse(map, &p->cmap, why, sizeof why) != 0)
+        luaL_error(L, "%s: %s", ctx->fn, why);
+    if (get(L, fidx, pidx, "range") != LUA_TNIL) {
+        double r[2];
+        numbers(L, ctx, lua_gettop(L), "range", "{min, max}", 2, r);
+        if (!(r[1] > r[0]))
+            luaL_error(L, "%s: 'range' must have max > min (got {%g, %g})", ctx->fn,
+                       r[0], r[1]);
+        p->vmin = r[0];
+        p->vmax = r[1];
+    }
+    lua_pop(L, 1);
+    p->colourbar = boolean(L, ctx, fidx, pidx, "colourbar", f != F_BODY);
+    if (p->colourbar && f == F_BODY)
+        luaL_error(L, "%s: a colour bar needs colour = a field (e.g. \"speed\"), "
+                   "not \"body\"", ctx->fn);
+    p->colourbar_label = field_names[f];
+    return f;
+}
+
+static void scalebar(lua_State *L, const la_frame_ctx *ctx, int fidx, int pidx,
+                     lr_panel *p)
+{
+    int t = get(L, fidx, pidx, "scalebar");
+    if (t == LUA_TBOOLEAN)
+        p->scalebar = lua_toboolean(L, -1) ? -1.0 : 0.0;
+    else if (t == LUA_TNUMBER) {
+        p->scalebar = lua_tonumber(L, -1);
+        if (!(p->scalebar > 0) || !isfinite(p->scalebar))
+            luaL_error(L, "%s: 'scalebar' must be true or a length > 0", ctx->fn);
+    } else if (t != LUA_TNIL)
+        luaL_error(L, "%s: 'scalebar' must be true or a length > 0 (got %s)", ctx->fn,
+                   luaL_typename(L, -1));
+    lua_pop(L, 1);
+    p->units = string(L, ctx, fidx, pidx, "units");
+}
+
+/* split = other sim: its particles right of split_at; names = {left, right} */
+static lm_sim *split(lua_State *L, const la_frame_ctx *ctx, int fidx, int pidx,
+                     lr_panel *p)
+{
+    lm_sim *other = NULL;
+    if (get(L, fidx, pidx, "split") != LUA_TNIL) {
+        other = sim_at(L, ctx, lua_gettop(L), "split");
+        p->split = 1;
+    }
+    lua_pop(L, 1);
+    if (get(L, fidx, pidx, "names") != LUA_TNIL) {
+        int idx = lua_gettop(L);
+        if (!lua_istable(L, idx) || lua_rawlen(L, idx) != 2)
+            luaL_error(L, "%s: 'names' must be {left, right}", ctx->fn);
+        for (int i = 0; i < 2; i++) {
+            if (lua_rawgeti(L, idx, i + 1) != LUA_TSTRING)
+                luaL_error(L, "%s: 'names' must be two strings", ctx->fn);
+            p->side[i].name = lua_tostring(L, -1);  /* alive in its table */
+            lua_pop(L, 1);
+        }
+    }
+    lua_pop(L, 1);
+    if (!other && (p->side[0].name || p->side[1].name))
+        luaL_error(L, "%s: 'names' needs 'split' (the other simulation)", ctx->fn);
+    return other;
+}
+
+void la_frame_panel(lua_State *L, la_frame_ctx *ctx, int fidx, int pidx, int sidx,
+                    lr_panel *p)
+{
+    memset(p, 0, sizeof *p);
+    lm_sim *sim;
+    if (pidx && get(L, fidx, pidx, "sim") != LUA_TNIL)
+        sim = sim_at(L, ctx, lua_gettop(L), "sim");
+    else
+        sim = la_check_sim(L, sidx)->sim;
+    if (pidx)
+        lua_pop(L, 1);
+    if (pidx)
+        p->title = string(L, ctx, 0, pidx, "title");
+    mirror(L, ctx, fidx, pidx, sim, p);
+    window(L, ctx, fidx, pidx, sim, p);
+    field f = colours(L, ctx, fidx, pidx, p);
+    scalebar(L, ctx, fidx, pidx, p);
+    lm_sim *other = split(L, ctx, fidx, pidx, p);
+    int grid = boolean(L, ctx, fidx, pidx, "grid", 1);
+    int with_normals = boolean(L, ctx, fidx, pidx, "normals", 0);
+    p->split_x = 0.5 * (p->wx0 + p->wx1);
+    if (get(L, fidx, pidx, "split_at") != LUA_TNIL) {
+        int isnum;
+        p->split_x = lua_tonumberx(L, -1, &isnum);
+        if (!isnum || !isfinite(p->split_x))
+            luaL_error(L, "%s: 'split_at' must be a number", ctx->fn);
+        if (!other)
+            luaL_error(L, "%s: 'split_at' needs 'split' (the other simulation)", ctx->fn);
+    }
+    lua_pop(L, 1);
+    fill_side(L, ctx, sim, grid, f, with_normals, &p->side[0]);
+    if (other)
+        fill_side(L, ctx, other, grid, f, with_normals, &p->side[1]);
+}

@@ -1,0 +1,31 @@
+/* l_frame_panel.h - sim:frame's panels: from the keys of a panel table (or
+ * of the frame table itself) to a figure.h lr_panel (private to l_frame*.c). */
+#ifndef LAMINA_L_FRAME_PANEL_H
+#define LAMINA_L_FRAME_PANEL_H
+
+#include "figure.h"
+#include "l_internal.h"
+
+/* The keys a panel understands; a frame table also takes them (as the one
+ * panel, or as defaults for every table in `panels`). */
+#define LA_PANEL_KEYS "window", "grid", "colour", "range", "colourmap", \
+    "colourbar", "scalebar", "units", "mirror", "split", "split_at", "names", \
+    "normals"
+
+typedef struct la_frame_ctx {
+    const char *fn;     /* "sim:frame", for messages */
+    int anchor;         /* stack index of a table keeping scratch buffers alive */
+    int nanchored;
+} la_frame_ctx;
+
+/* Scratch memory that lives as long as the anchor table (freed by Lua's
+ * collector, so a Lua error in between leaks nothing). Zeroed. */
+void *la_frame_scratch(lua_State *L, la_frame_ctx *ctx, size_t n);
+
+/* Fills *p from the panel table at pidx (0: none), each key looked up there
+ * first and then in the frame table at fidx; the simulation is the panel's
+ * `sim`, else the one at sidx. Raises a Lua error naming a bad key. */
+void la_frame_panel(lua_State *L, la_frame_ctx *ctx, int fidx, int pidx, int sidx,
+                    lr_panel *p);
+
+#endif
