@@ -9,4 +9,8 @@ int cmd_repl(int argc, char **argv);    /* the workbench, docs/workbench.md */
 int cmd_watch(int argc, char **argv);
 int cmd_sweep(int argc, char **argv);
 
+/* issue 5: renderer benchmarks and animations of a run's frames */
+int cmd_bench(int argc, char **argv);
+int cmd_animate(int argc, char **argv);
+
 #endif

@@ -16,6 +16,7 @@
 #include <string.h>
 #include <strings.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "apng.h"
 #include "app.h"
@@ -274,10 +275,15 @@ int cmd_animate(int argc, char **argv)
     frames f = { NULL, 0, 0 };
     int status = out ? 0 : 1;
     for (int i = 0; i < ninputs && status == 0; i++) {
-        if (is_folder(inputs[i]))
+        if (is_folder(inputs[i])) {
             status = add_folder(&f, inputs[i], out) ? 2 : 0;
-        else if (add_frame(&f, inputs[i]) != 0)
+        } else if (access(inputs[i], R_OK) != 0) {
+            fprintf(stderr, "lamina animate: cannot read '%s': %s\n", inputs[i],
+                    strerror(errno));
+            status = 2;
+        } else if (add_frame(&f, inputs[i]) != 0) {
             status = 1;
+        }
     }
     if (status == 0 && f.n == 0) {
         fprintf(stderr, "lamina animate: no .png frames in '%s'\n", inputs[0]);

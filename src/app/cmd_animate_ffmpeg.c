@@ -45,10 +45,9 @@ int animate_find_ffmpeg(char *path, size_t n)
 static void remove_links(const char *dir, size_t n)
 {
     char link[PATH_MAX];
-    for (size_t i = 0; i < n; i++) {
-        snprintf(link, sizeof link, "%s/%06zu.png", dir, i);
-        unlink(link);
-    }
+    for (size_t i = 0; i < n; i++)
+        if (snprintf(link, sizeof link, "%s/%06zu.png", dir, i) < (int)sizeof link)
+            unlink(link);
     rmdir(dir);
 }
 
@@ -65,7 +64,11 @@ static int link_frames(const char *dir, char **frames, size_t n, char *why, size
             snprintf(target, sizeof target, "%s", frames[i]);
         else
             snprintf(target, sizeof target, "%s/%s", cwd, frames[i]);
-        snprintf(link, sizeof link, "%s/%06zu.png", dir, i);
+        if (snprintf(link, sizeof link, "%s/%06zu.png", dir, i) >= (int)sizeof link) {
+            snprintf(why, len, "the temporary folder's name is too long");
+            remove_links(dir, i);
+            return -1;
+        }
         if (symlink(target, link) != 0) {
             snprintf(why, len, "cannot link '%s' into '%s': %s", frames[i], dir,
                      strerror(errno));

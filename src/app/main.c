@@ -10,7 +10,7 @@ static void usage(FILE *out)
             "lamina %s - membranes, gas and their interaction with the material point method\n"
             "\n"
             "usage:\n"
-            "  lamina run SCRIPT.lua [--set name=value ...] [--quiet]\n"
+            "  lamina run SCRIPT.lua [--set name=value ...] [--backend cairo|osmesa] [--quiet]\n"
             "                          run a scenario; its frames go where it says\n"
             "                          (--report FILE: also write lamina.report values as JSON)\n"
             "  lamina diff EXPECTED.png ACTUAL.png [--out DIFF.png] [--threshold T]\n"
@@ -30,6 +30,13 @@ static void usage(FILE *out)
             "               [--out DIR] [--emit-jobs] [--quiet]\n"
             "  lamina sweep --collect DIR\n"
             "                          one run per combination, a summary table\n"
+            "  lamina animate FOLDER|FRAME.png... [--out FILE.apng|FILE.mp4] [--fps N]\n"
+            "                 [--loop N] [--quiet]\n"
+            "                          a run's frames as one animation (APNG; MP4 through\n"
+            "                          ffmpeg when installed; docs/rendering.md)\n"
+            "  lamina bench render [--width W] [--height H] [--runs N] [--counts N,...]\n"
+            "                      [--backend cairo|osmesa|all]\n"
+            "                          milliseconds per frame for each renderer\n"
             "  lamina help             this text\n"
             "  lamina --version        the version\n"
             "\n"
@@ -47,6 +54,8 @@ int main(int argc, char **argv)
     }
     const char *cmd = argv[1];
     if (strcmp(cmd, "run") == 0) return cmd_run(argc - 2, argv + 2);
+    if (strcmp(cmd, "animate") == 0) return cmd_animate(argc - 2, argv + 2);
+    if (strcmp(cmd, "bench") == 0) return cmd_bench(argc - 2, argv + 2);
     if (strcmp(cmd, "diff") == 0) return cmd_diff(argc - 2, argv + 2);
     if (strcmp(cmd, "gallery") == 0) return cmd_gallery(argc - 2, argv + 2);
     if (strcmp(cmd, "repl") == 0) return cmd_repl(argc - 2, argv + 2);

@@ -53,7 +53,16 @@ static void hook(lua_State *L, lua_Debug *ar)
     if (!pending) return;
     lamina_run *run = la_run(L);
     if (run) run->stopped = LAMINA_STOP_SIGINT;
-    la_interrupt_raise(L, run ? run->active : NULL);
+    if (run && run->active) {
+        la_interrupt_raise(L, run->active);
+        return;
+    }
+    pending = 0;
+    clear_hooks();
+    luaL_where(L, 0);   /* the line the code was at */
+    lua_pushliteral(L, "interrupted");
+    lua_concat(L, 2);
+    lua_error(L);
 }
 
 static void on_sigint(int sig)

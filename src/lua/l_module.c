@@ -183,6 +183,7 @@ int lamina_run_script(lua_State *L, lamina_run *run)
     lua_setglobal(L, "SCRIPT");
     int rc = lua_pcall(L, 0, 0, base);
     if (rc != LUA_OK) {
+        lamina_progress_clear_line();   /* the message starts a line of its own */
         fprintf(stderr, "lamina: %s\n", lua_tostring(L, -1));
         lua_settop(L, 0);
         return run->sim_failed ? LAMINA_EXIT_SIM : LAMINA_EXIT_USAGE;

@@ -64,6 +64,15 @@ void la_progress_begin(lua_State *L, int sidx, long nsteps)
 {
     la_sim *s = la_check_sim(L, sidx);
     la_set_last_sim(L, sidx);
+    lamina_run *run = la_run(L);
+    if (run && run->max_steps > 0 && run->steps >= run->max_steps && nsteps > 0) {
+        /* the step budget is spent: stop before stepping (advance() has
+         * marked the sim running; undo that as its own stops do) */
+        s->running = 0;
+        run->active = NULL;
+        run->stopped = LAMINA_STOP_STEPS;
+        la_interrupt_raise(L, s->sim);
+    }
     if (P.active && P.sim != s->sim) {
         P.nested++;   /* a callback runs another sim: the outer run keeps the line */
         return;
@@ -139,8 +148,13 @@ int la_progress_tick(lua_State *L, const lm_sim *sim)
         return 1;
     }
     if (run->max_steps > 0 && run->steps >= run->max_steps) {
-        run->stopped = LAMINA_STOP_STEPS;
-        return 1;
+        /* the last step of this call anyway: let it end normally, so a
+         * scenario of exactly N steps completes (the next call stops) */
+        int last = P.active && !P.nested && sim == P.sim && sim->step - P.step0 >= P.nsteps;
+        if (!last) {
+            run->stopped = LAMINA_STOP_STEPS;
+            return 1;
+        }
     }
     if (!P.active) return 0;
     double now = now_s();

@@ -333,6 +333,15 @@ static int sim_index(lua_State *L)
     else if (strcmp(k, "cell") == 0) lua_pushnumber(L, m->grid.hx);
     else if (strcmp(k, "n") == 0) lua_pushinteger(L, (lua_Integer)m->p.n);
     else if (strcmp(k, "scheme") == 0) lua_pushstring(L, schemes[m->def.scheme]);
+    else if (strcmp(k, "pic") == 0) lua_pushnumber(L, m->def.pic);
+    else if (strcmp(k, "courant") == 0) lua_pushnumber(L, m->def.courant);
+    else if (strcmp(k, "gravity") == 0) {
+        lua_createtable(L, 2, 0);
+        lua_pushnumber(L, m->def.gx);
+        lua_rawseti(L, -2, 1);
+        lua_pushnumber(L, m->def.gy);
+        lua_rawseti(L, -2, 2);
+    }
     else {
         luaL_getmetafield(L, 1, "methods");
         lua_getfield(L, -1, k);
@@ -341,9 +350,39 @@ static int sim_index(lua_State *L)
     return 1;
 }
 
+/* Live simulation parameters, applied between steps like material changes
+ * and logged the same way: dt (the clock stays exact), gravity (the
+ * potential energy keeps its original datum and gravity: it is only
+ * meaningful while gravity is unchanged), pic, courant. */
 static int sim_newindex(lua_State *L)
 {
-    return luaL_error(L, "sim.%s is read-only", luaL_checkstring(L, 2));
+    la_sim *s = la_check_sim(L, 1);
+    const char *k = luaL_checkstring(L, 2);
+    lm_sim *m = s->sim;
+    if (strcmp(k, "dt") == 0) {
+        double dt = luaL_checknumber(L, 3);
+        if (!(dt > 0) || !isfinite(dt)) return luaL_error(L, "sim.dt must be positive (got %f)", dt);
+        lm_sim_set_dt(m, dt);
+    } else if (strcmp(k, "gravity") == 0) {
+        luaL_checktype(L, 3, LUA_TTABLE);
+        lua_rawgeti(L, 3, 1);
+        lua_rawgeti(L, 3, 2);
+        m->def.gx = luaL_checknumber(L, -2);
+        m->def.gy = luaL_checknumber(L, -1);
+        lua_pop(L, 2);
+    } else if (strcmp(k, "pic") == 0) {
+        double v = luaL_checknumber(L, 3);
+        if (!(v >= 0 && v <= 1)) return luaL_error(L, "sim.pic must lie in [0, 1] (got %f)", v);
+        m->def.pic = v;
+    } else if (strcmp(k, "courant") == 0) {
+        double v = luaL_checknumber(L, 3);
+        if (!(v > 0)) return luaL_error(L, "sim.courant must be positive (got %f)", v);
+        m->def.courant = v;
+    } else {
+        return luaL_error(L, "sim.%s cannot be changed (changeable: dt, gravity, pic, courant)", k);
+    }
+    la_log_change(L, "sim", k, 3);
+    return 0;
 }
 
 static int sim_tostring(lua_State *L)

@@ -155,6 +155,8 @@ typedef struct lm_sim {
     int nbodies, capbodies;
     double t;
     long step;
+    double t_base;         /* t = t_base + (step - step_base) dt: exact */
+    long step_base;        /* multiples of dt, and dt can change mid-run */
     double pe_ref;         /* sum m g.x at seeding: potential energy datum */
     int prepared;          /* membrane stresses built from eps_t */
     char err[512];
@@ -185,6 +187,9 @@ lm_status lm_sim_prepare(lm_sim *sim);
 
 /* Courant number dt * c_max / min(hx, hy) over the materials in use. */
 double lm_sim_courant(const lm_sim *sim, double *c_max);
+
+/* Changes the time step between steps (the clock keeps counting exactly). */
+void lm_sim_set_dt(lm_sim *sim, double dt);
 
 /* One step of physics.md §1. On failure sim->err says why. */
 lm_status lm_sim_step(lm_sim *sim);

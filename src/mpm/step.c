@@ -271,6 +271,13 @@ lm_status lm_step_check(lm_sim *sim)
     return LM_OK;
 }
 
+void lm_sim_set_dt(lm_sim *sim, double dt)
+{
+    sim->t_base = sim->t;
+    sim->step_base = sim->step;
+    sim->def.dt = dt;
+}
+
 lm_status lm_sim_prepare(lm_sim *sim)
 {
     lm_status st = lm_membrane_prepare(sim);
@@ -282,7 +289,7 @@ lm_status lm_sim_step(lm_sim *sim)
 {
     if (sim->p.n == 0) {
         sim->step++;
-        sim->t = sim->step * sim->def.dt;
+        sim->t = sim->t_base + (double)(sim->step - sim->step_base) * sim->def.dt;
         return LM_OK;
     }
     if (!sim->prepared) {
@@ -301,6 +308,6 @@ lm_status lm_sim_step(lm_sim *sim)
     if (st != LM_OK) return st;
     /* t from the step count, so that long runs do not accumulate dt's
      * rounding error. */
-    sim->t = sim->step * sim->def.dt;
+    sim->t = sim->t_base + (double)(sim->step - sim->step_base) * sim->def.dt;
     return lm_step_check(sim);
 }

@@ -58,6 +58,8 @@ int lr_backend_check(lr_backend b, char *err, size_t errlen)
 }
 
 #ifndef LAMINA_HAVE_OSMESA
+void lr_canvas_osmesa_release(void) {}
+
 lr_canvas *lr_canvas_osmesa_new(int width, int height, char *err, size_t errlen)
 {
     (void)width;

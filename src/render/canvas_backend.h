@@ -55,4 +55,8 @@ int lr_font_setup(cairo_t *cr);
 /* Drops the cached face; lr_shutdown calls it before cairo's own reset. */
 void lr_font_release(void);
 
+/* Destroys the OSMesa context kept for the next canvas (canvas_osmesa.c;
+ * nothing without OSMesa); lr_shutdown calls it. */
+void lr_canvas_osmesa_release(void);
+
 #endif

@@ -39,7 +39,7 @@ typedef struct cairo_canvas {
 
 static const lr_canvas_ops cairo_ops;
 
-static cairo_canvas *cc(lr_canvas *c) { return (cairo_canvas *)c; }
+static cairo_canvas *as_cairo(lr_canvas *c) { return (cairo_canvas *)c; }
 
 /* Discs per path fill: one fill per colour run, but bounded so that a long
  * run does not build a path of megabytes first. */
@@ -117,9 +117,9 @@ lr_canvas *lr_canvas_cairo_new(int width, int height, char *err, size_t errlen)
     return &c->base;
 }
 
-static void cairo_destroy_canvas(lr_canvas *base)
+static void cc_destroy(lr_canvas *base)
 {
-    cairo_canvas *c = cc(base);
+    cairo_canvas *c = as_cairo(base);
     /* cairo_destroy / cairo_surface_destroy accept NULL */
     cairo_destroy(c->cr);
     if (c->vector && c->surface)
@@ -222,9 +222,9 @@ lr_canvas *lr_canvas_vector_new(const char *path, lr_format format, int width,
     return &c->base;
 }
 
-static int cairo_finish(lr_canvas *base, char *err, size_t errlen)
+static int cc_finish(lr_canvas *base, char *err, size_t errlen)
 {
-    cairo_canvas *c = cc(base);
+    cairo_canvas *c = as_cairo(base);
     if (!c->vector || !c->out_open) {
         set_err(err, errlen, "cannot finish", "not an open vector canvas");
         return -1;
@@ -255,9 +255,9 @@ static void set_colour(cairo_t *cr, lr_rgba k)
 /* A finished vector canvas has no context left to draw into. */
 static int drawable(const cairo_canvas *c) { return c->cr != NULL; }
 
-static void cairo_clear(lr_canvas *base, lr_rgba colour)
+static void cc_clear(lr_canvas *base, lr_rgba colour)
 {
-    cairo_canvas *c = cc(base);
+    cairo_canvas *c = as_cairo(base);
     if (!drawable(c))
         return;
     /* SOURCE, not OVER: a translucent clear colour must replace, not blend */
@@ -270,10 +270,10 @@ static void cairo_clear(lr_canvas *base, lr_rgba colour)
 
 static int finite2(double a, double b) { return isfinite(a) && isfinite(b); }
 
-static void cairo_line(lr_canvas *base, double x0, double y0, double x1, double y1,
+static void cc_line(lr_canvas *base, double x0, double y0, double x1, double y1,
                        double width, lr_rgba colour, double dash)
 {
-    cairo_canvas *c = cc(base);
+    cairo_canvas *c = as_cairo(base);
     if (!drawable(c))
         return;
     cairo_t *cr = c->cr;
@@ -290,10 +290,10 @@ static void cairo_line(lr_canvas *base, double x0, double y0, double x1, double 
     cairo_restore(cr);
 }
 
-static void cairo_rect(lr_canvas *base, double x, double y, double w, double h,
+static void cc_rect(lr_canvas *base, double x, double y, double w, double h,
                        double line_width, lr_rgba stroke)
 {
-    cairo_canvas *c = cc(base);
+    cairo_canvas *c = as_cairo(base);
     if (!drawable(c))
         return;
     cairo_t *cr = c->cr;
@@ -503,10 +503,10 @@ static void discs_stamped(cairo_canvas *c, size_t n, const double *px,
     cairo_surface_mark_dirty(c->surface);
 }
 
-static void cairo_discs(lr_canvas *base, size_t n, const double *px,
+static void cc_discs(lr_canvas *base, size_t n, const double *px,
                         const double *py, double r, const lr_rgba *colours)
 {
-    cairo_canvas *c = cc(base);
+    cairo_canvas *c = as_cairo(base);
     if (!drawable(c) || cairo_status(c->cr) != CAIRO_STATUS_SUCCESS)
         return;
     if (c->vector)
@@ -519,10 +519,10 @@ static void cairo_discs(lr_canvas *base, size_t n, const double *px,
 }
 
 /* text is already valid for cairo (canvas.c cleaned it) */
-static void cairo_text(lr_canvas *base, double x, double y, double size,
+static void cc_text(lr_canvas *base, double x, double y, double size,
                        lr_rgba colour, lr_align align, const char *clean)
 {
-    cairo_canvas *c = cc(base);
+    cairo_canvas *c = as_cairo(base);
     if (!drawable(c))
         return;
     cairo_t *cr = c->cr;
@@ -542,10 +542,10 @@ static void cairo_text(lr_canvas *base, double x, double y, double size,
 
 /* ---- fills and clips --------------------------------------------------- */
 
-static void cairo_fill_polys(lr_canvas *base, size_t npoly, const size_t *counts,
+static void cc_fill(lr_canvas *base, size_t npoly, const size_t *counts,
                              const double *xy, lr_rgba colour)
 {
-    cairo_canvas *c = cc(base);
+    cairo_canvas *c = as_cairo(base);
     if (!drawable(c))
         return;
     cairo_t *cr = c->cr;
@@ -567,9 +567,9 @@ static void cairo_fill_polys(lr_canvas *base, size_t npoly, const size_t *counts
     cairo_restore(cr);
 }
 
-static void cairo_clip_rect(lr_canvas *base, int x, int y, int w, int h)
+static void cc_clip(lr_canvas *base, int x, int y, int w, int h)
 {
-    cairo_canvas *c = cc(base);
+    cairo_canvas *c = as_cairo(base);
     if (!drawable(c))
         return;
     cairo_reset_clip(c->cr);
@@ -609,9 +609,9 @@ static void unpremultiply_row(const unsigned char *src, unsigned char *dst,
     }
 }
 
-static unsigned char *cairo_read_rgba(lr_canvas *base)
+static unsigned char *cc_read(lr_canvas *base)
 {
-    cairo_canvas *c = cc(base);
+    cairo_canvas *c = as_cairo(base);
     if (c->vector || !drawable(c) || cairo_status(c->cr) != CAIRO_STATUS_SUCCESS)
         return NULL;
     cairo_surface_flush(c->surface);
@@ -633,14 +633,14 @@ static unsigned char *cairo_read_rgba(lr_canvas *base)
 
 static const lr_canvas_ops cairo_ops = {
     .backend = LR_BACKEND_CAIRO,
-    .destroy = cairo_destroy_canvas,
-    .clear = cairo_clear,
-    .line = cairo_line,
-    .rect = cairo_rect,
-    .discs = cairo_discs,
-    .text = cairo_text,
-    .fill = cairo_fill_polys,
-    .clip = cairo_clip_rect,
-    .read_rgba = cairo_read_rgba,
-    .finish = cairo_finish,
+    .destroy = cc_destroy,
+    .clear = cc_clear,
+    .line = cc_line,
+    .rect = cc_rect,
+    .discs = cc_discs,
+    .text = cc_text,
+    .fill = cc_fill,
+    .clip = cc_clip,
+    .read_rgba = cc_read,
+    .finish = cc_finish,
 };

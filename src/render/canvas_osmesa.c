@@ -18,13 +18,14 @@
 #define VIEWPORT_PAD 128
 
 static gl_canvas *current;      /* whose context is current on this thread */
+static gl_engine spare;         /* the last canvas's context, for the next */
 static const lr_canvas_ops osmesa_ops;
 
 void gl_use(gl_canvas *c)
 {
     if (current == c)
         return;
-    OSMesaMakeCurrent(c->ctx, c->buf, GL_UNSIGNED_BYTE, c->base.width,
+    OSMesaMakeCurrent(c->gl.ctx, c->buf, GL_UNSIGNED_BYTE, c->base.width,
                       c->base.height);
     current = c;
 }
@@ -35,22 +36,50 @@ static void set_err(char *err, size_t errlen, const char *msg)
         snprintf(err, errlen, "cannot create canvas: %s", msg);
 }
 
+/* Nothing stays bound to a buffer that is about to be freed. */
+static void release_current(void)
+{
+    OSMesaMakeCurrent(NULL, NULL, GL_UNSIGNED_BYTE, 0, 0);
+    current = NULL;
+}
+
+static void engine_destroy(gl_engine *e)
+{
+    if (e->ctx)
+        OSMesaDestroyContext(e->ctx);   /* its programs and buffers with it */
+    memset(e, 0, sizeof *e);
+}
+
+void lr_canvas_osmesa_release(void)
+{
+    if (current)
+        release_current();
+    engine_destroy(&spare);
+}
+
+/* keep: the context works and may serve the next canvas. */
+static void destroy(gl_canvas *c, int keep)
+{
+    if (current == c)
+        release_current();
+    if (keep && c->gl.ctx && !spare.ctx) {
+        spare = c->gl;
+    } else {
+        if (c->gl.ctx)
+            release_current();
+        engine_destroy(&c->gl);
+    }
+    free(c->verts);
+    free(c->pxy);
+    free(c->prgba);
+    free(c->buf);
+    free(c);
+}
+
 static void gl_destroy(lr_canvas *base)
 {
     gl_canvas *c = glc(base);
-    if (c->ctx) {
-        gl_use(c);
-        gl_programs_free(c);
-        OSMesaMakeCurrent(NULL, NULL, GL_UNSIGNED_BYTE, 0, 0);
-        current = NULL;
-        OSMesaDestroyContext(c->ctx);
-    } else {
-        free(c->verts);
-        free(c->pxy);
-        free(c->prgba);
-    }
-    free(c->buf);
-    free(c);
+    destroy(c, !c->failed);
 }
 
 /* The fixed state every drawing call relies on. */
@@ -63,15 +92,48 @@ static void initial_state(gl_canvas *c)
     glDisable(GL_DITHER);           /* same pixels every time */
     glDisable(GL_MULTISAMPLE);
     glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_STENCIL_TEST);
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);   /* premultiplied OVER */
-    glEnable(GL_POINT_SPRITE);      /* gl_PointCoord (compatibility profile) */
+    glDisable(GL_POINT_SPRITE);     /* plain squares (see the point shader) */
     glDisable(GL_PROGRAM_POINT_SIZE);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glStencilMask(0xFF);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glClearStencil(0);
     glClearColor(0, 0, 0, 0);
     glClear(GL_COLOR_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+}
+
+/* The context: the spare one, or a new one with its programs compiled. */
+static int engine_start(gl_canvas *c, char *err, size_t errlen)
+{
+    int fresh = !spare.ctx;
+    if (!fresh) {
+        c->gl = spare;
+        memset(&spare, 0, sizeof spare);
+    } else {
+        /* 8 stencil bits for fills' winding numbers; no depth, no accumulation */
+        c->gl.ctx = OSMesaCreateContextExt(OSMESA_RGBA, 0, 8, 0, NULL);
+        if (!c->gl.ctx) {
+            set_err(err, errlen, "OSMesa cannot create a context");
+            return -1;
+        }
+    }
+    current = NULL;
+    if (!OSMesaMakeCurrent(c->gl.ctx, c->buf, GL_UNSIGNED_BYTE, c->base.width,
+                           c->base.height)) {
+        set_err(err, errlen, "OSMesa cannot use the image buffer");
+        return -1;
+    }
+    current = c;
+    char why[512] = "";
+    if (fresh && gl_programs_init(&c->gl, why, sizeof why) != 0) {
+        set_err(err, errlen, why);
+        return -1;
+    }
+    return 0;
 }
 
 lr_canvas *lr_canvas_osmesa_new(int width, int height, char *err, size_t errlen)
@@ -95,20 +157,10 @@ lr_canvas *lr_canvas_osmesa_new(int width, int height, char *err, size_t errlen)
     c->base.ops = &osmesa_ops;
     c->base.width = width;
     c->base.height = height;
-    /* 8 stencil bits for fills' winding numbers; no depth, no accumulation */
-    c->ctx = OSMesaCreateContextExt(OSMESA_RGBA, 0, 8, 0, NULL);
-    if (!c->ctx) {
-        set_err(err, errlen, "OSMesa cannot create a context");
-        gl_destroy(&c->base);
+    if (engine_start(c, err, errlen) != 0) {
+        destroy(c, 0);
         return NULL;
     }
-    current = NULL;
-    if (!OSMesaMakeCurrent(c->ctx, c->buf, GL_UNSIGNED_BYTE, width, height)) {
-        set_err(err, errlen, "OSMesa cannot use the image buffer");
-        gl_destroy(&c->base);
-        return NULL;
-    }
-    current = c;
     GLint maxw = 0, maxh = 0, vp[2] = { 0, 0 };
     OSMesaGetIntegerv(OSMESA_MAX_WIDTH, &maxw);
     OSMesaGetIntegerv(OSMESA_MAX_HEIGHT, &maxh);
@@ -118,7 +170,7 @@ lr_canvas *lr_canvas_osmesa_new(int width, int height, char *err, size_t errlen)
         snprintf(why, sizeof why, "OSMesa draws at most %dx%d pixels (asked "
                  "for %dx%d)", maxw, maxh, width, height);
         set_err(err, errlen, why);
-        gl_destroy(&c->base);
+        destroy(c, 1);
         return NULL;
     }
     int room_w = (vp[0] - width) / 2, room_h = (vp[1] - height) / 2;
@@ -129,16 +181,11 @@ lr_canvas *lr_canvas_osmesa_new(int width, int height, char *err, size_t errlen)
         c->pad = room_h;
     if (c->pad < 0)
         c->pad = 0;
-    char why[512] = "";
-    if (gl_programs_init(c, why, sizeof why) != 0) {
-        set_err(err, errlen, why);
-        gl_destroy(&c->base);
-        return NULL;
-    }
+    gl_programs_viewport(c);
     initial_state(c);
     if (glGetError() != GL_NO_ERROR) {
         set_err(err, errlen, "OSMesa reported an error while setting up");
-        gl_destroy(&c->base);
+        destroy(c, 0);
         return NULL;
     }
     return &c->base;
@@ -179,6 +226,10 @@ static void straighten(const unsigned char *src, unsigned char *dst, int w, int 
         unsigned char *d = dst + (size_t)y * row;
         for (int x = 0; x < w; x++, s += 4, d += 4) {
             unsigned a = s[3];
+            if (a == 255) {     /* the common case, and the formula's result */
+                memcpy(d, s, 4);
+                continue;
+            }
             for (int k = 0; k < 3; k++) {
                 unsigned v = a ? (s[k] * 255u + a / 2) / a : 0;
                 d[k] = (unsigned char)(v > 255 ? 255 : v);

@@ -30,25 +30,32 @@ enum lrgl_mode {
     LRGL_STROKE = 0,     /* a line: box-filtered across and along, dashes */
     LRGL_FRINGE = 1,     /* a fill's outside edge: 0.5 - |distance| */
     LRGL_SOLID = 2,      /* full coverage (fill cover, stencil passes) */
-    LRGL_DISC = 3        /* a large disc: r + 0.5 - distance to centre */
+    LRGL_DISC = 3        /* a large disc: the pixel's area inside it */
 };
 
 enum lrgl_batch { LRGL_BATCH_NONE = 0, LRGL_BATCH_SHAPES, LRGL_BATCH_POINTS };
 
-typedef struct gl_canvas {
-    lr_canvas base;
+/* What outlives a canvas: the context with its compiled programs (llvmpipe
+ * compiles shaders to machine code per context, which costs more than a
+ * small frame), kept for the next canvas by canvas_osmesa.c. */
+typedef struct gl_engine {
     OSMesaContext ctx;
-    unsigned char *buf;         /* OSMesa's colour buffer, rows bottom-up */
-    int pad;                    /* viewport overhang, see gl_viewport */
-    int failed;                 /* a GL error or OOM: read_rgba gives NULL */
     /* programs and their uniform locations */
     GLuint shape_prog, point_prog, text_prog;
-    GLint shape_vp, point_vp, u_point_r, point_size, point_dot, text_vp, text_col,
+    GLint shape_vp, point_vp, point_r, point_h, point_dot, text_vp, text_col,
           text_tex;
     GLuint text_texture;
     /* fills: an off-screen coverage buffer (canvas_osmesa_fill.c) */
     GLuint fill_fbo, fill_tex, fill_stencil;
     int fill_w, fill_h;
+} gl_engine;
+
+typedef struct gl_canvas {
+    lr_canvas base;
+    gl_engine gl;
+    unsigned char *buf;         /* OSMesa's colour buffer, rows bottom-up */
+    int pad;                    /* viewport overhang (canvas_osmesa.c) */
+    int failed;                 /* a GL error or OOM: read_rgba gives NULL */
     /* the pending batch */
     enum lrgl_batch batch;
     float *verts;               /* shapes: LRGL_VERT_FLOATS per vertex */
@@ -67,8 +74,10 @@ static inline gl_canvas *glc(lr_canvas *c) { return (gl_canvas *)c; }
 void gl_use(gl_canvas *c);
 
 /* canvas_osmesa_gl.c */
-int gl_programs_init(gl_canvas *c, char *err, size_t errlen);
-void gl_programs_free(gl_canvas *c);
+int gl_programs_init(gl_engine *e, char *err, size_t errlen);
+void gl_programs_free(gl_engine *e);
+/* Points the programs at c's size (its viewport and pad). */
+void gl_programs_viewport(gl_canvas *c);
 /* Draws and empties the pending batch. */
 void gl_flush(gl_canvas *c);
 /* Room for n more shape vertices in the batch (flushing another kind
@@ -97,7 +106,7 @@ void gl_fill(lr_canvas *c, size_t npoly, const size_t *counts,
              const double *xy, lr_rgba colour);
 void gl_rect(lr_canvas *c, double x, double y, double w, double h,
              double line_width, lr_rgba stroke);
-void gl_fill_free(gl_canvas *c);
+void gl_fill_free(gl_engine *e);
 
 /* canvas_osmesa_text.c */
 /* Blends colour through the coverage in the alpha of texels 0..w-1,

@@ -57,16 +57,36 @@ static void disc_quad(gl_canvas *c, double x, double y, double r, lr_rgba k)
                 e * sy[i], r, 0, 0, LRGL_DISC, k);
 }
 
+/* cairo stamps discs from 0.8 to 24 px radius at a quarter-pixel grid of
+ * positions (canvas_cairo.c, STAMP_PHASES); the same discs here go to the
+ * same positions, so that the backends differ only in coverage. */
+#define STAMP_MIN_RADIUS 0.8
+#define STAMP_MAX_RADIUS 24.0
+#define STAMP_PHASES 4
+
+static double stamp_position(double v)
+{
+    double f = floor(v);
+    int q = (int)((v - f) * STAMP_PHASES);
+    q = q < 0 ? 0 : q >= STAMP_PHASES ? STAMP_PHASES - 1 : q;
+    return f + (q + 0.5) / STAMP_PHASES;
+}
+
 void gl_discs(lr_canvas *base, size_t n, const double *px, const double *py,
               double r, const lr_rgba *colours)
 {
     gl_canvas *c = glc(base);
     double reach = r + 1.0;
     double w = c->base.width, h = c->base.height;
+    int stamped = r >= STAMP_MIN_RADIUS && r <= STAMP_MAX_RADIUS;
     for (size_t i = 0; i < n && !c->failed; i++) {
         double x = px[i], y = py[i];
         if (!(x + reach >= 0 && y + reach >= 0 && x - reach <= w && y - reach <= h))
             continue;   /* off the canvas, or NaN */
+        if (stamped) {
+            x = stamp_position(x);
+            y = stamp_position(y);
+        }
         if (r <= SPRITE_MAX_RADIUS && x >= -c->pad && y >= -c->pad &&
             x <= w + c->pad && y <= h + c->pad)
             gl_point(c, x, y, r, colours[i]);

@@ -18,54 +18,54 @@
 
 #define SAMPLES 16
 
-void gl_fill_free(gl_canvas *c)
+void gl_fill_free(gl_engine *e)
 {
-    if (c->fill_fbo)
-        glDeleteFramebuffers(1, &c->fill_fbo);
-    if (c->fill_tex)
-        glDeleteTextures(1, &c->fill_tex);
-    if (c->fill_stencil)
-        glDeleteRenderbuffers(1, &c->fill_stencil);
-    c->fill_fbo = c->fill_tex = c->fill_stencil = 0;
-    c->fill_w = c->fill_h = 0;
+    if (e->fill_fbo)
+        glDeleteFramebuffers(1, &e->fill_fbo);
+    if (e->fill_tex)
+        glDeleteTextures(1, &e->fill_tex);
+    if (e->fill_stencil)
+        glDeleteRenderbuffers(1, &e->fill_stencil);
+    e->fill_fbo = e->fill_tex = e->fill_stencil = 0;
+    e->fill_w = e->fill_h = 0;
 }
 
 /* A coverage buffer of at least w x h; -1 if GL cannot make one. */
 static int coverage_buffer(gl_canvas *c, int w, int h)
 {
-    if (c->fill_fbo && c->fill_w >= w && c->fill_h >= h)
+    if (c->gl.fill_fbo && c->gl.fill_w >= w && c->gl.fill_h >= h)
         return 0;
-    if (c->fill_w > w)
-        w = c->fill_w;
-    if (c->fill_h > h)
-        h = c->fill_h;
-    gl_fill_free(c);
-    glGenTextures(1, &c->fill_tex);
-    glBindTexture(GL_TEXTURE_2D, c->fill_tex);
+    if (c->gl.fill_w > w)
+        w = c->gl.fill_w;
+    if (c->gl.fill_h > h)
+        h = c->gl.fill_h;
+    gl_fill_free(&c->gl);
+    glGenTextures(1, &c->gl.fill_tex);
+    glBindTexture(GL_TEXTURE_2D, c->gl.fill_tex);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
     glBindTexture(GL_TEXTURE_2D, 0);
-    glGenRenderbuffers(1, &c->fill_stencil);
-    glBindRenderbuffer(GL_RENDERBUFFER, c->fill_stencil);
+    glGenRenderbuffers(1, &c->gl.fill_stencil);
+    glBindRenderbuffer(GL_RENDERBUFFER, c->gl.fill_stencil);
     glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, w, h);
     glBindRenderbuffer(GL_RENDERBUFFER, 0);
-    glGenFramebuffers(1, &c->fill_fbo);
-    glBindFramebuffer(GL_FRAMEBUFFER, c->fill_fbo);
+    glGenFramebuffers(1, &c->gl.fill_fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, c->gl.fill_fbo);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
-                           c->fill_tex, 0);
+                           c->gl.fill_tex, 0);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT,
-                              GL_RENDERBUFFER, c->fill_stencil);
+                              GL_RENDERBUFFER, c->gl.fill_stencil);
     GLenum st = glCheckFramebufferStatus(GL_FRAMEBUFFER);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (st != GL_FRAMEBUFFER_COMPLETE) {
-        gl_fill_free(c);
+        gl_fill_free(&c->gl);
         return -1;
     }
-    c->fill_w = w;
-    c->fill_h = h;
+    c->gl.fill_w = w;
+    c->gl.fill_h = h;
     return 0;
 }
 
@@ -106,7 +106,7 @@ static void accumulate(gl_canvas *c, const float *fan, size_t nfan, int x0,
     for (int i = 0; i < 6; i++)
         gl_vert(box + LRGL_VERT_FLOATS * i, bx[i], by[i], 0, 0, 0, 0, 0, LRGL_SOLID, step);
 
-    glBindFramebuffer(GL_FRAMEBUFFER, c->fill_fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, c->gl.fill_fbo);
     glViewport(0, 0, w, h);
     glEnable(GL_SCISSOR_TEST);      /* the buffer may be larger than the box */
     glScissor(0, 0, w, h);
@@ -116,14 +116,14 @@ static void accumulate(gl_canvas *c, const float *fan, size_t nfan, int x0,
     glEnable(GL_STENCIL_TEST);
     glStencilMask(0xFF);
     glBlendFunc(GL_ONE, GL_ONE);    /* coverage adds up */
-    glUseProgram(c->shape_prog);
+    glUseProgram(c->gl.shape_prog);
     for (int k = 0; k < SAMPLES; k++) {
         /* sample k at ((k + 0.5) / 16, ((7k + 3) mod 16 + 0.5) / 16) of
          * each pixel: the pixel centre samples the fans moved by the
          * opposite of its offset from the centre */
         double sx = (k + 0.5) / SAMPLES - 0.5;
         double sy = ((7 * k + 3) % SAMPLES + 0.5) / SAMPLES - 0.5;
-        glUniform4f(c->shape_vp, (float)(-x0 - sx), (float)(-y0 - sy), (float)w,
+        glUniform4f(c->gl.shape_vp, (float)(-x0 - sx), (float)(-y0 - sy), (float)w,
                     (float)h);
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         glStencilFunc(GL_ALWAYS, 0, 0xFF);
@@ -138,7 +138,7 @@ static void accumulate(gl_canvas *c, const float *fan, size_t nfan, int x0,
     }
     glDisable(GL_STENCIL_TEST);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-    glUniform4f(c->shape_vp, (float)c->pad, (float)c->pad,
+    glUniform4f(c->gl.shape_vp, (float)c->pad, (float)c->pad,
                 (float)(c->base.width + 2 * c->pad), (float)(c->base.height + 2 * c->pad));
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(-c->pad, -c->pad, c->base.width + 2 * c->pad, c->base.height + 2 * c->pad);
@@ -184,8 +184,8 @@ void gl_fill(lr_canvas *base, size_t npoly, const size_t *counts,
         else
             glDisable(GL_SCISSOR_TEST);
         if (ok)
-            gl_blend_coverage(c, c->fill_tex, x0, y0, x1 - x0, y1 - y0, c->fill_w,
-                              c->fill_h, 1, colour);
+            gl_blend_coverage(c, c->gl.fill_tex, x0, y0, x1 - x0, y1 - y0, c->gl.fill_w,
+                              c->gl.fill_h, 1, colour);
         else
             c->failed = 1;
     }

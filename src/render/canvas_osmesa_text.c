@@ -72,8 +72,8 @@ void gl_blend_coverage(gl_canvas *c, GLuint tex, double x, double y, int w,
     const float pos[8] = { x0, y0, x1, y0, x1, y1, x0, y1 };
     const float uv[8] = { 0, t0, s1, t0, s1, t1, 0, t1 };
     glBindTexture(GL_TEXTURE_2D, tex);
-    glUseProgram(c->text_prog);
-    glUniform4f(c->text_col, (float)colour.r, (float)colour.g, (float)colour.b,
+    glUseProgram(c->gl.text_prog);
+    glUniform4f(c->gl.text_col, (float)colour.r, (float)colour.g, (float)colour.b,
                 (float)colour.a);
     glEnableVertexAttribArray(0);
     glEnableVertexAttribArray(1);
@@ -95,7 +95,7 @@ void gl_text(lr_canvas *base, double x, double y, double size, lr_rgba colour,
         return;
     int w = cairo_image_surface_get_width(s), h = cairo_image_surface_get_height(s);
     gl_flush(c);
-    glBindTexture(GL_TEXTURE_2D, c->text_texture);
+    glBindTexture(GL_TEXTURE_2D, c->gl.text_texture);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -105,5 +105,5 @@ void gl_text(lr_canvas *base, double x, double y, double size, lr_rgba colour,
                  cairo_image_surface_get_data(s));
     glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
     cairo_surface_destroy(s);
-    gl_blend_coverage(c, c->text_texture, ox, oy, w, h, w, h, 0, colour);
+    gl_blend_coverage(c, c->gl.text_texture, ox, oy, w, h, w, h, 0, colour);
 }

@@ -309,6 +309,38 @@ static void boxed_text(lr_canvas *c, double x, double y, double size,
     lr_canvas_text(c, x, y, size, LR_FIG_TEXT, align, text);
 }
 
+static int uses_values(const lr_panel *p)
+{
+    for (int s = 0; s < (p->split ? 2 : 1); s++) {
+        for (size_t i = 0; i < p->side[s].npoints; i++)
+            if (p->side[s].points[i].value)
+                return 1;
+        for (size_t i = 0; i < p->side[s].nfields; i++)
+            if (!p->side[s].fields[i].colours)
+                return 1;
+    }
+    return 0;
+}
+
+/* A diverging map is white at its middle: on a white page values near zero
+ * would vanish, so the window gets a pale grey ground. */
+static void ground(lr_canvas *c, const panel_box *b, const lr_panel *p)
+{
+    if (p->cmap != LR_CMAP_RDBU || !uses_values(p))
+        return;
+    double x0, y0, x1, y1;
+    fig_to_pixel(&b->v, p->wx0, p->wy1, &x0, &y0);
+    fig_to_pixel(&b->v, p->wx1, p->wy0, &x1, &y1);
+    x0 = floor(x0 + 0.5);
+    y0 = floor(y0 + 0.5);
+    x1 = floor(x1 + 0.5);
+    y1 = floor(y1 + 0.5);
+    double box[8] = { x0, y0, x1, y0, x1, y1, x0, y1 };
+    size_t four = 4;
+    const lr_rgba pale = { 0.9, 0.9, 0.9, 1.0 };
+    lr_canvas_fill(c, 1, &four, box, pale);
+}
+
 static int draw_panel(lr_canvas *c, const lr_figure *f, const layout *L, size_t k)
 {
     const lr_panel *p = &f->panels[k];
@@ -326,6 +358,7 @@ static int draw_panel(lr_canvas *c, const lr_figure *f, const layout *L, size_t 
         split_px = (int)lround(px);
         split_px = split_px < cx0 ? cx0 : split_px > cx1 ? cx1 : split_px;
     }
+    ground(c, b, p);
     for (int s = 0; s < (p->split ? 2 : 1) && rc == 0; s++) {
         if (clipped) {
             int x0 = p->split && s == 1 ? split_px : cx0;
@@ -345,8 +378,11 @@ static int draw_panel(lr_canvas *c, const lr_figure *f, const layout *L, size_t 
     }
     if (p->scalebar != 0)
         fig_draw_scalebar(c, &b->v, p, L->font);
-    if (p->colourbar)
-        fig_draw_colourbar(c, p, b->x + b->aw, top, bottom, L->font, b->vmin, b->vmax);
+    if (p->colourbar) {     /* beside the window, which is centred with it */
+        double right;
+        fig_to_pixel(&b->v, p->wx1, p->wy0, &right, &unused);
+        fig_draw_colourbar(c, p, right, top, bottom, L->font, b->vmin, b->vmax);
+    }
     if (has_text(p->title))
         lr_canvas_text(c, b->x + 0.5 * b->aw, b->y + L->font, L->font, LR_FIG_TEXT,
                        LR_ALIGN_CENTER, p->title);

@@ -45,7 +45,7 @@ void fig_draw_colourbar(lr_canvas *c, const lr_panel *p, double x, double y0,
 {
     int bx0 = (int)lround(x + BAR_GAP * font);
     int bx1 = bx0 + (int)lround(BAR_WIDTH * font);
-    double label_band = p->colourbar_label && *p->colourbar_label ? 1.3 * font : 0.0;
+    double label_band = p->colourbar_label && *p->colourbar_label ? 1.5 * font : 0.0;
     int iy0 = (int)lround(y0 + label_band), iy1 = (int)lround(y1);
     if (iy1 - iy0 < 4)
         return;     /* no room */
@@ -67,7 +67,7 @@ void fig_draw_colourbar(lr_canvas *c, const lr_panel *p, double x, double y0,
                        TICK_FONT * font, LR_FIG_TEXT, LR_ALIGN_LEFT, labels[i]);
     }
     if (label_band > 0)
-        lr_canvas_text(c, 0.5 * (bx0 + bx1), iy0 - 0.45 * font, TICK_FONT * font,
+        lr_canvas_text(c, 0.5 * (bx0 + bx1), iy0 - 0.75 * font, TICK_FONT * font,
                        LR_FIG_TEXT, LR_ALIGN_CENTER, p->colourbar_label);
 }
 

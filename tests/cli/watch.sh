@@ -35,5 +35,8 @@ check run.log "material\.E = 1500"
 status=$?
 [ "$status" -eq 0 ] || { echo "FAIL: --once exit status $status"; fail=1; }
 check out3.txt "watch 1: ok \(first 40 steps\), t = 0\.04, 40 steps"
-[ $fail -eq 0 ] || show out1.txt err1.txt out2.txt err2.txt out3.txt err3.txt
+# a scenario of exactly N steps ends normally (its report is printed)
+"$LAMINA" watch w1.lua --once --steps 300 --set out=frames > out4.txt 2> err4.txt
+check out4.txt "watch 1: ok, t = 0\.3, 300 steps, 1 frame, [0-9.]+ s; energy = "
+[ $fail -eq 0 ] || show out1.txt err1.txt out2.txt err2.txt out3.txt err3.txt out4.txt err4.txt
 exit $fail
