@@ -357,7 +357,10 @@ void la_frame_panel(lua_State *L, la_frame_ctx *ctx, int fidx, int pidx, int sid
     field f = colours(L, ctx, fidx, pidx, p);
     scalebar(L, ctx, fidx, pidx, p);
     lm_sim *other = split(L, ctx, fidx, pidx, p);
-    int grid = boolean(L, ctx, fidx, pidx, "grid", 1);
+    /* grid: any Lua truth value, as sim:frame always took it */
+    get(L, fidx, pidx, "grid");
+    int grid = lua_isnil(L, -1) || lua_toboolean(L, -1);
+    lua_pop(L, 1);
     int with_normals = boolean(L, ctx, fidx, pidx, "normals", 0);
     p->split_x = 0.5 * (p->wx0 + p->wx1);
     if (get(L, fidx, pidx, "split_at") != LUA_TNIL) {

@@ -118,6 +118,13 @@ lm_status lm_membrane_tangents(lm_sim *sim)
         if (!bd->membrane || bd->count < 2) continue;
         if (bd->normals == LM_NORMALS_CONNECTIVITY) {
             connectivity(p, bd);
+            /* the curve's direction fixes the sign; asked to point away
+             * from a point, turn the tangents (t(x)t does not change) */
+            for (size_t q = bd->first; bd->orient == 1 && q < bd->first + bd->count; q++)
+                if (-p->ty[q] * (p->x[q] - bd->ox) + p->tx[q] * (p->y[q] - bd->oy) < 0) {
+                    p->tx[q] = -p->tx[q];
+                    p->ty[q] = -p->ty[q];
+                }
         } else {
             /* a first guess for points whose normal is undefined */
             if (!sim->prepared) connectivity(p, bd);

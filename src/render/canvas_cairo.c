@@ -20,7 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-typedef struct cairo_canvas {
+typedef struct cc_canvas {
     lr_canvas base;
     cairo_surface_t *surface;
     cairo_t *cr;
@@ -35,11 +35,11 @@ typedef struct cairo_canvas {
     lr_atomic out;
     int out_open;
     int write_errno;            /* of a failed write into out */
-} cairo_canvas;
+} cc_canvas;
 
 static const lr_canvas_ops cairo_ops;
 
-static cairo_canvas *as_cairo(lr_canvas *c) { return (cairo_canvas *)c; }
+static cc_canvas *as_cairo(lr_canvas *c) { return (cc_canvas *)c; }
 
 /* Discs per path fill: one fill per colour run, but bounded so that a long
  * run does not build a path of megabytes first. */
@@ -64,9 +64,9 @@ static void set_err(char *err, size_t errlen, const char *msg, const char *why)
         snprintf(err, errlen, "%s: %s", msg, why);
 }
 
-static cairo_canvas *canvas_alloc(int width, int height)
+static cc_canvas *canvas_alloc(int width, int height)
 {
-    cairo_canvas *c = calloc(1, sizeof *c);
+    cc_canvas *c = calloc(1, sizeof *c);
     if (!c)
         return NULL;
     c->base.ops = &cairo_ops;
@@ -78,7 +78,7 @@ static cairo_canvas *canvas_alloc(int width, int height)
 }
 
 /* Creates the context on c->surface with lamina's font; cairo's status. */
-static cairo_status_t canvas_start(cairo_canvas *c)
+static cairo_status_t canvas_start(cc_canvas *c)
 {
     cairo_status_t st = cairo_surface_status(c->surface);
     if (st == CAIRO_STATUS_SUCCESS) {
@@ -102,7 +102,7 @@ lr_canvas *lr_canvas_cairo_new(int width, int height, char *err, size_t errlen)
         set_err(err, errlen, "cannot create canvas", why);
         return NULL;
     }
-    cairo_canvas *c = canvas_alloc(width, height);
+    cc_canvas *c = canvas_alloc(width, height);
     if (!c) {
         set_err(err, errlen, "cannot create canvas", "out of memory");
         return NULL;
@@ -119,7 +119,7 @@ lr_canvas *lr_canvas_cairo_new(int width, int height, char *err, size_t errlen)
 
 static void cc_destroy(lr_canvas *base)
 {
-    cairo_canvas *c = as_cairo(base);
+    cc_canvas *c = as_cairo(base);
     /* cairo_destroy / cairo_surface_destroy accept NULL */
     cairo_destroy(c->cr);
     if (c->vector && c->surface)
@@ -136,7 +136,7 @@ static void cc_destroy(lr_canvas *base)
 static cairo_status_t write_out(void *closure, const unsigned char *data,
                                 unsigned int length)
 {
-    cairo_canvas *c = closure;
+    cc_canvas *c = closure;
     errno = 0;
     if (length && fwrite(data, 1, length, c->out.fp) != length) {
         c->write_errno = errno ? errno : EIO;
@@ -188,7 +188,7 @@ lr_canvas *lr_canvas_vector_new(const char *path, lr_format format, int width,
         set_err(err, errlen, "cannot create canvas", why);
         return NULL;
     }
-    cairo_canvas *c = canvas_alloc(width, height);
+    cc_canvas *c = canvas_alloc(width, height);
     if (!c) {
         set_err(err, errlen, "cannot create canvas", "out of memory");
         return NULL;
@@ -224,7 +224,7 @@ lr_canvas *lr_canvas_vector_new(const char *path, lr_format format, int width,
 
 static int cc_finish(lr_canvas *base, char *err, size_t errlen)
 {
-    cairo_canvas *c = as_cairo(base);
+    cc_canvas *c = as_cairo(base);
     if (!c->vector || !c->out_open) {
         set_err(err, errlen, "cannot finish", "not an open vector canvas");
         return -1;
@@ -253,11 +253,11 @@ static void set_colour(cairo_t *cr, lr_rgba k)
 }
 
 /* A finished vector canvas has no context left to draw into. */
-static int drawable(const cairo_canvas *c) { return c->cr != NULL; }
+static int drawable(const cc_canvas *c) { return c->cr != NULL; }
 
 static void cc_clear(lr_canvas *base, lr_rgba colour)
 {
-    cairo_canvas *c = as_cairo(base);
+    cc_canvas *c = as_cairo(base);
     if (!drawable(c))
         return;
     /* SOURCE, not OVER: a translucent clear colour must replace, not blend */
@@ -273,7 +273,7 @@ static int finite2(double a, double b) { return isfinite(a) && isfinite(b); }
 static void cc_line(lr_canvas *base, double x0, double y0, double x1, double y1,
                        double width, lr_rgba colour, double dash)
 {
-    cairo_canvas *c = as_cairo(base);
+    cc_canvas *c = as_cairo(base);
     if (!drawable(c))
         return;
     cairo_t *cr = c->cr;
@@ -293,7 +293,7 @@ static void cc_line(lr_canvas *base, double x0, double y0, double x1, double y1,
 static void cc_rect(lr_canvas *base, double x, double y, double w, double h,
                        double line_width, lr_rgba stroke)
 {
-    cairo_canvas *c = as_cairo(base);
+    cc_canvas *c = as_cairo(base);
     if (!drawable(c))
         return;
     cairo_t *cr = c->cr;
@@ -336,7 +336,7 @@ static void fill_run(cairo_t *cr, const lr_rgba *colour, size_t *in_path)
 }
 
 /* Culling also keeps far-away points out of cairo's fixed-point range. */
-static int near_canvas(const cairo_canvas *c, double x, double y, double reach)
+static int near_canvas(const cc_canvas *c, double x, double y, double reach)
 {
     return finite2(x, y) && x + reach >= 0 && y + reach >= 0 &&
            x - reach <= c->width && y - reach <= c->height;
@@ -344,7 +344,7 @@ static int near_canvas(const cairo_canvas *c, double x, double y, double reach)
 
 /* Path fill, one fill per colour run. Arcs are traced clockwise on screen,
  * so under the default winding rule overlapping discs unite. */
-static void discs_filled(cairo_canvas *c, size_t n, const double *px,
+static void discs_filled(cc_canvas *c, size_t n, const double *px,
                          const double *py, double r, const lr_rgba *colours)
 {
     cairo_t *cr = c->cr;
@@ -372,7 +372,7 @@ static void discs_filled(cairo_canvas *c, size_t n, const double *px,
 /* Builds (or keeps) the coverage masks for radius r; -1 on failure. The
  * mask for phase (qx, qy) is tile qy*STAMP_PHASES+qx, tiles stacked
  * vertically; its pixel (reach, reach) holds the disc centre's pixel. */
-static int prepare_stamps(cairo_canvas *c, double r)
+static int prepare_stamps(cc_canvas *c, double r)
 {
     if (c->stamps && c->stamp_r == r)
         return 0;
@@ -451,7 +451,7 @@ static int phase(double frac)
     return q < 0 ? 0 : q >= STAMP_PHASES ? STAMP_PHASES - 1 : q;
 }
 
-static void stamp_disc(cairo_canvas *c, unsigned char *img, int istride,
+static void stamp_disc(cc_canvas *c, unsigned char *img, int istride,
                        double x, double y, const argb8 *k)
 {
     double fx = floor(x), fy = floor(y);
@@ -476,7 +476,7 @@ static void stamp_disc(cairo_canvas *c, unsigned char *img, int istride,
 
 /* Below DISC_MIN_ARC_RADIUS a disc is the pixel holding its centre, so
  * a dot stays crisp; otherwise a stamp from prepare_stamps. */
-static void discs_stamped(cairo_canvas *c, size_t n, const double *px,
+static void discs_stamped(cc_canvas *c, size_t n, const double *px,
                           const double *py, double r, const lr_rgba *colours)
 {
     cairo_surface_flush(c->surface);
@@ -506,7 +506,7 @@ static void discs_stamped(cairo_canvas *c, size_t n, const double *px,
 static void cc_discs(lr_canvas *base, size_t n, const double *px,
                         const double *py, double r, const lr_rgba *colours)
 {
-    cairo_canvas *c = as_cairo(base);
+    cc_canvas *c = as_cairo(base);
     if (!drawable(c) || cairo_status(c->cr) != CAIRO_STATUS_SUCCESS)
         return;
     if (c->vector)
@@ -522,7 +522,7 @@ static void cc_discs(lr_canvas *base, size_t n, const double *px,
 static void cc_text(lr_canvas *base, double x, double y, double size,
                        lr_rgba colour, lr_align align, const char *clean)
 {
-    cairo_canvas *c = as_cairo(base);
+    cc_canvas *c = as_cairo(base);
     if (!drawable(c))
         return;
     cairo_t *cr = c->cr;
@@ -545,7 +545,7 @@ static void cc_text(lr_canvas *base, double x, double y, double size,
 static void cc_fill(lr_canvas *base, size_t npoly, const size_t *counts,
                              const double *xy, lr_rgba colour)
 {
-    cairo_canvas *c = as_cairo(base);
+    cc_canvas *c = as_cairo(base);
     if (!drawable(c))
         return;
     cairo_t *cr = c->cr;
@@ -569,7 +569,7 @@ static void cc_fill(lr_canvas *base, size_t npoly, const size_t *counts,
 
 static void cc_clip(lr_canvas *base, int x, int y, int w, int h)
 {
-    cairo_canvas *c = as_cairo(base);
+    cc_canvas *c = as_cairo(base);
     if (!drawable(c))
         return;
     cairo_reset_clip(c->cr);
@@ -611,7 +611,7 @@ static void unpremultiply_row(const unsigned char *src, unsigned char *dst,
 
 static unsigned char *cc_read(lr_canvas *base)
 {
-    cairo_canvas *c = as_cairo(base);
+    cc_canvas *c = as_cairo(base);
     if (c->vector || !drawable(c) || cairo_status(c->cr) != CAIRO_STATUS_SUCCESS)
         return NULL;
     cairo_surface_flush(c->surface);

@@ -1,17 +1,21 @@
 /* canvas_osmesa.h - the OSMesa canvas backend's parts (private).
  *
- * One OSMesa context per canvas, rendering into a buffer the canvas owns.
- * Colours are premultiplied in GL (blend ONE, ONE_MINUS_SRC_ALPHA), as in
- * cairo's image surfaces, and straightened on read-back, so a translucent
- * clear colour or particle composites the way it does through cairo.
+ * One OSMesa context at a time per canvas, rendering into a buffer the
+ * canvas owns; the context (with its compiled shaders) passes on to the
+ * next canvas. Colours are premultiplied in GL (blend ONE,
+ * ONE_MINUS_SRC_ALPHA), as in cairo's image surfaces, and straightened on
+ * read-back, so a translucent clear colour or particle composites the way
+ * it does through cairo.
  *
- * Antialiasing is computed, not sampled: each shape's fragment shader
- * knows the pixel centre's distance to the shape's edges (interpolated
- * along with the vertices) and turns it into the pixel's coverage. Small
- * shapes are batched: consecutive lines (and fills' edge fringes) share one
- * draw call, consecutive discs of one radius another; a call of another
- * kind, a clip, text or a read flushes the batch first, so drawing order
- * is kept. */
+ * Antialiasing of lines and discs is computed, not sampled: the fragment
+ * shader knows the pixel centre's offset from the shape (interpolated along
+ * with the vertices, or from gl_FragCoord) and turns it into the pixel's
+ * coverage. Fills sample the winding number 16 times a pixel
+ * (canvas_osmesa_fill.c); text is cairo's coverage (canvas_osmesa_text.c).
+ * Small shapes are batched: consecutive lines share one draw call,
+ * consecutive discs of one radius another; a call of another kind, a clip,
+ * a fill, text or a read flushes the batch first, so drawing order is
+ * kept. */
 #ifndef LAMINA_CANVAS_OSMESA_H
 #define LAMINA_CANVAS_OSMESA_H
 

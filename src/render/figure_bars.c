@@ -38,7 +38,8 @@ double fig_colourbar_width(const lr_panel *p, double font, double vmin, double v
 }
 
 /* The bar in the strip starting at x, spanning rows y0..y1 (the window's
- * height); its label on top, the values growing upwards. Rows are drawn
+ * height); its label on top (from the bar's left edge: the strip is wide
+ * enough for it), the values growing upwards. Rows are drawn
  * one pixel line each, so the gradient is as smooth as the image allows. */
 void fig_draw_colourbar(lr_canvas *c, const lr_panel *p, double x, double y0,
                         double y1, double font, double vmin, double vmax)
@@ -67,8 +68,8 @@ void fig_draw_colourbar(lr_canvas *c, const lr_panel *p, double x, double y0,
                        TICK_FONT * font, LR_FIG_TEXT, LR_ALIGN_LEFT, labels[i]);
     }
     if (label_band > 0)
-        lr_canvas_text(c, 0.5 * (bx0 + bx1), iy0 - 0.75 * font, TICK_FONT * font,
-                       LR_FIG_TEXT, LR_ALIGN_CENTER, p->colourbar_label);
+        lr_canvas_text(c, bx0, iy0 - 0.75 * font, TICK_FONT * font,
+                       LR_FIG_TEXT, LR_ALIGN_LEFT, p->colourbar_label);
 }
 
 /* The largest 1, 2 or 5 x 10^k not above x. */
