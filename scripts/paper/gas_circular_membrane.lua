@@ -2,7 +2,8 @@
 -- source: normals paper §8, Figs 12 and 13; York, Sulsky & Schreyer 2000 §4.3
 -- look: the slack quarter membrane is pushed out by the gas and rings about
 --   its equilibrium; the gas stays inside; the hoop stress oscillates about
---   p r / t (dashed)
+--   p r / t (dashed); the pressure contours (the gas pressure interpolated
+--   to the grid, as [T] Fig 56) show the pressure waves inside
 -- checks: hoop stress averaged over three periods within 5 % of p r / t
 --   (with p and r averaged too); radius at 0 and 90 degrees equal; no gas
 --   outside the membrane
@@ -35,6 +36,9 @@ for _, tf in ipairs{0, 0.005, 0.01, 0.05} do
   sim:at(tf, function(s)
     s:frame{ file = string.format("%s/fig12_t%.3f.png", out, tf), width = 400, height = 400,
              title = string.format("t = %.3f", tf) }
+    s:frame{ file = string.format("%s/pressure_t%.3f.png", out, tf), width = 640, height = 360,
+             mirror = "x", contours = "pressure", grid = false, particles = "membranes",
+             title = string.format("gas pressure contours, t = %.3f", tf) }
   end)
 end
 sim:run{ t_end = t_end }

@@ -5,6 +5,7 @@
  * beyond the engine's own (values through a colour map, normal arrows) are
  * Lua userdata anchored for the call, so a Lua error leaks nothing. */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "l_frame_panel.h"
@@ -90,6 +91,7 @@ typedef struct side_store {
     lr_grid grid;
     lr_points points;
     lr_arrows arrows;
+    lr_field field;
 } side_store;
 
 /* Membrane normals (the tangent turned +90 degrees, [M] section 3) as
@@ -126,10 +128,68 @@ static void normals(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, lr_arrows *a)
     a->colour = dark;
 }
 
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Filled pressure contours from the gas pressure interpolated to the grid
+ * ([T] Fig 56): nlevels bands spanning the field's own range, coloured by
+ * viridis, drawn under the particles; nodes without gas are not filled. */
+static void pressure_contours(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int nlevels,
+                              lr_field *fd)
+{
+    const lm_grid *g = &sim->grid;
+    size_t nn = (size_t)(g->nx + 1) * (size_t)(g->ny + 1);
+    double *f = la_frame_scratch(L, ctx, nn * sizeof *f);
+    memset(fd, 0, sizeof *fd);
+    if (lm_grid_gas_pressure(sim, f) == 0) return;
+    /* the bands span the 5th to 95th percentile of the nodal values, so a
+     * few extreme nodes (a corner, a shock) do not flatten the rest */
+    double *sorted = la_frame_scratch(L, ctx, nn * sizeof *sorted);
+    size_t m = 0;
+    for (size_t i = 0; i < nn; i++)
+        if (isfinite(f[i])) sorted[m++] = f[i];
+    qsort(sorted, m, sizeof *sorted, cmp_double);
+    double lo = sorted[(size_t)(0.05 * (double)(m - 1))];
+    double hi = sorted[(size_t)(0.95 * (double)(m - 1))];
+    if (!(hi > lo)) hi = lo + fmax(1e-12, fabs(lo) * 1e-6);
+    for (size_t i = 0; i < nn; i++)
+        if (!isfinite(f[i])) f[i] = -HUGE_VAL;   /* below every level: not filled */
+    double *levels = la_frame_scratch(L, ctx, (size_t)nlevels * sizeof *levels);
+    lr_rgba *colours = la_frame_scratch(L, ctx, (size_t)nlevels * sizeof *colours);
+    for (int k = 0; k < nlevels; k++) {
+        /* the first band covers every node the gas touches */
+        levels[k] = k == 0 ? sorted[0] : lo + (hi - lo) * k / nlevels;
+        colours[k] = lr_cmap_colour(LR_CMAP_VIRIDIS, (double)k / (nlevels > 1 ? nlevels - 1 : 1));
+        colours[k].a = 0.85;
+    }
+    fd->f = f;
+    fd->nx = g->nx;
+    fd->ny = g->ny;
+    fd->x0 = g->x0;
+    fd->y0 = g->y0;
+    fd->x1 = g->x0 + g->nx * g->hx;
+    fd->y1 = g->y0 + g->ny * g->hy;
+    fd->levels = levels;
+    fd->nlevels = nlevels;
+    fd->colours = colours;
+}
+
+/* which: 0 every particle, 1 membranes only, 2 none */
 static void fill_side(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int grid,
-                      field f, int with_normals, lr_layers *l)
+                      field f, int with_normals, int contour_levels, int which,
+                      lr_layers *l)
 {
     side_store *st = la_frame_scratch(L, ctx, sizeof *st);
+    if (contour_levels > 0) {
+        pressure_contours(L, ctx, sim, contour_levels, &st->field);
+        if (st->field.f) {
+            l->fields = &st->field;
+            l->nfields = 1;
+        }
+    }
     const lm_grid *g = &sim->grid;
     st->grid.x0 = g->x0;
     st->grid.y0 = g->y0;
@@ -150,8 +210,34 @@ static void fill_side(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int grid,
             v[i] = field_value(&sim->p, i, f);
         pts->value = v;
     }
+    if (which == 1) {
+        /* membranes only (over pressure contours, say): a compacted copy */
+        size_t n = 0;
+        for (int b = 0; b < sim->nbodies; b++)
+            if (sim->bodies[b].membrane) n += sim->bodies[b].count;
+        double *x = la_frame_scratch(L, ctx, (n ? n : 1) * sizeof *x);
+        double *y = la_frame_scratch(L, ctx, (n ? n : 1) * sizeof *y);
+        int *grp = la_frame_scratch(L, ctx, (n ? n : 1) * sizeof *grp);
+        double *v = pts->value ? la_frame_scratch(L, ctx, (n ? n : 1) * sizeof *v) : NULL;
+        size_t k = 0;
+        for (int b = 0; b < sim->nbodies; b++) {
+            const lm_body *bd = &sim->bodies[b];
+            if (!bd->membrane) continue;
+            for (size_t q = bd->first; q < bd->first + bd->count; q++, k++) {
+                x[k] = sim->p.x[q];
+                y[k] = sim->p.y[q];
+                grp[k] = b;
+                if (v) v[k] = pts->value[q];
+            }
+        }
+        pts->n = n;
+        pts->x = x;
+        pts->y = y;
+        pts->group = grp;
+        pts->value = v;
+    }
     l->points = pts;
-    l->npoints = 1;
+    l->npoints = which == 2 ? 0 : 1;
     if (with_normals) {
         normals(L, ctx, sim, &st->arrows);
         l->arrows = &st->arrows;
@@ -372,7 +458,31 @@ void la_frame_panel(lua_State *L, la_frame_ctx *ctx, int fidx, int pidx, int sid
             luaL_error(L, "%s: 'split_at' needs 'split' (the other simulation)", ctx->fn);
     }
     lua_pop(L, 1);
-    fill_side(L, ctx, sim, grid, f, with_normals, &p->side[0]);
+    /* contours = "pressure": the gas pressure's filled contours */
+    const char *contours = string(L, ctx, fidx, pidx, "contours");
+    if (contours && strcmp(contours, "pressure") != 0)
+        luaL_error(L, "%s: contours = \"%s\" is not one of \"pressure\"", ctx->fn, contours);
+    int nlevels = 0;
+    if (contours) {
+        nlevels = 10;
+        if (get(L, fidx, pidx, "contour_levels") != LUA_TNIL) {
+            int isnum;
+            double v = lua_tonumberx(L, -1, &isnum);
+            if (!isnum || v < 2 || v > 64 || v != floor(v))
+                luaL_error(L, "%s: 'contour_levels' must be a whole number in [2, 64]", ctx->fn);
+            nlevels = (int)v;
+        }
+        lua_pop(L, 1);
+    }
+    /* particles = true | false | "membranes" */
+    int which = 0;
+    int pt = get(L, fidx, pidx, "particles");
+    if (pt == LUA_TBOOLEAN) which = lua_toboolean(L, -1) ? 0 : 2;
+    else if (pt == LUA_TSTRING && strcmp(lua_tostring(L, -1), "membranes") == 0) which = 1;
+    else if (pt != LUA_TNIL)
+        luaL_error(L, "%s: 'particles' must be true, false or \"membranes\"", ctx->fn);
+    lua_pop(L, 1);
+    fill_side(L, ctx, sim, grid, f, with_normals, nlevels, which, &p->side[0]);
     if (other)
-        fill_side(L, ctx, other, grid, f, with_normals, &p->side[1]);
+        fill_side(L, ctx, other, grid, f, with_normals, nlevels, which, &p->side[1]);
 }

@@ -1,5 +1,6 @@
 /* diag.c - energies, centres of mass, momentum, the state hash. */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "step.h"
@@ -216,4 +217,42 @@ size_t lm_count_outside(const lm_sim *sim, int gas, int membrane, double cx, dou
         if (!in) out++;
     }
     return out;
+}
+
+/* The gas pressure as a grid field, for pressure contours ([T] Fig 56):
+ * p_i = sum_p m_p p_p N_ip / sum_p m_p N_ip over the gas particles, p
+ * without q. out has (nx+1)(ny+1) values, x fastest; a node no gas touches
+ * gets NaN. Returns the number of nodes with a value. */
+size_t lm_grid_gas_pressure(const lm_sim *sim, double *out)
+{
+    const lm_grid *g = &sim->grid;
+    size_t nn = lm_grid_nodes(g);
+    double *w = calloc(nn, sizeof *w);
+    if (!w) return 0;
+    for (size_t i = 0; i < nn; i++) out[i] = 0;
+    const lm_particles *p = &sim->p;
+    for (size_t q = 0; q < p->n; q++) {
+        const lm_material *mat = sim->mats[p->mat[q]];
+        if (mat->kind != LM_GAS) continue;
+        int node;
+        double N[4], Gx[4], Gy[4];
+        lm_shape_bilinear(g, p->x[q], p->y[q], &node, N, Gx, Gy);
+        double pr = (mat->gamma - 1) * p->rho[q] * p->e[q];
+        for (int k = 0; k < 4; k++) {
+            size_t i = (size_t)node + (size_t)(k >> 1) * (size_t)(g->nx + 1) + (size_t)(k & 1);
+            out[i] += p->m[q] * N[k] * pr;
+            w[i] += p->m[q] * N[k];
+        }
+    }
+    size_t have = 0;
+    for (size_t i = 0; i < nn; i++) {
+        if (w[i] > 0) {
+            out[i] /= w[i];
+            have++;
+        } else {
+            out[i] = NAN;
+        }
+    }
+    free(w);
+    return have;
 }

@@ -244,6 +244,9 @@ double lm_body_mean_tangential_stress(const lm_sim *sim, int body);
 double lm_membrane_radius_at(const lm_sim *sim, int body, double deg, double cx, double cy);
 /* Gas particles outside the membrane (closed through (cx, cy) if open). */
 size_t lm_count_outside(const lm_sim *sim, int gas, int membrane, double cx, double cy);
+/* The gas pressure interpolated to the grid nodes (mass-weighted; NaN
+ * where no gas is): (nx+1)(ny+1) values, x fastest. */
+size_t lm_grid_gas_pressure(const lm_sim *sim, double *out);
 /* FNV-1a hash of the particle state: equal hashes, equal states. */
 uint64_t lm_sim_hash(const lm_sim *sim);
 
