@@ -54,8 +54,7 @@ int la_elastic(lua_State *L)
  * mass per unit length rho * thickness (per unit depth). */
 int la_membrane_material(lua_State *L)
 {
-    static const char *const keys[] = {"rho", "E", "nu", "thickness", "law", "one_way",
-                                       "pic", NULL};
+    static const char *const keys[] = {"rho", "E", "nu", "thickness", "law", "one_way", NULL};
     const char *fn = "lamina.membrane";
     la_check_keys(L, 1, fn, keys);
     lm_material *m = push_material(L);
@@ -70,12 +69,6 @@ int la_membrane_material(lua_State *L)
         luaL_error(L, "%s: 'one_way' must be true or false", fn);
     m->one_way = lua_toboolean(L, -1);
     lua_pop(L, 1);
-    /* pic: the FLIP/PIC blend of the membrane's points alone (see
-     * docs/api.md: light membrane points carry FLIP noise the grid does not
-     * see); default: the simulation's */
-    m->pic = la_opt_number(L, 1, fn, "pic", -1);
-    if (la_has(L, 1, "pic") && !(m->pic >= 0 && m->pic <= 1))
-        luaL_error(L, "%s: pic must lie in [0, 1] (got %f)", fn, m->pic);
     validate(L, fn, m);
     return 1;
 }

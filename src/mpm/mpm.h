@@ -57,7 +57,10 @@ typedef struct lm_material {
     double av_c1, av_c2, av_lambda, av_g;   /* its constants; g <= 0: sqrt(2) h */
     double beta;           /* linear fluid: bulk modulus */
     double pic;            /* FLIP/PIC blend for this material's particles;
-                              < 0: the simulation's (lm_sim_def.pic) */
+                              < 0: the simulation's (lm_sim_def.pic). Not
+                              exposed: blending a subset of the particles
+                              that share nodes with others does not conserve
+                              momentum (measured on the dog-bone) */
 } lm_material;
 
 /* Fastest wave speed of the material (physics.md §5), for the Courant check. */
