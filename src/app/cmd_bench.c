@@ -306,14 +306,18 @@ static int bench_render(int argc, char **argv)
     return status;
 }
 
+int bench_engine(int argc, char **argv);   /* bench_engine.c */
+
 int cmd_bench(int argc, char **argv)
 {
     if (argc >= 1 && strcmp(argv[0], "render") == 0)
         return bench_render(argc - 1, argv + 1);
+    if (argc >= 1 && strcmp(argv[0], "engine") == 0)
+        return bench_engine(argc - 1, argv + 1);
     fprintf(stderr, "lamina bench: %s (usage: lamina bench render [--width W] "
             "[--height H] [--runs N] [--counts N,N,...] [--backend cairo|osmesa|all])\n",
             argc >= 1 ? "unknown benchmark" : "which benchmark?");
     if (argc >= 1)
-        fprintf(stderr, "lamina bench: '%s' is not a benchmark; known: render\n", argv[0]);
+        fprintf(stderr, "lamina bench: '%s' is not a benchmark; known: render, engine\n", argv[0]);
     return 2;
 }

@@ -37,6 +37,8 @@ static void usage(FILE *out)
             "  lamina bench render [--width W] [--height H] [--runs N] [--counts N,...]\n"
             "                      [--backend cairo|osmesa|all]\n"
             "                          milliseconds per frame for each renderer\n"
+            "  lamina bench engine [--sizes N,...] [--work PARTICLE_STEPS]\n"
+            "                          particle-steps per second of the step, one thread\n"
             "  lamina help             this text\n"
             "  lamina --version        the version\n"
             "\n"

@@ -1,0 +1,210 @@
+/* bench_engine.c - `lamina bench engine`: particle-steps per second of the
+ * engine alone (design.md, "Performance targets"), one thread.
+ *
+ * Two standard problems at several sizes, built through the engine's C API
+ * (no Lua, no drawing inside the timed loop):
+ *   disks  - the two elastic disks of scripts/examples/two_disks.lua, the
+ *            cell size chosen for the particle count, MUSL and USL;
+ *   gas    - the gas-filled quarter membrane of V6 (16 ppc gas, membrane
+ *            points a third of a cell apart, connectivity normals), MUSL.
+ * Each case runs for about `work` particle-steps (default 4e6) after one
+ * warm-up step; the table gives particles, steps, seconds and millions of
+ * particle-steps per second. Timings are wall clock: run it on an idle
+ * machine, and compare runs of the same build. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "mpm.h"
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* Seeds a region (disk of centre c and radius r, or a quarter disk when
+ * quarter) of material m into a new body with 2^k x 2^k points per cell. */
+static int seed_disk(lm_sim *sim, int mi, double cx, double cy, double r, int np,
+                     double vx, double vy, double rho)
+{
+    int b = lm_sim_add_body(sim, mi);
+    if (b < 0) return -1;
+    lm_seed_range sr = lm_seed_range_for(&sim->grid, np, np, cx - r, cy - r, cx + r, cy + r);
+    double mass = lm_seed_mass(&sim->grid, np, np, rho);
+    for (size_t k = 0; k < lm_seed_count(&sr); k++) {
+        double x, y;
+        lm_seed_point(&sim->grid, &sr, k, &x, &y);
+        if ((x - cx) * (x - cx) + (y - cy) * (y - cy) > r * r) continue;
+        if (lm_sim_add_particle(sim, b, x, y, vx, vy, mass, rho) != LM_OK) return -1;
+    }
+    return b;
+}
+
+static lm_sim *make_disks(double h, lm_scheme scheme, lm_material *mat)
+{
+    lm_sim_def d;
+    lm_sim_def_default(&d);
+    d.hx = d.hy = h;
+    d.scheme = scheme;
+    d.dt = 0.2 * h / lm_material_wave_speed(mat);
+    char err[256];
+    lm_sim *sim = lm_sim_new(&d, err, sizeof err);
+    if (!sim) return NULL;
+    int mi = lm_sim_add_material(sim, mat);
+    if (mi < 0 || seed_disk(sim, mi, 0.25, 0.25, 0.2, 2, 0.1, 0.1, mat->rho) < 0 ||
+        seed_disk(sim, mi, 0.75, 0.75, 0.2, 2, -0.1, -0.1, mat->rho) < 0) {
+        lm_sim_free(sim);
+        return NULL;
+    }
+    return sim;
+}
+
+static lm_sim *make_gas(double h, lm_material *gas, lm_material *skin)
+{
+    lm_sim_def d;
+    lm_sim_def_default(&d);
+    d.hx = d.hy = h;
+    d.bc[LM_LEFT] = d.bc[LM_BOTTOM] = LM_BC_SYMMETRY;
+    d.dt = 0.5 * h / lm_material_wave_speed(skin);
+    char err[256];
+    lm_sim *sim = lm_sim_new(&d, err, sizeof err);
+    if (!sim) return NULL;
+    int gi = lm_sim_add_material(sim, gas), si = lm_sim_add_material(sim, skin);
+    if (gi < 0 || si < 0 || seed_disk(sim, gi, 0, 0, 0.5, 4, 0, 0, gas->rho) < 0) {
+        lm_sim_free(sim);
+        return NULL;
+    }
+    int b = lm_sim_add_membrane(sim, si, 0);
+    int n = (int)ceil(0.25 * 3.14159265358979323846 * 0.5 / (h / 3)) + 1;
+    double ds = 0.5 * (3.14159265358979323846 / 2) / (n - 1);
+    for (int k = 0; b >= 0 && k < n; k++) {
+        double a = (3.14159265358979323846 / 2) * k / (n - 1);
+        double x = k == n - 1 ? 0 : 0.5 * cos(a), y = k == 0 ? 0 : 0.5 * sin(a);
+        size_t q = sim->p.n;
+        if (lm_sim_add_particle(sim, b, x, y, 0, 0, skin->rho * skin->thickness * ds,
+                                skin->rho) != LM_OK ||
+            lm_sim_set_membrane_point(sim, q, ds, 0) != LM_OK) {
+            lm_sim_free(sim);
+            return NULL;
+        }
+    }
+    if (b < 0 || lm_sim_prepare(sim) != LM_OK) {
+        lm_sim_free(sim);
+        return NULL;
+    }
+    return sim;
+}
+
+typedef lm_sim *(*builder)(double h, void *ctx);
+
+/* Runs about `work` particle-steps, rebuilding the case whenever its
+ * simulated time would pass t_max (the disks must not collide and the USL
+ * run must not grow unstable: the cost per step does not depend on it);
+ * prints one row. */
+static int time_case(const char *name, builder make, double h, void *ctx, double t_max,
+                     double work)
+{
+    double secs = 0, done = 0;
+    long steps_total = 0;
+    size_t n = 0;
+    while (done < work) {
+        lm_sim *sim = make(h, ctx);
+        if (!sim) {
+            fprintf(stderr, "lamina bench engine: %s: could not build the case\n", name);
+            return -1;
+        }
+        n = sim->p.n;
+        long steps = (long)fmin(fmax(10, (work - done) / (double)n), t_max / sim->def.dt);
+        if (steps < 1) steps = 1;
+        if (lm_sim_step(sim) != LM_OK) goto failed;     /* warm-up */
+        double t0 = now();
+        for (long s = 0; s < steps; s++)
+            if (lm_sim_step(sim) != LM_OK) goto failed;
+        secs += now() - t0;
+        done += (double)n * (double)steps;
+        steps_total += steps;
+        lm_sim_free(sim);
+        continue;
+    failed:
+        fprintf(stderr, "lamina bench engine: %s: %s\n", name, sim->err);
+        lm_sim_free(sim);
+        return -1;
+    }
+    printf("| %-12s | %9zu | %7ld | %7.3f | %7.2f |\n", name, n, steps_total, secs,
+           done / secs / 1e6);
+    fflush(stdout);
+    return 0;
+}
+
+typedef struct bench_ctx { lm_material *a, *b; lm_scheme scheme; } bench_ctx;
+
+static lm_sim *build_disks(double h, void *ctx)
+{
+    bench_ctx *c = ctx;
+    return make_disks(h, c->scheme, c->a);
+}
+
+static lm_sim *build_gas(double h, void *ctx)
+{
+    bench_ctx *c = ctx;
+    return make_gas(h, c->a, c->b);
+}
+
+int bench_engine(int argc, char **argv)
+{
+    double work = 4e6;
+    double sizes[8] = {1e3, 1e4, 1e5};
+    int nsizes = 3;
+    for (int i = 0; i < argc; i++) {
+        if (strcmp(argv[i], "--work") == 0 && i + 1 < argc) {
+            work = atof(argv[++i]);
+            if (!(work >= 1e3 && work <= 1e10)) {
+                fprintf(stderr, "lamina bench engine: --work needs a number in [1e3, 1e10]\n");
+                return 2;
+            }
+        } else if (strcmp(argv[i], "--sizes") == 0 && i + 1 < argc) {
+            nsizes = 0;
+            for (char *s = argv[++i]; *s && nsizes < 8;) {
+                char *end;
+                double v = strtod(s, &end);
+                if (end == s || !(v >= 100 && v <= 1e7)) {
+                    fprintf(stderr, "lamina bench engine: --sizes needs particle counts in "
+                            "[100, 1e7], comma separated\n");
+                    return 2;
+                }
+                sizes[nsizes++] = v;
+                s = *end == ',' ? end + 1 : end;
+            }
+        } else {
+            fprintf(stderr, "lamina bench engine: unknown option '%s' (usage: lamina bench "
+                    "engine [--sizes N,N,...] [--work PARTICLE_STEPS])\n", argv[i]);
+            return 2;
+        }
+    }
+    lm_material rubber = {.kind = LM_ELASTIC, .rho = 1000, .E = 1000, .nu = 0.3,
+                          .plane = LM_PLANE_STRAIN, .pic = -1};
+    lm_material air = {.kind = LM_GAS, .rho = 1, .gamma = 1.4, .mu = 0.2,
+                       .e0 = 1000 / (0.4 * 1), .pic = -1};
+    lm_material skin = {.kind = LM_MEMBRANE, .rho = 0.5, .E = 1e6, .nu = 0.3,
+                        .thickness = 0.1, .law = LM_LAW_PLANE_STRESS, .pic = -1};
+    printf("lamina bench engine: one thread, about %.3g particle-steps per case\n\n", work);
+    printf("| case         | particles |   steps |       s | M p-steps/s |\n");
+    printf("|---|---:|---:|---:|---:|\n");
+    int bad = 0;
+    for (int k = 0; k < nsizes; k++) {
+        /* two disks of radius 0.2, 4 ppc: about 1.005 / h^2 particles */
+        double h = sqrt(1.005 / sizes[k]);
+        bench_ctx musl = {&rubber, NULL, LM_MUSL}, usl = {&rubber, NULL, LM_USL};
+        bad |= time_case("disks MUSL", build_disks, h, &musl, 0.8, work);
+        bad |= time_case("disks USL", build_disks, h, &usl, 0.8, work);
+        /* quarter disk of radius 0.5 at 16 ppc: about 3.14 / h^2 */
+        double hg = sqrt(3.14 / sizes[k]);
+        bench_ctx gm = {&air, &skin, LM_MUSL};
+        bad |= time_case("gas+membrane", build_gas, hg, &gm, 0.05, work);
+    }
+    return bad ? 1 : 0;
+}
