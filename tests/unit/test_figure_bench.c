@@ -49,8 +49,8 @@ int main(void)
     CHECK(strstr(text, "unknown backend 'vulkan'") != NULL);
     CHECK(run("render --frob", text, sizeof text) == 2);
     CHECK(strstr(text, "unknown option '--frob'") != NULL);
-    CHECK(run("engine", text, sizeof text) == 2);
-    CHECK(strstr(text, "'engine' is not a benchmark; known: render") != NULL);
+    CHECK(run("gpu", text, sizeof text) == 2);
+    CHECK(strstr(text, "'gpu' is not a benchmark; known: render, engine") != NULL);
     CHECK(run("", text, sizeof text) == 2);
     unlink(out);
     return CHECK_DONE();
