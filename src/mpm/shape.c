@@ -7,7 +7,10 @@ void lm_shape_bilinear(const lm_grid *g, double x, double y, int *node,
                        double N[4], double Gx[4], double Gy[4])
 {
     double fx = (x - g->x0) / g->hx, fy = (y - g->y0) / g->hy;
-    int i = (int)floor(fx), j = (int)floor(fy);
+    /* truncation is floor for the non-negative values of points inside
+     * the grid, and cheaper: floor() is a library call on baseline x86-64 */
+    int i = fx >= 0 ? (int)fx : (int)floor(fx);
+    int j = fy >= 0 ? (int)fy : (int)floor(fy);
     /* A point exactly on the far edge belongs to the last cell. */
     if (i >= g->nx) i = g->nx - 1;
     if (j >= g->ny) j = g->ny - 1;
