@@ -15,30 +15,7 @@
 
 #define MAX_PANELS 64
 
-/* The --set parameters as one line, "name=value name=value". */
-static const char *set_line(lua_State *L, const lamina_run *run)
-{
-    luaL_Buffer b;
-    luaL_buffinit(L, &b);
-    for (int i = 0; run && i < run->nsets; i++) {
-        if (i) luaL_addchar(&b, ' ');
-        luaL_addstring(&b, run->sets[i].name);
-        luaL_addchar(&b, '=');
-        luaL_addstring(&b, run->sets[i].value);
-    }
-    luaL_pushresult(&b);
-    return lua_tostring(L, -1);
-}
 
-static void remember_dir(lamina_run *run, const char *path)
-{
-    const char *slash = strrchr(path, '/');
-    size_t n = slash ? (size_t)(slash - path) + 1 : 0;
-    if (n >= sizeof run->frame_dir) n = sizeof run->frame_dir - 1;
-    memcpy(run->frame_dir, path, n);
-    run->frame_dir[n] = 0;
-    if (n == 0) strcpy(run->frame_dir, "./");
-}
 
 /* backend = "cairo" | "osmesa"; else `lamina run --backend`; else cairo.
  * SVG and PDF are cairo's: a run-wide osmesa does not apply to them, an
@@ -154,22 +131,14 @@ int la_sim_frame(lua_State *L)
     }
     /* label and title strings stay on the stack until we return */
 
-    char ver[64], hash[32];
-    snprintf(ver, sizeof ver, "lamina %s", LAMINA_VERSION);
-    snprintf(hash, sizeof hash, "%s", run ? run->script_hash : "");
-    lr_text_chunk text[4] = {{"Software", ver},
-                             {"lamina:script", run && run->script ? run->script : ""},
-                             {"lamina:script-hash", hash},
-                             {"lamina:set", set_line(L, run)}};
-    f.text = text;
+    la_prov prov;
+    la_provenance(L, &prov);
+    f.text = prov.text;
     f.ntext = 4;
     char err[512];
     if (lr_figure_write(&f, file, err, sizeof err))
         return luaL_error(L, "%s: %s", fn, err);
-    if (run) {
-        run->frames++;
-        remember_dir(run, file);
-    }
+    la_note_image(L, file);
     lua_pushstring(L, file);
     return 1;
 }

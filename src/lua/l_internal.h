@@ -30,6 +30,18 @@ int la_option(lua_State *L, const char *fn, const char *key, const char *value,
               const char *const names[]);
 lamina_run *la_run(lua_State *L);
 
+/* l_provenance.c: the tEXt chunks of every image (Software, lamina:script,
+ * lamina:script-hash, lamina:set); la_provenance pushes one string that must
+ * stay on the stack while text is used. */
+#include "render.h"
+typedef struct la_prov {
+    char version[64], hash[32];
+    lr_text_chunk text[4];
+} la_prov;
+void la_provenance(lua_State *L, la_prov *p);
+/* Counts an image written and remembers its folder for the run's summary. */
+void la_note_image(lua_State *L, const char *path);
+
 /* l_material.c */
 void la_open_material(lua_State *L);
 int la_elastic(lua_State *L);

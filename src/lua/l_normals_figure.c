@@ -710,34 +710,6 @@ static int l_normals(lua_State *L)
 
 /* ---- output ----------------------------------------------------------------------- */
 
-static const char *set_line(lua_State *L, const lamina_run *run)
-{
-    luaL_Buffer b;
-    luaL_buffinit(L, &b);
-    for (int i = 0; run && i < run->nsets; i++) {
-        if (i)
-            luaL_addchar(&b, ' ');
-        luaL_addstring(&b, run->sets[i].name);
-        luaL_addchar(&b, '=');
-        luaL_addstring(&b, run->sets[i].value);
-    }
-    luaL_pushresult(&b);
-    return lua_tostring(L, -1);
-}
-
-/* The folder of the last PNG, for `lamina run`'s closing line (as
- * sim:frame keeps it). */
-static void remember_dir(lamina_run *run, const char *path)
-{
-    const char *slash = strrchr(path, '/');
-    size_t n = slash ? (size_t)(slash - path) + 1 : 0;
-    if (n >= sizeof run->frame_dir)
-        n = sizeof run->frame_dir - 1;
-    memcpy(run->frame_dir, path, n);
-    run->frame_dir[n] = 0;
-    if (n == 0)
-        strcpy(run->frame_dir, "./");
-}
 
 /* fig:write(path) or fig:write{file = path}: the PNG, atomically, with the
  * provenance of sim:frame (Software, lamina:script, -hash, lamina:set). */
@@ -755,27 +727,18 @@ static int l_write(lua_State *L)
     }
     if (!file || !*file)
         return luaL_error(L, "%s: a file name is required", fn);
-    lamina_run *run = la_run(L);
-    char ver[64], hash[32];
-    snprintf(ver, sizeof ver, "lamina %s", LAMINA_VERSION);
-    snprintf(hash, sizeof hash, "%s", run ? run->script_hash : "");
-    lr_text_chunk text[4] = {{"Software", ver},
-                             {"lamina:script", run && run->script ? run->script : ""},
-                             {"lamina:script-hash", hash},
-                             {"lamina:set", set_line(L, run)}};
+    la_prov prov;
+    la_provenance(L, &prov);
     unsigned char *rgba = lr_canvas_read_rgba(f->canvas);
     if (!rgba)
         return luaL_error(L, "%s: the drawing failed (cairo error or out of memory)",
                           fn);
     char err[512];
-    int rc = lr_png_write(file, f->width, f->height, rgba, text, 4, err, sizeof err);
+    int rc = lr_png_write(file, f->width, f->height, rgba, prov.text, 4, err, sizeof err);
     free(rgba);
     if (rc)
         return luaL_error(L, "%s: %s", fn, err);
-    if (run) {
-        run->frames++;
-        remember_dir(run, file);
-    }
+    la_note_image(L, file);
     lua_pushstring(L, file);
     return 1;
 }

@@ -22,20 +22,6 @@ static const char *const legend_names[] = {"top right", "top left", "top",
                                            "bottom right", "bottom left", "bottom",
                                            "left", "right", "center", "best", NULL};
 
-/* The --set parameters as one line, "name=value name=value" (pushed). */
-static const char *push_set_line(lua_State *L, const lamina_run *run)
-{
-    luaL_Buffer b;
-    luaL_buffinit(L, &b);
-    for (int i = 0; run && i < run->nsets; i++) {
-        if (i) luaL_addchar(&b, ' ');
-        luaL_addstring(&b, run->sets[i].name);
-        luaL_addchar(&b, '=');
-        luaL_addstring(&b, run->sets[i].value);
-    }
-    luaL_pushresult(&b);
-    return lua_tostring(L, -1);
-}
 
 /* A number for a message, as a person writes it (10.5, 1, 1e-07): Lua's
  * own %f would print 1.0. */
@@ -252,16 +238,10 @@ int la_plot(lua_State *L)
     p.nseries = (size_t)n;
     p.series = series;
 
-    lamina_run *run = la_run(L);
-    char ver[64], hash[32];
-    snprintf(ver, sizeof ver, "lamina %s", LAMINA_VERSION);
-    snprintf(hash, sizeof hash, "%s", run ? run->script_hash : "");
-    lr_text_chunk text[4] = {{"Software", ver},
-                             {"lamina:script", run && run->script ? run->script : ""},
-                             {"lamina:script-hash", hash},
-                             {"lamina:set", push_set_line(L, run)}};
+    la_prov prov;
+    la_provenance(L, &prov);
     char err[1024];
-    if (lr_plot_write(&p, file, text, 4, err, sizeof err))
+    if (lr_plot_write(&p, file, prov.text, 4, err, sizeof err))
         return luaL_error(L, "%s: %s", fn, err);
     lua_pushstring(L, file);
     if (!p.csv) return 1;
