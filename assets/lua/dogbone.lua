@@ -77,4 +77,32 @@ function M.length(pts)
   return l
 end
 
+-- The membrane point counts of [T] Table 5 at cells 0.4 / 0.2 / 0.1 / 0.05.
+M.counts = { [0.4] = 56, [0.2] = 100, [0.1] = 200, [0.05] = 400 }
+
+-- The expansion problem at cell h ([F] Table II: gas rho = 1, mu = 0.2,
+-- e = 250, gamma = 1.4, AV off, 64 ppc; membrane rho = 0.5, E = 1e6,
+-- nu = 0.3, t = 0.1, plane stress, one-way law; quarter symmetry;
+-- dt = 0.5 h / c_membrane). o: normals (default "connectivity", oriented
+-- away from the origin), pic (default 0). Returns sim, gas, membrane.
+function M.setup(h, o)
+  o = o or {}
+  local cm = math.sqrt(1e6 / ((1 - 0.3^2) * 0.5))
+  local sim = lamina.sim{ domain = {0, 0, 1.6, 1.6}, cell = h, dt = 0.5 * h / cm,
+                          boundary = { left = "symmetry", bottom = "symmetry",
+                                       right = "fixed", top = "fixed" },
+                          pic = o.pic or 0 }
+  local air = lamina.gas{ rho = 1, e = 250, gamma = 1.4, mu = 0.2 }
+  local skin = lamina.membrane{ rho = 0.5, E = 1e6, nu = 0.3, thickness = 0.1,
+                                law = "plane_stress", one_way = true }
+  local gas = sim:body{ material = air, ppc = 64, region = M.contains, name = "gas" }
+  local pts = M.polyline()
+  local mem = sim:membrane{ material = skin, name = "membrane",
+                            count = M.counts[h] or math.floor(2 / (h / 10) + 0.5),
+                            normals = o.normals or "connectivity", orient = {0, 0},
+                            initial_strain = math.log(M.length(pts) / M.natural_length),
+                            curve = lamina.polyline(pts) }
+  return sim, gas, mem
+end
+
 return M

@@ -32,24 +32,11 @@ local dog = require("dogbone")
 local paper_F = { [0.4] = {1.07, 50.3}, [0.2] = {1.33, 28.8}, [0.1] = {1.35, 31.2}, [0.05] = {1.36, 31.7} }
 local paper_T = { [0.4] = {1.08, 1.13, 33.4}, [0.2] = {1.335, 1.334, 24.9}, [0.1] = {1.388, 1.387, 27.0},
                   [0.05] = {1.394, 1.396, 29.0} }
-local counts = { [0.4] = 56, [0.2] = 100, [0.1] = 200, [0.05] = 400 }
-local cm = math.sqrt(1e6 / ((1 - 0.3^2) * 0.5))
 
 local report, radius_series, energy_series, hash = {}, {}, {}, nil
 for _, h in ipairs{0.4, 0.2, 0.1, 0.05} do
   if h < finest - 1e-12 then break end
-  local sim = lamina.sim{ domain = {0, 0, 1.6, 1.6}, cell = h, dt = 0.5 * h / cm,
-                          boundary = { left = "symmetry", bottom = "symmetry",
-                                       right = "fixed", top = "fixed" },
-                          pic = h < 0.075 and 0.01 or 0 }
-  local air = lamina.gas{ rho = 1, e = 250, gamma = 1.4, mu = 0.2 }
-  local skin = lamina.membrane{ rho = 0.5, E = 1e6, nu = 0.3, thickness = 0.1,
-                                law = "plane_stress", one_way = true }
-  local gas = sim:body{ material = air, ppc = 64, region = dog.contains, name = "gas" }
-  local pts = dog.polyline()
-  local mem = sim:membrane{ material = skin, count = counts[h], name = "membrane",
-                            initial_strain = math.log(dog.length(pts) / dog.natural_length),
-                            curve = lamina.polyline(pts) }
+  local sim, gas, mem = dog.setup(h, { pic = h < 0.075 and 0.01 or 0 })
   local escaped = 0
   local rec = sim:record{ every = 0.01, energy = true,
                           file = string.format("%s/history_cell%.3f.csv", out, h), values = {

@@ -16,31 +16,14 @@
 local out = lamina.param("out", "out/normals_dynamic_circle")
 local t_end = lamina.param("t_end", 0.05)
 
-local function build(method)
-  local sim = lamina.sim{ domain = {0, 0, 1, 1}, cell = 0.1, dt = 0.7e-4, courant = 1.05,
-                          boundary = { left = "symmetry", bottom = "symmetry",
-                                       right = "fixed", top = "fixed" } }
-  local air = lamina.gas{ rho = 1, p = 1000, gamma = 1.4, mu = 0.2 }
-  local skin = lamina.membrane{ rho = 0.5, E = 1e6, nu = 0.3, thickness = 0.1, law = "plane_stress" }
-  local gas = sim:body{ material = air, ppc = 16, name = "gas",
-                        region = lamina.disk{ center = {0, 0}, radius = 0.5 } }
-  local mem = sim:membrane{ material = skin, count = 91, normals = method, orient = {0, 0},
-                            name = "membrane",
-                            curve = lamina.arc{ center = {0, 0}, radius = 0.5, from = 0, to = 90 } }
-  return sim, gas, mem
-end
+local circle = require("circle_membrane")
 
-local iso, iso_gas, iso_mem = build("hybrid")
-local con, con_gas = build("connectivity")
+local iso, iso_gas, iso_mem = circle.setup{ normals = "hybrid" }
+local con, con_gas = circle.setup{ normals = "connectivity" }
 local worst = {}
 local rec_i = iso:record{ every = 1e-4, values = { p = function() return iso_gas:pressure() end,
   err = function()
-    local q = iso_mem:particles()
-    local w = 0
-    for i = 3, q.n - 2 do
-      local c = (q.nx[i] * q.x[i] + q.ny[i] * q.y[i]) / math.sqrt(q.x[i]^2 + q.y[i]^2)
-      w = math.max(w, math.deg(math.acos(math.min(1, math.abs(c)))))
-    end
+    local w = circle.worst_normal_error(iso_mem)
     worst[#worst + 1] = w
     return w
   end } }

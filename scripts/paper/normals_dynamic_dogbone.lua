@@ -18,22 +18,9 @@ local out = lamina.param("out", "out/normals_dynamic_dogbone")
 local h = lamina.param("cell", 0.1)
 local t_end = lamina.param("t_end", 2)
 local dog = require("dogbone")
-local cm = math.sqrt(1e6 / ((1 - 0.3^2) * 0.5))
-local counts = { [0.4] = 56, [0.2] = 100, [0.1] = 200, [0.05] = 400 }
 
 local function build(method)
-  local sim = lamina.sim{ domain = {0, 0, 1.6, 1.6}, cell = h, dt = 0.5 * h / cm,
-                          boundary = { left = "symmetry", bottom = "symmetry",
-                                       right = "fixed", top = "fixed" } }
-  local air = lamina.gas{ rho = 1, e = 250, gamma = 1.4, mu = 0.2 }
-  local skin = lamina.membrane{ rho = 0.5, E = 1e6, nu = 0.3, thickness = 0.1,
-                                law = "plane_stress", one_way = true }
-  local gas = sim:body{ material = air, ppc = 64, region = dog.contains, name = "gas" }
-  local pts = dog.polyline()
-  local mem = sim:membrane{ material = skin, count = counts[h] or math.floor(2 / (h / 10) + 0.5),
-                            normals = method, orient = {0, 0}, name = "membrane",
-                            initial_strain = math.log(dog.length(pts) / dog.natural_length),
-                            curve = lamina.polyline(pts) }
+  local sim, gas, mem = dog.setup(h, { normals = method })
   local rec = sim:record{ every = 0.005, values = {
     p = function() return gas:pressure() end,
     r0 = function() return mem:radius_at(0) end,

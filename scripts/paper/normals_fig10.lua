@@ -10,6 +10,8 @@
 -- assumed: the curve runs from (0, 0.5) to (1, 1.5), corner to corner of the element
 --          [0, 1] x [0.5, 1.5], which is taken as the element (in [0,1]^2 it would leave through
 --          the top at x = 0.77 or 0.88); n = 10 points evenly spaced in x, ends included.
+local nu = require("normals_util")
+local median = nu.median
 local out = lamina.param("out", "out/normals_fig10")
 local seed = lamina.param("seed", 1)
 local npts = lamina.param("points", 10)
@@ -35,12 +37,6 @@ local function errors(ns, ex)
     m, s2 = math.max(m, a), s2 + a * a
   end
   return math.deg(m), math.deg(math.sqrt(s2 / #ns)), math.deg(math.sqrt(s2) / #ns)
-end
-
-local function median(v)
-  table.sort(v)
-  local n = #v
-  return n % 2 == 1 and v[(n + 1) / 2] or 0.5 * (v[n / 2] + v[n / 2 + 1])
 end
 
 local box = {0, 0.5, 1, 1.5}

@@ -8,16 +8,10 @@
 --         (a) is solved by the minimum-norm QR solution - exact in direction all the same.
 -- assumed: the points are not given in the paper. (a) a 5 x 6 grid, x = (i + 1/2)/5,
 --          y = (j + 1/2)/6; (b) a Fibonacci spiral on the octant as in normals_fig5.lua.
+local nu = require("normals_util")
+local angle, sphere_points, plane_outline = nu.angle, nu.sphere_points, nu.plane_outline
 local out = lamina.param("out", "out/normals_fig11")
 local seed = lamina.param("seed", 1)
-
-local function angle(n, e)
-  local d = math.abs(n[1] * e[1] + n[2] * e[2] + n[3] * e[3])
-  local cx = n[2] * e[3] - n[3] * e[2]
-  local cy = n[3] * e[1] - n[1] * e[3]
-  local cz = n[1] * e[2] - n[2] * e[1]
-  return math.atan(math.sqrt(cx * cx + cy * cy + cz * cz), d)
-end
 
 local function max_error(ns, ex)
   local m = 0
@@ -37,24 +31,6 @@ local function plane_points()
   return pts, ex
 end
 
-local function sphere_points(n, r)
-  local golden = (3 - math.sqrt(5)) / 2 * 2 * math.pi
-  local pts, ex = {}, {}
-  for k = 0, n - 1 do
-    local c = (k + 0.5) / n
-    local s = math.sqrt(1 - c * c)
-    local ph = 0.5 * math.pi * ((k * golden) % 1.0)
-    local e = {s * math.cos(ph), s * math.sin(ph), c}
-    pts[#pts + 1], ex[#ex + 1] = {r * e[1], r * e[2], r * e[3]}, e
-  end
-  return pts, ex
-end
-
--- the exact surfaces, faintly (as in normals_fig5.lua)
-local function plane_outline(fig)
-  fig:polyline{points = {{0, 0, 0}, {1, 0, 0.5}, {1, 1, 0.75}, {0, 1, 0.25}, {0, 0, 0}},
-               dashed = true}
-end
 local function sphere_outline(fig)
   for axis = 1, 3 do
     local arc = {}

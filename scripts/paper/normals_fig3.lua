@@ -10,6 +10,8 @@
 --         beside the paper's 3.4e+01 and 5.6e+02 (they depend on the random point).
 -- assumed: the paper does not place its points; here the line passes through the element centre
 --          (0.5, 0.5) and n points sit at fractions (k + 1/2)/n of its chord through the element.
+local nu = require("normals_util")
+local max_angle = nu.max_angle
 local out = lamina.param("out", "out/normals_fig3")
 local trials = lamina.param("trials", 100)
 
@@ -34,18 +36,6 @@ local function exact_normals(s, n)
   local e = {}
   for k = 1, n do e[k] = {-s / l, 1 / l} end
   return e
-end
-
--- largest angle (radians) between computed and exact normals, sign-blind;
--- atan2 of |cross| and |dot| keeps full precision near 0 (acos does not)
-local function max_angle(ns, ex)
-  local m = 0
-  for k = 1, #ns do
-    local c = math.abs(ns[k][1] * ex[k][1] + ns[k][2] * ex[k][2])
-    local s = math.abs(ns[k][1] * ex[k][2] - ns[k][2] * ex[k][1])
-    m = math.max(m, math.atan(s, c))
-  end
-  return m
 end
 
 local function stats(v)

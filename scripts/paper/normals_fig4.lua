@@ -15,23 +15,10 @@
 --          circle inside the unit element, both ends included. The paper's "rms" cannot be a root
 --          mean square over the points: with 3 points it is 0.0571 < 0.1211 / sqrt(3); its
 --          numbers fit sqrt(sum e^2) / n, printed here beside the usual rms.
+local nu = require("normals_util")
+local angle, errors = nu.angle, nu.errors
 local out = lamina.param("out", "out/normals_fig4")
 local seed = lamina.param("seed", 1)
-
-local function angle(n, e)
-  local c = math.abs(n[1] * e[1] + n[2] * e[2])
-  local s = math.abs(n[1] * e[2] - n[2] * e[1])
-  return math.atan(s, c)
-end
-
-local function errors(ns, ex)
-  local m, s2 = 0, 0
-  for k = 1, #ns do
-    local a = angle(ns[k], ex[k])
-    m, s2 = math.max(m, a), s2 + a * a
-  end
-  return m, math.sqrt(s2 / #ns), math.sqrt(s2) / #ns
-end
 
 -- (a) the bilinear curve xy + 0.1x + 0.3 = 0: y = -0.1 - 0.3/x, in [-1, 0] x [0, 1]
 local function bilinear_points(n)

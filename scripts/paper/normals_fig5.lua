@@ -10,25 +10,10 @@
 -- assumed: the points are not given in the paper. (a) a 3 x 3 grid x, y in {0.2, 0.5, 0.8};
 --          (b) a Fibonacci spiral on the octant: cos(polar angle) = (k + 1/2)/8, azimuth
 --          90 deg x frac(k (3 - sqrt 5)/2 ... golden angle), k = 0..7.
+local nu = require("normals_util")
+local angle, errors, sphere_points, plane_outline = nu.angle, nu.errors, nu.sphere_points, nu.plane_outline
 local out = lamina.param("out", "out/normals_fig5")
 local seed = lamina.param("seed", 1)
-
-local function angle(n, e)
-  local d = math.abs(n[1] * e[1] + n[2] * e[2] + n[3] * e[3])
-  local cx = n[2] * e[3] - n[3] * e[2]
-  local cy = n[3] * e[1] - n[1] * e[3]
-  local cz = n[1] * e[2] - n[2] * e[1]
-  return math.atan(math.sqrt(cx * cx + cy * cy + cz * cz), d)
-end
-
-local function errors(ns, ex)
-  local m, s2 = 0, 0
-  for k = 1, #ns do
-    local a = angle(ns[k], ex[k])
-    m, s2 = math.max(m, a), s2 + a * a
-  end
-  return m, math.sqrt(s2 / #ns), math.sqrt(s2) / #ns
-end
 
 local function plane_points()
   local pts, ex = {}, {}
@@ -42,26 +27,6 @@ local function plane_points()
   return pts, ex
 end
 
--- n points on the octant of the sphere of radius r by a Fibonacci spiral
-local function sphere_points(n, r)
-  local golden = (3 - math.sqrt(5)) / 2 * 2 * math.pi    -- the golden angle
-  local pts, ex = {}, {}
-  for k = 0, n - 1 do
-    local c = (k + 0.5) / n
-    local s = math.sqrt(1 - c * c)
-    local f = (k * golden) % 1.0
-    local ph = 0.5 * math.pi * f
-    local e = {s * math.cos(ph), s * math.sin(ph), c}
-    pts[#pts + 1], ex[#ex + 1] = {r * e[1], r * e[2], r * e[3]}, e
-  end
-  return pts, ex
-end
-
--- the exact surfaces, faintly: the plane's edges in the cube, the octant's three arcs
-local function plane_outline(fig)
-  fig:polyline{points = {{0, 0, 0}, {1, 0, 0.5}, {1, 1, 0.75}, {0, 1, 0.25}, {0, 0, 0}},
-               dashed = true}
-end
 local function sphere_outline(fig, r)
   for axis = 1, 3 do
     local arc = {}

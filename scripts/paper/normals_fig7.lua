@@ -11,6 +11,8 @@
 --          spaced, ends included, on a quarter of the circle (x-0.5)^2 + (y-0.5)^2 = 0.3^2:
 --          (a) the lower-left quarter, angles 180..270 deg (all coordinates distinct); (b) the
 --          bottom quarter, 225..315 deg (two pairs share y).
+local nu = require("normals_util")
+local max_angle, median = nu.max_angle, nu.median
 local out = lamina.param("out", "out/normals_fig7")
 local seed = lamina.param("seed", 1)
 
@@ -22,31 +24,6 @@ local function arc_points(a0, a1, n)
     ex[#ex + 1] = {math.cos(t), math.sin(t)}
   end
   return pts, ex
-end
-
-local function max_angle(ns, ex)
-  local m = 0
-  for k = 1, #ns do
-    local c = math.abs(ns[k][1] * ex[k][1] + ns[k][2] * ex[k][2])
-    local s = math.abs(ns[k][1] * ex[k][2] - ns[k][2] * ex[k][1])
-    m = math.max(m, math.atan(s, c))
-  end
-  return m
-end
-
-local function median(v)
-  table.sort(v)
-  local n = #v
-  return n % 2 == 1 and v[(n + 1) / 2] or 0.5 * (v[n / 2] + v[n / 2 + 1])
-end
-
-local function circle()
-  local c = {}
-  for k = 0, 72 do
-    local t = 2 * math.pi * k / 72
-    c[#c + 1] = {0.5 + 0.3 * math.cos(t), 0.5 + 0.3 * math.sin(t)}
-  end
-  return c
 end
 
 local cases = {
@@ -69,7 +46,7 @@ for i, c in ipairs(cases) do
   fig:panel{index = i, window = {-0.05, -0.05, 1.05, 1.05}, title = c.label,
             caption = string.format("max error %.1f deg (paper %d deg); median of 100: %.1f deg",
                                     math.deg(m), c.paper, med[i])}
-  fig:polyline{points = circle(), dashed = true}
+  fig:polyline{points = nu.circle(0.5, 0.5, 0.3, 72), dashed = true}
   fig:normals{result = r, points = pts, exact = ex, length = 0.15}
   print(string.format("Fig 7%s: max error %.2f deg (paper %d deg); over 100 random points: "
     .. "median %.2f deg", c.label:sub(1, 3), math.deg(m), c.paper, med[i]))

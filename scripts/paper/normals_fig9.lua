@@ -16,6 +16,8 @@
 --          make the 9 x 9 system exactly singular - a biquadratic restricted to the circle is a
 --          trigonometric polynomial without the sin(4 theta) term - so the paper's 8 points were
 --          not symmetric; the symmetric case is printed too (rank 8, minimum-norm solution).
+local nu = require("normals_util")
+local max_angle, median, spaced = nu.max_angle, nu.median, nu.spaced
 local out = lamina.param("out", "out/normals_fig9")
 local seed = lamina.param("seed", 1)
 
@@ -27,37 +29,6 @@ local function arc_points(angles)
     ex[k] = {math.cos(t), math.sin(t)}
   end
   return pts, ex
-end
-
-local function spaced(a0, step, n)
-  local v = {}
-  for k = 0, n - 1 do v[k + 1] = a0 + step * k end
-  return v
-end
-
-local function max_angle(ns, ex)
-  local m = 0
-  for k = 1, #ns do
-    local c = math.abs(ns[k][1] * ex[k][1] + ns[k][2] * ex[k][2])
-    local s = math.abs(ns[k][1] * ex[k][2] - ns[k][2] * ex[k][1])
-    m = math.max(m, math.atan(s, c))
-  end
-  return m
-end
-
-local function median(v)
-  table.sort(v)
-  local n = #v
-  return n % 2 == 1 and v[(n + 1) / 2] or 0.5 * (v[n / 2] + v[n / 2 + 1])
-end
-
-local function circle()
-  local c = {}
-  for k = 0, 72 do
-    local t = 2 * math.pi * k / 72
-    c[#c + 1] = {0.5 + 0.3 * math.cos(t), 0.5 + 0.3 * math.sin(t)}
-  end
-  return c
 end
 
 local function solve(pts, solver, s)
@@ -90,7 +61,7 @@ for _, c in ipairs(cases) do
                 solver == "qr" and "QR (minimum norm)" or "normal equations"),
               caption = string.format("max %.1f deg (paper %s), rank %d of %d; "
                 .. "median of 100: %.1f deg", m, paper, r.rank, r.unknowns, med)}
-    fig:polyline{points = circle(), dashed = true}
+    fig:polyline{points = nu.circle(0.5, 0.5, 0.3, 72), dashed = true}
     fig:normals{result = r, points = pts, exact = ex, length = 0.15}
     print(string.format("Fig 9(%s) %-16s max error %6.2f deg (paper %s), rank %d of %d; "
       .. "over 100 random points median %.2f deg", c.tag, solver, m, paper, r.rank, r.unknowns, med))
@@ -112,7 +83,7 @@ for i, c in ipairs({{a0 = 180, tag = "c", idx = 3}, {a0 = 225, tag = "d", idx = 
   fig:panel{index = c.idx, window = {0, 0, 1, 1},
             title = string.format("(%s) 8 points from %d deg, QR", c.tag, c.a0),
             caption = string.format("max error %.1e rad (paper 0), cond(T) %.2g", m, r.cond)}
-  fig:polyline{points = circle(), dashed = true}
+  fig:polyline{points = nu.circle(0.5, 0.5, 0.3, 72), dashed = true}
   fig:normals{result = r, points = pts, exact = ex, length = 0.15}
   print(string.format("Fig 9(%s) 8 points: max error %.2e rad (paper 0), worst of 100 random "
     .. "points %.2e rad, cond(T) %.3g", c.tag, m, w, r.cond))

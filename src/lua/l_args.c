@@ -114,6 +114,36 @@ int la_option(lua_State *L, const char *fn, const char *key, const char *value,
                       lua_tostring(L, -1));
 }
 
+int la_point_list(lua_State *L, const char *fn, int min, int *n)
+{
+    static const char *const keys[] = {"points", NULL};
+    la_check_table(L, 1, fn);
+    int list = 1;
+    if (lua_rawlen(L, 1) == 0) {
+        la_check_keys(L, 1, fn, keys);
+        lua_getfield(L, 1, "points");
+        if (!lua_istable(L, -1)) luaL_error(L, "%s: 'points' must be a list of {x, y}", fn);
+        list = lua_gettop(L);
+    }
+    *n = (int)lua_rawlen(L, list);
+    if (*n < min) luaL_error(L, "%s: needs at least %d points (got %d)", fn, min, *n);
+    return list;
+}
+
+void la_point_at(lua_State *L, int list, int i, const char *fn, double *x, double *y)
+{
+    lua_rawgeti(L, list, i + 1);
+    if (!lua_istable(L, -1) || lua_rawlen(L, -1) != 2)
+        luaL_error(L, "%s: point %d must be {x, y}", fn, i + 1);
+    lua_rawgeti(L, -1, 1);
+    lua_rawgeti(L, -2, 2);
+    int okx, oky;
+    *x = lua_tonumberx(L, -2, &okx);
+    *y = lua_tonumberx(L, -1, &oky);
+    if (!okx || !oky) luaL_error(L, "%s: point %d must be two numbers", fn, i + 1);
+    lua_pop(L, 3);
+}
+
 lamina_run *la_run(lua_State *L)
 {
     lua_getfield(L, LUA_REGISTRYINDEX, "lamina.run");

@@ -65,32 +65,11 @@ static int l_arc(lua_State *L)
 
 static int l_polyline(lua_State *L)
 {
-    static const char *const keys[] = {"points", NULL};
     const char *fn = "lamina.polyline";
-    la_check_table(L, 1, fn);
-    int list = 1;
-    if (lua_rawlen(L, 1) == 0) {
-        la_check_keys(L, 1, fn, keys);
-        lua_getfield(L, 1, "points");
-        if (!lua_istable(L, -1)) luaL_error(L, "%s: 'points' must be a list of {x, y}", fn);
-        list = lua_gettop(L);
-    }
-    int n = (int)lua_rawlen(L, list);
-    if (n < 2) luaL_error(L, "%s: needs at least 2 points (got %d)", fn, n);
+    int n;
+    int list = la_point_list(L, fn, 2, &n);
     la_curve *c = push_curve(L, LA_CURVE_POLYLINE, n);
-    for (int i = 0; i < n; i++) {
-        lua_rawgeti(L, list, i + 1);
-        if (!lua_istable(L, -1) || lua_rawlen(L, -1) != 2)
-            luaL_error(L, "%s: point %d must be {x, y}", fn, i + 1);
-        for (int k = 0; k < 2; k++) {
-            lua_rawgeti(L, -1, k + 1);
-            int ok;
-            c->xy[2 * i + k] = lua_tonumberx(L, -1, &ok);
-            if (!ok) luaL_error(L, "%s: point %d must be two numbers", fn, i + 1);
-            lua_pop(L, 1);
-        }
-        lua_pop(L, 1);
-    }
+    for (int i = 0; i < n; i++) la_point_at(L, list, i, fn, &c->xy[2 * i], &c->xy[2 * i + 1]);
     return 1;
 }
 

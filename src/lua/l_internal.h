@@ -28,6 +28,10 @@ void la_pair(lua_State *L, int idx, const char *fn, const char *key, double *a, 
 /* The option's index in names[] or a named error. */
 int la_option(lua_State *L, const char *fn, const char *key, const char *value,
               const char *const names[]);
+/* A list of {x, y} points, as the table at 1 itself or its `points` key
+ * (lamina.polygon, lamina.polyline): its stack index; *n points, >= min. */
+int la_point_list(lua_State *L, const char *fn, int min, int *n);
+void la_point_at(lua_State *L, int list, int i, const char *fn, double *x, double *y);
 lamina_run *la_run(lua_State *L);
 
 /* l_provenance.c: the tEXt chunks of every image (Software, lamina:script,

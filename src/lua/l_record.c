@@ -35,6 +35,8 @@ typedef struct la_record {
     double *rows;       /* nrows * ncols */
     size_t nrows, cap;
     double average;     /* running-mean window in time, 0: none */
+    int energy;         /* has energy columns: the sum over particles is
+                           taken only then */
     int has_file;
     int dirty;
 } la_record;
@@ -209,7 +211,8 @@ static int record_sample(lua_State *L)
         r->rows = rows;
         r->cap = cap;
     }
-    lm_energy e = lm_sim_energy(sim);
+    lm_energy e = {0, 0, 0, 0, 0};
+    if (r->energy) e = lm_sim_energy(sim);
     double *row = r->rows + r->nrows * (size_t)r->ncols;
     for (int i = 0; i < r->ncols; i++) row[i] = sample(L, &r->cols[i], sim, &e);
     r->nrows++;
@@ -436,6 +439,7 @@ int la_sim_record(lua_State *L)
     lua_getfield(L, 2, "energy");
     int energy = lua_toboolean(L, -1);
     lua_pop(L, 1);
+    r->energy = energy;
     for (int i = 0; energy && i < 5; i++) add_column(L, r, energies[i], SRC_ENERGY)->which = i;
     read_points(L, r, s->sim);
     read_angles(L, r, s->sim);

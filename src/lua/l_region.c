@@ -63,34 +63,16 @@ int la_rect(lua_State *L)
 /* lamina.polygon{points = {{x, y}, ...}} (also accepts the list directly). */
 int la_polygon(lua_State *L)
 {
-    static const char *const keys[] = {"points", NULL};
     const char *fn = "lamina.polygon";
-    la_check_table(L, 1, fn);
-    int list = 1;
-    if (lua_rawlen(L, 1) == 0) {
-        la_check_keys(L, 1, fn, keys);
-        lua_getfield(L, 1, "points");
-        if (!lua_istable(L, -1)) luaL_error(L, "%s: 'points' must be a list of {x, y}", fn);
-        list = lua_gettop(L);
-    }
-    int n = (int)lua_rawlen(L, list);
-    if (n < 3) luaL_error(L, "%s: needs at least 3 points (got %d)", fn, n);
+    int n;
+    int list = la_point_list(L, fn, 3, &n);
     lm_region *g = push_region(L, LM_REGION_POLYGON);
     g->vx = malloc(n * sizeof(double));
     g->vy = malloc(n * sizeof(double));
     if (!g->vx || !g->vy) luaL_error(L, "%s: out of memory", fn);
     g->nv = n;
     for (int i = 0; i < n; i++) {
-        lua_rawgeti(L, list, i + 1);
-        if (!lua_istable(L, -1) || lua_rawlen(L, -1) != 2)
-            luaL_error(L, "%s: point %d must be {x, y}", fn, i + 1);
-        lua_rawgeti(L, -1, 1);
-        lua_rawgeti(L, -2, 2);
-        int okx, oky;
-        g->vx[i] = lua_tonumberx(L, -2, &okx);
-        g->vy[i] = lua_tonumberx(L, -1, &oky);
-        if (!okx || !oky) luaL_error(L, "%s: point %d must be two numbers", fn, i + 1);
-        lua_pop(L, 3);
+        la_point_at(L, list, i, fn, &g->vx[i], &g->vy[i]);
         if (i == 0 || g->vx[i] < g->x0) g->x0 = g->vx[i];
         if (i == 0 || g->vx[i] > g->x1) g->x1 = g->vx[i];
         if (i == 0 || g->vy[i] < g->y0) g->y0 = g->vy[i];

@@ -39,6 +39,17 @@ static void connectivity(lm_particles *p, const lm_body *bd)
     }
 }
 
+/* Turns tangents so that their normals point away from (ox, oy). */
+static void orient_away(lm_particles *p, const lm_body *bd)
+{
+    for (size_t q = bd->first; q < bd->first + bd->count; q++) {
+        if (-p->ty[q] * (p->x[q] - bd->ox) + p->tx[q] * (p->y[q] - bd->oy) < 0) {
+            p->tx[q] = -p->tx[q];
+            p->ty[q] = -p->ty[q];
+        }
+    }
+}
+
 /* The normals paper's construction (or a dissertation variant) on the
  * simulation's own grid, from the points alone. The random points come
  * from the simulation's seed, the body and the step, so a run is
@@ -120,11 +131,8 @@ lm_status lm_membrane_tangents(lm_sim *sim)
             connectivity(p, bd);
             /* the curve's direction fixes the sign; asked to point away
              * from a point, turn the tangents (t(x)t does not change) */
-            for (size_t q = bd->first; bd->orient == 1 && q < bd->first + bd->count; q++)
-                if (-p->ty[q] * (p->x[q] - bd->ox) + p->tx[q] * (p->y[q] - bd->oy) < 0) {
-                    p->tx[q] = -p->tx[q];
-                    p->ty[q] = -p->ty[q];
-                }
+            if (bd->orient == 1)
+                orient_away(p, bd);
         } else {
             /* a first guess for points whose normal is undefined */
             if (!sim->prepared) connectivity(p, bd);

@@ -10,14 +10,7 @@
 -- stress is within 5 % of p r / t (averaged p and r); the membrane stays
 -- circular (radius at 0 and 90 degrees within 1 %); no gas escapes; total
 -- energy stays within 0.1 % (viscous dissipation is small here).
-local sim = lamina.sim{ domain = {0, 0, 1, 1}, cell = 0.1, dt = 0.7e-4, courant = 1.05,
-                        boundary = { left = "symmetry", bottom = "symmetry",
-                                     right = "fixed", top = "fixed" } }
-local air = lamina.gas{ rho = 1, p = 1000, gamma = 1.4, mu = 0.2 }
-local skin = lamina.membrane{ rho = 0.5, E = 1e6, nu = 0.3, thickness = 0.1, law = "plane_stress" }
-local gas = sim:body{ material = air, ppc = 16, region = lamina.disk{ center = {0, 0}, radius = 0.5 } }
-local mem = sim:membrane{ material = skin, count = 91,
-                          curve = lamina.arc{ center = {0, 0}, radius = 0.5, from = 0, to = 90 } }
+local sim, gas, mem = require("circle_membrane").setup()
 local escaped = 0
 local rec = sim:record{ every = 1e-4, energy = true, values = {
   p = function() return gas:pressure() end,

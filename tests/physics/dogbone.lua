@@ -14,21 +14,10 @@
 -- 0.7 / 1.0 / 1.2 % (cells 0.4 / 0.2 / 0.1, to t = 4) - FLIP velocity noise
 -- of the light membrane points (their kinetic energy stays ~2 at rest).
 local dog = require("dogbone")
-local cm = math.sqrt(1e6 / ((1 - 0.3^2) * 0.5))
-local counts = { [0.4] = 56, [0.2] = 100, [0.1] = 200 }
 local t_end = 2.5
 
 local function expand(h)
-  local sim = lamina.sim{ domain = {0, 0, 1.6, 1.6}, cell = h, dt = 0.5 * h / cm,
-                          boundary = { left = "symmetry", bottom = "symmetry",
-                                       right = "fixed", top = "fixed" } }
-  local air = lamina.gas{ rho = 1, e = 250, gamma = 1.4, mu = 0.2 }
-  local skin = lamina.membrane{ rho = 0.5, E = 1e6, nu = 0.3, thickness = 0.1,
-                                law = "plane_stress", one_way = true }
-  local gas = sim:body{ material = air, ppc = 64, region = dog.contains }
-  local pts = dog.polyline()
-  local mem = sim:membrane{ material = skin, count = counts[h], curve = lamina.polyline(pts),
-                            initial_strain = math.log(dog.length(pts) / dog.natural_length) }
+  local sim, gas, mem = dog.setup(h)
   local escaped = 0
   local rec = sim:record{ every = 0.01, energy = true, values = {
     p = function() return gas:pressure() end,

@@ -13,25 +13,15 @@
 -- the merged linear fit, whose error [N] §4 / Fig 7 documents). The
 -- connectivity normals themselves are up to 2.7 degrees off radial as the
 -- membrane wrinkles slightly.
+local circle = require("circle_membrane")
+
 local function run(method)
-  local sim = lamina.sim{ domain = {0, 0, 1, 1}, cell = 0.1, dt = 0.7e-4, courant = 1.05,
-                          boundary = { left = "symmetry", bottom = "symmetry",
-                                       right = "fixed", top = "fixed" } }
-  local air = lamina.gas{ rho = 1, p = 1000, gamma = 1.4, mu = 0.2 }
-  local skin = lamina.membrane{ rho = 0.5, E = 1e6, nu = 0.3, thickness = 0.1, law = "plane_stress" }
-  local gas = sim:body{ material = air, ppc = 16, region = lamina.disk{ center = {0, 0}, radius = 0.5 } }
-  local mem = sim:membrane{ material = skin, count = 91, normals = method, orient = {0, 0},
-                            curve = lamina.arc{ center = {0, 0}, radius = 0.5, from = 0, to = 90 } }
+  local sim, gas, mem = circle.setup{ normals = method }
   local worst = {}
   local rec = sim:record{ every = 5 * sim.dt, values = {
     p = function() return gas:pressure() end,
     err = function()
-      local q = mem:particles()
-      local w = 0
-      for i = 3, q.n - 2 do
-        local c = (q.nx[i] * q.x[i] + q.ny[i] * q.y[i]) / math.sqrt(q.x[i]^2 + q.y[i]^2)
-        w = math.max(w, math.deg(math.acos(math.min(1, math.abs(c)))))
-      end
+      local w = circle.worst_normal_error(mem)
       worst[#worst + 1] = w
       return w
     end } }

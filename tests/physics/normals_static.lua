@@ -1,39 +1,9 @@
--- The normals paper's static cases through lamina.normals (physics.md §6, N1-N5; the full
--- numerics are in tests/unit/test_normals_paper.c, this is the Lua path):
---  N1 lines of every slope of [N] Table I: normals exact to 1e-10, median cond(T) within a
---     factor 10 of Table I (same order of magnitude);
---  N2 the bilinear curve xy + 0.1x + 0.3 = 0 exact (in the element [-1,0] x [0,1]: as printed
---     the curve never enters [0,1]^2); the circle of [N] Table III, max error within a factor
---     2 of the paper's and the error falling as points are added;
---  N3 an arc with points sharing y is far worse than one with distinct coordinates ([N] Fig 7);
---  N4 quadratic, 8 points on the arc: exact; QR beats the normal equations on Fig 9(b) (medians
---     over 30 random points);
---  N5 the plane exact with the linear and the quadratic basis, the sphere with 29 points exact
---     (quadratic), with 8 points (linear) within the paper's 13 degrees.
--- Placements as in scripts/paper/normals_fig*.lua.
-local function angle(n, e)
-  local d = 0
-  for a = 1, #n do d = d + n[a] * e[a] end
-  local c2 = 0
-  if #n == 2 then
-    c2 = (n[1] * e[2] - n[2] * e[1]) ^ 2
-  else
-    c2 = (n[2] * e[3] - n[3] * e[2]) ^ 2 + (n[3] * e[1] - n[1] * e[3]) ^ 2
-       + (n[1] * e[2] - n[2] * e[1]) ^ 2
-  end
-  return math.atan(math.sqrt(c2), math.abs(d))
-end
-
+local nu = require("normals_util")
+local angle, median, spaced = nu.angle, nu.median, nu.spaced
 local function max_error(r, ex)
   local m = 0
   for k = 1, #ex do m = math.max(m, angle(r.normals[k], ex[k])) end
   return m
-end
-
-local function median(v)
-  table.sort(v)
-  local n = #v
-  return n % 2 == 1 and v[(n + 1) / 2] or 0.5 * (v[n / 2] + v[n / 2 + 1])
 end
 
 -- the shape of a result
@@ -143,11 +113,6 @@ local function arc(angles)
     p[k], e[k] = {0.5 + 0.3 * math.cos(t), 0.5 + 0.3 * math.sin(t)}, {math.cos(t), math.sin(t)}
   end
   return p, e
-end
-local function spaced(a0, step, n)
-  local v = {}
-  for k = 0, n - 1 do v[k + 1] = a0 + step * k end
-  return v
 end
 local function median_error(angles, basis, solver)
   local p, e = arc(angles)

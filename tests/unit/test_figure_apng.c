@@ -7,6 +7,7 @@
  * with an ffmpeg on PATH (a stand-in script here) the MP4 path is taken. */
 #include "apng.h"
 #include "check.h"
+#include "test_files.h"
 #include "render.h"
 
 #include <stdint.h>
@@ -175,29 +176,6 @@ static int write_anim(const char *p, unsigned nframes, int add)
         }
     }
     return lr_apng_close(a, err, sizeof err);
-}
-
-static unsigned char *slurp(const char *p, long *len)
-{
-    FILE *fp = fopen(p, "rb");
-    if (!fp)
-        return NULL;
-    fseek(fp, 0, SEEK_END);
-    *len = ftell(fp);
-    fseek(fp, 0, SEEK_SET);
-    unsigned char *b = malloc((size_t)*len + 1);
-    if (b && fread(b, 1, (size_t)*len, fp) != (size_t)*len) {
-        free(b);
-        b = NULL;
-    }
-    fclose(fp);
-    return b;
-}
-
-static int exists(const char *p)
-{
-    struct stat st;
-    return stat(p, &st) == 0;
 }
 
 static void test_writer(void)

@@ -1,6 +1,7 @@
 /* test_frame.c - lr_frame_write: layout, colours, grid, label, determinism;
  * and the canvas behaviour frames rely on (straight alpha, robust text). */
 #include "check.h"
+#include "test_files.h"
 #include "render.h"
 
 #include <stdlib.h>
@@ -76,22 +77,6 @@ static void check_colour(const unsigned char *p, lr_rgba want)
     CHECK_NEAR(p[1], want.g * 255.0, 2.0);
     CHECK_NEAR(p[2], want.b * 255.0, 2.0);
     CHECK(p[3] == 255);
-}
-
-static unsigned char *slurp(const char *path, long *len)
-{
-    FILE *fp = fopen(path, "rb");
-    if (!fp)
-        return NULL;
-    unsigned char *buf = NULL;
-    if (fseek(fp, 0, SEEK_END) == 0 && (*len = ftell(fp)) >= 0 &&
-        fseek(fp, 0, SEEK_SET) == 0 && (buf = malloc((size_t)*len + 1)) &&
-        fread(buf, 1, (size_t)*len, fp) != (size_t)*len) {
-        free(buf);
-        buf = NULL;
-    }
-    fclose(fp);
-    return buf;
 }
 
 static void test_palette(void)

@@ -2,6 +2,7 @@
  * rendered plot (size, valid PNG, provenance, dashes, determinism), the CSV,
  * and degenerate input that must be drawn or refused, never crash. */
 #include "check.h"
+#include "test_files.h"
 #include "plot.h"
 #include "render.h"
 
@@ -25,30 +26,6 @@ static const char *path(const char *name)
     k = (k + 1) % 8;
     snprintf(buf[k], sizeof buf[k], "%s/%s", dir, name);
     return buf[k];
-}
-
-static int exists(const char *p)
-{
-    struct stat st;
-    return stat(p, &st) == 0;
-}
-
-static unsigned char *slurp(const char *p, long *len)
-{
-    FILE *fp = fopen(p, "rb");
-    if (!fp)
-        return NULL;
-    unsigned char *buf = NULL;
-    if (fseek(fp, 0, SEEK_END) == 0 && (*len = ftell(fp)) >= 0 &&
-        fseek(fp, 0, SEEK_SET) == 0 && (buf = malloc((size_t)*len + 1)) &&
-        fread(buf, 1, (size_t)*len, fp) != (size_t)*len) {
-        free(buf);
-        buf = NULL;
-    }
-    if (buf)
-        buf[*len] = '\0';
-    fclose(fp);
-    return buf;
 }
 
 static int contains(const unsigned char *buf, long len, const char *s)

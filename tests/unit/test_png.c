@@ -1,6 +1,7 @@
 /* test_png.c - lr_png_write / lr_png_read: round trip, tEXt, atomic and
  * deterministic writes, errors that name the path and leave nothing behind. */
 #include "check.h"
+#include "test_files.h"
 #include "render.h"
 
 #include <dirent.h>
@@ -60,23 +61,6 @@ static int count_entries(const char *path)
             n++;
     closedir(d);
     return n;
-}
-
-/* The whole file, malloc'd; NULL if unreadable. */
-static unsigned char *slurp(const char *path, long *len)
-{
-    FILE *fp = fopen(path, "rb");
-    if (!fp)
-        return NULL;
-    unsigned char *buf = NULL;
-    if (fseek(fp, 0, SEEK_END) == 0 && (*len = ftell(fp)) >= 0 &&
-        fseek(fp, 0, SEEK_SET) == 0 && (buf = malloc((size_t)*len + 1)) &&
-        fread(buf, 1, (size_t)*len, fp) != (size_t)*len) {
-        free(buf);
-        buf = NULL;
-    }
-    fclose(fp);
-    return buf;
 }
 
 static int same_file(const char *a, const char *b)
