@@ -291,6 +291,8 @@ static int sim_energy(lua_State *L)
 {
     la_sim *s = la_check_sim(L, 1);
     la_push_energy(L, lm_sim_energy(s->sim));
+    lua_pushnumber(L, lm_sim_grid_kinetic(s->sim));
+    lua_setfield(L, -2, "grid_kinetic");
     return 1;
 }
 

@@ -231,6 +231,9 @@ typedef struct lm_energy {
 } lm_energy;
 
 lm_energy lm_sim_energy(const lm_sim *sim);
+/* Kinetic energy of the particles' momentum mapped to the grid (at most the
+ * particles' own; the rest is velocity the grid cannot see). */
+double lm_sim_grid_kinetic(const lm_sim *sim);
 lm_energy lm_body_energy(const lm_sim *sim, int body);
 /* Mass-weighted centre and velocity of a body (body < 0: all particles). */
 void lm_body_com(const lm_sim *sim, int body, double *x, double *y);

@@ -9,10 +9,15 @@
 -- pressure converge with refinement (the radius grows towards the taut
 -- radius 1.40 and the steps shrink, the pressure falls towards the energy
 -- balance's 29.0 and the steps shrink).
--- Expected failure, measured and reported rather than hidden: the papers'
--- energy loss shrinks with refinement; here the total energy rises by
--- 0.7 / 1.0 / 1.2 % (cells 0.4 / 0.2 / 0.1, to t = 4) - FLIP velocity noise
--- of the light membrane points (their kinetic energy stays ~2 at rest).
+-- Energy ([F] §4.3.1: "less energy dissipation" with refinement): the
+-- loss is measured on the energy the dynamics sees, with the kinetic
+-- energy of the particles' momentum mapped to the grid
+-- (sim:energy().grid_kinetic). The particles' own sum 1/2 m v^2 also holds
+-- FLIP's hidden velocity, which the grid cannot see and which moves
+-- nothing; both are printed. Measured to t = 2.5: visible loss 9.8 / 4.6 /
+-- 1.4 %, hidden kinetic energy at the end 11.3 / 6.3 / 3.0 (of ~112), both
+-- falling with refinement; the particle total rises by 0.4 / 1.0 / 1.2 %
+-- (the hidden energy outweighs the loss), reported, not asserted.
 local dog = require("dogbone")
 local t_end = 2.5
 
@@ -24,18 +29,24 @@ local function expand(h)
     hoop = function() return mem:hoop_stress() end,
     r0 = function() return mem:radius_at(0) end,
     r90 = function() return mem:radius_at(90) end,
+    gk = function() return sim:energy().grid_kinetic end,
     escaped = function() escaped = math.max(escaped, mem:escaped(gas)); return escaped end } }
   sim:run{ t_end = t_end }
   local t0 = t_end - 1
   local r = { p = rec:mean("p", t0, t_end), hoop = rec:mean("hoop", t0, t_end),
               r0 = rec:mean("r0", t0, t_end), r90 = rec:mean("r90", t0, t_end), escaped = escaped }
-  local tot = rec:column("total")
-  r.dE = (tot[#tot] - tot[1]) / tot[1]
+  local tot, ke, gk = rec:column("total"), rec:column("kinetic"), rec:column("gk")
+  local n = #tot
+  local vis0, vis1 = tot[1] - ke[1] + gk[1], tot[n] - ke[n] + gk[n]
+  r.dE = (tot[n] - tot[1]) / tot[1]
+  r.loss = (vis0 - vis1) / vis0
+  r.hidden = ke[n] - gk[n]
   r.r = 0.5 * (r.r0 + r.r90)
   r.prt = r.p * r.r / 0.1
   print(string.format("V7 cell %.2f: r(0) %.4f r(90) %.4f p %.2f hoop %.1f vs p r / t %.1f "
-    .. "(%+.1f %%), gas outside %d, energy %+.2f %%", h, r.r0, r.r90, r.p, r.hoop, r.prt,
-    100 * (r.hoop - r.prt) / r.prt, escaped, 100 * r.dE))
+    .. "(%+.1f %%), gas outside %d, visible energy loss %.2f %%, hidden kinetic energy %.2f, "
+    .. "particle energy %+.2f %%", h, r.r0, r.r90, r.p, r.hoop, r.prt,
+    100 * (r.hoop - r.prt) / r.prt, escaped, 100 * r.loss, r.hidden, 100 * r.dE))
   return r
 end
 
@@ -45,7 +56,8 @@ assert(math.abs(c.r0 - c.r90) / c.r0 <= 0.01, "cell 0.1: not circular")
 assert(math.abs(c.hoop - c.prt) / c.prt <= 0.05, "cell 0.1: hoop stress not within 5 % of p r / t")
 assert(a.r < b.r and b.r < c.r and c.r - b.r < b.r - a.r, "radius not converging")
 assert(a.p > b.p and b.p > c.p and b.p - c.p < a.p - b.p, "pressure not converging")
-if not (c.dE < b.dE and b.dE < a.dE) then
-  print(string.format("EXPECTED FAILURE (reported): energy change does not fall with refinement: "
-    .. "%+.2f / %+.2f / %+.2f %%", 100 * a.dE, 100 * b.dE, 100 * c.dE))
-end
+assert(a.loss > b.loss and b.loss > c.loss and c.loss > 0,
+       "visible energy loss does not fall with refinement")
+assert(a.hidden > b.hidden and b.hidden > c.hidden, "hidden kinetic energy does not fall with refinement")
+print(string.format("reported: the particles' total energy changes by %+.2f / %+.2f / %+.2f %% "
+  .. "(visible loss plus hidden FLIP kinetic energy)", 100 * a.dE, 100 * b.dE, 100 * c.dE))
