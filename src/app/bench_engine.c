@@ -1,5 +1,6 @@
 /* bench_engine.c - `lamina bench engine`: particle-steps per second of the
- * engine alone (design.md, "Performance targets"), one thread.
+ * engine alone (design.md, "Performance targets"), on one thread or on
+ * `--threads N` (lamina.sim{threads}; threads.h).
  *
  * Two standard problems at several sizes, built through the engine's C API
  * (no Lua, no drawing inside the timed loop):
@@ -44,10 +45,13 @@ static int seed_disk(lm_sim *sim, int mi, double cx, double cy, double r, int np
     return b;
 }
 
+static int threads = 1;
+
 static lm_sim *make_disks(double h, lm_scheme scheme, lm_material *mat)
 {
     lm_sim_def d;
     lm_sim_def_default(&d);
+    d.threads = threads;
     d.hx = d.hy = h;
     d.scheme = scheme;
     d.dt = 0.2 * h / lm_material_wave_speed(mat);
@@ -67,6 +71,7 @@ static lm_sim *make_gas(double h, lm_material *gas, lm_material *skin)
 {
     lm_sim_def d;
     lm_sim_def_default(&d);
+    d.threads = threads;
     d.hx = d.hy = h;
     d.bc[LM_LEFT] = d.bc[LM_BOTTOM] = LM_BC_SYMMETRY;
     d.dt = 0.5 * h / lm_material_wave_speed(skin);
@@ -166,6 +171,12 @@ int bench_engine(int argc, char **argv)
                 fprintf(stderr, "lamina bench engine: --work needs a number in [1e3, 1e10]\n");
                 return 2;
             }
+        } else if (strcmp(argv[i], "--threads") == 0 && i + 1 < argc) {
+            threads = atoi(argv[++i]);
+            if (threads < 1 || threads > 256) {
+                fprintf(stderr, "lamina bench engine: --threads needs a whole number from 1 to 256\n");
+                return 2;
+            }
         } else if (strcmp(argv[i], "--sizes") == 0 && i + 1 < argc) {
             nsizes = 0;
             for (char *s = argv[++i]; *s && nsizes < 8;) {
@@ -181,7 +192,7 @@ int bench_engine(int argc, char **argv)
             }
         } else {
             fprintf(stderr, "lamina bench engine: unknown option '%s' (usage: lamina bench "
-                    "engine [--sizes N,N,...] [--work PARTICLE_STEPS])\n", argv[i]);
+                    "engine [--sizes N,N,...] [--work PARTICLE_STEPS] [--threads N])\n", argv[i]);
             return 2;
         }
     }
@@ -191,7 +202,8 @@ int bench_engine(int argc, char **argv)
                        .e0 = 1000 / (0.4 * 1), .pic = -1};
     lm_material skin = {.kind = LM_MEMBRANE, .rho = 0.5, .E = 1e6, .nu = 0.3,
                         .thickness = 0.1, .law = LM_LAW_PLANE_STRESS, .pic = -1};
-    printf("lamina bench engine: one thread, about %.3g particle-steps per case\n\n", work);
+    printf("lamina bench engine: %d thread%s, about %.3g particle-steps per case\n\n", threads,
+           threads == 1 ? "" : "s", work);
     printf("| case         | particles |   steps |       s | M p-steps/s |\n");
     printf("|---|---:|---:|---:|---:|\n");
     int bad = 0;

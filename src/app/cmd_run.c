@@ -76,6 +76,16 @@ static int parse_args(int argc, char **argv, lamina_run *run, const char **repor
                 return -1;
             }
             run->backend = b;
+        } else if (strcmp(a, "--threads") == 0 || strncmp(a, "--threads=", 10) == 0) {
+            /* lamina.sim's default thread count for this run (docs/api.md) */
+            const char *v = a[9] == '=' ? a + 10 : (i + 1 < argc ? argv[++i] : NULL);
+            char *end = NULL;
+            long n = v ? strtol(v, &end, 10) : 0;
+            if (!v || !*v || *end || n < 1 || n > 256) {
+                fprintf(stderr, "lamina run: --threads needs a whole number from 1 to 256\n");
+                return -1;
+            }
+            setenv("LAMINA_THREADS", v, 1);
         } else if (strcmp(a, "--quiet") == 0 || strcmp(a, "-q") == 0) {
             run->quiet = 1;
         } else if (a[0] == '-' && a[1]) {

@@ -85,7 +85,7 @@ static void read_boundary(lua_State *L, const char *fn, lm_sim_def *d)
 int la_sim_new(lua_State *L)
 {
     static const char *const keys[] = {"domain", "cell", "dt", "scheme", "gravity",
-                                       "boundary", "courant", "pic", "seed", NULL};
+                                       "boundary", "courant", "pic", "seed", "threads", NULL};
     const char *fn = "lamina.sim";
     la_check_keys(L, 1, fn, keys);
     lm_sim_def d;
@@ -104,6 +104,13 @@ int la_sim_new(lua_State *L)
         luaL_error(L, "%s: seed must be a whole number >= 0 (got %f)", fn, seed);
     d.seed = (uint64_t)seed;
     if (!(d.pic >= 0 && d.pic <= 1)) luaL_error(L, "%s: pic must lie in [0, 1] (got %f)", fn, d.pic);
+    /* threads: the key, else LAMINA_THREADS (lamina run --threads), else 1;
+     * the state is bit-identical for the same count (docs/decisions.md) */
+    const char *env = getenv("LAMINA_THREADS");
+    double threads = la_opt_number(L, 1, fn, "threads", env && *env ? atof(env) : 1);
+    if (!(threads >= 1 && threads <= 256) || threads != floor(threads))
+        luaL_error(L, "%s: threads must be a whole number from 1 to 256 (got %f)", fn, threads);
+    d.threads = (int)threads;
 
     la_sim *s = lua_newuserdatauv(L, sizeof *s, 1);
     memset(s, 0, sizeof *s);
@@ -336,6 +343,7 @@ static int sim_index(lua_State *L)
     else if (strcmp(k, "n") == 0) lua_pushinteger(L, (lua_Integer)m->p.n);
     else if (strcmp(k, "scheme") == 0) lua_pushstring(L, schemes[m->def.scheme]);
     else if (strcmp(k, "pic") == 0) lua_pushnumber(L, m->def.pic);
+    else if (strcmp(k, "threads") == 0) lua_pushinteger(L, m->def.threads);
     else if (strcmp(k, "courant") == 0) lua_pushnumber(L, m->def.courant);
     else if (strcmp(k, "gravity") == 0) {
         lua_createtable(L, 2, 0);

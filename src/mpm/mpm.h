@@ -79,6 +79,8 @@ typedef struct lm_grid {
     double *px, *py;       /* momentum p_i, then p_i^L */
     double *fx, *fy;       /* total nodal force */
     double *vx, *vy;       /* velocity used for the strain (step 5) */
+    double *tbuf;          /* other threads' copies of scattered fields */
+    size_t tcap;           /* (threads.c) */
 } lm_grid;
 
 /* ---- particles (particles.c) -------------------------------------------- */
@@ -142,6 +144,8 @@ typedef struct lm_sim_def {
     double pic;            /* 0: FLIP velocity update (the papers'); 1: PIC;
                               between: a blend that damps particle noise */
     uint64_t seed;         /* random points of the normals construction */
+    int threads;           /* threads of the step (<= 1: one); the state is
+                              bit-identical for the same count (threads.h) */
 } lm_sim_def;
 
 /* Fills a definition with lamina's defaults (unit square, cell 0.1, MUSL,

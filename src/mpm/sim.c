@@ -18,6 +18,7 @@ void lm_sim_def_default(lm_sim_def *def)
     for (int s = 0; s < 4; s++) def->bc[s] = LM_BC_FIXED;
     def->courant = 1;
     def->seed = 1;
+    def->threads = 1;
 }
 
 /* Whole cells cover the domain; a domain that is a multiple of the cell
@@ -43,7 +44,7 @@ static int grid_alloc(lm_grid *g)
 static void grid_free(lm_grid *g)
 {
     free(g->m); free(g->px); free(g->py); free(g->fx); free(g->fy);
-    free(g->vx); free(g->vy);
+    free(g->vx); free(g->vy); free(g->tbuf);
 }
 
 lm_sim *lm_sim_new(const lm_sim_def *def, char *err, size_t errlen)

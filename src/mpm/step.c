@@ -8,6 +8,7 @@
 #include <stdio.h>
 
 #include "step.h"
+#include "threads.h"
 
 static const int corner_dx[4] = {0, 1, 0, 1};
 static const int corner_dy[4] = {0, 0, 1, 1};
@@ -20,7 +21,9 @@ static inline int corner(const lm_grid *g, int node, int k)
 void lm_step_shape(lm_sim *sim)
 {
     lm_particles *p = &sim->p;
-    for (size_t q = 0; q < p->n; q++)
+    long n = (long)p->n;
+#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static)
+    for (long q = 0; q < n; q++)
         lm_shape_bilinear(&sim->grid, p->x[q], p->y[q], &p->node[q],
                           &p->N[4 * q], &p->Gx[4 * q], &p->Gy[4 * q]);
 }
@@ -30,15 +33,26 @@ void lm_step_p2g(lm_sim *sim)
 {
     lm_grid *g = &sim->grid;
     const lm_particles *p = &sim->p;
-    for (size_t q = 0; q < p->n; q++) {
-        for (int k = 0; k < 4; k++) {
-            int i = corner(g, p->node[q], k);
-            double w = p->m[q] * p->N[4 * q + k];
-            g->m[i] += w;
-            g->px[i] += w * p->vx[q];
-            g->py[i] += w * p->vy[q];
+    int nt = lm_sim_threads(sim);
+    double *const out[3] = {g->m, g->px, g->py};
+#pragma omp parallel num_threads(nt)
+    {
+        int t = LM_THREAD_ID();
+        size_t a, b;
+        double *f[3];
+        lm_thread_range(p->n, t, nt, &a, &b);
+        lm_thread_fields(sim, t, 3, out, f);
+        for (size_t q = a; q < b; q++) {
+            for (int k = 0; k < 4; k++) {
+                int i = corner(g, p->node[q], k);
+                double w = p->m[q] * p->N[4 * q + k];
+                f[0][i] += w;
+                f[1][i] += w * p->vx[q];
+                f[2][i] += w * p->vy[q];
+            }
         }
     }
+    lm_threads_reduce(sim, nt, 3, out);
 }
 
 /* Step 2: f_i^int = -sum_p V_p sigma_p . G_ip ([F] eq 9), f_i^ext = m_i g. */
@@ -46,15 +60,26 @@ void lm_step_forces(lm_sim *sim)
 {
     lm_grid *g = &sim->grid;
     const lm_particles *p = &sim->p;
-    for (size_t q = 0; q < p->n; q++) {
-        double V = p->m[q] / p->rho[q];
-        for (int k = 0; k < 4; k++) {
-            int i = corner(g, p->node[q], k);
-            double gx = p->Gx[4 * q + k], gy = p->Gy[4 * q + k];
-            g->fx[i] -= V * (p->sxx[q] * gx + p->sxy[q] * gy);
-            g->fy[i] -= V * (p->sxy[q] * gx + p->syy[q] * gy);
+    int nt = lm_sim_threads(sim);
+    double *const out[2] = {g->fx, g->fy};
+#pragma omp parallel num_threads(nt)
+    {
+        int t = LM_THREAD_ID();
+        size_t a, b;
+        double *f[2];
+        lm_thread_range(p->n, t, nt, &a, &b);
+        lm_thread_fields(sim, t, 2, out, f);
+        for (size_t q = a; q < b; q++) {
+            double V = p->m[q] / p->rho[q];
+            for (int k = 0; k < 4; k++) {
+                int i = corner(g, p->node[q], k);
+                double gx = p->Gx[4 * q + k], gy = p->Gy[4 * q + k];
+                f[0][i] -= V * (p->sxx[q] * gx + p->sxy[q] * gy);
+                f[1][i] -= V * (p->sxy[q] * gx + p->syy[q] * gy);
+            }
         }
     }
+    lm_threads_reduce(sim, nt, 2, out);
     size_t nn = lm_grid_nodes(g);
     for (size_t i = 0; i < nn; i++) {
         g->fx[i] += g->m[i] * sim->def.gx;
@@ -85,7 +110,9 @@ void lm_step_g2p(lm_sim *sim)
     const lm_grid *g = &sim->grid;
     lm_particles *p = &sim->p;
     double dt = sim->def.dt;
-    for (size_t q = 0; q < p->n; q++) {
+    long n = (long)p->n;
+#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static)
+    for (long q = 0; q < n; q++) {
         double pic = sim->mats[p->mat[q]]->pic;
         if (pic < 0) pic = sim->def.pic;
         double ax = 0, ay = 0, ux = 0, uy = 0;
@@ -116,15 +143,26 @@ void lm_step_strain_velocity(lm_sim *sim)
     const lm_particles *p = &sim->p;
     size_t nn = lm_grid_nodes(g);
     if (sim->def.scheme == LM_MUSL) {
+        int nt = lm_sim_threads(sim);
+        double *const out[2] = {g->vx, g->vy};
         for (size_t i = 0; i < nn; i++) g->vx[i] = g->vy[i] = 0;
-        for (size_t q = 0; q < p->n; q++) {
-            for (int k = 0; k < 4; k++) {
-                int i = corner(g, p->node[q], k);
-                double w = p->m[q] * p->N[4 * q + k];
-                g->vx[i] += w * p->vx[q];
-                g->vy[i] += w * p->vy[q];
+#pragma omp parallel num_threads(nt)
+        {
+            int t = LM_THREAD_ID();
+            size_t a, b;
+            double *f[2];
+            lm_thread_range(p->n, t, nt, &a, &b);
+            lm_thread_fields(sim, t, 2, out, f);
+            for (size_t q = a; q < b; q++) {
+                for (int k = 0; k < 4; k++) {
+                    int i = corner(g, p->node[q], k);
+                    double w = p->m[q] * p->N[4 * q + k];
+                    f[0][i] += w * p->vx[q];
+                    f[1][i] += w * p->vy[q];
+                }
             }
         }
+        lm_threads_reduce(sim, nt, 2, out);
         for (size_t i = 0; i < nn; i++) {
             if (g->m[i] > 0) {
                 g->vx[i] /= g->m[i];
@@ -162,18 +200,24 @@ static int gas_maxima(lm_sim *sim, double *max_div, double *c_max)
 {
     const lm_particles *p = &sim->p;
     int any = 0;
-    *max_div = *c_max = 0;
-    for (size_t q = 0; q < p->n; q++) {
+    double md = 0, cm = 0;
+    long n = (long)p->n;
+    /* maxima do not depend on the order they are taken in */
+#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) \
+    reduction(max : md, cm) reduction(| : any)
+    for (long q = 0; q < n; q++) {
         const lm_material *mat = sim->mats[p->mat[q]];
         if (mat->kind != LM_GAS || !mat->av) continue;
         double L[4];
-        velocity_gradient(&sim->grid, p, q, L);
+        velocity_gradient(&sim->grid, p, (size_t)q, L);
         double div = fabs(L[0] + L[3]);
         double c = lm_gas_sound_speed(mat, p->e[q]);
-        if (div > *max_div) *max_div = div;
-        if (c > *c_max) *c_max = c;
+        if (div > md) md = div;
+        if (c > cm) cm = c;
         any = 1;
     }
+    *max_div = md;
+    *c_max = cm;
     return any;
 }
 
@@ -190,9 +234,11 @@ lm_status lm_step_stress(lm_sim *sim)
     if (st != LM_OK) return st;
     double max_div = 0, c_max = 0;
     gas_maxima(sim, &max_div, &c_max);
-    for (size_t q = 0; q < p->n; q++) {
+    long n = (long)p->n;
+#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static)
+    for (long q = 0; q < n; q++) {
         double L[4];
-        velocity_gradient(g, p, q, L);
+        velocity_gradient(g, p, (size_t)q, L);
         double dexx = dt * L[0], deyy = dt * L[3];
         double dexy = 0.5 * dt * (L[1] + L[2]);
         double w = 0.5 * (L[1] - L[2]);
@@ -236,39 +282,57 @@ static lm_status fail(lm_sim *sim, lm_status st, size_t q, const char *what,
     return st;
 }
 
-/* Stops the run at the first sign of trouble, naming the particle, rather
- * than letting NaN spread through the grid. */
-lm_status lm_step_check(lm_sim *sim)
+/* 0 if particle q is sound (a rounding stray past a wall is put back),
+ * else what is wrong with it: 1 NaN, 2 no volume, 3 out of the domain. */
+static int check_one(lm_sim *sim, size_t q)
 {
-    const lm_particles *p = &sim->p;
+    lm_particles *p = &sim->p;
     const lm_grid *g = &sim->grid;
     double x1 = g->x0 + g->nx * g->hx, y1 = g->y0 + g->ny * g->hy;
-    for (size_t q = 0; q < p->n; q++) {
-        if (!isfinite(p->x[q]) || !isfinite(p->y[q]) || !isfinite(p->vx[q]) ||
-            !isfinite(p->vy[q]) || !isfinite(p->sxx[q]) ||
-            !isfinite(p->syy[q]) || !isfinite(p->sxy[q]))
-            return fail(sim, LM_ERR_UNSTABLE, q, "became NaN or infinite",
-                        "the time step is too large (raise stability: "
-                        "lower dt) or a material parameter is extreme");
-        if (!(p->rho[q] > 0) || !isfinite(p->rho[q]))
-            return fail(sim, LM_ERR_UNSTABLE, q,
-                        "was compressed to zero or negative volume",
-                        "element inversion: the time step is too large or "
-                        "the material too soft for the load");
-        if (p->x[q] < g->x0 || p->x[q] > x1 || p->y[q] < g->y0 || p->y[q] > y1) {
-            /* A point on a wall or symmetry line can stray by rounding
-             * (1e-17 of a cell per step); that is put back, not reported. */
-            double tx = 1e-6 * g->hx, ty = 1e-6 * g->hy;
-            if (p->x[q] < g->x0 - tx || p->x[q] > x1 + tx || p->y[q] < g->y0 - ty ||
-                p->y[q] > y1 + ty)
-                return fail(sim, LM_ERR_DOMAIN, q, "left the domain",
-                            "the domain is too small for the motion, or a "
-                            "'free' side let the body out");
-            p->x[q] = fmin(fmax(p->x[q], g->x0), x1);
-            p->y[q] = fmin(fmax(p->y[q], g->y0), y1);
-        }
+    if (!isfinite(p->x[q]) || !isfinite(p->y[q]) || !isfinite(p->vx[q]) ||
+        !isfinite(p->vy[q]) || !isfinite(p->sxx[q]) || !isfinite(p->syy[q]) ||
+        !isfinite(p->sxy[q]))
+        return 1;
+    if (!(p->rho[q] > 0) || !isfinite(p->rho[q])) return 2;
+    if (p->x[q] < g->x0 || p->x[q] > x1 || p->y[q] < g->y0 || p->y[q] > y1) {
+        /* A point on a wall or symmetry line can stray by rounding (1e-17
+         * of a cell per step); that is put back, not reported. */
+        double tx = 1e-6 * g->hx, ty = 1e-6 * g->hy;
+        if (p->x[q] < g->x0 - tx || p->x[q] > x1 + tx || p->y[q] < g->y0 - ty ||
+            p->y[q] > y1 + ty)
+            return 3;
+        p->x[q] = fmin(fmax(p->x[q], g->x0), x1);
+        p->y[q] = fmin(fmax(p->y[q], g->y0), y1);
     }
-    return LM_OK;
+    return 0;
+}
+
+/* Stops the run at the first sign of trouble, naming the particle (the
+ * lowest-numbered one, whatever the thread count), rather than letting NaN
+ * spread through the grid. */
+lm_status lm_step_check(lm_sim *sim)
+{
+    long n = (long)sim->p.n, first = n;
+#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) \
+    reduction(min : first)
+    for (long q = 0; q < n; q++)
+        if (check_one(sim, (size_t)q) && q < first) first = q;
+    if (first == n) return LM_OK;
+    switch (check_one(sim, (size_t)first)) {
+    case 1:
+        return fail(sim, LM_ERR_UNSTABLE, (size_t)first, "became NaN or infinite",
+                    "the time step is too large (raise stability: "
+                    "lower dt) or a material parameter is extreme");
+    case 2:
+        return fail(sim, LM_ERR_UNSTABLE, (size_t)first,
+                    "was compressed to zero or negative volume",
+                    "element inversion: the time step is too large or "
+                    "the material too soft for the load");
+    default:
+        return fail(sim, LM_ERR_DOMAIN, (size_t)first, "left the domain",
+                    "the domain is too small for the motion, or a "
+                    "'free' side let the body out");
+    }
 }
 
 void lm_sim_set_dt(lm_sim *sim, double dt)
@@ -296,6 +360,8 @@ lm_status lm_sim_step(lm_sim *sim)
         lm_status st = lm_sim_prepare(sim);
         if (st != LM_OK) return st;
     }
+    lm_status st = lm_threads_reserve(sim);
+    if (st != LM_OK) return st;
     lm_grid_clear(&sim->grid);
     lm_step_shape(sim);
     lm_step_p2g(sim);
@@ -303,7 +369,7 @@ lm_status lm_sim_step(lm_sim *sim)
     lm_step_grid_update(sim);
     lm_step_g2p(sim);
     lm_step_strain_velocity(sim);
-    lm_status st = lm_step_stress(sim);
+    st = lm_step_stress(sim);
     sim->step++;
     if (st != LM_OK) return st;
     /* t from the step count, so that long runs do not accumulate dt's
