@@ -3,10 +3,18 @@
  * phi contours (phi = 1 bold, phi = 0 through the random point), membrane
  * points as open circles, the random point as an asterisk, computed
  * normals solid and exact normals dashed, the element outline; 3D panels
- * show the cube, points and arrows in an orthographic projection.
+ * show the cube, points and arrows seen from azimuth / elevation.
+ *
+ * 3D panels are a view of their own (src/render/view3d.h): what is drawn
+ * into them is kept as a scene and drawn when the figure is written -
+ * through OpenGL with a depth buffer (OSMesa: spheres, shaded cone heads,
+ * hidden parts hidden) when lamina has OSMesa, otherwise as cairo's
+ * orthographic projection in painter's order, with the same camera.
+ * `backend = "cairo" | "osmesa"` (or `lamina run --backend`) chooses; the
+ * PNG says which in its "lamina:view3d" text chunk.
  *
  *   local fig = lamina.figure{ width = 800, height = 800, panels = {2, 2},
- *                              title = "..." }
+ *                              title = "...", backend = "osmesa" }
  *   fig:panel{ index = 1, window = {0, 0, 1, 1}, title = "(a)" }
  *   fig:normals{ result = r, points = pts, exact = exact_normals }
  *   fig:write("out/fig.png")
@@ -21,6 +29,7 @@
 #include "l_normals.h"
 #include "layers.h"
 #include "render.h"
+#include "view3d.h"
 
 #define MAX_PANELS 36
 
@@ -32,11 +41,22 @@ typedef struct la_panel {
     double lo[3], hi[3];        /* its world window (2D) or box (3D) */
     int dim;
     int captions;               /* caption lines drawn so far */
+    size_t scene;               /* 3D: its view in la_figure.views, + 1 */
 } la_panel;
 
+/* A 3D panel's view and what was drawn into it, drawn at fig:write. A
+ * panel given a new box keeps its old view here too, drawn first. */
+typedef struct la_view3d {
+    lr_view view;
+    lr_scene3d *scene;
+} la_view3d;
+
 typedef struct la_figure {
-    lr_canvas *canvas;
+    lr_canvas *canvas;          /* everything but the 3D views */
     int width, height, cols, rows, cur;
+    lr_backend view3d;          /* draws the 3D views */
+    la_view3d *views;
+    size_t nviews, capviews;
     la_panel panels[MAX_PANELS];
 } la_figure;
 
@@ -57,6 +77,19 @@ static la_figure *check_fig(lua_State *L)
     if (!f->canvas)
         luaL_error(L, "figure: already freed");
     return f;
+}
+
+/* The scene of a 3D panel. */
+static lr_scene3d *scene(la_figure *f, const la_panel *p)
+{
+    return f->views[p->scene - 1].scene;
+}
+
+/* A scene call's result: out of memory is a Lua error. */
+static void added(lua_State *L, int rc, const char *fn)
+{
+    if (rc != 0)
+        luaL_error(L, "%s: out of memory", fn);
 }
 
 static la_panel *current(lua_State *L, la_figure *f, const char *fn)
@@ -164,9 +197,30 @@ static int read_box(lua_State *L, int idx, const char *fn, const char *key,
 
 /* ---- lamina.figure{...} ------------------------------------------------- */
 
+/* What draws the 3D panels: backend = "cairo" | "osmesa"; else `lamina run
+ * --backend`; else OSMesa when this lamina has it, cairo otherwise. */
+static lr_backend view3d_backend(lua_State *L, const char *fn)
+{
+    const char *name = la_opt_string(L, 1, fn, "backend", NULL);
+    const lamina_run *run = la_run(L);
+    lr_backend b = LR_BACKEND_CAIRO;
+    char why[160];
+    if (!name && run && run->backend)
+        name = run->backend;
+    if (!name)
+        return lr_backend_check(LR_BACKEND_OSMESA, NULL, 0) == 0 ? LR_BACKEND_OSMESA
+                                                                 : LR_BACKEND_CAIRO;
+    if (lr_backend_parse(name, &b, why, sizeof why) != 0)
+        luaL_error(L, "%s: %s", fn, why);
+    if (lr_backend_check(b, why, sizeof why) != 0)
+        luaL_error(L, "%s: backend = \"%s\": %s", fn, name, why);
+    return b;
+}
+
 int la_figure_new(lua_State *L)
 {
-    static const char *const keys[] = {"width", "height", "panels", "title", NULL};
+    static const char *const keys[] = {"width", "height", "panels", "title",
+                                       "backend", NULL};
     const char *fn = "lamina.figure";
     if (lua_isnoneornil(L, 1))
         lua_newtable(L);
@@ -185,9 +239,11 @@ int la_figure_new(lua_State *L)
         return luaL_error(L, "%s: 'panels' must be {columns, rows}, at most %d panels",
                           fn, MAX_PANELS);
     const char *title = la_opt_string(L, 1, fn, "title", NULL);
+    lr_backend view3d = view3d_backend(L, fn);
     la_figure *f = lua_newuserdatauv(L, sizeof *f, 0);
     memset(f, 0, sizeof *f);
     luaL_setmetatable(L, LA_FIGURE);
+    f->view3d = view3d;
     char err[256];
     f->canvas = lr_canvas_cairo_new((int)w, (int)h, err, sizeof err);
     if (!f->canvas)
@@ -253,31 +309,56 @@ static int l_panel(lua_State *L)
     double vx = p->px, vy = p->py + band, vw = p->pw, vh = p->ph - 3.0 * band;
     double m = 0.05 * fmin(vw, vh);
     if (d2 || d3) {
-        p->set = 1;
-        p->dim = d3 ? 3 : 2;
-        memcpy(p->lo, lo, sizeof lo);
-        memcpy(p->hi, hi, sizeof hi);
-        p->captions = 0;
-        if (d3)
-            lr_view_3d(&p->view, vx + m, vy + m, vw - 2 * m, vh - 2 * m, lo, hi,
-                       la_opt_number(L, 2, fn, "azimuth", -60),
-                       la_opt_number(L, 2, fn, "elevation", 25));
-        else
-            lr_view_2d(&p->view, vx + m, vy + m, vw - 2 * m, vh - 2 * m, lo[0], lo[1],
+        lr_view view;
+        la_view3d *e = NULL;
+        if (d3) {
+            double az = la_opt_number(L, 2, fn, "azimuth", -60);
+            double el = la_opt_number(L, 2, fn, "elevation", 25);
+            if (!isfinite(az) || !(el >= -90 && el <= 90))
+                return luaL_error(L, "%s: 'azimuth' must be finite and 'elevation' "
+                                  "in [-90, 90] degrees", fn);
+            lr_view_3d(&view, vx + m, vy + m, vw - 2 * m, vh - 2 * m, lo, hi, az, el);
+            /* room for its scene first: the panel changes only when all is well */
+            if (f->nviews == f->capviews) {
+                size_t cap = f->capviews ? 2 * f->capviews : 4;
+                la_view3d *q = realloc(f->views, cap * sizeof *q);
+                if (!q)
+                    return luaL_error(L, "%s: out of memory", fn);
+                f->views = q;
+                f->capviews = cap;
+            }
+            e = &f->views[f->nviews];
+            e->scene = lr_scene3d_new();
+            if (!e->scene)
+                return luaL_error(L, "%s: out of memory", fn);
+        } else {
+            lr_view_2d(&view, vx + m, vy + m, vw - 2 * m, vh - 2 * m, lo[0], lo[1],
                        hi[0], hi[1]);
+        }
         /* drawing stays in the panel, off its title and caption lines, and
          * in 2D within the margin around the window */
         double c0 = vx, c1 = vy, c2 = vx + vw, c3 = vy + vh;
         if (!d3) {
             double a[3] = {lo[0], hi[1], 0}, b[3] = {hi[0], lo[1], 0}, ax, ay, bx, by;
-            lr_view_map(&p->view, a, &ax, &ay);
-            lr_view_map(&p->view, b, &bx, &by);
+            lr_view_map(&view, a, &ax, &ay);
+            lr_view_map(&view, b, &bx, &by);
             c0 = fmax(c0, ax - m);
             c1 = fmax(c1, ay - m);
             c2 = fmin(c2, bx + m);
             c3 = fmin(c3, by + m);
         }
-        lr_view_clip(&p->view, c0, c1, c2, c3);
+        lr_view_clip(&view, c0, c1, c2, c3);
+        p->set = 1;
+        p->dim = d3 ? 3 : 2;
+        memcpy(p->lo, lo, sizeof lo);
+        memcpy(p->hi, hi, sizeof hi);
+        p->captions = 0;
+        p->view = view;
+        p->scene = 0;
+        if (e) {
+            e->view = view;
+            p->scene = ++f->nviews;
+        }
     }
     const char *title = la_opt_string(L, 2, fn, "title", NULL);
     if (title)
@@ -310,19 +391,22 @@ static int l_caption(lua_State *L)
 
 /* The element: a rectangle, or in 3D the box with its hidden edges dashed
  * and the axis names at the far ends of the three edges from lo. */
-static void draw_box(la_figure *f, const la_panel *p, const double lo[3],
-                     const double hi[3], double width, lr_rgba colour)
+static void draw_box(lua_State *L, la_figure *f, const la_panel *p,
+                     const double lo[3], const double hi[3], double width,
+                     lr_rgba colour)
 {
-    lr_layer_box(f->canvas, &p->view, lo, hi, width, colour);
-    if (!p->view.is3d)
+    if (!p->view.is3d) {
+        lr_layer_box(f->canvas, &p->view, lo, hi, width, colour);
         return;
+    }
+    lr_scene3d *s = scene(f, p);
+    added(L, lr_scene3d_box(s, lo, hi, width, colour), "figure");
     static const char *const names[] = {"x", "y", "z"};
     for (int a = 0; a < 3; a++) {
-        double q[3] = {lo[0], lo[1], lo[2]}, px, py;
+        double q[3] = {lo[0], lo[1], lo[2]};
         q[a] = hi[a] + 0.1 * (hi[a] - lo[a]);
-        lr_view_map(&p->view, q, &px, &py);
-        lr_canvas_text(f->canvas, px, py + 0.35 * p->font, p->font, TEXT,
-                       LR_ALIGN_CENTER, names[a]);
+        added(L, lr_scene3d_text(s, q, 0.0, 0.35 * p->font, p->font, TEXT,
+                                 LR_ALIGN_CENTER, names[a]), "figure");
     }
 }
 
@@ -342,7 +426,7 @@ static int l_outline(lua_State *L)
         memcpy(lo, p->lo, sizeof lo);
         memcpy(hi, p->hi, sizeof hi);
     }
-    draw_box(f, p, lo, hi, la_opt_number(L, 2, fn, "width", 1.5),
+    draw_box(L, f, p, lo, hi, la_opt_number(L, 2, fn, "width", 1.5),
              read_colour(L, 2, fn, "colour", BLACK));
     lua_settop(L, 1);
     return 1;
@@ -371,6 +455,13 @@ static int l_grid(lua_State *L)
             double c[3] = {lo[0], lo[1] + (hi[1] - lo[1]) * j / ny, 0};
             double d[3] = {hi[0], c[1], 0};
             double ax, ay, bx, by;
+            if (p->view.is3d) {
+                if (j == 0)
+                    added(L, lr_scene3d_line(scene(f, p), a, b, w, k, 0.0), fn);
+                if (i == 0)
+                    added(L, lr_scene3d_line(scene(f, p), c, d, w, k, 0.0), fn);
+                continue;
+            }
             if (j == 0) {
                 lr_view_map(&p->view, a, &ax, &ay);
                 lr_view_map(&p->view, b, &bx, &by);
@@ -501,7 +592,18 @@ static int l_points(lua_State *L)
     double w = la_opt_number(L, 2, fn, "width", 1.4);
     lr_rgba k = read_colour(L, 2, fn, "colour", BLACK);
     const double *const cq[3] = {q[0], q[1], q[2]};
-    if (style == 0)
+    if (p->view.is3d) {
+        lr_scene3d *s = scene(f, p);
+        if (style == 0)
+            added(L, lr_scene3d_circles(s, n, cq, size, w, k), fn);
+        else if (style == 2)
+            added(L, lr_scene3d_dots(s, n, cq, size, k), fn);
+        else
+            for (size_t i = 0; i < n; i++) {
+                double x[3] = {q[0][i], q[1][i], q[2][i]};
+                added(L, lr_scene3d_asterisk(s, x, size, w, k), fn);
+            }
+    } else if (style == 0)
         lr_layer_circles(f->canvas, &p->view, n, p->dim, cq, size, w, k);
     else if (style == 2)
         lr_layer_dots(f->canvas, &p->view, n, p->dim, cq, size, k);
@@ -531,8 +633,12 @@ static void arrows(lua_State *L, la_figure *f, la_panel *p, int at, int dir,
     if (m != n)
         luaL_error(L, "%s: %d points but %d directions", fn, (int)n, (int)m);
     const double *const cq[3] = {q[0], q[1], q[2]}, *const cd[3] = {d[0], d[1], d[2]};
-    lr_layer_arrows(f->canvas, &p->view, n, p->dim, cq, cd, length, width,
-                    fmax(7.0, 3.5 * width), k, dashed ? 5.0 : 0.0);
+    if (p->view.is3d)
+        added(L, lr_scene3d_arrows(scene(f, p), n, cq, cd, length, width,
+                                   fmax(7.0, 3.5 * width), k, dashed ? 5.0 : 0.0), fn);
+    else
+        lr_layer_arrows(f->canvas, &p->view, n, p->dim, cq, cd, length, width,
+                        fmax(7.0, 3.5 * width), k, dashed ? 5.0 : 0.0);
 }
 
 /* fig:arrows{at =, dir =, length =, style = "solid" | "dashed", colour =,
@@ -569,9 +675,12 @@ static int l_polyline(lua_State *L)
     int dashed = lua_toboolean(L, -1);
     lua_pop(L, 1);
     const double *const cq[3] = {q[0], q[1], q[2]};
-    lr_layer_polyline(f->canvas, &p->view, n, p->dim, cq,
-                      la_opt_number(L, 2, fn, "width", 1.0),
-                      read_colour(L, 2, fn, "colour", GREY), dashed ? 4.0 : 0.0);
+    double w = la_opt_number(L, 2, fn, "width", 1.0);
+    lr_rgba k = read_colour(L, 2, fn, "colour", GREY);
+    if (p->view.is3d)
+        added(L, lr_scene3d_polyline(scene(f, p), n, cq, w, k, dashed ? 4.0 : 0.0), fn);
+    else
+        lr_layer_polyline(f->canvas, &p->view, n, p->dim, cq, w, k, dashed ? 4.0 : 0.0);
     lua_settop(L, 1);
     return 1;
 }
@@ -600,9 +709,14 @@ static int l_text(lua_State *L)
     }
     lua_pop(L, 1);
     int al = la_option(L, fn, "align", la_opt_string(L, 2, fn, "align", "left"), aligns);
-    lr_view_map(&p->view, v, &x, &y);
-    lr_canvas_text(f->canvas, x, y, la_opt_number(L, 2, fn, "size", 0.9 * p->font),
-                   read_colour(L, 2, fn, "colour", TEXT), (lr_align)al, t);
+    double size = la_opt_number(L, 2, fn, "size", 0.9 * p->font);
+    lr_rgba k = read_colour(L, 2, fn, "colour", TEXT);
+    if (p->view.is3d) {
+        added(L, lr_scene3d_text(scene(f, p), v, 0.0, 0.0, size, k, (lr_align)al, t), fn);
+    } else {
+        lr_view_map(&p->view, v, &x, &y);
+        lr_canvas_text(f->canvas, x, y, size, k, (lr_align)al, t);
+    }
     lua_settop(L, 1);
     return 1;
 }
@@ -621,8 +735,12 @@ static void draw_random_points(lua_State *L, la_figure *f, la_panel *p, int tbl)
                 x[a] = lua_tonumber(L, -1);
                 lua_pop(L, 1);
             }
-            lr_layer_asterisk(f->canvas, &p->view, x, 14, 1.5,
-                              which ? VERMILION : BLACK);
+            if (p->view.is3d)
+                added(L, lr_scene3d_asterisk(scene(f, p), x, 14, 1.5,
+                                             which ? VERMILION : BLACK), "figure:normals");
+            else
+                lr_layer_asterisk(f->canvas, &p->view, x, 14, 1.5,
+                                  which ? VERMILION : BLACK);
         }
         lua_pop(L, 1);
     }
@@ -638,14 +756,14 @@ static void draw_elements(lua_State *L, la_figure *f, la_panel *p, int res)
             lua_rawgeti(L, -1, (lua_Integer)k);
             double lo[3], hi[3];
             if (read_box(L, lua_gettop(L), "figure:normals", "box", lo, hi))
-                draw_box(f, p, lo, hi, 1.2, BLACK);
+                draw_box(L, f, p, lo, hi, 1.2, BLACK);
             draw_random_points(L, f, p, lua_gettop(L));
             lua_pop(L, 1);
         }
     } else {
         double lo[3], hi[3];
         if (read_box(L, res, "figure:normals", "box", lo, hi))
-            draw_box(f, p, lo, hi, 1.5, BLACK);
+            draw_box(L, f, p, lo, hi, 1.5, BLACK);
     }
     lua_pop(L, 1);
 }
@@ -702,7 +820,10 @@ static int l_normals(lua_State *L)
     double *q[3];
     size_t n = read_list(L, 2, fn, "points", p->dim, q);
     const double *const cq[3] = {q[0], q[1], q[2]};
-    lr_layer_circles(f->canvas, &p->view, n, p->dim, cq, 6.0, 1.4, BLACK);
+    if (p->view.is3d)
+        added(L, lr_scene3d_circles(scene(f, p), n, cq, 6.0, 1.4, BLACK), fn);
+    else
+        lr_layer_circles(f->canvas, &p->view, n, p->dim, cq, 6.0, 1.4, BLACK);
     draw_random_points(L, f, p, res);
     lua_settop(L, 1);
     return 1;
@@ -710,9 +831,45 @@ static int l_normals(lua_State *L)
 
 /* ---- output ----------------------------------------------------------------------- */
 
+/* Each 3D view drawn alone on a canvas of its clip rectangle, through the
+ * figure's 3D backend, and laid over the figure's pixels; the figure's own
+ * canvas is left as it was, so a later write draws the views again. */
+static int draw_views(la_figure *f, unsigned char *rgba, char *err, size_t errlen)
+{
+    for (size_t i = 0; i < f->nviews; i++) {
+        const la_view3d *e = &f->views[i];
+        if (lr_scene3d_count(e->scene) == 0)
+            continue;
+        lr_view v = e->view;
+        int x0 = (int)fmax(0.0, floor(v.clip[0])), y0 = (int)fmax(0.0, floor(v.clip[1]));
+        int x1 = (int)fmin(f->width, ceil(v.clip[2]));
+        int y1 = (int)fmin(f->height, ceil(v.clip[3]));
+        if (x1 <= x0 || y1 <= y0)
+            continue;
+        lr_canvas *c = lr_canvas_new(f->view3d, x1 - x0, y1 - y0, err, errlen);
+        if (!c)
+            return -1;
+        lr_view_offset(&v, -x0, -y0);
+        if (lr_scene3d_draw(c, &v, e->scene, err, errlen) != 0) {
+            lr_canvas_free(c);
+            return -1;
+        }
+        unsigned char *layer = lr_canvas_read_rgba(c);
+        lr_canvas_free(c);
+        if (!layer) {
+            snprintf(err, errlen, "the 3D view could not be drawn (%s failed or out of "
+                     "memory)", lr_backend_name(f->view3d));
+            return -1;
+        }
+        lr_rgba_over(rgba, f->width, f->height, layer, x1 - x0, y1 - y0, x0, y0);
+        free(layer);
+    }
+    return 0;
+}
 
 /* fig:write(path) or fig:write{file = path}: the PNG, atomically, with the
- * provenance of sim:frame (Software, lamina:script, -hash, lamina:set). */
+ * provenance of sim:frame (Software, lamina:script, -hash, lamina:set) and,
+ * when it has 3D panels, what drew them (lamina:view3d = cairo | osmesa). */
 static int l_write(lua_State *L)
 {
     const char *fn = "figure:write";
@@ -734,7 +891,19 @@ static int l_write(lua_State *L)
         return luaL_error(L, "%s: the drawing failed (cairo error or out of memory)",
                           fn);
     char err[512];
-    int rc = lr_png_write(file, f->width, f->height, rgba, prov.text, 4, err, sizeof err);
+    if (draw_views(f, rgba, err, sizeof err) != 0) {
+        free(rgba);
+        return luaL_error(L, "%s: %s", fn, err);
+    }
+    lr_text_chunk text[5];
+    memcpy(text, prov.text, sizeof prov.text);
+    size_t ntext = 4;
+    if (f->nviews) {
+        text[4].key = "lamina:view3d";
+        text[4].value = lr_backend_name(f->view3d);
+        ntext = 5;
+    }
+    int rc = lr_png_write(file, f->width, f->height, rgba, text, ntext, err, sizeof err);
     free(rgba);
     if (rc)
         return luaL_error(L, "%s: %s", fn, err);
@@ -748,6 +917,11 @@ static int l_gc(lua_State *L)
     la_figure *f = luaL_checkudata(L, 1, LA_FIGURE);
     lr_canvas_free(f->canvas);
     f->canvas = NULL;
+    for (size_t i = 0; i < f->nviews; i++)
+        lr_scene3d_free(f->views[i].scene);
+    free(f->views);
+    f->views = NULL;
+    f->nviews = f->capviews = 0;
     return 0;
 }
 

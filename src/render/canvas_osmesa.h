@@ -52,6 +52,9 @@ typedef struct gl_engine {
     /* fills: an off-screen coverage buffer (canvas_osmesa_fill.c) */
     GLuint fill_fbo, fill_tex, fill_stencil;
     int fill_w, fill_h;
+    /* 3D views (canvas_osmesa_view3d.c): compiled at the first one */
+    GLuint view3d_prog;
+    GLint view3d_size;
 } gl_engine;
 
 typedef struct gl_canvas {
@@ -79,6 +82,10 @@ void gl_use(gl_canvas *c);
 
 /* canvas_osmesa_gl.c */
 int gl_programs_init(gl_engine *e, char *err, size_t errlen);
+/* Compiles and links a program with the attributes at fixed locations; 0
+ * with a message on failure. */
+GLuint gl_link(const char *vs, const char *fs, const char *const *attribs,
+               const GLuint *locs, int nattribs, char *err, size_t errlen);
 void gl_programs_free(gl_engine *e);
 /* Points the programs at c's size (its viewport and pad). */
 void gl_programs_viewport(gl_canvas *c);

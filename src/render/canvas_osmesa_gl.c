@@ -174,8 +174,8 @@ static GLuint compile(GLenum type, const char *src, char *err, size_t errlen)
     return s;
 }
 
-static GLuint link(const char *vs, const char *fs, const char *const *attribs,
-                   const GLuint *locs, int nattribs, char *err, size_t errlen)
+GLuint gl_link(const char *vs, const char *fs, const char *const *attribs,
+               const GLuint *locs, int nattribs, char *err, size_t errlen)
 {
     GLuint v = compile(GL_VERTEX_SHADER, vs, err, errlen);
     GLuint f = v ? compile(GL_FRAGMENT_SHADER, fs, err, errlen) : 0;
@@ -211,11 +211,11 @@ int gl_programs_init(gl_engine *e, char *err, size_t errlen)
     static const GLuint point_loc[] = { A_POS, A_COL };
     static const char *const text_attr[] = { "a_pos", "a_uv" };
     static const GLuint text_loc[] = { A_POS, A_UV };
-    e->shape_prog = link(shape_vs, shape_fs, shape_attr, shape_loc, 4, err, errlen);
+    e->shape_prog = gl_link(shape_vs, shape_fs, shape_attr, shape_loc, 4, err, errlen);
     if (e->shape_prog)
-        e->point_prog = link(point_vs, point_fs, point_attr, point_loc, 2, err, errlen);
+        e->point_prog = gl_link(point_vs, point_fs, point_attr, point_loc, 2, err, errlen);
     if (e->point_prog)
-        e->text_prog = link(text_vs, text_fs, text_attr, text_loc, 2, err, errlen);
+        e->text_prog = gl_link(text_vs, text_fs, text_attr, text_loc, 2, err, errlen);
     if (!e->text_prog)
         return -1;
     e->shape_vp = glGetUniformLocation(e->shape_prog, "u_vp");
@@ -252,6 +252,7 @@ void gl_programs_free(gl_engine *e)
     glDeleteProgram(e->shape_prog);     /* 0 is ignored */
     glDeleteProgram(e->point_prog);
     glDeleteProgram(e->text_prog);
+    glDeleteProgram(e->view3d_prog);
     if (e->text_texture)
         glDeleteTextures(1, &e->text_texture);
     gl_fill_free(e);

@@ -114,3 +114,15 @@ void lr_view_line(lr_canvas *c, const lr_view *v, double ax, double ay, double b
     }
     lr_canvas_line(c, ax, ay, bx, by, width, colour, dash);
 }
+
+void lr_view_offset(lr_view *v, double dx, double dy)
+{
+    v->ox += dx;
+    v->oy += dy;
+    if (v->clip[2] > v->clip[0]) {
+        v->clip[0] += dx;
+        v->clip[1] += dy;
+        v->clip[2] += dx;
+        v->clip[3] += dy;
+    }
+}

@@ -42,6 +42,9 @@ void lr_view_3d(lr_view *v, double px, double py, double pw, double ph,
 void lr_view_map(const lr_view *v, const double p[3], double *x, double *y);
 /* Layers draw inside this pixel rectangle only (a panel of a figure). */
 void lr_view_clip(lr_view *v, double x0, double y0, double x1, double y1);
+/* Moves the view (and its clip rectangle) by dx, dy pixels: the same
+ * picture on a canvas whose origin is elsewhere (a panel drawn alone). */
+void lr_view_offset(lr_view *v, double dx, double dy);
 /* A line in pixels, clipped to the view's rectangle (Liang-Barsky). */
 void lr_view_line(lr_canvas *c, const lr_view *v, double ax, double ay, double bx,
                   double by, double width, lr_rgba colour, double dash);
