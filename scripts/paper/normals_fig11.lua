@@ -2,6 +2,9 @@
 -- source: normals paper Fig 11 (a-b) ([N] §6): 27 x 27 systems on the unit cube
 -- look: (a) 30 points on the plane 0.5x + 0.25y - z = 0, (b) 29 points on the sphere
 --       x^2 + y^2 + z^2 = 0.8^2; in both the computed normals (solid) hide the exact ones (dashed).
+--       The 3D views are drawn by OpenGL through OSMesa when lamina has it (depth-tested:
+--       points as spheres, arrow heads as cones, what is behind hidden), else as cairo's
+--       projection from the same camera.
 -- checks: both exact to round-off (paper: "The normals are computed exactly in both cases"); the
 --         rank of each system: the sphere's 29 points determine all 27 unknowns, while any points
 --         on a plane leave 8 free (the plane times any multilinear function vanishes there), so

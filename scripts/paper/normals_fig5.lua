@@ -3,7 +3,9 @@
 -- look: (a) nine points on the plane 0.5x + 0.25y - z = 0, the computed normals (solid) on top of
 --       the exact ones (dashed), all parallel; (b) eight points on the sphere x^2 + y^2 + z^2 = 0.8^2
 --       in the cube's corner octant, computed normals leaning a few degrees off the radial
---       (dashed) ones.
+--       (dashed) ones. The 3D views are drawn by OpenGL through OSMesa when lamina has it
+--       (depth-tested: points as spheres, arrow heads as cones, what is behind hidden), else
+--       as cairo's projection from the same camera.
 -- checks: (a) exact to round-off; (b) max and rms angle error (paper: max 13 degrees, rms 3
 --         degrees; the paper's rms is sqrt(sum e^2)/n, see normals_fig4.lua, printed beside the
 --         usual rms).
