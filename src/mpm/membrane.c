@@ -51,11 +51,15 @@ static void orient_away(lm_particles *p, const lm_body *bd)
 }
 
 /* The normals paper's construction (or a dissertation variant) on the
- * simulation's own grid, from the points alone. The random points come
+ * simulation's own grid, from the points alone: "isosurface" is the
+ * construction on centred elements with the curvature rows
+ * (normals_centred.c, docs/normals.md), "hybrid" the paper's per-cell rule
+ * ([N] §8), "linear" and "mass_matrix" per cell. The random points come
  * from the simulation's seed, the body and the step, so a run is
- * reproducible. A point whose normal is undefined keeps last step's
- * tangent. The sign of the normal does not matter to the stress
- * (sigma_t t(x)t, t.de.t); it is oriented only for drawing. */
+ * reproducible; cond(T) is not needed here and not computed. A point whose
+ * normal is undefined keeps last step's tangent. The sign of the normal
+ * does not matter to the stress (sigma_t t(x)t, t.de.t); it is oriented
+ * only for drawing. */
 static lm_status without_connectivity(lm_sim *sim, int b)
 {
     const lm_body *bd = &sim->bodies[b];
@@ -64,7 +68,11 @@ static lm_status without_connectivity(lm_sim *sim, int b)
     lm_ngrid g = {2, {sim->grid.x0, sim->grid.y0, 0}, {sim->grid.hx, sim->grid.hy, 1},
                   {sim->grid.nx, sim->grid.ny, 1}};
     lm_nopts o;
-    lm_nopts_default(&o);
+    if (bd->normals == LM_NORMALS_ISOSURFACE)
+        lm_nopts_centred(&o);
+    else
+        lm_nopts_default(&o);
+    o.skip_cond = 1;
     o.seed = lm_nrng_mix(sim->def.seed, ((uint64_t)b << 40) ^ (uint64_t)sim->step);
     o.orient = bd->orient == 1 ? LM_NORIENT_AWAY
              : bd->orient == 2 ? LM_NORIENT_NEIGHBOURS : LM_NORIENT_NONE;
@@ -91,8 +99,8 @@ static lm_status without_connectivity(lm_sim *sim, int b)
         e = lm_normals_quadratic_colour(&g, n, x, nrm, flags, why, sizeof why);
         break;
     default:
-        o.basis = bd->normals == LM_NORMALS_ISOSURFACE ? LM_NB_QUADRATIC
-                : bd->normals == LM_NORMALS_HYBRID ? LM_NB_HYBRID : LM_NB_LINEAR;
+        if (bd->normals != LM_NORMALS_ISOSURFACE)
+            o.basis = bd->normals == LM_NORMALS_HYBRID ? LM_NB_HYBRID : LM_NB_LINEAR;
         o.solver = bd->normals == LM_NORMALS_MASS_MATRIX ? LM_NS_NORMAL : LM_NS_QR;
         e = lm_normals_grid(&g, n, x, &o, nrm, flags, NULL, why, sizeof why);
         break;

@@ -112,7 +112,7 @@ typedef struct lm_particles {
 /* How a membrane finds its normals (physics.md §3). */
 typedef enum lm_normals {
     LM_NORMALS_CONNECTIVITY = 0, /* neighbours in curve order ([F] §3.2) */
-    LM_NORMALS_ISOSURFACE,       /* phi = 1 of a per-cell quadratic fit ([N] §5) */
+    LM_NORMALS_ISOSURFACE,       /* phi = 1 on centred elements (normals_centred.c) */
     LM_NORMALS_HYBRID,           /* [N] §8: quadratic / linear / merged by count */
     LM_NORMALS_LINEAR,           /* per-cell linear fit ([N] §4) */
     LM_NORMALS_COLOUR,           /* [T] §7.1 simple colour function */

@@ -118,6 +118,11 @@ typedef struct lm_lsq_info {
  * rank < n. Returns LM_NERR_NONE or LM_NERR_MEMORY. */
 lm_nerr lm_lsq_qr(int m, int n, double *A, double *b, double *x,
                   lm_lsq_info *info);
+/* The same; with want_cond = 0 the singular values are not computed
+ * (cond_t and cond_t_rank are NAN): half the cost of a small fit, for the
+ * per-step normals of a simulation, which never read cond(T). */
+lm_nerr lm_lsq_qr_cond(int m, int n, double *A, double *b, double *x,
+                       lm_lsq_info *info, int want_cond);
 /* The normal equations (A^T A) x = A^T b by Gaussian elimination with
  * partial pivoting ([N] eq 13). A and b are not changed. An exactly zero
  * pivot gives LM_NERR_SINGULAR. */
@@ -148,6 +153,15 @@ typedef struct lm_nfit_opts {
                                    cond(T) exceeds it ([N] §4 suggests it) */
     int min_points;             /* fewer distinct points: LM_NERR_TOO_FEW
                                    (0: the dimension, 2 in 2D, 3 in 3D) */
+    /* Not in the paper; 0 (the default) leaves its construction as is.
+     * Used together by the centred elements of lm_normals_grid. */
+    double smooth;              /* > 0: rows penalising the anisotropic part
+                                   of phi's curvature, weight smooth * sqrt(
+                                   rows) (quadratic basis; normals_smooth.c) */
+    double clearance;           /* > 0: the random point at least this far
+                                   (in the element's logical units) from
+                                   every membrane point, else redrawn */
+    int skip_cond;              /* 1: cond(T) not computed (NAN) */
 } lm_nfit_opts;
 
 void lm_nfit_opts_default(lm_nfit_opts *o);
@@ -162,6 +176,7 @@ typedef struct lm_nfit {
     int has_q2;
     double q2[3];               /* the phi = 2 point */
     int rows;                   /* equations: points + 1 (+ 1) */
+    int smooth_rows;            /* penalty rows added (opts.smooth > 0) */
     int npoints, nunique;       /* membrane points, distinct ones */
     lm_lsq_info info;
     lm_nsolver solver;
@@ -182,6 +197,19 @@ lm_nerr lm_nfit_element(const lm_nbox *box, const double *const x[3],
  * the same point). */
 int lm_npoints_unique(const lm_nbox *b, const double *const x[3],
                       const size_t *idx, size_t k);
+
+/* ---- the curvature penalty (normals_smooth.c) ------------------------------- */
+
+/* Most rows lm_nsmooth_rows writes (3D quadratic: 27 + 36). */
+#define LM_NSMOOTH_MAXROWS 63
+/* Rows w (D_p - mean_q D_q) phi = 0 for every second difference D_p of the
+ * quadratic coefficients along one axis (world-scaled), and w C phi = 0
+ * for every mixed difference C, into S (rows of lm_nbasis_count(b, dim)
+ * entries). Returns their number; 0 for the linear basis. A phi with
+ * isotropic constant curvature - a + b.x + c |x|^2: planes, lines, circles,
+ * spheres - makes every row zero. */
+int lm_nsmooth_rows(lm_nbasis b, const lm_nbox *box, double w, double *S);
+
 /* phi anywhere: the sum over this element's basis functions (a local
  * B-spline function; it decays to 0 away from the element). */
 double lm_nfit_phi(const lm_nfit *f, const double x[3]);
@@ -208,6 +236,14 @@ typedef enum lm_norient {
     LM_NORIENT_AWAY             /* point away from orient_point */
 } lm_norient;
 
+/* Which elements the points take their normals from. */
+typedef enum lm_nelement {
+    LM_NELEM_CELL = 0,          /* each cell's own fit, merged 2x2, 4x4 ...
+                                   when short of points ([N] §3-4, §8) */
+    LM_NELEM_CENTRED = 1        /* one-cell elements centred on the half-cell
+                                   lattice nearest each point (normals_centred.c) */
+} lm_nelement;
+
 typedef struct lm_nopts {
     lm_nbasis basis;            /* LINEAR, QUADRATIC or HYBRID */
     lm_nsolver solver;
@@ -220,20 +256,35 @@ typedef struct lm_nopts {
     double cond_limit;          /* see lm_nfit_opts */
     lm_norient orient;
     double orient_point[3];
+    lm_nelement element;        /* CELL (default) or CENTRED */
+    double smooth, clearance;   /* for every fit: see lm_nfit_opts */
+    int skip_cond;              /* for every fit: cond(T) not computed */
 } lm_nopts;
 
 void lm_nopts_default(lm_nopts *o);
 
+/* The robust construction for dynamic runs (docs/normals.md, "Centred
+ * elements"): the defaults with element = CENTRED, the quadratic basis,
+ * smooth = LM_NSMOOTH and clearance = LM_NCLEARANCE. */
+#define LM_NSMOOTH 2e-3
+#define LM_NCLEARANCE 0.1
+void lm_nopts_centred(lm_nopts *o);
+
 typedef struct lm_nelem {
-    int cell[3];                /* the cell whose points take this normal */
-    int lo[3], size;            /* the block solved: lower cell, cells/axis */
+    int cell[3];                /* the cell whose points take this normal
+                                   (CENTRED: the cell holding its centre) */
+    int lo[3], size;            /* the block solved: lower cell, cells/axis
+                                   (CENTRED: the cells it overlaps from lo;
+                                   size = its width in cells) */
     lm_nfit fit;
 } lm_nelem;
 
 typedef struct lm_nreport {
-    lm_nelem *elem;             /* one per occupied cell */
+    lm_nelem *elem;             /* one per occupied cell (CENTRED: per
+                                   element fitted) */
     int nelem;
-    int *cell_elem;             /* per cell: index into elem, or -1 */
+    int *cell_elem;             /* per cell: index into elem, or -1
+                                   (CENTRED: -1 everywhere) */
     int ncells;
     size_t nundefined;          /* points with an undefined normal */
     int nmerged, nunder, ncoincident, nquadratic, nlinear;
@@ -241,7 +292,8 @@ typedef struct lm_nreport {
 
 void lm_nreport_free(lm_nreport *r);
 
-/* Normals at n points x[0..dim) in the grid g, one element at a time:
+/* Normals at n points x[0..dim) in the grid g, one element at a time
+ * (element = CELL; for CENTRED see normals_centred.c):
  * each occupied cell's points are fitted on that cell (basis by the
  * options; HYBRID: quadratic with >= quad_min distinct points, linear with
  * >= lin_min), and a cell with fewer than lin_min distinct points joins a

@@ -9,7 +9,9 @@
  *  4. optionally a second random point with phi0 = 2, so that 1 is not a
  *     maximum of phi ([N] §8);
  *  5. least squares by QR (minimum norm when underdetermined) or by the
- *     normal equations ([N] eq 13, §6);
+ *     normal equations ([N] eq 13, §6); optionally (not the paper's) with
+ *     weak curvature rows (normals_smooth.c) and a random point kept clear
+ *     of the membrane, for the centred elements of normals_centred.c;
  *  6. n_p = grad phi(x_p) / |grad phi(x_p)| ([N] eq 11, 16). */
 #include <math.h>
 #include <stdio.h>
@@ -130,24 +132,50 @@ int lm_npoints_unique(const lm_nbox *b, const double *const x[3],
     return u;
 }
 
-/* Steps 3-4: a uniform point in the element, clear of the membrane points. */
+/* Steps 3-4: a uniform point in the element, clear of the membrane points
+ * (by 1e-6 of the element per axis). With clearance > 0 also at least that
+ * far (logical units) from every point; when no draw of MAX_DRAWS is, the
+ * farthest one. A random point right beside the membrane asks phi to drop
+ * from 1 to 0 within a hair, which the fit can only do by bending its
+ * isosurface (measured: up to 11 degrees in the dynamic circle). */
 static void draw_point(const lm_nbox *b, lm_nrng *rng, const double *const x[3],
-                       const size_t *idx, size_t k, double q[3])
+                       const size_t *idx, size_t k, double clearance, double q[3])
 {
+    double best[3] = {0, 0, 0}, bestd = -1;
     for (int attempt = 0; attempt < MAX_DRAWS; attempt++) {
         double xi[3] = {0, 0, 0};
         for (int a = 0; a < b->dim; a++)
             xi[a] = lm_nrng_uniform(rng);
         lm_nbox_to_world(b, xi, q);
         int clear = 1;
+        double dmin = INFINITY;
         for (size_t i = 0; i < k && clear; i++) {
             double p[3];
             point_of(x, b->dim, idx ? idx[i] : i, p);
             clear = !same_point(b, p, q, RANDOM_CLEARANCE);
+            if (clearance > 0) {
+                double d = 0;
+                for (int a = 0; a < b->dim; a++) {
+                    double t = (p[a] - q[a]) / (b->hi[a] - b->lo[a]);
+                    d += t * t;
+                }
+                dmin = d < dmin ? d : dmin;
+            }
         }
-        if (clear)
+        if (!(clearance > 0)) {
+            if (clear)
+                return;
+            continue;
+        }
+        if (clear && dmin >= clearance * clearance)
             return;
+        if (clear && dmin > bestd) {
+            bestd = dmin;
+            memcpy(best, q, sizeof best);
+        }
     }
+    if (clearance > 0 && bestd >= 0)
+        memcpy(q, best, sizeof best);
 }
 
 /* Step 2: one row of [S]. */
@@ -159,9 +187,12 @@ static void row(const lm_nfit *f, const double p[3], double *s)
     memcpy(s, v, sizeof(double) * (size_t)f->n);
 }
 
-/* Steps 2-5 for the current random point(s). */
+/* Steps 2-5 for the current random point(s); smooth > 0 appends the
+ * curvature rows (normals_smooth.c) with weight smooth * sqrt(rows), so
+ * that their share does not fall as points are added. */
 static lm_nerr assemble_solve(lm_nfit *f, const double *const x[3],
-                              const size_t *idx, size_t k, double *S, double *rhs)
+                              const size_t *idx, size_t k, double *S, double *rhs,
+                              double smooth, int want_cond)
 {
     int n = f->n;
     for (size_t i = 0; i < k; i++) {
@@ -176,9 +207,15 @@ static lm_nerr assemble_solve(lm_nfit *f, const double *const x[3],
         row(f, f->q2, S + (k + 1) * (size_t)n);
         rhs[k + 1] = 2.0;
     }
+    int m = f->rows;
+    f->smooth_rows = lm_nsmooth_rows(f->basis, &f->box, smooth * sqrt((double)m),
+                                     S + (size_t)m * n);
+    for (int r = 0; r < f->smooth_rows; r++)
+        rhs[m + r] = 0.0;
+    m += f->smooth_rows;
     if (f->solver == LM_NS_NORMAL)
-        return lm_lsq_normal(f->rows, n, S, rhs, f->phi, &f->info);
-    return lm_lsq_qr(f->rows, n, S, rhs, f->phi, &f->info);
+        return lm_lsq_normal(m, n, S, rhs, f->phi, &f->info);
+    return lm_lsq_qr_cond(m, n, S, rhs, f->phi, &f->info, want_cond);
 }
 
 lm_nerr lm_nfit_element(const lm_nbox *box, const double *const x[3],
@@ -222,8 +259,9 @@ lm_nerr lm_nfit_element(const lm_nbox *box, const double *const x[3],
     fit->has_q2 = o->phi2 != LM_PHI2_NONE || o->phi2_given;
     fit->rows = (int)k + 1 + fit->has_q2;
 
-    double *S = malloc(sizeof(double) * (size_t)fit->rows * (size_t)fit->n);
-    double *rhs = malloc(sizeof(double) * (size_t)fit->rows);
+    int extra = o->smooth > 0 ? LM_NSMOOTH_MAXROWS : 0;
+    double *S = malloc(sizeof(double) * (size_t)(fit->rows + extra) * (size_t)fit->n);
+    double *rhs = malloc(sizeof(double) * (size_t)(fit->rows + extra));
     if (!S || !rhs) {
         free(S);
         free(rhs);
@@ -237,13 +275,13 @@ lm_nerr lm_nfit_element(const lm_nbox *box, const double *const x[3],
         if (o->random_given)
             memcpy(fit->q, o->random_point, sizeof fit->q);
         else
-            draw_point(box, &rng, x, idx, k, fit->q);
+            draw_point(box, &rng, x, idx, k, o->clearance, fit->q);
         if (o->phi2_given)
             memcpy(fit->q2, o->phi2_point, sizeof fit->q2);
         else if (o->phi2 == LM_PHI2_RANDOM)
-            draw_point(box, &rng, x, idx, k, fit->q2);
+            draw_point(box, &rng, x, idx, k, o->clearance, fit->q2);
         fit->draws++;
-        e = assemble_solve(fit, x, idx, k, S, rhs);
+        e = assemble_solve(fit, x, idx, k, S, rhs, o->smooth, !o->skip_cond);
         if (e || o->random_given || !(o->cond_limit > 0) ||
             !(fit->info.cond_t > o->cond_limit) || fit->draws >= MAX_DRAWS)
             break;

@@ -20,6 +20,9 @@
  *     cell, so the result does not depend on visiting order;
  *  5. normals at the cell's points, then one orientation pass.
  *
+ * With element = LM_NELEM_CENTRED step 2 on is normals_centred.c instead
+ * (one-cell elements centred near each point; what simulations use).
+ *
  * The 7-point case of the hybrid rule: 7 points + 1 random point are 8 rows
  * for 9 quadratic unknowns (physics.md §3). lamina keeps the paper's
  * threshold and solves that system by the minimum-norm QR solution (the
@@ -31,6 +34,7 @@
 #include <string.h>
 
 #include "normals.h"
+#include "normals_bins.h"
 
 void lm_nopts_default(lm_nopts *o)
 {
@@ -40,6 +44,15 @@ void lm_nopts_default(lm_nopts *o)
     o->seed = 1;
     o->merge = 1;
     o->orient = LM_NORIENT_NONE;
+}
+
+void lm_nopts_centred(lm_nopts *o)
+{
+    lm_nopts_default(o);
+    o->element = LM_NELEM_CENTRED;
+    o->basis = LM_NB_QUADRATIC;
+    o->smooth = LM_NSMOOTH;
+    o->clearance = LM_NCLEARANCE;
 }
 
 void lm_nreport_free(lm_nreport *r)
@@ -72,17 +85,9 @@ long lm_ngrid_cell(const lm_ngrid *g, const double x[3], int c[3])
     return id;
 }
 
-/* ---- step 1: binning ----------------------------------------------------- */
+/* ---- step 1: binning (normals_bins.h) ------------------------------------ */
 
-typedef struct bins {
-    long ncells;
-    size_t *start;      /* ncells + 1: points of cell c are order[start[c]..] */
-    size_t *order;      /* point indices sorted by cell, stable */
-    long *cell;         /* per point */
-    long *sum;          /* summed counts over cells (prefix sums, per axis) */
-} bins;
-
-static void bins_free(bins *b)
+void lm_nbins_free(lm_nbins *b)
 {
     free(b->start);
     free(b->order);
@@ -90,7 +95,7 @@ static void bins_free(bins *b)
     free(b->sum);
 }
 
-static long cell_id(const lm_ngrid *g, const int c[3])
+long lm_nbins_cell_id(const lm_ngrid *g, const int c[3])
 {
     return c[0] + (long)g->n[0] * (c[1] + (long)g->n[1] * (g->dim == 3 ? c[2] : 0));
 }
@@ -116,8 +121,8 @@ static long block_count(const lm_ngrid *g, const long *sum, const int lo[3],
            sum_at(g, sum, a1, b0, c0) - sum_at(g, sum, a0, b0, c0);
 }
 
-static lm_nerr bin_points(const lm_ngrid *g, size_t n, const double *const x[3],
-                          bins *b, char *err, size_t errlen)
+lm_nerr lm_nbins_make(const lm_ngrid *g, size_t n, const double *const x[3],
+                      lm_nbins *b, char *err, size_t errlen)
 {
     memset(b, 0, sizeof *b);
     int nz = g->dim == 3 ? g->n[2] : 1;
@@ -189,8 +194,8 @@ static lm_nerr bin_points(const lm_ngrid *g, size_t n, const double *const x[3],
 /* ---- step 3: merging --------------------------------------------------------- */
 
 /* Points of the block lo..lo+sz into idx (cell order); returns the count. */
-static size_t gather(const lm_ngrid *g, const bins *b, const int lo[3],
-                     const int sz[3], size_t *idx)
+size_t lm_nbins_gather(const lm_ngrid *g, const lm_nbins *b, const int lo[3],
+                       const int sz[3], size_t *idx)
 {
     size_t k = 0;
     int nz = g->dim == 3 ? sz[2] : 1;
@@ -198,7 +203,7 @@ static size_t gather(const lm_ngrid *g, const bins *b, const int lo[3],
         for (int dj = 0; dj < sz[1]; dj++)
             for (int di = 0; di < sz[0]; di++) {
                 int c[3] = {lo[0] + di, lo[1] + dj, g->dim == 3 ? lo[2] + dk : 0};
-                long id = cell_id(g, c);
+                long id = lm_nbins_cell_id(g, c);
                 for (size_t q = b->start[id]; q < b->start[id + 1]; q++)
                     idx[k++] = b->order[q];
             }
@@ -208,7 +213,7 @@ static size_t gather(const lm_ngrid *g, const bins *b, const int lo[3],
 /* Among the blocks of B cells per axis holding cell c, the one with the
  * most points; ties: the block centre nearest the centroid of the cell's
  * points (then the first found). */
-static void best_block(const lm_ngrid *g, const bins *b, const int c[3], int B,
+static void best_block(const lm_ngrid *g, const lm_nbins *b, const int c[3], int B,
                        const double centroid[3], int lo[3], int sz[3])
 {
     int first[3] = {0, 0, 0}, last[3] = {0, 0, 0};
@@ -254,7 +259,7 @@ static void block_box(const lm_ngrid *g, const int lo[3], const int sz[3],
 
 /* ---- the whole grid -------------------------------------------------------- */
 
-static int defaults(const lm_ngrid *g, int v, int d2, int d3)
+int lm_nbins_default(const lm_ngrid *g, int v, int d2, int d3)
 {
     return v > 0 ? v : g->dim == 3 ? d3 : d2;
 }
@@ -277,18 +282,28 @@ static lm_nerr check_grid(const lm_ngrid *g, const lm_nopts *o, char *err,
         snprintf(err, errlen, "unknown basis %d", (int)o->basis);
         return LM_NERR_INPUT;
     }
+    if (o->element != LM_NELEM_CELL && o->element != LM_NELEM_CENTRED) {
+        snprintf(err, errlen, "unknown element choice %d", (int)o->element);
+        return LM_NERR_INPUT;
+    }
+    if (!(o->smooth >= 0) || !isfinite(o->smooth) || !(o->clearance >= 0) ||
+        !(o->clearance < 0.5)) {
+        snprintf(err, errlen, "smooth must be finite and >= 0 (got %g), clearance in "
+                 "[0, 0.5) of an element (got %g)", o->smooth, o->clearance);
+        return LM_NERR_INPUT;
+    }
     return LM_NERR_NONE;
 }
 
 /* Steps 2-4 for one occupied cell; the chosen element goes to *el. */
-static lm_nerr solve_cell(const lm_ngrid *g, const bins *b, const double *const x[3],
+static lm_nerr solve_cell(const lm_ngrid *g, const lm_nbins *b, const double *const x[3],
                           const lm_nopts *o, const int c[3], size_t *idx,
                           lm_nelem *el, char *err, size_t errlen)
 {
-    long id = cell_id(g, c);
+    long id = lm_nbins_cell_id(g, c);
     size_t k0 = b->start[id], k1 = b->start[id + 1], k = k1 - k0;
-    int quad_min = defaults(g, o->quad_min, 7, 26);
-    int lin_min = defaults(g, o->lin_min, 3, 7);
+    int quad_min = lm_nbins_default(g, o->quad_min, 7, 26);
+    int lin_min = lm_nbins_default(g, o->lin_min, 3, 7);
     lm_nbox box;
     int lo[3] = {c[0], c[1], c[2]}, sz[3] = {1, 1, 1};
     block_box(g, lo, sz, &box);
@@ -299,6 +314,9 @@ static lm_nerr solve_cell(const lm_ngrid *g, const bins *b, const double *const 
     fo.solver = o->solver;
     fo.phi2 = o->phi2;
     fo.cond_limit = o->cond_limit;
+    fo.smooth = o->smooth;
+    fo.clearance = o->clearance;
+    fo.skip_cond = o->skip_cond;
     fo.seed = lm_nrng_mix(o->seed, (uint64_t)id);
     if (o->basis == LM_NB_HYBRID)
         fo.basis = unique >= quad_min ? LM_NB_QUADRATIC : LM_NB_LINEAR;
@@ -316,7 +334,7 @@ static lm_nerr solve_cell(const lm_ngrid *g, const bins *b, const double *const 
         for (int B = 2; unique < lin_min && !whole; B *= 2) {
             best_block(g, b, c, B, centroid, lo, sz);
             block_box(g, lo, sz, &box);
-            kb = gather(g, b, lo, sz, idx);
+            kb = lm_nbins_gather(g, b, lo, sz, idx);
             unique = lm_npoints_unique(&box, x, idx, kb);
             whole = 1;
             for (int a = 0; a < g->dim; a++)
@@ -341,6 +359,59 @@ static lm_nerr solve_cell(const lm_ngrid *g, const bins *b, const double *const 
     return e;
 }
 
+/* Steps 2-5 over every occupied cell, in cell order: the elements go to
+ * *elsp (*nelp of them), undefined normals are counted in *undefp. */
+static lm_nerr cells_pass(const lm_ngrid *g, const lm_nbins *b,
+                          const double *const x[3], const lm_nopts *o,
+                          double *const nrm[3], unsigned char *flags, lm_nelem **elsp,
+                          int *nelp, size_t *undefp, size_t *idx, char *err,
+                          size_t errlen)
+{
+    long occupied = 0;
+    for (long c = 0; c < b->ncells; c++)
+        occupied += b->start[c + 1] > b->start[c];
+    lm_nelem *els = calloc((size_t)(occupied ? occupied : 1), sizeof *els);
+    *elsp = els;
+    if (!els) {
+        snprintf(err, errlen, "out of memory (%ld elements)", occupied);
+        return LM_NERR_MEMORY;
+    }
+    for (long id = 0; id < b->ncells; id++) {
+        if (b->start[id + 1] == b->start[id])
+            continue;
+        int c[3] = {(int)(id % g->n[0]), (int)((id / g->n[0]) % g->n[1]),
+                    g->dim == 3 ? (int)(id / ((long)g->n[0] * g->n[1])) : 0};
+        lm_nelem *el = &els[*nelp];
+        lm_nerr ce = solve_cell(g, b, x, o, c, idx, el, err, errlen);
+        if (ce == LM_NERR_TOO_FEW && !(el->fit.flags & LM_NF_MERGED) && !o->merge) {
+            /* no merging allowed: these points keep no normal */
+            for (size_t q = b->start[id]; q < b->start[id + 1]; q++) {
+                (*undefp)++;
+                if (flags)
+                    flags[b->order[q]] |= LM_NF_UNDEFINED;
+            }
+            el->fit.n = 0;
+            (*nelp)++;
+            continue;
+        }
+        if (ce)
+            return ce;
+        (*nelp)++;
+        for (size_t q = b->start[id]; q < b->start[id + 1]; q++) {
+            size_t i = b->order[q];
+            double p[3] = {x[0][i], x[1][i], g->dim == 3 ? x[2][i] : 0.0}, nv[3];
+            int bad = lm_nfit_normal(&el->fit, p, nv);
+            for (int a = 0; a < g->dim; a++)
+                nrm[a][i] = nv[a];
+            *undefp += bad != 0;
+            if (flags)
+                flags[i] = (unsigned char)((el->fit.flags & ~LM_NF_UNDEFINED) |
+                                           (bad ? LM_NF_UNDEFINED : 0));
+        }
+    }
+    return LM_NERR_NONE;
+}
+
 lm_nerr lm_normals_grid(const lm_ngrid *g, size_t n, const double *const x[3],
                         const lm_nopts *o, double *const nrm[3],
                         unsigned char *flags, lm_nreport *rep, char *err,
@@ -363,7 +434,7 @@ lm_nerr lm_normals_grid(const lm_ngrid *g, size_t n, const double *const x[3],
         if (flags)
             flags[i] = 0;
     }
-    bins b;
+    lm_nbins b;
     size_t *idx = malloc(sizeof *idx * (n ? n : 1));
     lm_nelem *els = NULL;
     int nel = 0;
@@ -371,53 +442,16 @@ lm_nerr lm_normals_grid(const lm_ngrid *g, size_t n, const double *const x[3],
         snprintf(err, errlen, "out of memory (%zu points)", n);
         return LM_NERR_MEMORY;
     }
-    if ((e = bin_points(g, n, x, &b, err, errlen)))
+    if ((e = lm_nbins_make(g, n, x, &b, err, errlen)))
         goto out;
-    long occupied = 0;
-    for (long c = 0; c < b.ncells; c++)
-        occupied += b.start[c + 1] > b.start[c];
-    els = calloc((size_t)(occupied ? occupied : 1), sizeof *els);
-    if (!els) {
-        snprintf(err, errlen, "out of memory (%ld elements)", occupied);
-        e = LM_NERR_MEMORY;
-        goto out;
-    }
     size_t undefined = 0;
-    for (long id = 0; id < b.ncells; id++) {
-        if (b.start[id + 1] == b.start[id])
-            continue;
-        int c[3] = {(int)(id % g->n[0]), (int)((id / g->n[0]) % g->n[1]),
-                    g->dim == 3 ? (int)(id / ((long)g->n[0] * g->n[1])) : 0};
-        lm_nelem *el = &els[nel];
-        lm_nerr ce = solve_cell(g, &b, x, o, c, idx, el, err, errlen);
-        if (ce == LM_NERR_TOO_FEW && !(el->fit.flags & LM_NF_MERGED) && !o->merge) {
-            /* no merging allowed: these points keep no normal */
-            for (size_t q = b.start[id]; q < b.start[id + 1]; q++) {
-                undefined++;
-                if (flags)
-                    flags[b.order[q]] |= LM_NF_UNDEFINED;
-            }
-            el->fit.n = 0;
-            nel++;
-            continue;
-        }
-        if (ce) {
-            e = ce;
-            goto out;
-        }
-        nel++;
-        for (size_t q = b.start[id]; q < b.start[id + 1]; q++) {
-            size_t i = b.order[q];
-            double p[3] = {x[0][i], x[1][i], g->dim == 3 ? x[2][i] : 0.0}, nv[3];
-            int bad = lm_nfit_normal(&el->fit, p, nv);
-            for (int a = 0; a < g->dim; a++)
-                nrm[a][i] = nv[a];
-            undefined += bad != 0;
-            if (flags)
-                flags[i] = (unsigned char)((el->fit.flags & ~LM_NF_UNDEFINED) |
-                                           (bad ? LM_NF_UNDEFINED : 0));
-        }
-    }
+    if (o->element == LM_NELEM_CENTRED)
+        e = lm_normals_centred(g, &b, n, x, o, nrm, flags, rep ? &els : NULL, &nel,
+                               &undefined, idx, err, errlen);
+    else
+        e = cells_pass(g, &b, x, o, nrm, flags, &els, &nel, &undefined, idx, err, errlen);
+    if (e)
+        goto out;
     lm_normals_orient(n, g->dim, x, nrm, o->orient, o->orient_point);
     if (rep) {
         rep->nundefined = undefined;
@@ -432,7 +466,8 @@ lm_nerr lm_normals_grid(const lm_ngrid *g, size_t n, const double *const x[3],
             rep->cell_elem[id] = -1;
         for (int k = 0; k < nel; k++) {
             const lm_nelem *el = &els[k];
-            rep->cell_elem[cell_id(g, el->cell)] = k;
+            if (o->element != LM_NELEM_CENTRED)
+                rep->cell_elem[lm_nbins_cell_id(g, el->cell)] = k;
             rep->nmerged += (el->fit.flags & LM_NF_MERGED) != 0;
             rep->nunder += (el->fit.flags & LM_NF_UNDERDETERMINED) != 0;
             rep->ncoincident += (el->fit.flags & LM_NF_COINCIDENT) != 0;
@@ -444,7 +479,7 @@ lm_nerr lm_normals_grid(const lm_ngrid *g, size_t n, const double *const x[3],
         els = NULL;
     }
 out:
-    bins_free(&b);
+    lm_nbins_free(&b);
     free(idx);
     free(els);
     return e;

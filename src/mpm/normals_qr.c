@@ -240,6 +240,12 @@ static void cod_apply(int r, int n, const double *W, const double *tau,
 lm_nerr lm_lsq_qr(int m, int n, double *A, double *b, double *x,
                   lm_lsq_info *info)
 {
+    return lm_lsq_qr_cond(m, n, A, b, x, info, 1);
+}
+
+lm_nerr lm_lsq_qr_cond(int m, int n, double *A, double *b, double *x,
+                       lm_lsq_info *info, int want_cond)
+{
     lm_lsq_info dummy;
     if (!info)
         info = &dummy;
@@ -269,9 +275,13 @@ lm_nerr lm_lsq_qr(int m, int n, double *A, double *b, double *x,
         r++;
     info->rank = r;
     /* cond from R's leading kmax rows (the rest of R is zero) */
-    if ((e = lm_singular_values(kmax, n, A, sv)) != LM_NERR_NONE)
-        goto out;
-    condition(sv, n, r, info);
+    if (!want_cond) {
+        info->cond_t = info->cond_t_rank = NAN;
+    } else {
+        if ((e = lm_singular_values(kmax, n, A, sv)) != LM_NERR_NONE)
+            goto out;
+        condition(sv, n, r, info);
+    }
 
     if (r == n) {
         back_substitute(n, n, A, b, y);

@@ -1,0 +1,226 @@
+/* normals_centred.c - centred elements: the isosurface construction as
+ * lamina runs it every step of a simulation (sim:membrane{normals =
+ * "isosurface"}; docs/normals.md, "Centred elements").
+ *
+ * Why. [N] §3: "any convenient subset of material points and corresponding
+ * elements can be used to determine the normal to the surface". The
+ * per-cell construction ([N] §8, normals_grid.c) gives a point the fit of
+ * whichever cell it happens to lie in. Where the membrane clips a cell's
+ * corner, or runs along a grid line, that cell holds a few points in a
+ * sliver at its edge; its linear fit errs as [N] Fig 7 shows and its
+ * quadratic fit is nearly singular (on the dynamic circular membrane single
+ * normals turn by up to 73 degrees). Here a point's element is a box of
+ * one cell centred on the point of the half-cell lattice - cell centres,
+ * nodes, edge and face midpoints - nearest to it: the point lies in the
+ * middle half of its element and the membrane crosses the element instead
+ * of touching it.
+ *
+ * Steps:
+ *  1. each point's lattice site: s_a = round(2 (x_a - x0_a) / h_a - 1),
+ *     clamped to 0 .. 2 n_a - 2, centre x0_a + (s_a + 1) h_a / 2 (so a
+ *     one-cell element never leaves the grid);
+ *  2. the points sorted by site; one fit per site, for its points;
+ *  3. the element: one cell per axis about the centre; with fewer than
+ *     quad_min distinct points it grows to 2, 4, ... cells ([N] §4, and §6:
+ *     "elements can be combined to form a larger element containing more
+ *     points"), moved back inside the grid, up to the whole grid;
+ *  4. the quadratic basis ([N] §5), linear if even the whole grid holds
+ *     fewer than quad_min points (or when asked for), fitted by
+ *     lm_nfit_element with the options' curvature rows and random-point
+ *     clearance (normals_smooth.c, normals_fit.c); the random point comes
+ *     from a stream keyed by the site;
+ *  5. n = grad phi / |grad phi| at the site's points ([N] eq 16). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "normals.h"
+#include "normals_bins.h"
+
+/* Site streams are kept apart from the per-cell streams (keyed by cell). */
+#define SITE_STREAM ((uint64_t)1 << 62)
+
+typedef struct site_point {
+    long key;
+    size_t i;
+} site_point;
+
+static int by_site(const void *a, const void *b)
+{
+    const site_point *p = a, *q = b;
+    if (p->key != q->key)
+        return p->key < q->key ? -1 : 1;
+    return p->i < q->i ? -1 : p->i > q->i;
+}
+
+/* Step 1: the lattice site of point i (per axis into s) and its key. */
+static long site_of(const lm_ngrid *g, const double *const x[3], size_t i, int s[3])
+{
+    long key = 0, stride = 1;
+    s[0] = s[1] = s[2] = 0;
+    for (int a = 0; a < g->dim; a++) {
+        int m = 2 * g->n[a] - 1;
+        double f = 2.0 * (x[a][i] - g->x0[a]) / g->h[a] - 1.0;
+        int v = (int)floor(f + 0.5);
+        s[a] = v < 0 ? 0 : v > m - 1 ? m - 1 : v;
+        key += s[a] * stride;
+        stride *= m;
+    }
+    return key;
+}
+
+/* Step 3: the element w cells wide about site s - its box and the cells it
+ * overlaps (lo, sz). Returns 1 when it is the whole grid. */
+static int element_box(const lm_ngrid *g, const int s[3], int w, lm_nbox *box,
+                       int lo[3], int sz[3])
+{
+    int whole = 1;
+    box->dim = g->dim;
+    for (int a = 0; a < 3; a++) {
+        if (a >= g->dim) {
+            box->lo[a] = box->hi[a] = 0.0;
+            lo[a] = 0;
+            sz[a] = 1;
+            continue;
+        }
+        double L = g->n[a] * g->h[a], width = w * g->h[a];
+        if (w >= g->n[a])
+            width = L;
+        else
+            whole = 0;
+        double l = g->x0[a] + (s[a] + 1) * 0.5 * g->h[a] - 0.5 * width;
+        if (l < g->x0[a])
+            l = g->x0[a];
+        if (l + width > g->x0[a] + L)
+            l = g->x0[a] + L - width;
+        box->lo[a] = l;
+        box->hi[a] = l + width;
+        int c0 = (int)floor((l - g->x0[a]) / g->h[a] + 1e-9);
+        int c1 = (int)ceil((l + width - g->x0[a]) / g->h[a] - 1e-9) - 1;
+        c0 = c0 < 0 ? 0 : c0;
+        c1 = c1 > g->n[a] - 1 ? g->n[a] - 1 : c1;
+        lo[a] = c0;
+        sz[a] = c1 >= c0 ? c1 - c0 + 1 : 1;
+    }
+    return whole;
+}
+
+/* The points of idx[0..k) inside the (closed) box, into sel; their count. */
+static size_t inside(const lm_nbox *box, const double *const x[3], const size_t *idx,
+                     size_t k, size_t *sel)
+{
+    size_t m = 0;
+    for (size_t j = 0; j < k; j++) {
+        int in = 1;
+        for (int a = 0; a < box->dim && in; a++)
+            in = x[a][idx[j]] >= box->lo[a] && x[a][idx[j]] <= box->hi[a];
+        if (in)
+            sel[m++] = idx[j];
+    }
+    return m;
+}
+
+/* Appends an element to the growing list (*els, *nel, *cap). */
+static int push_elem(lm_nelem **els, int *nel, int *cap, const lm_nelem *el)
+{
+    if (*nel == *cap) {
+        int c = *cap ? 2 * *cap : 16;
+        lm_nelem *p = realloc(*els, sizeof *p * (size_t)c);
+        if (!p)
+            return -1;
+        *els = p;
+        *cap = c;
+    }
+    (*els)[(*nel)++] = *el;
+    return 0;
+}
+
+lm_nerr lm_normals_centred(const lm_ngrid *g, const lm_nbins *b, size_t n,
+                           const double *const x[3], const lm_nopts *o,
+                           double *const nrm[3], unsigned char *flags,
+                           lm_nelem **els, int *nel, size_t *undefined,
+                           size_t *idx, char *err, size_t errlen)
+{
+    int quad_min = lm_nbins_default(g, o->quad_min, 7, 26);
+    int lin_min = lm_nbins_default(g, o->lin_min, 3, 7);
+    int linear = o->basis == LM_NB_LINEAR;
+    site_point *sp = malloc(sizeof *sp * (n ? n : 1));
+    size_t *sel = malloc(sizeof *sel * (n ? n : 1));
+    int cap = 0;
+    lm_nerr e = LM_NERR_NONE;
+    if (!sp || !sel) {
+        snprintf(err, errlen, "out of memory (%zu points)", n);
+        e = LM_NERR_MEMORY;
+        goto out;
+    }
+    for (size_t i = 0; i < n; i++) {
+        int s[3];
+        sp[i].key = site_of(g, x, i, s);
+        sp[i].i = i;
+    }
+    qsort(sp, n, sizeof *sp, by_site);
+    for (size_t a0 = 0, a1; a0 < n; a0 = a1) {
+        for (a1 = a0 + 1; a1 < n && sp[a1].key == sp[a0].key; a1++)
+            ;
+        lm_nelem el;
+        memset(&el, 0, sizeof el);
+        int s[3], w = 1, whole, unique;
+        size_t k;
+        site_of(g, x, sp[a0].i, s);
+        lm_nbox box;
+        for (;; w *= 2) {
+            int sz[3];
+            whole = element_box(g, s, w, &box, el.lo, sz);
+            k = inside(&box, x, idx, lm_nbins_gather(g, b, el.lo, sz, idx), sel);
+            unique = lm_npoints_unique(&box, x, sel, k);
+            if (unique >= (linear ? lin_min : quad_min) || whole)
+                break;
+        }
+        lm_nfit_opts fo;
+        lm_nfit_opts_default(&fo);
+        fo.basis = !linear && unique >= quad_min ? LM_NB_QUADRATIC : LM_NB_LINEAR;
+        fo.solver = o->solver;
+        fo.phi2 = o->phi2;
+        fo.cond_limit = o->cond_limit;
+        fo.smooth = o->smooth;
+        fo.clearance = o->clearance;
+        fo.skip_cond = o->skip_cond;
+        fo.seed = lm_nrng_mix(o->seed, SITE_STREAM | (uint64_t)sp[a0].key);
+        e = lm_nfit_element(&box, x, sel, k, &fo, &el.fit, err, errlen);
+        if (e == LM_NERR_TOO_FEW && whole)
+            snprintf(err, errlen, "only %d distinct membrane point%s in the whole grid: "
+                     "at least %d are needed for a normal in %dD", unique,
+                     unique == 1 ? "" : "s", g->dim, g->dim);
+        if (e)
+            goto out;
+        if (w > 1)
+            el.fit.flags |= LM_NF_MERGED;
+        el.size = w;
+        for (int a = 0; a < 3; a++) {
+            double c = a < g->dim ? 0.5 * (box.lo[a] + box.hi[a]) : 0.0;
+            el.cell[a] = a < g->dim ? (int)floor((c - g->x0[a]) / g->h[a]) : 0;
+        }
+        /* step 5 */
+        for (size_t q = a0; q < a1; q++) {
+            size_t i = sp[q].i;
+            double p[3] = {x[0][i], x[1][i], g->dim == 3 ? x[2][i] : 0.0}, nv[3];
+            int bad = lm_nfit_normal(&el.fit, p, nv);
+            for (int a = 0; a < g->dim; a++)
+                nrm[a][i] = nv[a];
+            *undefined += bad != 0;
+            if (flags)
+                flags[i] = (unsigned char)((el.fit.flags & ~LM_NF_UNDEFINED) |
+                                           (bad ? LM_NF_UNDEFINED : 0));
+        }
+        if (els && push_elem(els, nel, &cap, &el)) {
+            snprintf(err, errlen, "out of memory (report)");
+            e = LM_NERR_MEMORY;
+            goto out;
+        }
+    }
+out:
+    free(sp);
+    free(sel);
+    return e;
+}
