@@ -37,4 +37,18 @@ function M.worst_normal_error(mem)
   return w
 end
 
+-- The same against the connectivity normal of each point (x_{p+1} - x_{p-1}
+-- turned 90 degrees, [N] §8): a reference that follows the membrane's own
+-- shape, wrinkles included, where the radial one assumes a perfect circle.
+function M.worst_connectivity_error(mem)
+  local q = mem:particles()
+  local w = 0
+  for i = 3, q.n - 2 do
+    local tx, ty = q.x[i + 1] - q.x[i - 1], q.y[i + 1] - q.y[i - 1]
+    local c = (q.ny[i] * tx - q.nx[i] * ty) / math.sqrt(tx * tx + ty * ty)
+    w = math.max(w, math.deg(math.acos(math.min(1, math.abs(c)))))
+  end
+  return w
+end
+
 return M

@@ -1,17 +1,20 @@
 -- title: Dog-bone expansion: isosurface normals (left) against connectivity (right)
 -- source: normals paper §8, Figs 14, 15 and 16
 -- look: the slack dog-bone membrane is pushed out to a circle in both runs;
---   left half with normals from the isosurface construction (hybrid rule),
---   right half with connectivity; the pressure histories (Fig 15) coincide
---   through the first oscillations (to t ~ 0.6), as in the paper. Measured
---   and kept visible: later the isosurface run's wrinkled membrane gets
---   normals with large errors at single points, stretches beyond its taut
---   radius (1.49 against 1.38 at t = 2) and its pressure ends 16 % lower
+--   left half with normals from the isosurface construction (lamina's
+--   centred elements), right half with connectivity; the pressure histories
+--   (Fig 15) coincide through the first oscillations, as in the paper, and
+--   stay within a few per cent to t = 2 (the isosurface run ~3 % lower at
+--   the end); both end near the taut radius 1.39. Kept visible: a few
+--   wrinkles on the isosurface side. With the paper's per-cell hybrid rule
+--   the wrinkles grow unresisted after t ~ 0.6, the radius reaches 1.50 and
+--   the pressure ends 16 % lower (docs/normals.md)
 -- checks: the largest difference of the two pressure histories after the
 --   first oscillation; final radii at 0 and 90 degrees of both runs
 -- assumed: the dog-bone of gas_dogbone (assets/lua/dogbone.lua) at cell 0.1,
 --   200 membrane points, pure FLIP, to t = 2 (the paper's figures stop at
---   the early oscillations and the final shape); quarter model mirrored
+--   the early oscillations and the final shape); normals = "isosurface"
+--   (docs/normals.md "Centred elements"); quarter model mirrored
 -- visual: cell=0.2 t_end=0.2
 -- thumb: fig14_t0.20.png
 local out = lamina.param("out", "out/normals_dynamic_dogbone")
@@ -28,7 +31,7 @@ local function build(method)
   return sim, rec
 end
 
-local iso, rec_i = build("hybrid")
+local iso, rec_i = build("isosurface")
 local con, rec_c = build("connectivity")
 for _, tf in ipairs{0, 0.05, 0.1, 0.2, 0.4, 1, 2} do
   if tf > t_end + 1e-12 then break end
