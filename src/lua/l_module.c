@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include <lualib.h>
 
@@ -45,9 +46,20 @@ static int l_param(lua_State *L)
     return 1;
 }
 
+/* lamina.clock(): wall-clock seconds from an arbitrary start (monotonic),
+ * for timing a run; os.clock counts processor time, which threads add up. */
+static int l_clock(lua_State *L)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    lua_pushnumber(L, (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec);
+    return 1;
+}
+
 static int luaopen_lamina(lua_State *L)
 {
     static const luaL_Reg funcs[] = {{"param", l_param},
+                                     {"clock", l_clock},
                                      {"sim", la_sim_new},
                                      {"elastic", la_elastic},
                                      {"membrane", la_membrane_material},

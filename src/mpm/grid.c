@@ -8,20 +8,6 @@ size_t lm_grid_nodes(const lm_grid *g)
     return (size_t)(g->nx + 1) * (size_t)(g->ny + 1);
 }
 
-/* Step 9 of physics.md §1: the grid is discarded; the next step starts from
- * the same undeformed grid with empty fields. */
-void lm_grid_clear(lm_grid *g)
-{
-    size_t n = lm_grid_nodes(g) * sizeof(double);
-    memset(g->m, 0, n);
-    memset(g->px, 0, n);
-    memset(g->py, 0, n);
-    memset(g->fx, 0, n);
-    memset(g->fy, 0, n);
-    memset(g->vx, 0, n);
-    memset(g->vy, 0, n);
-}
-
 /* fixed: both components zero on that side; symmetry (roller): the normal
  * component zero; free: nothing. Corners get both sides' constraints. */
 void lm_grid_apply_bc(const lm_grid *g, double *ux, double *uy)

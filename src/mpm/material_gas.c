@@ -26,12 +26,11 @@ double lm_gas_av(const lm_material *mat, double rho, double div, double max_div,
     return c_max * g * rho * mat->av_lambda * D * (mat->av_c1 + mat->av_c2 * ratio);
 }
 
-void lm_gas_update(const lm_material *mat, double dexx, double deyy, double dexy,
+void lm_gas_update(const lm_material *mat, double exx, double eyy, double exy,
                    double dt, double rho, double q, double *e, double *sxx, double *syy,
                    double *sxy, double *szz)
 {
     double mu = mat->mu;
-    double exx = dexx / dt, eyy = deyy / dt, exy = dexy / dt;   /* strain rate */
     double tr = exx + eyy;                  /* plane strain: edot_zz = 0 */
     double p = (mat->gamma - 1) * rho * *e; /* e^k, rho^{k+1} (physics.md §2) */
     double iso = -(2.0 / 3.0) * mu * tr - p - q;
@@ -39,8 +38,8 @@ void lm_gas_update(const lm_material *mat, double dexx, double deyy, double dexy
     *syy = 2 * mu * eyy + iso;
     *sxy = 2 * mu * exy;
     *szz = iso;
-    /* [F] eq 23: the work of the new stress on the step's strain */
-    double work = *sxx * dexx + *syy * deyy + 2 * *sxy * dexy;
+    /* [F] eq 23: the work of the new stress on the step's strain dt edot */
+    double work = *sxx * (dt * exx) + *syy * (dt * eyy) + 2 * *sxy * (dt * exy);
     *e += work / rho;
 }
 

@@ -78,9 +78,12 @@ typedef struct lm_grid {
     double *m;             /* lumped nodal mass */
     double *px, *py;       /* momentum p_i, then p_i^L */
     double *fx, *fy;       /* total nodal force */
-    double *vx, *vy;       /* velocity used for the strain (step 5) */
+    double *vx, *vy;       /* velocity used for the strain (step 5); in
+                              step 4 first v_i^L = p_i^L / m_i */
+    double *ax, *ay;       /* step 4: acceleration f_i / m_i */
     double *tbuf;          /* other threads' copies of scattered fields */
-    size_t tcap;           /* (threads.c) */
+    size_t tcap;           /* (threads.c), and the band of nodes each */
+    long tlo[256], thi[256];   /* thread's copy covers */
 } lm_grid;
 
 /* ---- particles (particles.c) -------------------------------------------- */

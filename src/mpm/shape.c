@@ -6,7 +6,9 @@
 void lm_shape_bilinear(const lm_grid *g, double x, double y, int *node,
                        double N[4], double Gx[4], double Gy[4])
 {
-    double fx = (x - g->x0) / g->hx, fy = (y - g->y0) / g->hy;
+    /* two divisions, then products: divisions dominate this function */
+    double rx = 1.0 / g->hx, ry = 1.0 / g->hy;
+    double fx = (x - g->x0) * rx, fy = (y - g->y0) * ry;
     /* truncation is floor for the non-negative values of points inside
      * the grid, and cheaper: floor() is a library call on baseline x86-64 */
     int i = fx >= 0 ? (int)fx : (int)floor(fx);
@@ -22,12 +24,12 @@ void lm_shape_bilinear(const lm_grid *g, double x, double y, int *node,
     N[1] = xi * (1 - eta);
     N[2] = (1 - xi) * eta;
     N[3] = xi * eta;
-    Gx[0] = -(1 - eta) / g->hx;
-    Gx[1] = (1 - eta) / g->hx;
-    Gx[2] = -eta / g->hx;
-    Gx[3] = eta / g->hx;
-    Gy[0] = -(1 - xi) / g->hy;
-    Gy[1] = -xi / g->hy;
-    Gy[2] = (1 - xi) / g->hy;
-    Gy[3] = xi / g->hy;
+    Gx[0] = -(1 - eta) * rx;
+    Gx[1] = (1 - eta) * rx;
+    Gx[2] = -eta * rx;
+    Gx[3] = eta * rx;
+    Gy[0] = -(1 - xi) * ry;
+    Gy[1] = -xi * ry;
+    Gy[2] = (1 - xi) * ry;
+    Gy[3] = xi * ry;
 }

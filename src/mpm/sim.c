@@ -33,7 +33,7 @@ static int cells(double len, double h)
 static int grid_alloc(lm_grid *g)
 {
     size_t n = lm_grid_nodes(g);
-    double **f[] = {&g->m, &g->px, &g->py, &g->fx, &g->fy, &g->vx, &g->vy};
+    double **f[] = {&g->m, &g->px, &g->py, &g->fx, &g->fy, &g->vx, &g->vy, &g->ax, &g->ay};
     for (size_t k = 0; k < sizeof f / sizeof f[0]; k++) {
         *f[k] = calloc(n, sizeof(double));
         if (!*f[k]) return -1;
@@ -44,7 +44,7 @@ static int grid_alloc(lm_grid *g)
 static void grid_free(lm_grid *g)
 {
     free(g->m); free(g->px); free(g->py); free(g->fx); free(g->fy);
-    free(g->vx); free(g->vy); free(g->tbuf);
+    free(g->vx); free(g->vy); free(g->ax); free(g->ay); free(g->tbuf);
 }
 
 lm_sim *lm_sim_new(const lm_sim_def *def, char *err, size_t errlen)

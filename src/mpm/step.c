@@ -41,7 +41,7 @@ void lm_step_p2g(lm_sim *sim)
         size_t a, b;
         double *f[3];
         lm_thread_range(p->n, t, nt, &a, &b);
-        lm_thread_fields(sim, t, 3, out, f);
+        lm_thread_fields(sim, t, a, b, 3, out, f);
         for (size_t q = a; q < b; q++) {
             for (int k = 0; k < 4; k++) {
                 int i = corner(g, p->node[q], k);
@@ -68,7 +68,7 @@ void lm_step_forces(lm_sim *sim)
         size_t a, b;
         double *f[2];
         lm_thread_range(p->n, t, nt, &a, &b);
-        lm_thread_fields(sim, t, 2, out, f);
+        lm_thread_fields(sim, t, a, b, 2, out, f);
         for (size_t q = a; q < b; q++) {
             double V = p->m[q] / p->rho[q];
             for (int k = 0; k < 4; k++) {
@@ -81,7 +81,8 @@ void lm_step_forces(lm_sim *sim)
     }
     lm_threads_reduce(sim, nt, 2, out);
     size_t nn = lm_grid_nodes(g);
-    for (size_t i = 0; i < nn; i++) {
+#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
+    for (long i = 0; i < (long)nn; i++) {
         g->fx[i] += g->m[i] * sim->def.gx;
         g->fy[i] += g->m[i] * sim->def.gy;
     }
@@ -94,7 +95,8 @@ void lm_step_grid_update(lm_sim *sim)
     lm_grid *g = &sim->grid;
     size_t nn = lm_grid_nodes(g);
     double dt = sim->def.dt;
-    for (size_t i = 0; i < nn; i++) {
+#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
+    for (long i = 0; i < (long)nn; i++) {
         g->px[i] += dt * g->fx[i];
         g->py[i] += dt * g->fy[i];
     }
@@ -107,9 +109,19 @@ void lm_step_grid_update(lm_sim *sim)
  * skipped; dropping "small" ones would break momentum conservation. */
 void lm_step_g2p(lm_sim *sim)
 {
-    const lm_grid *g = &sim->grid;
+    lm_grid *g = &sim->grid;
     lm_particles *p = &sim->p;
     double dt = sim->def.dt;
+    /* per node once, not per particle corner: a_i = f_i / m_i, v_i^L */
+    long nn = (long)lm_grid_nodes(g);
+#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
+    for (long i = 0; i < nn; i++) {
+        double r = g->m[i] > 0 ? 1.0 / g->m[i] : 0;
+        g->ax[i] = g->fx[i] * r;
+        g->ay[i] = g->fy[i] * r;
+        g->vx[i] = g->px[i] * r;
+        g->vy[i] = g->py[i] * r;
+    }
     long n = (long)p->n;
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static)
     for (long q = 0; q < n; q++) {
@@ -118,12 +130,11 @@ void lm_step_g2p(lm_sim *sim)
         double ax = 0, ay = 0, ux = 0, uy = 0;
         for (int k = 0; k < 4; k++) {
             int i = corner(g, p->node[q], k);
-            if (g->m[i] <= 0) continue;
-            double w = p->N[4 * q + k] / g->m[i];
-            ax += w * g->fx[i];
-            ay += w * g->fy[i];
-            ux += w * g->px[i];
-            uy += w * g->py[i];
+            double w = p->N[4 * q + k];
+            ax += w * g->ax[i];
+            ay += w * g->ay[i];
+            ux += w * g->vx[i];
+            uy += w * g->vy[i];
         }
         /* FLIP, optionally blended with the PIC velocity sum_i N_ip v_i^L
          * (pic = 0, the papers' scheme, by default) */
@@ -145,14 +156,15 @@ void lm_step_strain_velocity(lm_sim *sim)
     if (sim->def.scheme == LM_MUSL) {
         int nt = lm_sim_threads(sim);
         double *const out[2] = {g->vx, g->vy};
-        for (size_t i = 0; i < nn; i++) g->vx[i] = g->vy[i] = 0;
+#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
+        for (long i = 0; i < (long)nn; i++) g->vx[i] = g->vy[i] = 0;
 #pragma omp parallel num_threads(nt)
         {
             int t = LM_THREAD_ID();
             size_t a, b;
             double *f[2];
             lm_thread_range(p->n, t, nt, &a, &b);
-            lm_thread_fields(sim, t, 2, out, f);
+            lm_thread_fields(sim, t, a, b, 2, out, f);
             for (size_t q = a; q < b; q++) {
                 for (int k = 0; k < 4; k++) {
                     int i = corner(g, p->node[q], k);
@@ -163,14 +175,16 @@ void lm_step_strain_velocity(lm_sim *sim)
             }
         }
         lm_threads_reduce(sim, nt, 2, out);
-        for (size_t i = 0; i < nn; i++) {
+#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
+        for (long i = 0; i < (long)nn; i++) {
             if (g->m[i] > 0) {
                 g->vx[i] /= g->m[i];
                 g->vy[i] /= g->m[i];
             }
         }
     } else {
-        for (size_t i = 0; i < nn; i++) {
+#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
+        for (long i = 0; i < (long)nn; i++) {
             g->vx[i] = g->m[i] > 0 ? g->px[i] / g->m[i] : 0;
             g->vy[i] = g->m[i] > 0 ? g->py[i] / g->m[i] : 0;
         }
@@ -257,8 +271,8 @@ lm_status lm_step_stress(lm_sim *sim)
         case LM_GAS:
             p->rho[q] /= 1 + dexx + deyy;
             p->q[q] = lm_gas_av(mat, p->rho[q], L[0] + L[3], max_div, c_max, h);
-            lm_gas_update(mat, dexx, deyy, dexy, dt, p->rho[q], p->q[q], &p->e[q],
-                          &p->sxx[q], &p->syy[q], &p->sxy[q], &p->szz[q]);
+            lm_gas_update(mat, L[0], L[3], 0.5 * (L[1] + L[2]), dt, p->rho[q], p->q[q],
+                          &p->e[q], &p->sxx[q], &p->syy[q], &p->sxy[q], &p->szz[q]);
             break;
         case LM_LINEAR_FLUID:
             p->rho[q] /= 1 + dexx + deyy;
@@ -284,15 +298,15 @@ static lm_status fail(lm_sim *sim, lm_status st, size_t q, const char *what,
 
 /* 0 if particle q is sound (a rounding stray past a wall is put back),
  * else what is wrong with it: 1 NaN, 2 no volume, 3 out of the domain. */
-static int check_one(lm_sim *sim, size_t q)
+static inline int check_one(lm_sim *sim, size_t q)
 {
     lm_particles *p = &sim->p;
     const lm_grid *g = &sim->grid;
     double x1 = g->x0 + g->nx * g->hx, y1 = g->y0 + g->ny * g->hy;
-    if (!isfinite(p->x[q]) || !isfinite(p->y[q]) || !isfinite(p->vx[q]) ||
-        !isfinite(p->vy[q]) || !isfinite(p->sxx[q]) || !isfinite(p->syy[q]) ||
-        !isfinite(p->sxy[q]))
-        return 1;
+    /* a sum is finite unless a term is NaN or infinite (or it overflows,
+     * which is trouble too): one test where seven would do */
+    double sum = p->x[q] + p->y[q] + p->vx[q] + p->vy[q] + p->sxx[q] + p->syy[q] + p->sxy[q];
+    if (!isfinite(sum)) return 1;
     if (!(p->rho[q] > 0) || !isfinite(p->rho[q])) return 2;
     if (p->x[q] < g->x0 || p->x[q] > x1 || p->y[q] < g->y0 || p->y[q] > y1) {
         /* A point on a wall or symmetry line can stray by rounding (1e-17
@@ -349,6 +363,18 @@ lm_status lm_sim_prepare(lm_sim *sim)
     return st;
 }
 
+/* Step 9 of physics.md §1 for the next step: empty fields on the same
+ * grid. Only what is summed into needs zeroes; step 4 and 5 overwrite the
+ * velocities and accelerations whole. */
+void lm_step_clear(lm_sim *sim)
+{
+    lm_grid *g = &sim->grid;
+    long nn = (long)lm_grid_nodes(g);
+#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
+    for (long i = 0; i < nn; i++)
+        g->m[i] = g->px[i] = g->py[i] = g->fx[i] = g->fy[i] = 0;
+}
+
 lm_status lm_sim_step(lm_sim *sim)
 {
     if (sim->p.n == 0) {
@@ -362,7 +388,7 @@ lm_status lm_sim_step(lm_sim *sim)
     }
     lm_status st = lm_threads_reserve(sim);
     if (st != LM_OK) return st;
-    lm_grid_clear(&sim->grid);
+    lm_step_clear(sim);
     lm_step_shape(sim);
     lm_step_p2g(sim);
     lm_step_forces(sim);

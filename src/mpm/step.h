@@ -11,6 +11,7 @@
 void lm_shape_bilinear(const lm_grid *g, double x, double y, int *node,
                        double N[4], double Gx[4], double Gy[4]);
 
+void lm_step_clear(lm_sim *sim);            /* 0. empty nodal sums (step 9) */
 void lm_step_shape(lm_sim *sim);            /* N_ip, G_ip at x^k */
 void lm_step_p2g(lm_sim *sim);              /* 1. m_i, p_i */
 void lm_step_forces(lm_sim *sim);           /* 2. f_i^int + f_i^ext */
@@ -22,7 +23,6 @@ lm_status lm_step_check(lm_sim *sim);       /* NaN, inversion, domain */
 
 /* Zeroes the boundary-constrained components of a nodal vector field. */
 void lm_grid_apply_bc(const lm_grid *g, double *ux, double *uy);
-void lm_grid_clear(lm_grid *g);
 size_t lm_grid_nodes(const lm_grid *g);
 
 /* Objective stress update of an elastic solid, [F] eq 19 (Jaumann rate). */
@@ -59,8 +59,9 @@ double lm_gas_sound_speed(const lm_material *mat, double e);
 double lm_gas_av(const lm_material *mat, double rho, double div, double max_div,
                  double c_max, double h);
 /* sigma = 2 mu edot - 2/3 mu tr(edot) I - (p + q) I with p from e^k and
- * rho^{k+1}; then e += sigma:de / rho ([F] eq 23). */
-void lm_gas_update(const lm_material *mat, double dexx, double deyy, double dexy,
+ * rho^{k+1}, edot the strain rate (sym L); then e += sigma:(dt edot) / rho
+ * ([F] eq 23). */
+void lm_gas_update(const lm_material *mat, double exx, double eyy, double exy,
                    double dt, double rho, double q, double *e, double *sxx, double *syy,
                    double *sxy, double *szz);
 /* p = -beta div U: ev += tr de, sigma = -p I. */

@@ -10,7 +10,8 @@
 int lm_sim_threads(const lm_sim *sim)
 {
 #ifdef _OPENMP
-    return sim->def.threads > 1 ? sim->def.threads : 1;
+    int t = sim->def.threads > 1 ? sim->def.threads : 1;
+    return t < LM_MAX_THREADS ? t : LM_MAX_THREADS;
 #else
     (void)sim;
     return 1;
@@ -39,16 +40,26 @@ static double *copy_of(lm_grid *g, int t, int f)
     return g->tbuf + ((size_t)(t - 1) * LM_SCATTER_FIELDS + (size_t)f) * nn;
 }
 
-void lm_thread_fields(lm_sim *sim, int t, int nf, double *const *out, double **mine)
+void lm_thread_fields(lm_sim *sim, int t, size_t a, size_t b, int nf, double *const *out,
+                      double **mine)
 {
-    size_t nn = lm_grid_nodes(&sim->grid);
+    lm_grid *g = &sim->grid;
+    if (t == 0) {
+        for (int f = 0; f < nf; f++) mine[f] = out[f];
+        return;
+    }
+    long lo = (long)lm_grid_nodes(g), hi = -1;
+    for (size_t q = a; q < b; q++) {
+        long i = sim->p.node[q];
+        if (i < lo) lo = i;
+        if (i > hi) hi = i;
+    }
+    hi += g->nx + 2;            /* the upper-right corner of the last cell */
+    g->tlo[t] = lo;
+    g->thi[t] = hi;
     for (int f = 0; f < nf; f++) {
-        if (t == 0) {
-            mine[f] = out[f];
-        } else {
-            mine[f] = copy_of(&sim->grid, t, f);
-            memset(mine[f], 0, nn * sizeof(double));
-        }
+        mine[f] = copy_of(g, t, f);
+        if (hi >= lo) memset(mine[f] + lo, 0, (size_t)(hi - lo + 1) * sizeof(double));
     }
 }
 
@@ -56,10 +67,15 @@ void lm_threads_reduce(lm_sim *sim, int nt, int nf, double *const *out)
 {
     if (nt <= 1) return;
     lm_grid *g = &sim->grid;
-    long nn = (long)lm_grid_nodes(g);
+    long lo = g->tlo[1], hi = g->thi[1];
+    for (int t = 2; t < nt; t++) {
+        if (g->tlo[t] < lo) lo = g->tlo[t];
+        if (g->thi[t] > hi) hi = g->thi[t];
+    }
 #pragma omp parallel for num_threads(nt) schedule(static)
-    for (long i = 0; i < nn; i++)
+    for (long i = lo; i <= hi; i++)
         for (int t = 1; t < nt; t++)
-            for (int f = 0; f < nf; f++)
-                out[f][i] += copy_of(g, t, f)[i];
+            if (i >= g->tlo[t] && i <= g->thi[t])
+                for (int f = 0; f < nf; f++)
+                    out[f][i] += copy_of(g, t, f)[i];
 }

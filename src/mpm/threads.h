@@ -30,11 +30,19 @@ static inline void lm_thread_range(size_t n, int t, int nt, size_t *a, size_t *b
 /* Makes room for the per-thread copies of up to LM_SCATTER_FIELDS nodal
  * fields; LM_ERR_MEMORY (message in sim->err) if it cannot. */
 #define LM_SCATTER_FIELDS 3
+#define LM_MAX_THREADS 256
+/* Loops over nodes run on threads only above this many nodes: below it the
+ * fork and join cost more than the loop (the dog-bone's grid has 289). */
+#define LM_NODE_LOOP_MIN 4096
 lm_status lm_threads_reserve(lm_sim *sim);
-/* Thread t's copies of the nf fields `out`: `out` itself for thread 0,
- * zeroed private arrays for the others. */
-void lm_thread_fields(lm_sim *sim, int t, int nf, double *const *out, double **mine);
-/* out[f][i] += the other threads' copies, in thread order. */
+/* Thread t's copies of the nf fields `out` for scattering particles
+ * [a, b): `out` itself for thread 0, private arrays for the others, zeroed
+ * over the nodes those particles touch (particles are stored body by body
+ * and seeded row by row, so a range touches a band of the grid, and large
+ * grids cost no more than the particles' share). */
+void lm_thread_fields(lm_sim *sim, int t, size_t a, size_t b, int nf, double *const *out,
+                      double **mine);
+/* out[f][i] += the other threads' copies over their bands, in thread order. */
 void lm_threads_reduce(lm_sim *sim, int nt, int nf, double *const *out);
 
 #endif

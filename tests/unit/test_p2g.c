@@ -27,7 +27,7 @@ static void one_scheme(lm_scheme scheme)
     double M = lm_body_mass(sim, -1), px0, py0;
     lm_sim_momentum(sim, &px0, &py0);
 
-    lm_grid_clear(&sim->grid);
+    lm_step_clear(sim);
     lm_step_shape(sim);
     lm_step_p2g(sim);
     double mg = 0, pgx = 0, pgy = 0;
