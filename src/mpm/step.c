@@ -28,20 +28,22 @@ void lm_step_shape(lm_sim *sim)
                           &p->N[4 * q], &p->Gx[4 * q], &p->Gy[4 * q]);
 }
 
-/* Step 1: m_i = sum_p m_p N_ip, p_i = sum_p m_p v_p N_ip (lumped mass). */
-void lm_step_p2g(lm_sim *sim)
+/* The three particle-to-grid sums of the step. */
+typedef enum scatter_kind {
+    SCATTER_MASS_MOMENTUM,   /* m_i, p_i (step 1) */
+    SCATTER_FORCES,          /* f_i^int (step 2) */
+    SCATTER_MOMENTUM         /* the MUSL re-map of m_p v_p (step 5) */
+} scatter_kind;
+
+/* The loops of each sum (the kind is chosen outside them: a switch per
+ * corner costs a fifth of the step). */
+static void scatter_range(const lm_sim *sim, scatter_kind kind, size_t a, size_t b,
+                          double *const *f)
 {
-    lm_grid *g = &sim->grid;
+    const lm_grid *g = &sim->grid;
     const lm_particles *p = &sim->p;
-    int nt = lm_sim_threads(sim);
-    double *const out[3] = {g->m, g->px, g->py};
-#pragma omp parallel num_threads(nt)
-    {
-        int t = LM_THREAD_ID();
-        size_t a, b;
-        double *f[3];
-        lm_thread_range(p->n, t, nt, &a, &b);
-        lm_thread_fields(sim, t, a, b, 3, out, f);
+    switch (kind) {
+    case SCATTER_MASS_MOMENTUM:
         for (size_t q = a; q < b; q++) {
             for (int k = 0; k < 4; k++) {
                 int i = corner(g, p->node[q], k);
@@ -51,24 +53,8 @@ void lm_step_p2g(lm_sim *sim)
                 f[2][i] += w * p->vy[q];
             }
         }
-    }
-    lm_threads_reduce(sim, nt, 3, out);
-}
-
-/* Step 2: f_i^int = -sum_p V_p sigma_p . G_ip ([F] eq 9), f_i^ext = m_i g. */
-void lm_step_forces(lm_sim *sim)
-{
-    lm_grid *g = &sim->grid;
-    const lm_particles *p = &sim->p;
-    int nt = lm_sim_threads(sim);
-    double *const out[2] = {g->fx, g->fy};
-#pragma omp parallel num_threads(nt)
-    {
-        int t = LM_THREAD_ID();
-        size_t a, b;
-        double *f[2];
-        lm_thread_range(p->n, t, nt, &a, &b);
-        lm_thread_fields(sim, t, a, b, 2, out, f);
+        break;
+    case SCATTER_FORCES:
         for (size_t q = a; q < b; q++) {
             double V = p->m[q] / p->rho[q];
             for (int k = 0; k < 4; k++) {
@@ -78,8 +64,51 @@ void lm_step_forces(lm_sim *sim)
                 f[1][i] -= V * (p->sxy[q] * gx + p->syy[q] * gy);
             }
         }
+        break;
+    case SCATTER_MOMENTUM:
+        for (size_t q = a; q < b; q++) {
+            for (int k = 0; k < 4; k++) {
+                int i = corner(g, p->node[q], k);
+                double w = p->m[q] * p->N[4 * q + k];
+                f[0][i] += w * p->vx[q];
+                f[1][i] += w * p->vy[q];
+            }
+        }
+        break;
     }
-    lm_threads_reduce(sim, nt, 2, out);
+}
+
+/* Adds one of the sums into the nf fields `out` (zeroed by the caller),
+ * each thread over its own particles (threads.h). */
+static void scatter(lm_sim *sim, scatter_kind kind, int nf, double *const *out)
+{
+    int nt = lm_sim_threads(sim);
+#pragma omp parallel num_threads(nt)
+    {
+        int t = LM_THREAD_ID();
+        size_t a, b;
+        double *f[LM_SCATTER_FIELDS];
+        lm_thread_range(sim->p.n, t, nt, &a, &b);
+        lm_thread_fields(sim, t, a, b, nf, out, f);
+        scatter_range(sim, kind, a, b, f);
+    }
+    lm_threads_reduce(sim, nt, nf, out);
+}
+
+/* Step 1: m_i = sum_p m_p N_ip, p_i = sum_p m_p v_p N_ip (lumped mass). */
+void lm_step_p2g(lm_sim *sim)
+{
+    lm_grid *g = &sim->grid;
+    double *const out[3] = {g->m, g->px, g->py};
+    scatter(sim, SCATTER_MASS_MOMENTUM, 3, out);
+}
+
+/* Step 2: f_i^int = -sum_p V_p sigma_p . G_ip ([F] eq 9), f_i^ext = m_i g. */
+void lm_step_forces(lm_sim *sim)
+{
+    lm_grid *g = &sim->grid;
+    double *const out[2] = {g->fx, g->fy};
+    scatter(sim, SCATTER_FORCES, 2, out);
     size_t nn = lm_grid_nodes(g);
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
     for (long i = 0; i < (long)nn; i++) {
@@ -151,30 +180,12 @@ void lm_step_g2p(lm_sim *sim)
 void lm_step_strain_velocity(lm_sim *sim)
 {
     lm_grid *g = &sim->grid;
-    const lm_particles *p = &sim->p;
     size_t nn = lm_grid_nodes(g);
     if (sim->def.scheme == LM_MUSL) {
-        int nt = lm_sim_threads(sim);
         double *const out[2] = {g->vx, g->vy};
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
         for (long i = 0; i < (long)nn; i++) g->vx[i] = g->vy[i] = 0;
-#pragma omp parallel num_threads(nt)
-        {
-            int t = LM_THREAD_ID();
-            size_t a, b;
-            double *f[2];
-            lm_thread_range(p->n, t, nt, &a, &b);
-            lm_thread_fields(sim, t, a, b, 2, out, f);
-            for (size_t q = a; q < b; q++) {
-                for (int k = 0; k < 4; k++) {
-                    int i = corner(g, p->node[q], k);
-                    double w = p->m[q] * p->N[4 * q + k];
-                    f[0][i] += w * p->vx[q];
-                    f[1][i] += w * p->vy[q];
-                }
-            }
-        }
-        lm_threads_reduce(sim, nt, 2, out);
+        scatter(sim, SCATTER_MOMENTUM, 2, out);
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
         for (long i = 0; i < (long)nn; i++) {
             if (g->m[i] > 0) {
