@@ -78,7 +78,7 @@ int la_membrane_material(lua_State *L)
  * g = sqrt(2) h); a table {c1, c2, lambda, g} overrides; off when absent. */
 int la_gas(lua_State *L)
 {
-    static const char *const keys[] = {"rho", "e", "p", "gamma", "mu", "av", NULL};
+    static const char *const keys[] = {"rho", "e", "p", "gamma", "mu", "av", "split", NULL};
     static const char *const avkeys[] = {"c1", "c2", "lambda", "g", NULL};
     const char *fn = "lamina.gas";
     la_check_keys(L, 1, fn, keys);
@@ -87,6 +87,8 @@ int la_gas(lua_State *L)
     m->rho = la_number(L, 1, fn, "rho");
     m->gamma = la_opt_number(L, 1, fn, "gamma", 1.4);
     m->mu = la_opt_number(L, 1, fn, "mu", 0);
+    m->split = la_opt_number(L, 1, fn, "split", 0);
+    if (!(m->split >= 0)) luaL_error(L, "%s: split must be >= 0 (got %f)", fn, m->split);
     int has_e = la_has(L, 1, "e"), has_p = la_has(L, 1, "p");
     if (has_e == has_p) luaL_error(L, "%s: give exactly one of 'e' (specific internal "
                                    "energy) and 'p' (pressure)", fn);

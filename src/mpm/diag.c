@@ -175,10 +175,13 @@ double lm_body_mean_pressure(const lm_sim *sim, int body)
     const lm_body *b = &sim->bodies[body];
     const lm_material *mat = sim->mats[b->mat];
     if (mat->kind != LM_GAS || b->count == 0) return 0;
-    double s = 0;
-    for (size_t q = b->first; q < b->first + b->count; q++)
-        s += (mat->gamma - 1) * sim->p.rho[q] * sim->p.e[q];
-    return s / (double)b->count;
+    /* mass-weighted: split points (split.c) count for their mass */
+    double s = 0, m = 0;
+    for (size_t q = b->first; q < b->first + b->count; q++) {
+        s += sim->p.m[q] * (mat->gamma - 1) * sim->p.rho[q] * sim->p.e[q];
+        m += sim->p.m[q];
+    }
+    return s / m;
 }
 
 double lm_body_mean_tangential_stress(const lm_sim *sim, int body)

@@ -56,6 +56,8 @@ typedef struct lm_material {
     int av;                /* gas: Wilkins artificial viscosity on ([F] eq 24) */
     double av_c1, av_c2, av_lambda, av_g;   /* its constants; g <= 0: sqrt(2) h */
     double beta;           /* linear fluid: bulk modulus */
+    double split;          /* gas: a point standing for more than 1/split
+                              of a cell becomes four (split.c); 0: never */
     double pic;            /* FLIP/PIC blend for this material's particles;
                               < 0: the simulation's (lm_sim_def.pic). Not
                               exposed: blending a subset of the particles

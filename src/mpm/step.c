@@ -412,5 +412,7 @@ lm_status lm_sim_step(lm_sim *sim)
     /* t from the step count, so that long runs do not accumulate dt's
      * rounding error. */
     sim->t = sim->t_base + (double)(sim->step - sim->step_base) * sim->def.dt;
-    return lm_step_check(sim);
+    st = lm_step_check(sim);
+    if (st != LM_OK) return st;
+    return lm_step_split(sim);
 }

@@ -1,0 +1,134 @@
+/* split.c - splitting gas points that have thinned out (lamina's addition,
+ * not in the papers; docs/decisions.md "Gas splitting").
+ *
+ * Why: a gas point carries a fixed mass, so where the gas expands the
+ * points draw apart; once a cell holds too few of them the grid no longer
+ * sees a continuum there (measured on the dog-bone at cell 0.05: viscous
+ * heating thins the gas beside the membrane to a few points per cell, and
+ * one slips past the membrane or is crushed). A gas point that stands for
+ * more than 1/split of a cell becomes four, each of a quarter of its mass
+ * at the centre of a quarter of its square (side sqrt(V)), with its
+ * velocity, density, specific energy and stress. Mass, momentum, kinetic
+ * and internal energy and the centre of mass are unchanged; so is the
+ * density field, which is why the children do not split again at once. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "particles.h"
+#include "step.h"
+
+static void copy_particle(lm_particles *p, size_t to, size_t from)
+{
+    double *const d[] = {p->x, p->y, p->vx, p->vy, p->m, p->rho, p->sxx, p->syy, p->sxy,
+                         p->szz, p->et, p->ds, p->tx, p->ty, p->e, p->q, p->ev};
+    for (size_t k = 0; k < sizeof d / sizeof d[0]; k++) d[k][to] = d[k][from];
+    p->body[to] = p->body[from];
+    p->mat[to] = p->mat[from];
+    p->node[to] = p->node[from];
+    memcpy(&p->N[4 * to], &p->N[4 * from], 4 * sizeof(double));
+    memcpy(&p->Gx[4 * to], &p->Gx[4 * from], 4 * sizeof(double));
+    memcpy(&p->Gy[4 * to], &p->Gy[4 * from], 4 * sizeof(double));
+}
+
+/* Is (x, y) closer than d to a membrane's polyline? */
+static int near_membrane(const lm_sim *sim, double x, double y, double d)
+{
+    const lm_particles *p = &sim->p;
+    for (int b = 0; b < sim->nbodies; b++) {
+        const lm_body *bd = &sim->bodies[b];
+        if (!bd->membrane || bd->count < 2) continue;
+        size_t last = bd->first + bd->count - 1;
+        for (size_t q = bd->first; q <= last; q++) {
+            size_t r = q < last ? q + 1 : bd->first;
+            if (q == last && !bd->closed) break;
+            double cx = p->x[q], cy = p->y[q], dx = p->x[r] - cx, dy = p->y[r] - cy;
+            double l2 = dx * dx + dy * dy;
+            double t = l2 > 0 ? ((x - cx) * dx + (y - cy) * dy) / l2 : 0;
+            t = t < 0 ? 0 : t > 1 ? 1 : t;
+            double ex = cx + t * dx - x, ey = cy + t * dy - y;
+            if (ex * ex + ey * ey < d * d) return 1;
+        }
+    }
+    return 0;
+}
+
+static const double sx[4] = {-1, 1, -1, 1}, sy[4] = {-1, -1, 1, 1};
+
+/* A thinned gas point at least a cell away from every membrane. */
+static int wants_split(const lm_sim *sim, size_t q)
+{
+    const lm_particles *p = &sim->p;
+    const lm_material *mat = sim->mats[p->mat[q]];
+    if (mat->kind != LM_GAS || !(mat->split > 0)) return 0;
+    double V = p->m[q] / p->rho[q];
+    if (!(V * mat->split > sim->grid.hx * sim->grid.hy)) return 0;
+    /* gas within a cell of a membrane is left whole: its children, closer
+     * to the membrane than the points it was seeded with, leak through it
+     * (measured on the dog-bone at cell 0.2) */
+    if (near_membrane(sim, p->x[q], p->y[q], fmin(sim->grid.hx, sim->grid.hy))) return 0;
+    return 1;
+}
+
+/* Particle q becomes the lower-left quarter; its three siblings go to
+ * r, r + 1, r + 2. */
+static void split_one(lm_sim *sim, size_t q, size_t r)
+{
+    lm_particles *p = &sim->p;
+    const lm_grid *g = &sim->grid;
+    double a = 0.25 * sqrt(p->m[q] / p->rho[q]);
+    double x1 = g->x0 + g->nx * g->hx, y1 = g->y0 + g->ny * g->hy;
+    double cx = p->x[q], cy = p->y[q];
+    p->m[q] *= 0.25;
+    for (int k = 0; k < 4; k++) {
+        size_t c = k == 0 ? q : r + (size_t)k - 1;
+        if (k > 0) copy_particle(p, c, q);
+        p->x[c] = fmin(fmax(cx + sx[k] * a, g->x0), x1);
+        p->y[c] = fmin(fmax(cy + sy[k] * a, g->y0), y1);
+    }
+}
+
+lm_status lm_step_split(lm_sim *sim)
+{
+    lm_particles *p = &sim->p;
+    int any = 0;
+    for (int m = 0; m < sim->nmats; m++)
+        if (sim->mats[m]->kind == LM_GAS && sim->mats[m]->split > 0) any = 1;
+    if (!any) return LM_OK;
+    unsigned char *flag = malloc(p->n);
+    if (!flag) {
+        snprintf(sim->err, sizeof sim->err, "out of memory splitting gas points");
+        return LM_ERR_MEMORY;
+    }
+    size_t total = 0;
+    for (size_t q = 0; q < p->n; q++) total += flag[q] = (unsigned char)wants_split(sim, q);
+    size_t n_new = p->n + 3 * total;
+    if (total == 0 || (n_new > p->cap &&
+                       lm_particles_reserve(p, n_new > 2 * p->cap ? n_new : 2 * p->cap))) {
+        free(flag);
+        if (total == 0) return LM_OK;
+        snprintf(sim->err, sizeof sim->err, "out of memory splitting gas points (%zu)", n_new);
+        return LM_ERR_MEMORY;
+    }
+    /* shift[b]: points inserted before body b. Bodies move up, the last
+     * first, so nothing is overwritten before it has moved. */
+    size_t before = 3 * total;
+    for (int b = sim->nbodies - 1; b >= 0; b--) {
+        lm_body *bd = &sim->bodies[b];
+        size_t s = 0;
+        for (size_t q = bd->first; q < bd->first + bd->count; q++) s += flag[q];
+        before -= 3 * s;
+        size_t nf = bd->first + before;
+        if (before)
+            for (size_t k = bd->count; k-- > 0;) copy_particle(p, nf + k, bd->first + k);
+        size_t tail = nf + bd->count, j = 0;
+        for (size_t k = 0; k < bd->count; k++)
+            if (flag[bd->first + k]) split_one(sim, nf + k, tail + 3 * j++);
+        bd->first = nf;
+        bd->count += 3 * s;
+    }
+    p->n = n_new;
+    free(flag);
+    return LM_OK;
+}
