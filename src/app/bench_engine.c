@@ -173,8 +173,9 @@ int bench_engine(int argc, char **argv)
             }
         } else if (strcmp(argv[i], "--threads") == 0 && i + 1 < argc) {
             threads = atoi(argv[++i]);
-            if (threads < 1 || threads > 256) {
-                fprintf(stderr, "lamina bench engine: --threads needs a whole number from 1 to 256\n");
+            if (threads < 1 || threads > LM_MAX_THREADS) {
+                fprintf(stderr, "lamina bench engine: --threads needs a whole number from 1 to %d\n",
+                        LM_MAX_THREADS);
                 return 2;
             }
         } else if (strcmp(argv[i], "--sizes") == 0 && i + 1 < argc) {
@@ -197,11 +198,11 @@ int bench_engine(int argc, char **argv)
         }
     }
     lm_material rubber = {.kind = LM_ELASTIC, .rho = 1000, .E = 1000, .nu = 0.3,
-                          .plane = LM_PLANE_STRAIN, .pic = -1};
+                          .plane = LM_PLANE_STRAIN};
     lm_material air = {.kind = LM_GAS, .rho = 1, .gamma = 1.4, .mu = 0.2,
-                       .e0 = 1000 / (0.4 * 1), .pic = -1};
+                       .e0 = 1000 / (0.4 * 1)};
     lm_material skin = {.kind = LM_MEMBRANE, .rho = 0.5, .E = 1e6, .nu = 0.3,
-                        .thickness = 0.1, .law = LM_LAW_PLANE_STRESS, .pic = -1};
+                        .thickness = 0.1, .law = LM_LAW_PLANE_STRESS};
     printf("lamina bench engine: %d thread%s, about %.3g particle-steps per case\n\n", threads,
            threads == 1 ? "" : "s", work);
     printf("| case         | particles |   steps |       s | M p-steps/s |\n");

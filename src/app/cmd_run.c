@@ -8,6 +8,7 @@
 
 #include "app.h"
 #include "lamina_lua.h"
+#include "mpm.h"
 #include "render.h"
 
 /* FNV-1a of the script's bytes: the provenance stamped into every PNG. */
@@ -81,8 +82,9 @@ static int parse_args(int argc, char **argv, lamina_run *run, const char **repor
             const char *v = a[9] == '=' ? a + 10 : (i + 1 < argc ? argv[++i] : NULL);
             char *end = NULL;
             long n = v ? strtol(v, &end, 10) : 0;
-            if (!v || !*v || *end || n < 1 || n > 256) {
-                fprintf(stderr, "lamina run: --threads needs a whole number from 1 to 256\n");
+            if (!v || !*v || *end || n < 1 || n > LM_MAX_THREADS) {
+                fprintf(stderr, "lamina run: --threads needs a whole number from 1 to %d\n",
+                        LM_MAX_THREADS);
                 return -1;
             }
             setenv("LAMINA_THREADS", v, 1);

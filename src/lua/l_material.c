@@ -22,7 +22,6 @@ static lm_material *push_material(lua_State *L)
 {
     lm_material *m = lua_newuserdatauv(L, sizeof *m, 0);
     memset(m, 0, sizeof *m);
-    m->pic = -1;   /* the simulation's velocity update */
     luaL_setmetatable(L, LA_MATERIAL);
     return m;
 }

@@ -108,8 +108,9 @@ int la_sim_new(lua_State *L)
      * the state is bit-identical for the same count (docs/decisions.md) */
     const char *env = getenv("LAMINA_THREADS");
     double threads = la_opt_number(L, 1, fn, "threads", env && *env ? atof(env) : 1);
-    if (!(threads >= 1 && threads <= 256) || threads != floor(threads))
-        luaL_error(L, "%s: threads must be a whole number from 1 to 256 (got %f)", fn, threads);
+    if (!(threads >= 1 && threads <= LM_MAX_THREADS) || threads != floor(threads))
+        luaL_error(L, "%s: threads must be a whole number from 1 to %d (got %f)", fn,
+                   LM_MAX_THREADS, threads);
     d.threads = (int)threads;
 
     la_sim *s = lua_newuserdatauv(L, sizeof *s, 1);

@@ -58,17 +58,15 @@ typedef struct lm_material {
     double beta;           /* linear fluid: bulk modulus */
     double split;          /* gas: a point standing for more than 1/split
                               of a cell becomes four (split.c); 0: never */
-    double pic;            /* FLIP/PIC blend for this material's particles;
-                              < 0: the simulation's (lm_sim_def.pic). Not
-                              exposed: blending a subset of the particles
-                              that share nodes with others does not conserve
-                              momentum (measured on the dog-bone) */
 } lm_material;
 
 /* Fastest wave speed of the material (physics.md §5), for the Courant check. */
 double lm_material_wave_speed(const lm_material *mat);
 /* Checks the parameters; 0 if fine, else writes why into err. */
 int lm_material_validate(const lm_material *mat, char *err, size_t errlen);
+
+/* Most threads a step can use (lamina.sim{threads}; threads.h). */
+#define LM_MAX_THREADS 256
 
 /* ---- grid (grid.c) ----------------------------------------------------- */
 
@@ -85,7 +83,7 @@ typedef struct lm_grid {
     double *ax, *ay;       /* step 4: acceleration f_i / m_i */
     double *tbuf;          /* other threads' copies of scattered fields */
     size_t tcap;           /* (threads.c), and the band of nodes each */
-    long tlo[256], thi[256];   /* thread's copy covers */
+    long tlo[LM_MAX_THREADS], thi[LM_MAX_THREADS];   /* thread's copy covers */
 } lm_grid;
 
 /* ---- particles (particles.c) -------------------------------------------- */

@@ -140,7 +140,7 @@ void lm_step_g2p(lm_sim *sim)
 {
     lm_grid *g = &sim->grid;
     lm_particles *p = &sim->p;
-    double dt = sim->def.dt;
+    double dt = sim->def.dt, pic = sim->def.pic;
     /* per node once, not per particle corner: a_i = f_i / m_i, v_i^L */
     long nn = (long)lm_grid_nodes(g);
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
@@ -154,8 +154,6 @@ void lm_step_g2p(lm_sim *sim)
     long n = (long)p->n;
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static)
     for (long q = 0; q < n; q++) {
-        double pic = sim->mats[p->mat[q]]->pic;
-        if (pic < 0) pic = sim->def.pic;
         double ax = 0, ay = 0, ux = 0, uy = 0;
         for (int k = 0; k < 4; k++) {
             int i = corner(g, p->node[q], k);

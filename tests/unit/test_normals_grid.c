@@ -8,6 +8,7 @@
 
 #include "check.h"
 #include "normals.h"
+#include "normals_fixture.h"
 
 #define PI 3.14159265358979323846
 #define DEG (180.0 / PI)
@@ -357,13 +358,7 @@ static void test_grid_3d(void)
 {
     enum { N = 200 };
     double x[N], y[N], z[N], n0[N], n1[N], n2[N];
-    double golden = (3 - sqrt(5.0)) * PI;
-    for (int k = 0; k < N; k++) {
-        double c = (k + 0.5) / N, s = sqrt(1 - c * c), ph = 0.5 * PI * fmod(k * golden, 1.0);
-        x[k] = 0.8 * s * cos(ph);
-        y[k] = 0.8 * s * sin(ph);
-        z[k] = 0.8 * c;
-    }
+    sphere_octant(N, 0.8, x, y, z);
     const lm_ngrid g = {3, {0, 0, 0}, {0.5, 0.5, 0.5}, {2, 2, 2}};
     const double *p[3] = {x, y, z};
     double *nrm[3] = {n0, n1, n2};

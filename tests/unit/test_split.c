@@ -21,9 +21,9 @@ int main(void)
 {
     lm_sim *sim = make();
     CHECK(sim != NULL);
-    lm_material gas = {.kind = LM_GAS, .rho = 1, .gamma = 1.4, .e0 = 250, .split = 16, .pic = -1};
+    lm_material gas = {.kind = LM_GAS, .rho = 1, .gamma = 1.4, .e0 = 250, .split = 16};
     lm_material skin = {.kind = LM_MEMBRANE, .rho = 0.5, .E = 1e6, .nu = 0.3,
-                        .thickness = 0.1, .law = LM_LAW_UNIAXIAL, .pic = -1};
+                        .thickness = 0.1, .law = LM_LAW_UNIAXIAL};
     int gi = lm_sim_add_material(sim, &gas), si = lm_sim_add_material(sim, &skin);
     int gb = lm_sim_add_body(sim, gi);
     /* 0: thin (V = 0.01 / 16 * 2 > h^2 / 16), far from the membrane;
