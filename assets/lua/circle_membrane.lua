@@ -4,7 +4,8 @@
 -- rho = 0.5, t = 0.1 (plane stress), initially unstressed; gas gamma = 1.4,
 -- p0 = 1000, rho = 1, mu = 0.2, 16 ppc; 10 x 10 cells of 0.1; dt = 0.7e-4
 -- (Courant 1.04 on the membrane's plane-stress wave speed: the paper's dt,
--- so courant is raised to 1.05).
+-- so courant is raised to 1.05); the gas seeded with fill = "clipped" (o.fill
+-- overrides; docs/normals.md "Centred elements" says why).
 local M = {}
 
 -- o: normals (default "connectivity"), oriented away from the centre.
@@ -17,7 +18,7 @@ function M.setup(o)
   local air = lamina.gas{ rho = 1, p = 1000, gamma = 1.4, mu = 0.2 }
   local skin = lamina.membrane{ rho = 0.5, E = 1e6, nu = 0.3, thickness = 0.1,
                                 law = "plane_stress" }
-  local gas = sim:body{ material = air, ppc = 16, name = "gas",
+  local gas = sim:body{ material = air, ppc = 16, name = "gas", fill = o.fill or "clipped",
                         region = lamina.disk{ center = {0, 0}, radius = 0.5 } }
   local mem = sim:membrane{ material = skin, count = 91, name = "membrane",
                             normals = o.normals or "connectivity", orient = {0, 0},

@@ -10,8 +10,10 @@
 -- assumed: the normals paper's set-up: radius 0.5, 91 points, E = 1e6,
 --   nu = 0.3, rho = 0.5, t = 0.1 (plane stress), gas gamma = 1.4, p0 = 1000,
 --   rho = 1, mu = 0.2, 16 ppc, 10 x 10 cells of 0.1, dt = 0.7e-4 (Courant
---   1.04 on the membrane: courant raised to 1.05); connectivity normals (the
---   isosurface normals come with issue 4)
+--   1.04 on the membrane: courant raised to 1.05); connectivity normals
+--   (normals_dynamic_circle compares the isosurface ones); the gas seeded
+--   with fill = "clipped", so it meets the circle evenly (the centres rule
+--   leaves a jagged edge that loads the membrane unevenly and wrinkles it)
 -- visual: t_end=0.01
 -- thumb: fig12_t0.050.png
 local out = lamina.param("out", "out/gas_circular_membrane")

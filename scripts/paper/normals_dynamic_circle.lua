@@ -14,7 +14,10 @@
 --   lamina's curvature rows and a random point kept clear of the membrane
 --   (docs/normals.md "Centred elements"; the paper's per-cell hybrid rule
 --   has single-step outliers here); random points seeded per element and
---   step (seed 1); quarter model mirrored
+--   step (seed 1); the gas seeded with fill = "clipped" (the cut sub-cells
+--   at the wall stand for their area: with the centres rule the jagged edge
+--   of the gas wrinkles the membrane early and its normals leave the radial by
+--   up to 2.9 degrees); quarter model mirrored
 -- visual: t_end=0.005
 -- thumb: fig12_t0.0100.png
 local out = lamina.param("out", "out/normals_dynamic_circle")
@@ -60,7 +63,7 @@ table.sort(worst_c)
 lamina.report{
   pressure_difference = { 100 * dev, unit = "% (largest)", paper = 0, tol = 5 },
   normal_error_median = { worst[math.ceil(0.5 * #worst)], unit = "deg" },
-  normal_error_max = { worst[#worst], unit = "deg" },
+  normal_error_max = { worst[#worst], unit = "deg", tol = 2 },
   normal_error_vs_connectivity_max = { worst_c[#worst_c], unit = "deg" },
   state_hash = iso:hash(),
 }

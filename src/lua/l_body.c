@@ -56,6 +56,35 @@ static int inside(lua_State *L, int ridx, const lm_region *r, double x, double y
     return in;
 }
 
+/* The region test for lm_seed_clip. */
+typedef struct { lua_State *L; int ridx; const lm_region *r; } clip_ctx;
+
+static int clip_inside(void *ctx, double x, double y)
+{
+    clip_ctx *c = ctx;
+    return inside(c->L, c->ridx, c->r, x, y);
+}
+
+/* fill = "centres" (the papers' rule) or "clipped" (seed.c). */
+static int read_fill(lua_State *L, const char *fn)
+{
+    static const char *const fills[] = {"centres", "clipped", NULL};
+    lua_getfield(L, 2, "fill");
+    int clipped = 0;
+    if (!lua_isnil(L, -1)) {
+        const char *f = lua_tostring(L, -1);
+        int k = -1;
+        for (int i = 0; f && fills[i]; i++)
+            if (strcmp(f, fills[i]) == 0) k = i;
+        if (k < 0 || lua_type(L, -1) != LUA_TSTRING)
+            luaL_error(L, "%s: 'fill' must be \"centres\" or \"clipped\" (got %s)", fn,
+                       f ? f : luaL_typename(L, -1));
+        clipped = k == 1;
+    }
+    lua_pop(L, 1);
+    return clipped;
+}
+
 /* velocity = {vx, vy} or a function (x, y) -> vx, vy. */
 static void velocity_at(lua_State *L, int vidx, double x, double y, double *vx, double *vy)
 {
@@ -76,7 +105,8 @@ static void velocity_at(lua_State *L, int vidx, double x, double y, double *vx, 
 
 int la_sim_body(lua_State *L)
 {
-    static const char *const keys[] = {"material", "region", "ppc", "velocity", "name", NULL};
+    static const char *const keys[] = {"material", "region", "ppc", "velocity", "name",
+                                       "fill", NULL};
     const char *fn = "sim:body";
     la_sim *s = la_check_sim(L, 1);
     la_check_keys(L, 2, fn, keys);
@@ -100,6 +130,8 @@ int la_sim_body(lua_State *L)
 
     int npx, npy;
     read_ppc(L, fn, &npx, &npy);
+    int clipped = read_fill(L, fn);
+    clip_ctx cc = { L, ridx, region };
 
     double vx0 = 0, vy0 = 0;
     int vidx = 0;
@@ -124,10 +156,14 @@ int la_sim_body(lua_State *L)
     size_t total = lm_seed_count(&range);
     for (size_t k = 0; k < total; k++) {
         double x, y, vx = vx0, vy = vy0;
+        double part = 1;
         lm_seed_point(g, &range, k, &x, &y);
-        if (!inside(L, ridx, region, x, y)) continue;
+        if (clipped) {
+            part = lm_seed_clip(g, npx, npy, x, y, clip_inside, &cc, &x, &y);
+            if (part == 0) continue;
+        } else if (!inside(L, ridx, region, x, y)) continue;
         velocity_at(L, vidx, x, y, &vx, &vy);
-        if (lm_sim_add_particle(sim, bi, x, y, vx, vy, mass, mat->rho) != LM_OK)
+        if (lm_sim_add_particle(sim, bi, x, y, vx, vy, part * mass, mat->rho) != LM_OK)
             return luaL_error(L, "%s: %s", fn, sim->err);
     }
     if (sim->bodies[bi].count == 0)

@@ -230,6 +230,12 @@ void lm_seed_point(const lm_grid *g, const lm_seed_range *r, size_t k,
                    double *x, double *y);
 /* Mass of one seeded particle of density rho (per unit depth). */
 double lm_seed_mass(const lm_grid *g, int npx, int npy, double rho);
+/* fill = "clipped": the part of the sub-cell centred at (x, y) that lies
+ * inside the region, as an area fraction in [0, 1] and its centroid
+ * (cx, cy); inside(ctx, x, y) is the region test. */
+typedef int (*lm_inside_fn)(void *ctx, double x, double y);
+double lm_seed_clip(const lm_grid *g, int npx, int npy, double x, double y,
+                    lm_inside_fn inside, void *ctx, double *cx, double *cy);
 
 /* ---- diagnostics (diag.c) ------------------------------------------------ */
 

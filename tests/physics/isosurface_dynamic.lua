@@ -8,16 +8,20 @@
 -- the two ends, against the radial direction and against each point's own
 -- connectivity normal (its neighbours x_{p+1} - x_{p-1}, which follows the
 -- membrane's wrinkles).
--- Checks: the pressure history within 5 % of the connectivity run's; the
--- worst isosurface normal per step within 2 degrees of its connectivity
--- normal at every step (measured 1.99); against the radial direction
--- median 1.21, 95th percentile 2.68, max 2.89 degrees.
--- Measured and reported, not hidden: the issue's 2 degrees from the exact
--- radial normal at every step is not reached. The membrane itself is not
--- that round: in the connectivity run its own normals are up to 2.7 degrees
--- off radial, and the isosurface run's excess is at the same two wrinkled
--- stretches (points 28-36 and 56-64, near 30 and 60 degrees), not at cells
--- the arc clips (the per-cell rule: max ~73 degrees there).
+-- The gas is seeded with fill = "clipped" (circle_membrane.lua): the cut
+-- sub-cells at the wall stand for their area, so the gas meets the circle
+-- evenly. With the centres rule the jagged edge of the gas loads the
+-- membrane unevenly and wrinkles it early: its own connectivity normals
+-- leave the radial by 1.9 degrees at t = 0.02 and 2.7 at t = 0.031, the
+-- isosurface ones by up to 2.89 (clipped: 1.1 until t = 0.03).
+-- Checks (measured): the worst isosurface normal per step within 2 degrees
+-- of the radial direction at every step (max 1.80; median 0.86, 95th
+-- percentile 1.65; the same for seeds 1-6) and within 2 degrees of its
+-- connectivity normal (max 1.30); the pressure history within 5 % of the
+-- connectivity run's (0.14 %).
+-- Reported: the connectivity run's own normals reach 2.52 degrees at the
+-- last steps (the ringing wrinkles the membrane late); the paper's per-cell hybrid
+-- rule is far off where the arc clips a cell corner (max ~77 degrees).
 local circle = require("circle_membrane")
 
 local function pct(t, f) return t[math.ceil(f * #t)] end
@@ -58,11 +62,5 @@ print(string.format("hybrid ([N] §8 per cell, reported): vs radial median %.2f,
 print(string.format("connectivity run: its normals vs radial median %.2f, max %.2f deg",
   pct(rc, .5), rc[#rc]))
 assert(dev <= 0.05, "pressure history not within 5 % of the connectivity run")
+assert(ri[#ri] <= 2, "isosurface normals more than 2 degrees from the radial direction")
 assert(ci[#ci] <= 2, "isosurface normals more than 2 degrees from the connectivity normal")
-assert(pct(ri, .5) <= 1.5, "isosurface normals: median worst error above 1.5 degrees")
-assert(pct(ri, .95) <= 3 and ri[#ri] <= 3, "isosurface normals: worst error above 3 degrees")
-if ri[#ri] > 2 then
-  print(string.format("EXPECTED FAILURE (reported): the isosurface normals exceed 2 degrees "
-    .. "from the radial direction at some steps (max %.2f; the connectivity run's own normals "
-    .. "reach %.2f)", ri[#ri], rc[#rc]))
-end
