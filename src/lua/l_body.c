@@ -234,14 +234,30 @@ static int body_energy(lua_State *L)
     return 1;
 }
 
-/* body:pressure() - the mean gas pressure (without q). */
+static void center_arg(lua_State *L, int idx, double *cx, double *cy);
+
+/* gas:pressure() - the mass-weighted mean over the particles (without q);
+ * gas:pressure(membrane [, {cx, cy}]) - the mean over the space the
+ * membrane encloses, sum_p V_p p_p / A (docs/decisions.md). */
 static int body_pressure(lua_State *L)
 {
-    lm_sim *sim;
+    lm_sim *sim, *sim2;
     la_body *b = check_body(L, 1, &sim);
     if (sim->mats[sim->bodies[b->index].mat]->kind != LM_GAS)
         return luaL_error(L, "body:pressure(): the body is not a gas");
-    lua_pushnumber(L, lm_body_mean_pressure(sim, b->index));
+    if (lua_isnoneornil(L, 2)) {
+        lua_pushnumber(L, lm_body_mean_pressure(sim, b->index));
+        return 1;
+    }
+    int m = la_check_body(L, 2, &sim2);
+    if (sim != sim2 || !sim->bodies[m].membrane)
+        return luaL_error(L, "gas:pressure(membrane): needs a membrane of the same sim");
+    double cx, cy;
+    center_arg(L, 3, &cx, &cy);
+    double a = lm_membrane_enclosed_area(sim, m, cx, cy);
+    if (!(a > 0))
+        return luaL_error(L, "gas:pressure(membrane): the membrane encloses no area");
+    lua_pushnumber(L, lm_body_pressure_integral(sim, b->index) / a);
     return 1;
 }
 
@@ -282,6 +298,20 @@ static int body_radius_at(lua_State *L)
     double r = lm_membrane_radius_at(sim, b->index, luaL_checknumber(L, 2), cx, cy);
     if (r < 0) lua_pushnil(L);
     else lua_pushnumber(L, r);
+    return 1;
+}
+
+/* membrane:enclosed_area([{cx, cy}]) - the area of the membrane's polygon,
+ * closed through the centre when open. */
+static int body_enclosed_area(lua_State *L)
+{
+    lm_sim *sim;
+    la_body *b = check_body(L, 1, &sim);
+    if (!sim->bodies[b->index].membrane)
+        return luaL_error(L, "body:enclosed_area(): the body is not a membrane");
+    double cx, cy;
+    center_arg(L, 2, &cx, &cy);
+    lua_pushnumber(L, lm_membrane_enclosed_area(sim, b->index, cx, cy));
     return 1;
 }
 
@@ -416,6 +446,7 @@ void la_open_body(lua_State *L)
                                        {"hoop_stress", body_hoop_stress},
                                        {"radius_at", body_radius_at},
                                        {"escaped", body_escaped},
+                                       {"enclosed_area", body_enclosed_area},
                                        {NULL, NULL}};
     luaL_newmetatable(L, LA_BODY);
     luaL_setfuncs(L, meta, 0);

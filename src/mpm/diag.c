@@ -184,6 +184,35 @@ double lm_body_mean_pressure(const lm_sim *sim, int body)
     return s / m;
 }
 
+/* V_p p_p = (m_p / rho_p) (gamma - 1) rho_p e_p: the particle density,
+ * which the continuity update carries and which drifts from the particles'
+ * spacing, cancels (docs/decisions.md "Gas pressure over the space"). */
+double lm_body_pressure_integral(const lm_sim *sim, int body)
+{
+    const lm_body *b = &sim->bodies[body];
+    const lm_material *mat = sim->mats[b->mat];
+    if (mat->kind != LM_GAS) return 0;
+    double s = 0;
+    for (size_t q = b->first; q < b->first + b->count; q++)
+        s += sim->p.m[q] * sim->p.e[q];
+    return (mat->gamma - 1) * s;
+}
+
+double lm_membrane_enclosed_area(const lm_sim *sim, int body, double cx, double cy)
+{
+    const lm_body *m = &sim->bodies[body];
+    size_t nv = m->count + (m->closed ? 0 : 1);
+    double a = 0;
+    for (size_t k = 0, j = nv - 1; k < nv; j = k++) {
+        double xk = k < m->count ? sim->p.x[m->first + k] : cx;
+        double yk = k < m->count ? sim->p.y[m->first + k] : cy;
+        double xj = j < m->count ? sim->p.x[m->first + j] : cx;
+        double yj = j < m->count ? sim->p.y[m->first + j] : cy;
+        a += xj * yk - xk * yj;
+    }
+    return 0.5 * fabs(a);
+}
+
 double lm_body_mean_tangential_stress(const lm_sim *sim, int body)
 {
     const lm_body *b = &sim->bodies[body];

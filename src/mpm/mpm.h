@@ -256,6 +256,11 @@ double lm_body_mass(const lm_sim *sim, int body);
 void lm_sim_momentum(const lm_sim *sim, double *px, double *py);
 /* Mean gas pressure (gamma - 1) rho e, without q, over a gas body. */
 double lm_body_mean_pressure(const lm_sim *sim, int body);
+/* The pressure integral over a gas body, sum_p V_p p_p = (gamma - 1)
+ * sum_p m_p e_p (without q): the quadrature the internal forces use. */
+double lm_body_pressure_integral(const lm_sim *sim, int body);
+/* Area of the membrane's polygon (closed through (cx, cy) if open). */
+double lm_membrane_enclosed_area(const lm_sim *sim, int body, double cx, double cy);
 /* Mean tangential (hoop) stress sigma_t over a membrane. */
 double lm_body_mean_tangential_stress(const lm_sim *sim, int body);
 /* Distance from (cx, cy) to the membrane along the ray at `deg` degrees;

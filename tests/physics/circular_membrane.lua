@@ -11,6 +11,15 @@
 -- circular (radius at 0 and 90 degrees within 1 %); no gas escapes; total
 -- energy stays within 0.1 % (viscous dissipation is small here).
 local sim, gas, mem = require("circle_membrane").setup()
+-- the space mean before the first step: the polygon of the 91 points has
+-- area 90 (r^2 / 2) sin 1 deg, and the clipped gas (gamma - 1) m e = p0 A
+-- over the exact quarter disk pi r^2 / 4 (seed.c; to 1e-5)
+local poly = 90 * 0.5 * 0.25 * math.sin(math.rad(1))
+assert(math.abs(mem:enclosed_area() - poly) <= 1e-12, "enclosed area of the quarter polygon")
+local p_space = gas:pressure(mem)
+assert(math.abs(p_space / (1000 * (math.pi / 16) / poly) - 1) <= 5e-5,
+       string.format("space-mean pressure at t = 0: %.6f", p_space))
+assert(math.abs(gas:pressure() - 1000) <= 1e-9, "particle-mean pressure at t = 0")
 local escaped = 0
 local rec = sim:record{ every = 1e-4, energy = true, values = {
   p = function() return gas:pressure() end,

@@ -9,6 +9,15 @@
 -- pressure converge with refinement (the radius grows towards the taut
 -- radius 1.40 and the steps shrink, the pressure falls towards the energy
 -- balance's 29.0 and the steps shrink).
+-- p is the mean over the space the membrane encloses, gas:pressure(mem) =
+-- sum V_p p_p / A: the pressure integral the internal forces use, over the
+-- polygon's area. Measured to t = 2.5 (mean over [1.5, 2.5]): p 32.33 /
+-- 29.78 / 29.48, hoop -7.5 / -4.3 / -2.5 % from p r / t. The mean over the
+-- particles (gamma - 1) rho_p e_p is printed beside it, not asserted:
+-- rho_p from the continuity update drifts from the particles' spacing
+-- (sum m / rho is 21 % above the enclosed area at t = 4, cell 0.1), and
+-- against it the hoop stress is -22 / -11 / +1.3 % off (docs/decisions.md
+-- "Gas pressure over the space").
 -- Energy ([F] §4.3.1: "less energy dissipation" with refinement): the
 -- loss is measured on the energy the dynamics sees, with the kinetic
 -- energy of the particles' momentum mapped to the grid
@@ -25,7 +34,8 @@ local function expand(h)
   local sim, gas, mem = dog.setup(h)
   local escaped = 0
   local rec = sim:record{ every = 0.01, energy = true, values = {
-    p = function() return gas:pressure() end,
+    p = function() return gas:pressure(mem) end,
+    pp = function() return gas:pressure() end,
     hoop = function() return mem:hoop_stress() end,
     r0 = function() return mem:radius_at(0) end,
     r90 = function() return mem:radius_at(90) end,
@@ -33,7 +43,7 @@ local function expand(h)
     escaped = function() escaped = math.max(escaped, mem:escaped(gas)); return escaped end } }
   sim:run{ t_end = t_end }
   local t0 = t_end - 1
-  local r = { p = rec:mean("p", t0, t_end), hoop = rec:mean("hoop", t0, t_end),
+  local r = { p = rec:mean("p", t0, t_end), pp = rec:mean("pp", t0, t_end), hoop = rec:mean("hoop", t0, t_end),
               r0 = rec:mean("r0", t0, t_end), r90 = rec:mean("r90", t0, t_end), escaped = escaped }
   local tot, ke, gk = rec:column("total"), rec:column("kinetic"), rec:column("gk")
   local n = #tot
@@ -43,10 +53,11 @@ local function expand(h)
   r.hidden = ke[n] - gk[n]
   r.r = 0.5 * (r.r0 + r.r90)
   r.prt = r.p * r.r / 0.1
+  r.pprt = r.pp * r.r / 0.1
   print(string.format("V7 cell %.2f: r(0) %.4f r(90) %.4f p %.2f hoop %.1f vs p r / t %.1f "
-    .. "(%+.1f %%), gas outside %d, visible energy loss %.2f %%, hidden kinetic energy %.2f, "
+    .. "(%+.1f %%; particle mean p %.2f: %+.1f %%), gas outside %d, visible energy loss %.2f %%, hidden kinetic energy %.2f, "
     .. "particle energy %+.2f %%", h, r.r0, r.r90, r.p, r.hoop, r.prt,
-    100 * (r.hoop - r.prt) / r.prt, escaped, 100 * r.loss, r.hidden, 100 * r.dE))
+    100 * (r.hoop - r.prt) / r.prt, r.pp, 100 * (r.hoop - r.pprt) / r.pprt, escaped, 100 * r.loss, r.hidden, 100 * r.dE))
   return r
 end
 
