@@ -236,6 +236,15 @@ static int body_energy(lua_State *L)
 
 static void center_arg(lua_State *L, int idx, double *cx, double *cy);
 
+/* A membrane's handle at idx, or an error naming the method. */
+static la_body *check_membrane(lua_State *L, int idx, lm_sim **sim, const char *method)
+{
+    la_body *b = check_body(L, idx, sim);
+    if (!(*sim)->bodies[b->index].membrane)
+        luaL_error(L, "body:%s(): the body is not a membrane", method);
+    return b;
+}
+
 /* gas:pressure() - the mass-weighted mean over the particles (without q);
  * gas:pressure(membrane [, {cx, cy}]) - the mean over the space the
  * membrane encloses, sum_p V_p p_p / A (docs/decisions.md). */
@@ -265,9 +274,7 @@ static int body_pressure(lua_State *L)
 static int body_hoop_stress(lua_State *L)
 {
     lm_sim *sim;
-    la_body *b = check_body(L, 1, &sim);
-    if (!sim->bodies[b->index].membrane)
-        return luaL_error(L, "body:hoop_stress(): the body is not a membrane");
+    la_body *b = check_membrane(L, 1, &sim, "hoop_stress");
     lua_pushnumber(L, lm_body_mean_tangential_stress(sim, b->index));
     return 1;
 }
@@ -290,9 +297,7 @@ static void center_arg(lua_State *L, int idx, double *cx, double *cy)
 static int body_radius_at(lua_State *L)
 {
     lm_sim *sim;
-    la_body *b = check_body(L, 1, &sim);
-    if (!sim->bodies[b->index].membrane)
-        return luaL_error(L, "body:radius_at(): the body is not a membrane");
+    la_body *b = check_membrane(L, 1, &sim, "radius_at");
     double cx, cy;
     center_arg(L, 3, &cx, &cy);
     double r = lm_membrane_radius_at(sim, b->index, luaL_checknumber(L, 2), cx, cy);
@@ -306,9 +311,7 @@ static int body_radius_at(lua_State *L)
 static int body_enclosed_area(lua_State *L)
 {
     lm_sim *sim;
-    la_body *b = check_body(L, 1, &sim);
-    if (!sim->bodies[b->index].membrane)
-        return luaL_error(L, "body:enclosed_area(): the body is not a membrane");
+    la_body *b = check_membrane(L, 1, &sim, "enclosed_area");
     double cx, cy;
     center_arg(L, 2, &cx, &cy);
     lua_pushnumber(L, lm_membrane_enclosed_area(sim, b->index, cx, cy));

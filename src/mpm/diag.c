@@ -198,16 +198,26 @@ double lm_body_pressure_integral(const lm_sim *sim, int body)
     return (mat->gamma - 1) * s;
 }
 
+/* Vertex k of a membrane's polygon: its points, then (cx, cy) when it is
+ * open (quarter models close through the centre). */
+static size_t polygon_size(const lm_body *m) { return m->count + (m->closed ? 0 : 1); }
+
+static void polygon_vertex(const lm_sim *sim, const lm_body *m, size_t k, double cx,
+                           double cy, double *x, double *y)
+{
+    *x = k < m->count ? sim->p.x[m->first + k] : cx;
+    *y = k < m->count ? sim->p.y[m->first + k] : cy;
+}
+
 double lm_membrane_enclosed_area(const lm_sim *sim, int body, double cx, double cy)
 {
     const lm_body *m = &sim->bodies[body];
-    size_t nv = m->count + (m->closed ? 0 : 1);
+    size_t nv = polygon_size(m);
     double a = 0;
     for (size_t k = 0, j = nv - 1; k < nv; j = k++) {
-        double xk = k < m->count ? sim->p.x[m->first + k] : cx;
-        double yk = k < m->count ? sim->p.y[m->first + k] : cy;
-        double xj = j < m->count ? sim->p.x[m->first + j] : cx;
-        double yj = j < m->count ? sim->p.y[m->first + j] : cy;
+        double xk, yk, xj, yj;
+        polygon_vertex(sim, m, k, cx, cy, &xk, &yk);
+        polygon_vertex(sim, m, j, cx, cy, &xj, &yj);
         a += xj * yk - xk * yj;
     }
     return 0.5 * fabs(a);
@@ -263,16 +273,15 @@ double lm_membrane_radius_at(const lm_sim *sim, int body, double deg, double cx,
 size_t lm_count_outside(const lm_sim *sim, int gas, int membrane, double cx, double cy)
 {
     const lm_body *m = &sim->bodies[membrane], *g = &sim->bodies[gas];
-    size_t nv = m->count + (m->closed ? 0 : 1);
+    size_t nv = polygon_size(m);
     size_t out = 0;
     for (size_t q = g->first; q < g->first + g->count; q++) {
         double px = sim->p.x[q], py = sim->p.y[q];
         int in = 0;
         for (size_t a = 0, b = nv - 1; a < nv; b = a++) {
-            double xa = a < m->count ? sim->p.x[m->first + a] : cx;
-            double ya = a < m->count ? sim->p.y[m->first + a] : cy;
-            double xb = b < m->count ? sim->p.x[m->first + b] : cx;
-            double yb = b < m->count ? sim->p.y[m->first + b] : cy;
+            double xa, ya, xb, yb;
+            polygon_vertex(sim, m, a, cx, cy, &xa, &ya);
+            polygon_vertex(sim, m, b, cx, cy, &xb, &yb);
             if ((ya > py) != (yb > py)) {
                 double xc = xa + (py - ya) * (xb - xa) / (yb - ya);
                 if (px < xc) in = !in;
