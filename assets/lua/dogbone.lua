@@ -85,7 +85,8 @@ M.counts = { [0.4] = 56, [0.2] = 100, [0.1] = 200, [0.05] = 400 }
 -- nu = 0.3, t = 0.1, plane stress, one-way law; quarter symmetry;
 -- dt = 0.5 h / c_membrane). o: normals (default "connectivity", oriented
 -- away from the origin), pic (default 0), split (gas splitting, default
--- none), threads (default 1). Returns sim, gas, membrane.
+-- none), threads (default 1), density (lamina.gas{density}, default
+-- "continuity"). Returns sim, gas, membrane.
 function M.setup(h, o)
   o = o or {}
   local cm = math.sqrt(1e6 / ((1 - 0.3^2) * 0.5))
@@ -93,7 +94,8 @@ function M.setup(h, o)
                           boundary = { left = "symmetry", bottom = "symmetry",
                                        right = "fixed", top = "fixed" },
                           pic = o.pic or 0, threads = o.threads }
-  local air = lamina.gas{ rho = 1, e = 250, gamma = 1.4, mu = 0.2, split = o.split }
+  local air = lamina.gas{ rho = 1, e = 250, gamma = 1.4, mu = 0.2, split = o.split,
+                          density = o.density }
   local skin = lamina.membrane{ rho = 0.5, E = 1e6, nu = 0.3, thickness = 0.1,
                                 law = "plane_stress", one_way = true }
   local gas = sim:body{ material = air, ppc = 64, region = M.contains, name = "gas" }

@@ -12,6 +12,7 @@
 
 static const char *const planes[] = {"strain", "stress", NULL};
 static const char *const laws[] = {"uniaxial", "plane_stress", NULL};
+static const char *const densities[] = {"continuity", "cell", "quadratic", NULL};
 
 lm_material *la_check_material(lua_State *L, int idx)
 {
@@ -77,7 +78,8 @@ int la_membrane_material(lua_State *L)
  * g = sqrt(2) h); a table {c1, c2, lambda, g} overrides; off when absent. */
 int la_gas(lua_State *L)
 {
-    static const char *const keys[] = {"rho", "e", "p", "gamma", "mu", "av", "split", NULL};
+    static const char *const keys[] = {"rho", "e", "p", "gamma", "mu", "av", "split",
+                                       "density", NULL};
     static const char *const avkeys[] = {"c1", "c2", "lambda", "g", NULL};
     const char *fn = "lamina.gas";
     la_check_keys(L, 1, fn, keys);
@@ -88,6 +90,8 @@ int la_gas(lua_State *L)
     m->mu = la_opt_number(L, 1, fn, "mu", 0);
     m->split = la_opt_number(L, 1, fn, "split", 0);
     if (!(m->split >= 0)) luaL_error(L, "%s: split must be >= 0 (got %f)", fn, m->split);
+    m->density = (lm_density)la_option(L, fn, "density",
+                                       la_opt_string(L, 1, fn, "density", "continuity"), densities);
     int has_e = la_has(L, 1, "e"), has_p = la_has(L, 1, "p");
     if (has_e == has_p) luaL_error(L, "%s: give exactly one of 'e' (specific internal "
                                    "energy) and 'p' (pressure)", fn);
@@ -160,6 +164,7 @@ static int mat_index(lua_State *L)
     else if (strcmp(k, "p") == 0 && m->kind == LM_GAS)
         lua_pushnumber(L, (m->gamma - 1) * m->rho * m->e0);
     else if (strcmp(k, "av") == 0 && m->kind == LM_GAS) lua_pushboolean(L, m->av);
+    else if (strcmp(k, "density") == 0 && m->kind == LM_GAS) lua_pushstring(L, densities[m->density]);
     else if (strcmp(k, "beta") == 0 && m->kind == LM_LINEAR_FLUID) lua_pushnumber(L, m->beta);
     else if (strcmp(k, "thickness") == 0 && m->kind == LM_MEMBRANE) lua_pushnumber(L, m->thickness);
     else if (strcmp(k, "law") == 0 && m->kind == LM_MEMBRANE) lua_pushstring(L, laws[m->law]);
@@ -203,8 +208,9 @@ static int mat_tostring(lua_State *L)
 {
     lm_material *m = la_check_material(L, 1);
     if (m->kind == LM_GAS) {
-        lua_pushfstring(L, "lamina.gas{rho = %f, e = %f, gamma = %f, mu = %f, av = %s}",
-                        m->rho, m->e0, m->gamma, m->mu, m->av ? "true" : "false");
+        lua_pushfstring(L, "lamina.gas{rho = %f, e = %f, gamma = %f, mu = %f, av = %s, "
+                        "density = \"%s\"}", m->rho, m->e0, m->gamma, m->mu,
+                        m->av ? "true" : "false", densities[m->density]);
         return 1;
     }
     if (m->kind == LM_LINEAR_FLUID) {

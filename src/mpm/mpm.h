@@ -43,6 +43,14 @@ typedef enum lm_plane { LM_PLANE_STRAIN = 0, LM_PLANE_STRESS = 1 } lm_plane;
  * tangential stress; a plane-stress membrane also sigma_z = nu sigma_t. */
 typedef enum lm_law { LM_LAW_UNIAXIAL = 0, LM_LAW_PLANE_STRESS = 1 } lm_law;
 
+/* How a gas point's density is found ([T] §4): the continuity equation
+ * (eq 4.7, the papers' runs), the gas mass of its cell (eq 4.5), or that
+ * cell density interpolated quadratically over the 3 x 3 cells around it
+ * (eq 4.6); density.c. */
+typedef enum lm_density {
+    LM_DENSITY_CONTINUITY = 0, LM_DENSITY_CELL = 1, LM_DENSITY_QUADRATIC = 2
+} lm_density;
+
 typedef struct lm_material {
     lm_kind kind;
     double rho;            /* reference density */
@@ -58,6 +66,7 @@ typedef struct lm_material {
     double beta;           /* linear fluid: bulk modulus */
     double split;          /* gas: a point standing for more than 1/split
                               of a cell becomes four (split.c); 0: never */
+    lm_density density;    /* gas: how rho_p is found (density.c) */
 } lm_material;
 
 /* Fastest wave speed of the material (physics.md §5), for the Courant check. */
@@ -169,6 +178,7 @@ typedef struct lm_sim {
     long step_base;        /* multiples of dt, and dt can change mid-run */
     double pe_ref;         /* sum m g.x at seeding: potential energy datum */
     int prepared;          /* membrane stresses built from eps_t */
+    double *cell_rho;      /* density.c: gas density per cell (nx * ny) */
     char err[512];
 } lm_sim;
 

@@ -100,6 +100,7 @@ void lm_sim_free(lm_sim *sim)
     lm_particles_free(&sim->p);
     free(sim->mats);
     free(sim->bodies);
+    free(sim->cell_rho);
     free(sim);
 }
 

@@ -245,7 +245,8 @@ static int gas_maxima(lm_sim *sim, double *max_div, double *c_max)
 }
 
 /* Steps 6-8: L = sum_i v_i (x) G_ip; strain increment (dt/2)(L + L^T) and
- * spin (1/2)(L - L^T); density rho/(1 + tr de) ([F] eq 16); stress by the
+ * spin (1/2)(L - L^T); density rho/(1 + tr de) ([F] eq 16), or for a gas
+ * that asks, from the cells ([T] eqs 4.5-4.6, density.c); stress by the
  * particle's constitutive law. */
 lm_status lm_step_stress(lm_sim *sim)
 {
@@ -254,6 +255,8 @@ lm_status lm_step_stress(lm_sim *sim)
     double dt = sim->def.dt;
     double h = fmin(g->hx, g->hy);
     lm_status st = lm_membrane_tangents(sim);   /* the current tangent, at x^{k+1} */
+    if (st != LM_OK) return st;
+    st = lm_gas_cell_density(sim);   /* at x^{k+1}, for the gases that ask */
     if (st != LM_OK) return st;
     double max_div = 0, c_max = 0;
     gas_maxima(sim, &max_div, &c_max);
@@ -278,7 +281,7 @@ lm_status lm_step_stress(lm_sim *sim)
                                &p->syy[q], &p->sxy[q], &p->szz[q]);
             break;
         case LM_GAS:
-            p->rho[q] /= 1 + dexx + deyy;
+            if (mat->density == LM_DENSITY_CONTINUITY) p->rho[q] /= 1 + dexx + deyy;
             p->q[q] = lm_gas_av(mat, p->rho[q], L[0] + L[3], max_div, c_max, h);
             lm_gas_update(mat, L[0], L[3], 0.5 * (L[1] + L[2]), dt, p->rho[q], p->q[q],
                           &p->e[q], &p->sxx[q], &p->syy[q], &p->sxy[q], &p->szz[q]);

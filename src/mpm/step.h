@@ -19,6 +19,7 @@ void lm_step_grid_update(lm_sim *sim);      /* 3. p_i^L, boundary conditions */
 void lm_step_g2p(lm_sim *sim);              /* 4. v_p, x_p */
 void lm_step_strain_velocity(lm_sim *sim);  /* 5. MUSL re-map or USL */
 lm_status lm_step_stress(lm_sim *sim);      /* 6-8. strain, density, stress */
+lm_status lm_gas_cell_density(lm_sim *sim); /* [T] eqs 4.5-4.6 (density.c) */
 lm_status lm_step_check(lm_sim *sim);       /* NaN, inversion, domain */
 lm_status lm_step_split(lm_sim *sim);       /* thinned gas points into four */
 

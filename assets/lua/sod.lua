@@ -1,0 +1,79 @@
+-- sod.lua - Sod's shock tube ([F] §4.1, Fig 6; [T] §4, Figs 11-14;
+-- physics.md V4), shared by its gallery page and tests: a tube one cell
+-- tall (symmetry above and below, fixed ends); left rho = 1, p = 1, right
+-- rho = 0.125, p = 0.1, gamma = 1.4, the paper's artificial viscosity
+-- (g = sqrt(2) dx, lambda = 0.75, c1 = c2 = 1); dt = 1e-4.
+local riemann = require("riemann")
+local M = {}
+
+-- o: dx (default 0.005, [F]; [T] 0.01), ppc (default {3, 1}), density
+-- (default "continuity"; lamina.gas{density}). Returns sim, left, right.
+function M.setup(o)
+  o = o or {}
+  local dx, ppc = o.dx or 0.005, o.ppc or {3, 1}
+  local sim = lamina.sim{ domain = {0, 0, 1, dx}, cell = dx, dt = 1e-4,
+                          boundary = { left = "fixed", right = "fixed",
+                                       bottom = "symmetry", top = "symmetry" } }
+  local hi = lamina.gas{ rho = 1, p = 1, gamma = 1.4, av = true, density = o.density }
+  local lo = lamina.gas{ rho = 0.125, p = 0.1, gamma = 1.4, av = true, density = o.density }
+  local L = sim:body{ material = hi, ppc = ppc, name = "left",
+                      region = lamina.rect{ x0 = 0, y0 = 0, x1 = 0.5, y1 = dx } }
+  local R = sim:body{ material = lo, ppc = ppc, name = "right",
+                      region = lamina.rect{ x0 = 0.5, y0 = 0, x1 = 1, y1 = dx } }
+  return sim, L, R
+end
+
+-- The exact Riemann solution of the tube (assets/lua/riemann.lua).
+M.exact = riemann.solve{ left = {1, 0, 1}, right = {0.125, 0, 0.1}, gamma = 1.4 }
+
+-- The particles of the bodies as arrays x, rho, u, p, e (in body order).
+function M.profile(bodies)
+  local f = { x = {}, rho = {}, u = {}, p = {}, e = {} }
+  for _, b in ipairs(bodies) do
+    local q = b:particles()
+    for i = 1, q.n do
+      local k = #f.x + 1
+      f.x[k], f.rho[k], f.u[k], f.p[k], f.e[k] = q.x[i], q.rho[i], q.vx[i], q.p[i], q.e[i]
+    end
+  end
+  return f
+end
+
+-- The issue's measures at time t: the shock, where the density crosses
+-- midway between the post-shock plateau and the right state (the last such
+-- crossing from the left, interpolated); the plateau's mean density and
+-- pressure over the particles between the contact and the shock, a fifth of
+-- that gap kept clear at each end.
+function M.measure(f, t)
+  local ex = M.exact
+  local r = { x_shock = 0.5 + ex.shock_speed * t, x_contact = 0.5 + ex.u_star * t }
+  local mid = 0.5 * (ex.rho_star_right + 0.125)
+  for i = #f.x, 2, -1 do
+    if f.rho[i - 1] >= mid and f.rho[i] < mid then
+      r.shock = f.x[i - 1] + (f.x[i] - f.x[i - 1]) * (f.rho[i - 1] - mid) / (f.rho[i - 1] - f.rho[i])
+      break
+    end
+  end
+  local gap = r.x_shock - r.x_contact
+  local a, b = r.x_contact + 0.2 * gap, r.x_shock - 0.2 * gap
+  local sr, sp, n = 0, 0, 0
+  for i = 1, #f.x do
+    if f.x[i] > a and f.x[i] < b then sr, sp, n = sr + f.rho[i], sp + f.p[i], n + 1 end
+  end
+  r.n, r.rho_plateau, r.p_plateau = n, n > 0 and sr / n or nil, n > 0 and sp / n or nil
+  return r
+end
+
+-- Mean particle density per cell, for [T] Fig 13's "density at cell
+-- centres": an array over the ncells cells (nil where no particle is).
+function M.cell_density(f, dx, ncells)
+  local s, c = {}, {}
+  for i = 1, #f.x do
+    local k = math.min(ncells, math.floor(f.x[i] / dx) + 1)
+    s[k], c[k] = (s[k] or 0) + f.rho[i], (c[k] or 0) + 1
+  end
+  for k in pairs(s) do s[k] = s[k] / c[k] end
+  return s
+end
+
+return M
