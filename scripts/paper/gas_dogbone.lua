@@ -7,8 +7,9 @@
 -- checks: final radius and pressure beside [F] Table III and [T] Table 5;
 --   hoop stress against p r / t ([F] Table IV); radius at 0 vs 90 degrees;
 --   gas outside the membrane; energy change
--- assumed: the shape is not given numerically (only the labels x = 0.5,
---   y = 1, Pi = 100): see assets/lua/dogbone.lua. A superellipse lobe of
+-- assumed: the texts give the shape only as labels (x = 0.5, y = 1,
+--   Pi = 100); [T]'s input deck (App. A.4.7, Box 9) has a gas region of
+--   area 0.475, found late and not used yet: see assets/lua/dogbone.lua. A superellipse lobe of
 --   half-width 0.5 and top y = 1 with a neck of half-width 0.35 at y = 0;
 --   quarter gas area 0.447; the membrane slack, carrying 2.2 of material
 --   (the quarter circle of radius 1.40) pressed into the 1.390 boundary
@@ -29,10 +30,13 @@
 --   blends up to 0.003 fail too and 0.01 dissipates 21 %. So that run
 --   alone splits thinned gas points (lamina.gas{split = 16}: a point
 --   standing for more than 1/16 of a cell, at least a cell from the
---   membrane, becomes four; mass, momentum and energy kept).
+--   membrane, becomes four; mass, momentum and energy kept). [T]'s
+--   quadratic cell density (lamina.gas{density = "quadratic"}) would run it
+--   without splitting; one density method is kept across the four cells.
 --   Pressure: p in p r / t and beside the tables is the mean over the space
 --   the membrane encloses, gas:pressure(mem) = sum V_p p_p / A (the sum the
---   internal forces use, (gamma - 1) sum m e, over the polygon's area). The
+--   internal forces use, (gamma - 1) sum m e, over the polygon's area), as
+--   [T] Table 5 averaged its pressures over interior grid points. The
 --   mean over the particles, (gamma - 1) rho_p e_p with rho_p from the
 --   continuity update, is shown too: rho_p drifts from the particles'
 --   spacing (sum m / rho exceeds the enclosed area by ~20 % at t = 4 at
