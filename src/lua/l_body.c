@@ -187,6 +187,8 @@ void la_push_body(lua_State *L, int sidx, int bi, int nameidx)
     if (nameidx) {
         lua_pushvalue(L, nameidx);
         lua_setiuservalue(L, -2, 2);
+        if (lua_type(L, nameidx) == LUA_TSTRING)   /* for the engine's messages */
+            lm_sim_set_body_name(la_check_sim(L, sidx)->sim, bi, lua_tostring(L, nameidx));
     }
 }
 
@@ -450,6 +452,7 @@ void la_open_body(lua_State *L)
                                        {"radius_at", body_radius_at},
                                        {"escaped", body_escaped},
                                        {"enclosed_area", body_enclosed_area},
+                                       {"pin", la_body_pin},
                                        {NULL, NULL}};
     luaL_newmetatable(L, LA_BODY);
     luaL_setfuncs(L, meta, 0);

@@ -71,11 +71,18 @@ typedef struct la_event {
     int done;
 } la_event;
 
+typedef struct la_pin_fn {
+    int pin;                    /* the engine's pin */
+    int ref;                    /* its velocity function, in the uservalue */
+} la_pin_fn;
+
 typedef struct la_sim {
     lm_sim *sim;
     int running;                /* inside run/step: no nested runs */
     la_event *ev;
     int nev, capev;
+    la_pin_fn *pinf;            /* pins driven by a function of time */
+    int npinf;
 } la_sim;
 
 void la_open_sim(lua_State *L);
@@ -89,6 +96,14 @@ void la_push_energy(lua_State *L, lm_energy e);
 /* Calls the function at fidx with the sim at `first` and then every
  * `interval` (0: once), between steps. */
 void la_sim_add_event(lua_State *L, int sidx, double first, double interval, int fidx);
+
+/* l_pin.c: body:pin{...} and the pin handle. la_sim_add_pin_function
+ * (l_sim.c) keeps a driven pin's function; la_pins_update calls them before
+ * each step. */
+int la_body_pin(lua_State *L);
+void la_open_pin(lua_State *L);
+void la_sim_add_pin_function(lua_State *L, int sidx, int pin, int fidx);
+void la_pins_update(lua_State *L, int sidx, la_sim *s);
 
 /* l_record.c */
 int la_sim_record(lua_State *L);

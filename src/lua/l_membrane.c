@@ -73,7 +73,7 @@ int la_sim_membrane(lua_State *L)
 {
     static const char *const keys[] = {"material", "curve", "spacing", "count", "normals",
                                        "initial_strain", "end_mass", "velocity", "name",
-                                       "orient", NULL};
+                                       "orient", "force", NULL};
     const char *fn = "sim:membrane";
     la_sim *s = la_check_sim(L, 1);
     la_check_keys(L, 2, fn, keys);
@@ -105,6 +105,10 @@ int la_sim_membrane(lua_State *L)
         return luaL_error(L, "%s: %s spacing %f is larger than a cell (%f): neighbouring "
                           "points must stay within one cell or the membrane breaks",
                           fn, what, ds, h);
+    /* force: how the tension reaches the grid (membrane_force.c); "point"
+     * is the papers' quadrature */
+    static const char *const forces[] = {"point", "segment", NULL};
+    int force = la_option(L, fn, "force", la_opt_string(L, 2, fn, "force", "point"), forces);
     int method = la_option(L, fn, "normals",
                            la_opt_string(L, 2, fn, "normals", "connectivity"), normal_methods);
     /* orient = {x, y}: normals point away from that point (the gas's
@@ -189,6 +193,9 @@ int la_sim_membrane(lua_State *L)
     }
     lm_body *bd = &sim->bodies[bi];
     bd->normals = (lm_normals)method;
+    if (lm_sim_set_membrane_force(sim, bi, (lm_mforce)force) != LM_OK)
+        return luaL_error(L, "%s: %s", fn, sim->err);
+    bd = &sim->bodies[bi];
     bd->orient = orient;
     bd->ox = ox;
     bd->oy = oy;

@@ -129,8 +129,11 @@ static int sim_gc(lua_State *L)
     la_sim *s = luaL_checkudata(L, 1, LA_SIM);
     lm_sim_free(s->sim);
     free(s->ev);
+    free(s->pinf);
     s->sim = NULL;
     s->ev = NULL;
+    s->pinf = NULL;
+    s->npinf = 0;
     return 0;
 }
 
@@ -156,6 +159,22 @@ void la_sim_add_event(lua_State *L, int sidx, double first, double interval, int
     lua_getiuservalue(L, sidx, 1);
     lua_pushvalue(L, fidx);
     e->ref = luaL_ref(L, -2);
+    lua_pop(L, 1);
+}
+
+void la_sim_add_pin_function(lua_State *L, int sidx, int pin, int fidx)
+{
+    sidx = lua_absindex(L, sidx);
+    fidx = lua_absindex(L, fidx);
+    la_sim *s = la_check_sim(L, sidx);
+    la_pin_fn *f = realloc(s->pinf, (size_t)(s->npinf + 1) * sizeof *f);
+    if (!f) luaL_error(L, "out of memory");
+    s->pinf = f;
+    lua_getiuservalue(L, sidx, 1);
+    lua_pushvalue(L, fidx);
+    f[s->npinf].ref = luaL_ref(L, -2);
+    f[s->npinf].pin = pin;
+    s->npinf++;
     lua_pop(L, 1);
 }
 
@@ -238,6 +257,7 @@ static void advance(lua_State *L, la_sim *s, long nsteps)
     la_progress_begin(L, 1, nsteps);
     fire_due(L, s);
     for (long n = 0; n < nsteps; n++) {
+        la_pins_update(L, 1, s);
         lm_status st = lm_sim_step(s->sim);
         if (st != LM_OK) {
             s->running = 0;

@@ -23,7 +23,9 @@ static lm_energy energy_of(const lm_sim *sim, size_t first, size_t last, double 
                                                       p->sxy[q], p->szz[q]);
             break;
         case LM_MEMBRANE:
-            e.strain += lm_membrane_energy(mat, V, p->et[q]);
+            /* segment membranes: their segments' energy, added below */
+            if (sim->bodies[p->body[q]].force != LM_MFORCE_SEGMENT)
+                e.strain += lm_membrane_energy(mat, V, p->et[q]);
             break;
         case LM_GAS:
             e.internal += p->m[q] * p->e[q];
@@ -35,6 +37,12 @@ static lm_energy energy_of(const lm_sim *sim, size_t first, size_t last, double 
             break;
         }
         gx += p->m[q] * (sim->def.gx * p->x[q] + sim->def.gy * p->y[q]);
+    }
+    for (int b = 0; b < sim->nbodies; b++) {
+        const lm_body *bd = &sim->bodies[b];
+        if (bd->force == LM_MFORCE_SEGMENT && bd->first >= first &&
+            bd->first + bd->count <= last)
+            e.strain += lm_membrane_segment_energy(sim, b);
     }
     e.potential = ref - gx;
     e.total = e.kinetic + e.strain + e.internal + e.potential;

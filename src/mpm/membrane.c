@@ -169,13 +169,21 @@ static void rebuild(const lm_material *mat, double st, double tx, double ty,
     *szz = mat->law == LM_LAW_PLANE_STRESS ? mat->nu * st : 0;
 }
 
+void lm_membrane_set_strain(const lm_material *mat, double e, double tx, double ty, double m,
+                            double ds, double *et, double *rho, double *sxx, double *syy,
+                            double *sxy, double *szz)
+{
+    *et = e;
+    rebuild(mat, lm_membrane_stress(mat, e), tx, ty, sxx, syy, sxy, szz);
+    *rho = m / (mat->thickness * ds * exp(e));
+}
+
 void lm_membrane_update(const lm_material *mat, double dexx, double deyy, double dexy,
                         double tx, double ty, double m, double ds, double *et,
                         double *rho, double *sxx, double *syy, double *sxy, double *szz)
 {
-    *et += tx * tx * dexx + 2 * tx * ty * dexy + ty * ty * deyy;
-    rebuild(mat, lm_membrane_stress(mat, *et), tx, ty, sxx, syy, sxy, szz);
-    *rho = m / (mat->thickness * ds * exp(*et));
+    lm_membrane_set_strain(mat, *et + (tx * tx * dexx + 2 * tx * ty * dexy + ty * ty * deyy),
+                           tx, ty, m, ds, et, rho, sxx, syy, sxy, szz);
 }
 
 double lm_membrane_energy(const lm_material *mat, double V, double et)
@@ -188,6 +196,7 @@ lm_status lm_membrane_prepare(lm_sim *sim)
     lm_particles *p = &sim->p;
     lm_status st = lm_membrane_tangents(sim);
     if (st != LM_OK) return st;
+    lm_membrane_segment_prepare(sim);
     for (size_t q = 0; q < p->n; q++) {
         const lm_material *mat = sim->mats[p->mat[q]];
         if (mat->kind != LM_MEMBRANE) continue;

@@ -119,6 +119,13 @@ typedef struct lm_particles {
      * (i,j) (i+1,j) (i,j+1) (i+1,j+1). */
     int *node;
     double *N, *Gx, *Gy;
+    /* Membranes with segment forces (membrane_force.c): L0 is the
+     * unstrained length of the segment from this point to the next in
+     * curve order (0: none), and (fpx, fpy) the net tension of the point's
+     * segments, spread to the nodes with N_ip. */
+    double *L0, *fpx, *fpy;
+    /* Pins (pin.c): 1 + the index of the pin holding the particle, else 0. */
+    int *pin;
 } lm_particles;
 
 /* How a membrane finds its normals (physics.md §3). */
@@ -132,6 +139,16 @@ typedef enum lm_normals {
     LM_NORMALS_MASS_MATRIX       /* [T] §7.4 per cell (linear, normal equations) */
 } lm_normals;
 
+/* How a membrane's tangential stress reaches the grid. "point" is the
+ * papers' quadrature, f_i = -V_p sigma_p . G_ip at each point ([M] eq 9);
+ * "segment" integrates the tension along the straight segments between
+ * neighbouring points, f_i = -F t [N_i(b) - N_i(a)] (physics.md §5b),
+ * which is continuous as points cross cell edges and exactly zero at the
+ * interior nodes of a uniformly stretched membrane (membrane_force.c). */
+typedef enum lm_mforce { LM_MFORCE_POINT = 0, LM_MFORCE_SEGMENT = 1 } lm_mforce;
+
+#define LM_NAME_MAX 64
+
 typedef struct lm_body {
     int mat;               /* index into sim->mats */
     size_t first, count;   /* particles [first, first+count) */
@@ -141,7 +158,23 @@ typedef struct lm_body {
     int orient;            /* normals: 0 none, 1 away from (ox, oy), 2 neighbours */
     double ox, oy;
     double pe_ref;         /* this body's share of sim->pe_ref */
+    lm_mforce force;       /* membrane: how its stress reaches the grid */
+    int seg_ready;         /* segment rest lengths set (membrane_force.c) */
+    char name[LM_NAME_MAX];/* for messages; "" = unnamed */
 } lm_body;
+
+/* A pin holds a set of particles to a prescribed velocity (pin.c): every
+ * node a held particle touches moves with it, so the grid and the
+ * particle agree; the force the pin needed is its reaction. */
+typedef struct lm_pin {
+    int body;
+    size_t n;
+    size_t *idx;           /* the particles held, by index within the body
+                              (bodies move in memory when gas splits) */
+    double vx, vy;         /* the prescribed velocity of this step */
+    double rx, ry;         /* reaction of the last step: the force the pin
+                              exerted on the material (per unit depth) */
+} lm_pin;
 
 /* ---- the simulation (sim.c) ---------------------------------------------- */
 
@@ -179,6 +212,10 @@ typedef struct lm_sim {
     double pe_ref;         /* sum m g.x at seeding: potential energy datum */
     int prepared;          /* membrane stresses built from eps_t */
     double *cell_rho;      /* density.c: gas density per cell (nx * ny) */
+    lm_pin *pins;          /* pin.c */
+    int npins;
+    double *pin_w, *pin_vx, *pin_vy;   /* per node: sum of the held particles'
+                              N_ip and N_ip v_p (allocated with the first pin) */
     char err[512];
 } lm_sim;
 
@@ -199,6 +236,21 @@ int lm_sim_add_membrane(lm_sim *sim, int mat, int closed);
 /* Sets a membrane point's reference length ds and initial tangential
  * strain; mass stays as given (the heavy end point has its own). */
 lm_status lm_sim_set_membrane_point(lm_sim *sim, size_t q, double ds, double et);
+
+/* Names body b for messages (truncated to LM_NAME_MAX - 1 bytes). */
+void lm_sim_set_body_name(lm_sim *sim, int b, const char *name);
+/* Chooses how membrane body b's stress reaches the grid (before the first
+ * step); LM_ERR_INPUT for a body that is not a membrane. */
+lm_status lm_sim_set_membrane_force(lm_sim *sim, int b, lm_mforce force);
+/* "membrane 'skin'" or "body 3": how messages name body b. */
+const char *lm_body_label(const lm_sim *sim, int b, char *buf, size_t len);
+
+/* Holds particles idx[0..n) of body b (indices within the body) at
+ * velocity (vx, vy) from the next step on; returns the pin's index, or -1
+ * with sim->err set. A particle can be held by one pin only. */
+int lm_sim_add_pin(lm_sim *sim, int b, const size_t *idx, size_t n, double vx, double vy);
+/* Changes a pin's velocity between steps. */
+void lm_sim_set_pin_velocity(lm_sim *sim, int pin, double vx, double vy);
 
 /* Builds what depends on whole bodies (membrane tangents and stresses from
  * their strains); called by the first step, and by anyone who needs the

@@ -101,6 +101,9 @@ void lm_sim_free(lm_sim *sim)
     free(sim->mats);
     free(sim->bodies);
     free(sim->cell_rho);
+    for (int k = 0; k < sim->npins; k++) free(sim->pins[k].idx);
+    free(sim->pins);
+    free(sim->pin_w);
     free(sim);
 }
 
@@ -202,6 +205,8 @@ lm_status lm_sim_add_particle(lm_sim *sim, int body, double x, double y,
     p->sxx[q] = p->syy[q] = p->sxy[q] = p->szz[q] = 0;
     p->et[q] = p->ds[q] = p->tx[q] = p->ty[q] = 0;
     p->e[q] = p->q[q] = p->ev[q] = 0;
+    p->L0[q] = p->fpx[q] = p->fpy[q] = 0;
+    p->pin[q] = 0;
     p->body[q] = body;
     p->mat[q] = sim->bodies[body].mat;
     p->node[q] = 0;
@@ -239,4 +244,33 @@ double lm_sim_courant(const lm_sim *sim, double *c_max)
     if (c_max) *c_max = c;
     double h = sim->grid.hx < sim->grid.hy ? sim->grid.hx : sim->grid.hy;
     return sim->def.dt * c / h;
+}
+
+void lm_sim_set_body_name(lm_sim *sim, int b, const char *name)
+{
+    if (b < 0 || b >= sim->nbodies) return;
+    snprintf(sim->bodies[b].name, sizeof sim->bodies[b].name, "%s", name ? name : "");
+}
+
+lm_status lm_sim_set_membrane_force(lm_sim *sim, int b, lm_mforce force)
+{
+    if (b < 0 || b >= sim->nbodies || !sim->bodies[b].membrane ||
+        (force != LM_MFORCE_POINT && force != LM_MFORCE_SEGMENT)) {
+        snprintf(sim->err, sizeof sim->err, "body %d is not a membrane", b + 1);
+        return LM_ERR_INPUT;
+    }
+    sim->bodies[b].force = force;
+    sim->prepared = 0;   /* segments' rest lengths are found by the next prepare */
+    return LM_OK;
+}
+
+const char *lm_body_label(const lm_sim *sim, int b, char *buf, size_t len)
+{
+    const lm_body *bd = &sim->bodies[b];
+    const char *kind = bd->membrane ? "membrane" : "body";
+    if (bd->name[0])
+        snprintf(buf, len, "%s '%s' (body %d)", kind, bd->name, b + 1);
+    else
+        snprintf(buf, len, "%s %d", kind, b + 1);
+    return buf;
 }

@@ -22,10 +22,12 @@
 static void copy_particle(lm_particles *p, size_t to, size_t from)
 {
     double *const d[] = {p->x, p->y, p->vx, p->vy, p->m, p->rho, p->sxx, p->syy, p->sxy,
-                         p->szz, p->et, p->ds, p->tx, p->ty, p->e, p->q, p->ev};
+                         p->szz, p->et, p->ds, p->tx, p->ty, p->e, p->q, p->ev,
+                         p->L0, p->fpx, p->fpy};
     for (size_t k = 0; k < sizeof d / sizeof d[0]; k++) d[k][to] = d[k][from];
     p->body[to] = p->body[from];
     p->mat[to] = p->mat[from];
+    p->pin[to] = p->pin[from];
     p->node[to] = p->node[from];
     memcpy(&p->N[4 * to], &p->N[4 * from], 4 * sizeof(double));
     memcpy(&p->Gx[4 * to], &p->Gx[4 * from], 4 * sizeof(double));
@@ -62,6 +64,7 @@ static int wants_split(const lm_sim *sim, size_t q)
     const lm_particles *p = &sim->p;
     const lm_material *mat = sim->mats[p->mat[q]];
     if (mat->kind != LM_GAS || !(mat->split > 0)) return 0;
+    if (p->pin[q]) return 0;   /* a held point stays one: the pin lists it */
     double V = p->m[q] / p->rho[q];
     if (!(V * mat->split > sim->grid.hx * sim->grid.hy)) return 0;
     /* gas within a cell of a membrane is left whole: its children, closer

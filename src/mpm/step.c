@@ -28,6 +28,13 @@ void lm_step_shape(lm_sim *sim)
                           &p->N[4 * q], &p->Gx[4 * q], &p->Gy[4 * q]);
 }
 
+/* Is q a point of a membrane whose tension acts along its segments? */
+static inline int segment_point(const lm_sim *sim, size_t q)
+{
+    const lm_body *bd = &sim->bodies[sim->p.body[q]];
+    return bd->membrane && bd->force == LM_MFORCE_SEGMENT;
+}
+
 /* The three particle-to-grid sums of the step. */
 typedef enum scatter_kind {
     SCATTER_MASS_MOMENTUM,   /* m_i, p_i (step 1) */
@@ -56,6 +63,16 @@ static void scatter_range(const lm_sim *sim, scatter_kind kind, size_t a, size_t
         break;
     case SCATTER_FORCES:
         for (size_t q = a; q < b; q++) {
+            if (segment_point(sim, q)) {
+                /* the net tension of its segments, spread with N_ip
+                 * (membrane_force.c) */
+                for (int k = 0; k < 4; k++) {
+                    int i = corner(g, p->node[q], k);
+                    f[0][i] += p->N[4 * q + k] * p->fpx[q];
+                    f[1][i] += p->N[4 * q + k] * p->fpy[q];
+                }
+                continue;
+            }
             double V = p->m[q] / p->rho[q];
             for (int k = 0; k < 4; k++) {
                 int i = corner(g, p->node[q], k);
@@ -101,6 +118,7 @@ void lm_step_p2g(lm_sim *sim)
     lm_grid *g = &sim->grid;
     double *const out[3] = {g->m, g->px, g->py};
     scatter(sim, SCATTER_MASS_MOMENTUM, 3, out);
+    lm_pin_p2g(sim);
 }
 
 /* Step 2: f_i^int = -sum_p V_p sigma_p . G_ip ([F] eq 9), f_i^ext = m_i g. */
@@ -108,6 +126,7 @@ void lm_step_forces(lm_sim *sim)
 {
     lm_grid *g = &sim->grid;
     double *const out[2] = {g->fx, g->fy};
+    lm_membrane_segment_forces(sim);
     scatter(sim, SCATTER_FORCES, 2, out);
     size_t nn = lm_grid_nodes(g);
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
@@ -129,6 +148,7 @@ void lm_step_grid_update(lm_sim *sim)
         g->px[i] += dt * g->fx[i];
         g->py[i] += dt * g->fy[i];
     }
+    lm_pin_grid(sim);   /* held nodes move with their pins (pin.c) */
     lm_grid_apply_bc(g, g->px, g->py);
     lm_grid_apply_bc(g, g->fx, g->fy);
 }
@@ -170,6 +190,7 @@ void lm_step_g2p(lm_sim *sim)
         p->x[q] += dt * ux;
         p->y[q] += dt * uy;
     }
+    lm_pin_particles(sim);
 }
 
 /* Step 5. MUSL ([M] eqs 12-13, [F] eq 13): re-map the updated particle
@@ -198,6 +219,7 @@ void lm_step_strain_velocity(lm_sim *sim)
             g->vy[i] = g->m[i] > 0 ? g->py[i] / g->m[i] : 0;
         }
     }
+    lm_pin_velocity(sim);
     lm_grid_apply_bc(g, g->vx, g->vy);
 }
 
@@ -276,6 +298,7 @@ lm_status lm_step_stress(lm_sim *sim)
                               &p->syy[q], &p->sxy[q], &p->szz[q]);
             break;
         case LM_MEMBRANE:
+            if (segment_point(sim, (size_t)q)) break;   /* from lengths, below */
             lm_membrane_update(mat, dexx, deyy, dexy, p->tx[q], p->ty[q], p->m[q],
                                p->ds[q], &p->et[q], &p->rho[q], &p->sxx[q],
                                &p->syy[q], &p->sxy[q], &p->szz[q]);
@@ -293,18 +316,24 @@ lm_status lm_step_stress(lm_sim *sim)
             break;
         }
     }
+    lm_membrane_segment_strains(sim);
     return LM_OK;
 }
 
+/* Names the particle by its index within its body and the body by its
+ * name, as the script knows them. */
 static lm_status fail(lm_sim *sim, lm_status st, size_t q, const char *what,
                       const char *cause)
 {
     const lm_particles *p = &sim->p;
+    int b = p->body[q];
+    char who[96];
     snprintf(sim->err, sizeof sim->err,
-             "at t = %.6g (step %ld): particle %zu of body %d %s at "
+             "at t = %.6g (step %ld): %s %zu of %s %s at "
              "(%.6g, %.6g), velocity (%.6g, %.6g); likely cause: %s",
-             sim->t, sim->step, q + 1, p->body[q] + 1, what, p->x[q], p->y[q],
-             p->vx[q], p->vy[q], cause);
+             sim->t, sim->step, sim->bodies[b].membrane ? "point" : "particle",
+             q - sim->bodies[b].first + 1, lm_body_label(sim, b, who, sizeof who), what,
+             p->x[q], p->y[q], p->vx[q], p->vy[q], cause);
     return st;
 }
 
@@ -343,7 +372,9 @@ lm_status lm_step_check(lm_sim *sim)
     reduction(min : first)
     for (long q = 0; q < n; q++)
         if (check_one(sim, (size_t)q) && q < first) first = q;
-    if (first == n) return LM_OK;
+    if (first == n) return lm_membrane_check_torn(sim);
+    /* a membrane that tore lets its points fly: the tear is the news */
+    if (lm_membrane_check_torn(sim) != LM_OK) return LM_ERR_UNSTABLE;
     switch (check_one(sim, (size_t)first)) {
     case 1:
         return fail(sim, LM_ERR_UNSTABLE, (size_t)first, "became NaN or infinite",

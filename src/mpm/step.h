@@ -48,11 +48,30 @@ double lm_membrane_stress(const lm_material *mat, double et);
 void lm_membrane_update(const lm_material *mat, double dexx, double deyy, double dexy,
                         double tx, double ty, double m, double ds, double *et,
                         double *rho, double *sxx, double *syy, double *sxy, double *szz);
+/* Sets eps_t and rebuilds sigma and the volume from it. */
+void lm_membrane_set_strain(const lm_material *mat, double e, double tx, double ty, double m,
+                            double ds, double *et, double *rho, double *sxx, double *syy,
+                            double *sxy, double *szz);
 /* Strain energy 1/2 V sigma_t eps_t. */
 double lm_membrane_energy(const lm_material *mat, double V, double et);
 /* Rebuilds the stress tensors of the membrane points from eps_t along the
  * current tangents (before the first step, once bodies are complete). */
 lm_status lm_membrane_prepare(lm_sim *sim);
+
+/* membrane_force.c: the tension integrated along segments (physics.md
+ * §5b) for membranes with force = LM_MFORCE_SEGMENT; the tear check for
+ * every membrane. */
+void lm_membrane_segment_prepare(lm_sim *sim);   /* L0 from x and eps_t */
+void lm_membrane_segment_forces(lm_sim *sim);    /* fpx, fpy at x^k */
+void lm_membrane_segment_strains(lm_sim *sim);   /* eps_t, sigma at x^{k+1} */
+double lm_membrane_segment_energy(const lm_sim *sim, int b);
+lm_status lm_membrane_check_torn(lm_sim *sim);
+
+/* pin.c: held particles (lm_sim_add_pin). */
+void lm_pin_p2g(lm_sim *sim);        /* step 1: the held nodes' weights */
+void lm_pin_grid(lm_sim *sim);       /* step 3: p^L and f at held nodes */
+void lm_pin_particles(lm_sim *sim);  /* after step 4: v_p = v_pin */
+void lm_pin_velocity(lm_sim *sim);   /* step 5: the strain velocity */
 
 /* material_gas.c: [F] §3.3 eqs 21-25, [F] eq 26. */
 double lm_gas_sound_speed(const lm_material *mat, double e);

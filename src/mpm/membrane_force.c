@@ -1,0 +1,173 @@
+/* membrane_force.c - a membrane's tension integrated along its segments
+ * (lamina's remedy for cell-crossing noise; physics.md §5b, issue 13).
+ *
+ * The papers send a membrane point's stress to the grid by point
+ * quadrature, f_i = -V_p sigma_p . G_ip ([M] eq 9, [F] eq 9). With the
+ * bilinear basis G_ip jumps when a point crosses a cell edge ([T] §5.4.3,
+ * A.2), and a straight membrane at rest is not in discrete equilibrium:
+ * the nodal forces of its points do not cancel.
+ *
+ * Here the membrane between neighbouring points a, b is a straight segment
+ * carrying the tension F = sigma_t(eps) * thickness (per unit depth) of its
+ * own logarithmic strain eps = ln(l / L0). The internal force is
+ *   f_i = -int F t (t . grad N_i) ds = -F t [N_i(b) - N_i(a)],
+ * so each point gets the net pull of its two segments, g_a = F_ab t_ab -
+ * F_za t_za, spread to the nodes with N_ia. For a uniformly stretched
+ * straight membrane g vanishes at every interior point (the sums
+ * telescope), so only the ends load the grid; and since N_i is continuous
+ * where grad N_i jumps, a point crossing a cell edge gives no kick. The
+ * order of the points (connectivity) is used for the force only; the
+ * normals can still come from the construction without it.
+ *
+ * The strain is the segment's length, not an accumulation of t.de.t, so it
+ * is objective and holds no drift; the one-way (wrinkle) law applies to it
+ * as to the points' ([M] §3.2). A point's eps_t, stress and volume, which
+ * diagnostics and drawing read, are the mean of its segments'. */
+#include <math.h>
+#include <stdio.h>
+
+#include "step.h"
+
+/* Neighbour after q in curve order, or SIZE_MAX at an open end. */
+static size_t next_of(const lm_body *bd, size_t q)
+{
+    size_t last = bd->first + bd->count - 1;
+    if (q < last) return q + 1;
+    return bd->closed && bd->count > 2 ? bd->first : (size_t)-1;
+}
+
+static double seg_len(const lm_particles *p, size_t a, size_t b)
+{
+    return hypot(p->x[b] - p->x[a], p->y[b] - p->y[a]);
+}
+
+static int segment_body(const lm_sim *sim, int b)
+{
+    const lm_body *bd = &sim->bodies[b];
+    return bd->membrane && bd->force == LM_MFORCE_SEGMENT && bd->count >= 2;
+}
+
+/* Each segment's unstrained length from the present length and the two
+ * points' initial strains (strains are logarithmic: l = L0 exp(eps)),
+ * once per body: a later prepare (another body added) keeps them. */
+void lm_membrane_segment_prepare(lm_sim *sim)
+{
+    lm_particles *p = &sim->p;
+    for (int b = 0; b < sim->nbodies; b++) {
+        if (!segment_body(sim, b) || sim->bodies[b].seg_ready) continue;
+        lm_body *bd = &sim->bodies[b];
+        bd->seg_ready = 1;
+        for (size_t q = bd->first; q < bd->first + bd->count; q++) {
+            size_t r = next_of(bd, q);
+            p->L0[q] = r == (size_t)-1 ? 0
+                     : seg_len(p, q, r) * exp(-0.5 * (p->et[q] + p->et[r]));
+        }
+    }
+}
+
+/* The net tension of each point's two segments at x^k: (fpx, fpy). */
+void lm_membrane_segment_forces(lm_sim *sim)
+{
+    lm_particles *p = &sim->p;
+    for (int b = 0; b < sim->nbodies; b++) {
+        if (!segment_body(sim, b)) continue;
+        const lm_body *bd = &sim->bodies[b];
+        const lm_material *mat = sim->mats[bd->mat];
+        for (size_t q = bd->first; q < bd->first + bd->count; q++) p->fpx[q] = p->fpy[q] = 0;
+        for (size_t q = bd->first; q < bd->first + bd->count; q++) {
+            size_t r = next_of(bd, q);
+            if (r == (size_t)-1 || !(p->L0[q] > 0)) continue;
+            double l = seg_len(p, q, r);
+            if (!(l > 0)) continue;   /* coincident points: no direction */
+            double F = lm_membrane_stress(mat, log(l / p->L0[q])) * mat->thickness;
+            double tx = (p->x[r] - p->x[q]) / l, ty = (p->y[r] - p->y[q]) / l;
+            p->fpx[q] += F * tx;
+            p->fpy[q] += F * ty;
+            p->fpx[r] -= F * tx;
+            p->fpy[r] -= F * ty;
+        }
+    }
+}
+
+/* After the positions moved: each point's eps_t is the mean of its
+ * segments' strains, its stress sigma_t t(x)t along its tangent and its
+ * volume thickness * ds * exp(eps_t), for diagnostics and drawing. */
+void lm_membrane_segment_strains(lm_sim *sim)
+{
+    lm_particles *p = &sim->p;
+    for (int b = 0; b < sim->nbodies; b++) {
+        if (!segment_body(sim, b)) continue;
+        const lm_body *bd = &sim->bodies[b];
+        const lm_material *mat = sim->mats[bd->mat];
+        size_t last = bd->first + bd->count - 1;
+        for (size_t q = bd->first; q <= last; q++) {
+            double sum = 0;
+            int k = 0;
+            size_t r = next_of(bd, q);
+            if (r != (size_t)-1 && p->L0[q] > 0) {
+                sum += log(seg_len(p, q, r) / p->L0[q]);
+                k++;
+            }
+            size_t z = q > bd->first ? q - 1 : (bd->closed && bd->count > 2 ? last : (size_t)-1);
+            if (z != (size_t)-1 && p->L0[z] > 0) {
+                sum += log(seg_len(p, z, q) / p->L0[z]);
+                k++;
+            }
+            if (k == 0 || !isfinite(sum)) continue;
+            double et = sum / k;
+            lm_membrane_set_strain(mat, et, p->tx[q], p->ty[q], p->m[q], p->ds[q], &p->et[q],
+                                   &p->rho[q], &p->sxx[q], &p->syy[q], &p->sxy[q], &p->szz[q]);
+        }
+    }
+}
+
+/* Stored energy of the segments: thickness * int sigma(eps) dl with
+ * l = L0 exp(eps), the work of the force F = sigma thickness; for the
+ * linear law E' L0 thickness [(eps - 1) e^eps + 1] (~ 1/2 E' A L0 eps^2). */
+double lm_membrane_segment_energy(const lm_sim *sim, int b)
+{
+    if (!segment_body(sim, b)) return 0;
+    const lm_particles *p = &sim->p;
+    const lm_body *bd = &sim->bodies[b];
+    const lm_material *mat = sim->mats[bd->mat];
+    double Ep = mat->law == LM_LAW_PLANE_STRESS ? mat->E / (1 - mat->nu * mat->nu) : mat->E;
+    double w = 0;
+    for (size_t q = bd->first; q < bd->first + bd->count; q++) {
+        size_t r = next_of(bd, q);
+        if (r == (size_t)-1 || !(p->L0[q] > 0)) continue;
+        double eps = log(seg_len(p, q, r) / p->L0[q]);
+        if (mat->one_way && eps < 0) continue;
+        w += Ep * p->L0[q] * mat->thickness * ((eps - 1) * exp(eps) + 1);
+    }
+    return w;
+}
+
+/* physics.md §2: neighbouring membrane points must never be more than a
+ * cell or so apart, or the grid no longer sees the membrane between them
+ * and gas passes through. Two cells apart is reported as a tear. */
+lm_status lm_membrane_check_torn(lm_sim *sim)
+{
+    const lm_particles *p = &sim->p;
+    double lim = 2 * fmax(sim->grid.hx, sim->grid.hy);
+    for (int b = 0; b < sim->nbodies; b++) {
+        const lm_body *bd = &sim->bodies[b];
+        if (!bd->membrane || bd->count < 2) continue;
+        for (size_t q = bd->first; q < bd->first + bd->count; q++) {
+            size_t r = next_of(bd, q);
+            if (r == (size_t)-1) continue;
+            double l = seg_len(p, q, r);
+            if (!(l > lim)) continue;
+            char who[96];
+            snprintf(sim->err, sizeof sim->err,
+                     "at t = %.6g (step %ld): %s tore between its points %zu and %zu "
+                     "(%.3g cells apart, at (%.6g, %.6g) and (%.6g, %.6g)); likely cause: "
+                     "cell-crossing noise or a load the membrane cannot carry (try "
+                     "sim:membrane{force = \"segment\"}, a smaller dt or a finer spacing)",
+                     sim->t, sim->step, lm_body_label(sim, b, who, sizeof who),
+                     q - bd->first + 1, r - bd->first + 1,
+                     l / fmax(sim->grid.hx, sim->grid.hy), p->x[q], p->y[q], p->x[r], p->y[r]);
+            return LM_ERR_UNSTABLE;
+        }
+    }
+    return LM_OK;
+}

@@ -1,0 +1,171 @@
+/* pin.c - particles held fixed or driven at a prescribed velocity, wherever
+ * they are (issue 13: pinning a membrane away from the walls).
+ *
+ * Holding only the particle would not do: its neighbours share its nodes,
+ * and the grid would carry them (and, through the nodes, the particle's own
+ * strain) off. So a pin acts on the grid, as a wall does: every node a held
+ * particle touches (N_ip > 0) moves with the prescribed velocity, weighted
+ * by N_ip where two pins share a node. At those nodes p_i^L is replaced by
+ * m_i v_pin in step 3, and the force is corrected to match, so that the
+ * FLIP update (step 4) sees the constrained acceleration; the MUSL
+ * re-mapped velocity (step 5) is constrained again. The correction is the
+ * force the pin exerts on the material: its reaction, shared among pins at
+ * a node by their weights. The held particles take the pin's velocity
+ * exactly, so a particle held at rest does not move at all. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "step.h"
+
+static const int corner_dx[4] = {0, 1, 0, 1};
+static const int corner_dy[4] = {0, 0, 1, 1};
+
+static inline int corner(const lm_grid *g, int node, int k)
+{
+    return node + corner_dy[k] * (g->nx + 1) + corner_dx[k];
+}
+
+int lm_sim_add_pin(lm_sim *sim, int b, const size_t *idx, size_t n, double vx, double vy)
+{
+    if (b < 0 || b >= sim->nbodies || n == 0 || !isfinite(vx) || !isfinite(vy)) {
+        snprintf(sim->err, sizeof sim->err,
+                 "a pin needs a body, at least one point and a finite velocity");
+        return -1;
+    }
+    const lm_body *bd = &sim->bodies[b];
+    char who[96];
+    for (size_t k = 0; k < n; k++) {
+        if (idx[k] >= bd->count) {
+            snprintf(sim->err, sizeof sim->err, "%s has %zu points; point %zu cannot be pinned",
+                     lm_body_label(sim, b, who, sizeof who), bd->count, idx[k] + 1);
+            return -1;
+        }
+        if (sim->p.pin[bd->first + idx[k]]) {
+            snprintf(sim->err, sizeof sim->err, "point %zu of %s is pinned already",
+                     idx[k] + 1, lm_body_label(sim, b, who, sizeof who));
+            return -1;
+        }
+    }
+    size_t nn = lm_grid_nodes(&sim->grid);
+    if (!sim->pin_w) {
+        sim->pin_w = calloc(3 * nn, sizeof(double));
+        if (!sim->pin_w) goto oom;
+        sim->pin_vx = sim->pin_w + nn;
+        sim->pin_vy = sim->pin_w + 2 * nn;
+    }
+    lm_pin *pins = realloc(sim->pins, (size_t)(sim->npins + 1) * sizeof *pins);
+    if (!pins) goto oom;
+    sim->pins = pins;
+    lm_pin *pn = &pins[sim->npins];
+    memset(pn, 0, sizeof *pn);
+    pn->idx = malloc(n * sizeof *pn->idx);
+    if (!pn->idx) goto oom;
+    memcpy(pn->idx, idx, n * sizeof *idx);
+    pn->body = b;
+    pn->n = n;
+    pn->vx = vx;
+    pn->vy = vy;
+    for (size_t k = 0; k < n; k++) sim->p.pin[bd->first + idx[k]] = sim->npins + 1;
+    return sim->npins++;
+oom:
+    snprintf(sim->err, sizeof sim->err, "out of memory for a pin of %zu points", n);
+    return -1;
+}
+
+void lm_sim_set_pin_velocity(lm_sim *sim, int pin, double vx, double vy)
+{
+    if (pin < 0 || pin >= sim->npins) return;
+    sim->pins[pin].vx = vx;
+    sim->pins[pin].vy = vy;
+}
+
+/* Step 1: w_i = sum N_ip and sum N_ip v_pin over the held particles. */
+void lm_pin_p2g(lm_sim *sim)
+{
+    if (sim->npins == 0) return;
+    const lm_grid *g = &sim->grid;
+    const lm_particles *p = &sim->p;
+    size_t nn = lm_grid_nodes(g);
+    memset(sim->pin_w, 0, 3 * nn * sizeof(double));
+    for (int k = 0; k < sim->npins; k++) {
+        const lm_pin *pn = &sim->pins[k];
+        size_t first = sim->bodies[pn->body].first;
+        for (size_t j = 0; j < pn->n; j++) {
+            size_t q = first + pn->idx[j];
+            for (int c = 0; c < 4; c++) {
+                int i = corner(g, p->node[q], c);
+                double w = p->N[4 * q + c];
+                sim->pin_w[i] += w;
+                sim->pin_vx[i] += w * pn->vx;
+                sim->pin_vy[i] += w * pn->vy;
+            }
+        }
+    }
+}
+
+/* Step 3, before the walls: p_i^L = m_i v_pin at held nodes, f_i changed
+ * by the same amount over dt; each pin's reaction is its share of those
+ * changes. */
+void lm_pin_grid(lm_sim *sim)
+{
+    if (sim->npins == 0) return;
+    lm_grid *g = &sim->grid;
+    const lm_particles *p = &sim->p;
+    double dt = sim->def.dt;
+    for (int k = 0; k < sim->npins; k++) {
+        lm_pin *pn = &sim->pins[k];
+        size_t first = sim->bodies[pn->body].first;
+        pn->rx = pn->ry = 0;
+        for (size_t j = 0; j < pn->n; j++) {
+            size_t q = first + pn->idx[j];
+            for (int c = 0; c < 4; c++) {
+                int i = corner(g, p->node[q], c);
+                double w = p->N[4 * q + c];
+                if (!(w > 0)) continue;
+                double s = w / sim->pin_w[i];
+                pn->rx += s * (g->m[i] * sim->pin_vx[i] / sim->pin_w[i] - g->px[i]) / dt;
+                pn->ry += s * (g->m[i] * sim->pin_vy[i] / sim->pin_w[i] - g->py[i]) / dt;
+            }
+        }
+    }
+    size_t nn = lm_grid_nodes(g);
+    for (size_t i = 0; i < nn; i++) {
+        if (!(sim->pin_w[i] > 0)) continue;
+        double px = g->m[i] * sim->pin_vx[i] / sim->pin_w[i];
+        double py = g->m[i] * sim->pin_vy[i] / sim->pin_w[i];
+        g->fx[i] += (px - g->px[i]) / dt;
+        g->fy[i] += (py - g->py[i]) / dt;
+        g->px[i] = px;
+        g->py[i] = py;
+    }
+}
+
+/* After step 4: the held particles take the pin's velocity exactly (FLIP
+ * would carry the difference between their velocity and their nodes'). */
+void lm_pin_particles(lm_sim *sim)
+{
+    lm_particles *p = &sim->p;
+    for (int k = 0; k < sim->npins; k++) {
+        const lm_pin *pn = &sim->pins[k];
+        size_t first = sim->bodies[pn->body].first;
+        for (size_t j = 0; j < pn->n; j++) {
+            p->vx[first + pn->idx[j]] = pn->vx;
+            p->vy[first + pn->idx[j]] = pn->vy;
+        }
+    }
+}
+
+/* Step 5, before the walls: the strain velocity at held nodes. */
+void lm_pin_velocity(lm_sim *sim)
+{
+    if (sim->npins == 0) return;
+    lm_grid *g = &sim->grid;
+    size_t nn = lm_grid_nodes(g);
+    for (size_t i = 0; i < nn; i++) {
+        if (!(sim->pin_w[i] > 0)) continue;
+        g->vx[i] = sim->pin_vx[i] / sim->pin_w[i];
+        g->vy[i] = sim->pin_vy[i] / sim->pin_w[i];
+    }
+}
