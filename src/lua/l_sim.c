@@ -234,14 +234,23 @@ static void fire_due(lua_State *L, la_sim *s)
 static void check_courant(lua_State *L, la_sim *s)
 {
     double c;
-    double cn = lm_sim_courant(s->sim, &c);
+    int b;
+    double cn = lm_sim_courant_body(s->sim, &c, &b);
     if (cn > s->sim->def.courant * (1 + 1e-12)) {
         double h = fmin(s->sim->grid.hx, s->sim->grid.hy);
-        char msg[320];
+        char msg[600], who[96] = "", why[200] = "";
+        if (b >= 0) {
+            const lm_body *bd = &s->sim->bodies[b];
+            lm_body_label(s->sim, b, who, sizeof who);
+            if (bd->membrane && bd->force == LM_MFORCE_SEGMENT)
+                snprintf(why, sizeof why, "; its tension acts along segments, stable to "
+                         "dt*c/h = %g, so c counts as its wave speed / %g",
+                         LM_SEGMENT_COURANT, LM_SEGMENT_COURANT);
+        }
         snprintf(msg, sizeof msg,
                  "dt = %g is too large: Courant number dt*c/h = %g exceeds "
-                 "courant = %g (c_max = %g, h = %g); use dt <= %g or raise courant",
-                 s->sim->def.dt, cn, s->sim->def.courant, c, h,
+                 "courant = %g (c_max = %g from %s%s, h = %g); use dt <= %g or raise courant",
+                 s->sim->def.dt, cn, s->sim->def.courant, c, b >= 0 ? who : "no body", why, h,
                  s->sim->def.courant * h / c);
         luaL_error(L, "%s", msg);
     }

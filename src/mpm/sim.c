@@ -224,10 +224,20 @@ lm_status lm_sim_add_particle(lm_sim *sim, int body, double x, double y,
 }
 
 /* physics.md §5: dt_c = h / c_max; the number is dt / dt_c. A gas's
- * speed is its particles' sound speed plus their speed, at this moment. */
+ * speed is its particles' sound speed plus their speed, at this moment.
+ * A membrane whose tension acts along its segments is stable only to
+ * dt c / h = LM_SEGMENT_COURANT (measured, docs/robustness.md: its strain
+ * follows the points, moved with the Lagrangian grid velocity as in USL,
+ * not the MUSL re-map), so its speed counts as c / LM_SEGMENT_COURANT. */
 double lm_sim_courant(const lm_sim *sim, double *c_max)
 {
+    return lm_sim_courant_body(sim, c_max, NULL);
+}
+
+double lm_sim_courant_body(const lm_sim *sim, double *c_max, int *body)
+{
     double c = 0;
+    if (body) *body = -1;
     for (int b = 0; b < sim->nbodies; b++) {
         const lm_body *bd = &sim->bodies[b];
         const lm_material *mat = sim->mats[bd->mat];
@@ -239,7 +249,11 @@ double lm_sim_courant(const lm_sim *sim, double *c_max)
                 if (cq > cb) cb = cq;
             }
         }
-        if (cb > c) c = cb;
+        if (bd->membrane && bd->force == LM_MFORCE_SEGMENT) cb /= LM_SEGMENT_COURANT;
+        if (cb > c) {
+            c = cb;
+            if (body) *body = b;
+        }
     }
     if (c_max) *c_max = c;
     double h = sim->grid.hx < sim->grid.hy ? sim->grid.hx : sim->grid.hy;
