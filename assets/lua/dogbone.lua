@@ -92,7 +92,8 @@ M.counts = { [0.4] = 56, [0.2] = 100, [0.1] = 200, [0.05] = 400 }
 -- dt = 0.5 h / c_membrane). o: normals (default "connectivity", oriented
 -- away from the origin), pic (default 0), split (gas splitting, default
 -- none), threads (default 1), density (lamina.gas{density}, default
--- "continuity"). Returns sim, gas, membrane.
+-- "continuity"), force (sim:membrane{force}, default "point"). Returns
+-- sim, gas, membrane.
 function M.setup(h, o)
   o = o or {}
   local cm = math.sqrt(1e6 / ((1 - 0.3^2) * 0.5))
@@ -109,6 +110,7 @@ function M.setup(h, o)
   local mem = sim:membrane{ material = skin, name = "membrane",
                             count = M.counts[h] or math.floor(2 / (h / 10) + 0.5),
                             normals = o.normals or "connectivity", orient = {0, 0},
+                            force = o.force,
                             initial_strain = math.log(M.length(pts) / M.natural_length),
                             curve = lamina.polyline(pts) }
   return sim, gas, mem

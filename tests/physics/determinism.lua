@@ -41,3 +41,15 @@ print(string.format("1 vs 2 threads: energy %.15g vs %.15g (%.1e), pressure %.12
                     e1, e2, rel, g1:pressure(), g2:pressure()))
 assert(rel < 1e-9 and math.abs(g1:pressure() - g2:pressure()) < 1e-7 * g1:pressure(),
        "two threads do not reproduce the one-thread run to rounding")
+
+-- Segment forces and pins (membrane_force.c, pin.c): the trampoline on one
+-- and on two threads, each twice, hashes the same.
+local tramp = require("trampoline")
+local function trampoline(threads)
+  local sim = tramp.setup{ threads = threads }
+  sim:run{ t_end = 0.02 }
+  return sim:hash()
+end
+local t1, t1b, t2, t2b = trampoline(1), trampoline(1), trampoline(2), trampoline(2)
+print("trampoline hash, 1 thread", t1, t1b, "2 threads", t2, t2b)
+assert(t1 == t1b and t2 == t2b, "trampoline runs differ for the same thread count")
