@@ -107,6 +107,8 @@ void la_pins_update(lua_State *L, int sidx, la_sim *s);
 
 /* l_record.c */
 int la_sim_record(lua_State *L);
+/* l_vtk.c: sim:vtk{file, every}, the run for ParaView */
+int la_sim_vtk(lua_State *L);
 void la_open_record(lua_State *L);
 /* Writes the CSV files of the sim's recorders (at the end of run/step). */
 void la_record_flush(lua_State *L, int sidx);

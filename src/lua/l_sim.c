@@ -463,6 +463,7 @@ void la_open_sim(lua_State *L)
     static const luaL_Reg methods[] = {{"body", la_sim_body},
                                        {"membrane", la_sim_membrane},
                                        {"record", la_sim_record},
+                                       {"vtk", la_sim_vtk},
                                        {"every", sim_every},
                                        {"at", sim_at},
                                        {"run", sim_run},

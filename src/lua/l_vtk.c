@@ -1,0 +1,273 @@
+/* l_vtk.c - sim:vtk{file, every}: the run as a ParaView time series.
+ *
+ *   sim:vtk{ file = "out/run", every = 0.01 }
+ *
+ * writes, now and then every `every` of simulated time (once if `every` is
+ * absent), out/run_000000.vtu (the particles: an unstructured grid whose
+ * cells are one vertex per particle of a solid or gas body and one line
+ * per segment of each membrane, in curve order), out/run_grid_000000.vti
+ * (the grid's nodal fields of the last step), and rewrites out/run.pvd,
+ * the collection of every output so far with its time, so that ParaView
+ * opens out/run.pvd as one time series (render/vtk.c writes the files). */
+#include <stdlib.h>
+#include <string.h>
+
+#include "l_internal.h"
+#include "vtk.h"
+
+#define LA_VTK "lamina.vtk"
+#define PREFIX_MAX 1024
+#define NAME_MAX_LEN (PREFIX_MAX + 32)   /* prefix + "_grid_NNNNNN.vti" */
+
+typedef struct la_vtk {
+    char prefix[PREFIX_MAX];
+    int count;              /* outputs written */
+    double *times;
+    int cap;
+} la_vtk;
+
+static int vtk_gc(lua_State *L)
+{
+    la_vtk *v = luaL_checkudata(L, 1, LA_VTK);
+    free(v->times);
+    v->times = NULL;
+    return 0;
+}
+
+/* The last path component of the prefix, for the .pvd's relative names. */
+static const char *base_of(const char *prefix)
+{
+    const char *s = strrchr(prefix, '/');
+    return s ? s + 1 : prefix;
+}
+
+/* Per-particle arrays gathered from the engine; one block, freed by caller. */
+typedef struct gathered {
+    double *xyz, *vel, *stress, *pressure, *rho, *e, *mass, *body, *normal, *cbody;
+    int64_t *conn, *offs;
+    uint8_t *types;
+    size_t ncells;
+} gathered;
+
+static size_t cell_count(const lm_sim *sim)
+{
+    size_t n = 0;
+    for (int b = 0; b < sim->nbodies; b++) {
+        const lm_body *bd = &sim->bodies[b];
+        if (bd->membrane)
+            n += bd->count > 1 ? bd->count - 1 + (bd->closed && bd->count > 2) : 0;
+        else
+            n += bd->count;
+    }
+    return n;
+}
+
+static int gather(const lm_sim *sim, gathered *g, void **block)
+{
+    const lm_particles *p = &sim->p;
+    size_t n = p->n, nc = cell_count(sim);
+    size_t nd = n * (3 + 3 + 6 + 1 + 1 + 1 + 1 + 1 + 3) + nc;
+    char *m = malloc(nd * sizeof(double) + 2 * nc * sizeof(int64_t) + nc * sizeof(int64_t) + nc + 8);
+    if (!m) return -1;
+    *block = m;
+    double *d = (double *)m;
+    g->xyz = d; d += 3 * n;
+    g->vel = d; d += 3 * n;
+    g->stress = d; d += 6 * n;
+    g->pressure = d; d += n;
+    g->rho = d; d += n;
+    g->e = d; d += n;
+    g->mass = d; d += n;
+    g->body = d; d += n;
+    g->normal = d; d += 3 * n;
+    g->cbody = d; d += nc;
+    g->conn = (int64_t *)d;
+    g->offs = g->conn + 2 * nc;
+    g->types = (uint8_t *)(g->offs + nc);
+    g->ncells = nc;
+    for (size_t q = 0; q < n; q++) {
+        const lm_material *mat = sim->mats[p->mat[q]];
+        g->xyz[3 * q] = p->x[q];
+        g->xyz[3 * q + 1] = p->y[q];
+        g->xyz[3 * q + 2] = 0;
+        g->vel[3 * q] = p->vx[q];
+        g->vel[3 * q + 1] = p->vy[q];
+        g->vel[3 * q + 2] = 0;
+        /* VTK's symmetric tensor order: XX, YY, ZZ, XY, YZ, XZ */
+        double *s = &g->stress[6 * q];
+        s[0] = p->sxx[q]; s[1] = p->syy[q]; s[2] = p->szz[q];
+        s[3] = p->sxy[q]; s[4] = 0; s[5] = 0;
+        g->pressure[q] = mat->kind == LM_GAS ? (mat->gamma - 1) * p->rho[q] * p->e[q]
+                                             : -(p->sxx[q] + p->syy[q] + p->szz[q]) / 3;
+        g->rho[q] = p->rho[q];
+        g->e[q] = p->e[q];
+        g->mass[q] = p->m[q];
+        g->body[q] = p->body[q] + 1;
+        int memb = mat->kind == LM_MEMBRANE;
+        g->normal[3 * q] = memb ? -p->ty[q] : 0;   /* the tangent turned +90 degrees */
+        g->normal[3 * q + 1] = memb ? p->tx[q] : 0;
+        g->normal[3 * q + 2] = 0;
+    }
+    size_t c = 0, k = 0;
+    for (int b = 0; b < sim->nbodies; b++) {
+        const lm_body *bd = &sim->bodies[b];
+        size_t last = bd->first + bd->count - 1;
+        if (bd->membrane) {
+            size_t nseg = bd->count > 1 ? bd->count - 1 + (bd->closed && bd->count > 2) : 0;
+            for (size_t s = 0; s < nseg; s++) {
+                size_t a = bd->first + s, z = a == last ? bd->first : a + 1;
+                g->conn[k++] = (int64_t)a;
+                g->conn[k++] = (int64_t)z;
+                g->offs[c] = (int64_t)k;
+                g->types[c] = LR_VTK_LINE;
+                g->cbody[c++] = b + 1;
+            }
+        } else {
+            for (size_t q = bd->first; q <= last && bd->count; q++) {
+                g->conn[k++] = (int64_t)q;
+                g->offs[c] = (int64_t)k;
+                g->types[c] = LR_VTK_VERTEX;
+                g->cbody[c++] = b + 1;
+            }
+        }
+    }
+    return 0;
+}
+
+static int write_particles(const lm_sim *sim, const char *path, char *err, size_t errlen)
+{
+    gathered g;
+    void *block;
+    if (gather(sim, &g, &block)) {
+        snprintf(err, errlen, "cannot write '%s': out of memory", path);
+        return -1;
+    }
+    lr_vtk_field pf[] = {{"velocity", 3, g.vel}, {"stress", 6, g.stress},
+                         {"pressure", 1, g.pressure}, {"density", 1, g.rho},
+                         {"energy", 1, g.e}, {"mass", 1, g.mass}, {"body", 1, g.body},
+                         {"normal", 3, g.normal}};
+    lr_vtk_field cf[] = {{"body", 1, g.cbody}};
+    lr_vtk_cells cells = {g.ncells, g.conn, g.offs, g.types};
+    int rc = lr_vtk_write_vtu(path, sim->p.n, g.xyz, &cells, pf, 8, cf, 1, err, errlen);
+    free(block);
+    return rc;
+}
+
+static int write_grid(const lm_sim *sim, const char *path, char *err, size_t errlen)
+{
+    const lm_grid *gr = &sim->grid;
+    size_t nn = (size_t)(gr->nx + 1) * (size_t)(gr->ny + 1);
+    double *d = malloc(7 * nn * sizeof *d);
+    if (!d) {
+        snprintf(err, errlen, "cannot write '%s': out of memory", path);
+        return -1;
+    }
+    double *vel = d + nn, *force = d + 4 * nn;
+    for (size_t i = 0; i < nn; i++) {
+        d[i] = gr->m[i];
+        vel[3 * i] = gr->vx[i];
+        vel[3 * i + 1] = gr->vy[i];
+        vel[3 * i + 2] = 0;
+        force[3 * i] = gr->fx[i];
+        force[3 * i + 1] = gr->fy[i];
+        force[3 * i + 2] = 0;
+    }
+    lr_vtk_field pf[] = {{"mass", 1, d}, {"velocity", 3, vel}, {"force", 3, force}};
+    int rc = lr_vtk_write_vti(path, gr->nx, gr->ny, gr->x0, gr->y0, gr->hx, gr->hy, pf, 3,
+                              err, errlen);
+    free(d);
+    return rc;
+}
+
+/* The collection: every output so far, particles (part 0) and grid (1). */
+static int write_pvd(const la_vtk *v, char *err, size_t errlen)
+{
+    int n = 2 * v->count;
+    double *t = malloc((size_t)n * sizeof *t);
+    int *part = malloc((size_t)n * sizeof *part);
+    char *names = malloc((size_t)n * NAME_MAX_LEN);
+    const char **files = malloc((size_t)n * sizeof *files);
+    int rc = -1;
+    char path[PREFIX_MAX + 8];
+    if (!t || !part || !names || !files) {
+        snprintf(err, errlen, "cannot write '%s.pvd': out of memory", v->prefix);
+        goto done;
+    }
+    const char *base = base_of(v->prefix);
+    for (int k = 0; k < v->count; k++) {
+        for (int s = 0; s < 2; s++) {
+            char *nm = names + (size_t)(2 * k + s) * NAME_MAX_LEN;
+            snprintf(nm, NAME_MAX_LEN, s ? "%s_grid_%06d.vti" : "%s_%06d.vtu", base, k);
+            files[2 * k + s] = nm;
+            t[2 * k + s] = v->times[k];
+            part[2 * k + s] = s;
+        }
+    }
+    snprintf(path, sizeof path, "%s.pvd", v->prefix);
+    rc = lr_vtk_write_pvd(path, n, t, part, files, err, errlen);
+done:
+    free(t);
+    free(part);
+    free(names);
+    free(files);
+    return rc;
+}
+
+/* The event: upvalue 1 is the la_vtk state; argument 1 the sim. */
+static int vtk_output(lua_State *L)
+{
+    la_vtk *v = luaL_checkudata(L, lua_upvalueindex(1), LA_VTK);
+    lm_sim *sim = la_check_sim(L, 1)->sim;
+    if (v->count == v->cap) {
+        int cap = v->cap ? 2 * v->cap : 16;
+        double *t = realloc(v->times, (size_t)cap * sizeof *t);
+        if (!t) return luaL_error(L, "sim:vtk: out of memory");
+        v->times = t;
+        v->cap = cap;
+    }
+    char path[PREFIX_MAX + 32], err[PREFIX_MAX + 128];
+    snprintf(path, sizeof path, "%s_%06d.vtu", v->prefix, v->count);
+    if (write_particles(sim, path, err, sizeof err)) return luaL_error(L, "sim:vtk: %s", err);
+    snprintf(path, sizeof path, "%s_grid_%06d.vti", v->prefix, v->count);
+    if (write_grid(sim, path, err, sizeof err)) return luaL_error(L, "sim:vtk: %s", err);
+    v->times[v->count++] = sim->t;
+    if (write_pvd(v, err, sizeof err)) return luaL_error(L, "sim:vtk: %s", err);
+    return 0;
+}
+
+int la_sim_vtk(lua_State *L)
+{
+    static const char *const keys[] = {"file", "every", NULL};
+    const char *fn = "sim:vtk";
+    la_sim *s = la_check_sim(L, 1);
+    la_check_keys(L, 2, fn, keys);
+    lua_getfield(L, 2, "file");
+    size_t len;
+    const char *file = lua_tolstring(L, -1, &len);
+    if (!file || len == 0) return luaL_error(L, "%s: 'file' (a path without extension) is required", fn);
+    if (strlen(file) != len) return luaL_error(L, "%s: 'file' contains a NUL byte", fn);
+    if (len >= PREFIX_MAX - 32) return luaL_error(L, "%s: 'file' is too long", fn);
+    double every = la_opt_number(L, 2, fn, "every", 0);
+    if (la_has(L, 2, "every") && !(every > 0))
+        return luaL_error(L, "%s: every must be positive (got %f)", fn, every);
+    la_vtk *v = lua_newuserdatauv(L, sizeof *v, 0);
+    memset(v, 0, sizeof *v);
+    memcpy(v->prefix, file, len + 1);
+    if (luaL_newmetatable(L, LA_VTK)) {
+        lua_pushcfunction(L, vtk_gc);
+        lua_setfield(L, -2, "__gc");
+        lua_pushliteral(L, "lamina.vtk");
+        lua_setfield(L, -2, "__metatable");
+    }
+    lua_setmetatable(L, -2);
+    lua_pushcclosure(L, vtk_output, 1);
+    int fidx = lua_gettop(L);
+    if (every > 0) {
+        la_sim_add_event(L, 1, s->sim->t, every, fidx);
+    } else {
+        lua_pushvalue(L, fidx);
+        lua_pushvalue(L, 1);
+        lua_call(L, 1, 0);
+    }
+    return 0;
+}
