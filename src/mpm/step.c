@@ -10,22 +10,42 @@
 #include "step.h"
 #include "threads.h"
 
-static const int corner_dx[4] = {0, 1, 0, 1};
-static const int corner_dy[4] = {0, 0, 1, 1};
-
-static inline int corner(const lm_grid *g, int node, int k)
-{
-    return node + corner_dy[k] * (g->nx + 1) + corner_dx[k];
-}
+/* The step's loops over a particle's stencil come in two widths, chosen
+ * outside the particle loops: 2 x 2 for the linear basis (the papers' code
+ * path, unchanged to the last bit) and 3 x 3 for uGIMP and the quadratic
+ * B-spline. Each loop is written once for a stencil width W and inlined
+ * with W a constant, so the compiler unrolls both. */
+#if defined(__GNUC__)
+#define LM_FORCE_INLINE inline __attribute__((always_inline))
+#else
+#define LM_FORCE_INLINE inline
+#endif
 
 void lm_step_shape(lm_sim *sim)
 {
     lm_particles *p = &sim->p;
+    const lm_grid *g = &sim->grid;
     long n = (long)p->n;
+    switch (sim->def.basis) {
+    case LM_BASIS_LINEAR:
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static)
-    for (long q = 0; q < n; q++)
-        lm_shape_bilinear(&sim->grid, p->x[q], p->y[q], &p->node[q],
-                          &p->N[4 * q], &p->Gx[4 * q], &p->Gy[4 * q]);
+        for (long q = 0; q < n; q++)
+            lm_shape_bilinear(g, p->x[q], p->y[q], &p->node[q], &p->N[4 * q],
+                              &p->Gx[4 * q], &p->Gy[4 * q]);
+        break;
+    case LM_BASIS_GIMP:
+#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static)
+        for (long q = 0; q < n; q++)
+            lm_shape_gimp(g, p->x[q], p->y[q], p->lx[q], p->ly[q], &p->node[q],
+                          &p->N[9 * q], &p->Gx[9 * q], &p->Gy[9 * q]);
+        break;
+    case LM_BASIS_BSPLINE2:
+#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static)
+        for (long q = 0; q < n; q++)
+            lm_shape_bspline2(g, p->x[q], p->y[q], &p->node[q], &p->N[9 * q],
+                              &p->Gx[9 * q], &p->Gy[9 * q]);
+        break;
+    }
 }
 
 /* The three particle-to-grid sums of the step. */
@@ -35,19 +55,20 @@ typedef enum scatter_kind {
     SCATTER_MOMENTUM         /* the MUSL re-map of m_p v_p (step 5) */
 } scatter_kind;
 
-/* The loops of each sum (the kind is chosen outside them: a switch per
- * corner costs a fifth of the step). */
-static void scatter_range(const lm_sim *sim, scatter_kind kind, size_t a, size_t b,
-                          double *const *f)
+/* The loops of each sum for a stencil W nodes wide (the kind is chosen
+ * outside them: a switch per corner costs a fifth of the step). */
+static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size_t a,
+                                      size_t b, double *const *f, const int W)
 {
     const lm_grid *g = &sim->grid;
     const lm_particles *p = &sim->p;
+    const int NS = W * W;
     switch (kind) {
     case SCATTER_MASS_MOMENTUM:
         for (size_t q = a; q < b; q++) {
-            for (int k = 0; k < 4; k++) {
-                int i = corner(g, p->node[q], k);
-                double w = p->m[q] * p->N[4 * q + k];
+            for (int k = 0; k < NS; k++) {
+                int i = lm_stencil_node(g, W, p->node[q], k);
+                double w = p->m[q] * p->N[NS * q + k];
                 f[0][i] += w;
                 f[1][i] += w * p->vx[q];
                 f[2][i] += w * p->vy[q];
@@ -57,9 +78,9 @@ static void scatter_range(const lm_sim *sim, scatter_kind kind, size_t a, size_t
     case SCATTER_FORCES:
         for (size_t q = a; q < b; q++) {
             double V = p->m[q] / p->rho[q];
-            for (int k = 0; k < 4; k++) {
-                int i = corner(g, p->node[q], k);
-                double gx = p->Gx[4 * q + k], gy = p->Gy[4 * q + k];
+            for (int k = 0; k < NS; k++) {
+                int i = lm_stencil_node(g, W, p->node[q], k);
+                double gx = p->Gx[NS * q + k], gy = p->Gy[NS * q + k];
                 f[0][i] -= V * (p->sxx[q] * gx + p->sxy[q] * gy);
                 f[1][i] -= V * (p->sxy[q] * gx + p->syy[q] * gy);
             }
@@ -67,9 +88,9 @@ static void scatter_range(const lm_sim *sim, scatter_kind kind, size_t a, size_t
         break;
     case SCATTER_MOMENTUM:
         for (size_t q = a; q < b; q++) {
-            for (int k = 0; k < 4; k++) {
-                int i = corner(g, p->node[q], k);
-                double w = p->m[q] * p->N[4 * q + k];
+            for (int k = 0; k < NS; k++) {
+                int i = lm_stencil_node(g, W, p->node[q], k);
+                double w = p->m[q] * p->N[NS * q + k];
                 f[0][i] += w * p->vx[q];
                 f[1][i] += w * p->vy[q];
             }
@@ -78,9 +99,19 @@ static void scatter_range(const lm_sim *sim, scatter_kind kind, size_t a, size_t
     }
 }
 
+static void scatter_range(const lm_sim *sim, scatter_kind kind, size_t a, size_t b,
+                          double *const *f)
+{
+    if (sim->grid.sw == 2) scatter_w(sim, kind, a, b, f, 2);
+    else scatter_w(sim, kind, a, b, f, 3);
+}
+
 /* Adds one of the sums into the nf fields `out` (zeroed by the caller),
- * each thread over its own particles (threads.h). */
-static void scatter(lm_sim *sim, scatter_kind kind, int nf, double *const *out)
+ * each thread over its own particles (threads.h); with a 3 x 3 basis the
+ * ghost nodes' sums are then folded in at the walls (grid_walls.c), comp
+ * saying what each field is. */
+static void scatter(lm_sim *sim, scatter_kind kind, int nf, double *const *out,
+                    const lm_comp *comp)
 {
     int nt = lm_sim_threads(sim);
 #pragma omp parallel num_threads(nt)
@@ -93,6 +124,7 @@ static void scatter(lm_sim *sim, scatter_kind kind, int nf, double *const *out)
         scatter_range(sim, kind, a, b, f);
     }
     lm_threads_reduce(sim, nt, nf, out);
+    lm_grid_fold(&sim->grid, nf, out, comp);
 }
 
 /* Step 1: m_i = sum_p m_p N_ip, p_i = sum_p m_p v_p N_ip (lumped mass). */
@@ -100,7 +132,8 @@ void lm_step_p2g(lm_sim *sim)
 {
     lm_grid *g = &sim->grid;
     double *const out[3] = {g->m, g->px, g->py};
-    scatter(sim, SCATTER_MASS_MOMENTUM, 3, out);
+    static const lm_comp comp[3] = {LM_COMP_SCALAR, LM_COMP_X, LM_COMP_Y};
+    scatter(sim, SCATTER_MASS_MOMENTUM, 3, out, comp);
 }
 
 /* Step 2: f_i^int = -sum_p V_p sigma_p . G_ip ([F] eq 9), f_i^ext = m_i g. */
@@ -108,7 +141,8 @@ void lm_step_forces(lm_sim *sim)
 {
     lm_grid *g = &sim->grid;
     double *const out[2] = {g->fx, g->fy};
-    scatter(sim, SCATTER_FORCES, 2, out);
+    static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
+    scatter(sim, SCATTER_FORCES, 2, out, comp);
     size_t nn = lm_grid_nodes(g);
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
     for (long i = 0; i < (long)nn; i++) {
@@ -133,6 +167,28 @@ void lm_step_grid_update(lm_sim *sim)
     lm_grid_apply_bc(g, g->fx, g->fy);
 }
 
+/* Step 4 for particle q with a stencil W nodes wide. */
+static LM_FORCE_INLINE void g2p_particle(const lm_grid *g, lm_particles *p, long q,
+                                         double dt, double pic, const int W)
+{
+    const int NS = W * W;
+    double ax = 0, ay = 0, ux = 0, uy = 0;
+    for (int k = 0; k < NS; k++) {
+        int i = lm_stencil_node(g, W, p->node[q], k);
+        double w = p->N[NS * q + k];
+        ax += w * g->ax[i];
+        ay += w * g->ay[i];
+        ux += w * g->vx[i];
+        uy += w * g->vy[i];
+    }
+    /* FLIP, optionally blended with the PIC velocity sum_i N_ip v_i^L
+     * (pic = 0, the papers' scheme, by default) */
+    p->vx[q] = (1 - pic) * (p->vx[q] + dt * ax) + pic * ux;
+    p->vy[q] = (1 - pic) * (p->vy[q] + dt * ay) + pic * uy;
+    p->x[q] += dt * ux;
+    p->y[q] += dt * uy;
+}
+
 /* Step 4 ([F] eq 12): FLIP velocity update from the nodal accelerations,
  * position from the Lagrangian grid velocity. Only zero-mass nodes are
  * skipped; dropping "small" ones would break momentum conservation. */
@@ -151,24 +207,16 @@ void lm_step_g2p(lm_sim *sim)
         g->vx[i] = g->px[i] * r;
         g->vy[i] = g->py[i] * r;
     }
+    double *const fill[4] = {g->ax, g->ay, g->vx, g->vy};
+    static const lm_comp comp[4] = {LM_COMP_X, LM_COMP_Y, LM_COMP_X, LM_COMP_Y};
+    lm_grid_fill(g, 4, fill, comp);
     long n = (long)p->n;
+    if (g->sw == 2) {
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static)
-    for (long q = 0; q < n; q++) {
-        double ax = 0, ay = 0, ux = 0, uy = 0;
-        for (int k = 0; k < 4; k++) {
-            int i = corner(g, p->node[q], k);
-            double w = p->N[4 * q + k];
-            ax += w * g->ax[i];
-            ay += w * g->ay[i];
-            ux += w * g->vx[i];
-            uy += w * g->vy[i];
-        }
-        /* FLIP, optionally blended with the PIC velocity sum_i N_ip v_i^L
-         * (pic = 0, the papers' scheme, by default) */
-        p->vx[q] = (1 - pic) * (p->vx[q] + dt * ax) + pic * ux;
-        p->vy[q] = (1 - pic) * (p->vy[q] + dt * ay) + pic * uy;
-        p->x[q] += dt * ux;
-        p->y[q] += dt * uy;
+        for (long q = 0; q < n; q++) g2p_particle(g, p, q, dt, pic, 2);
+    } else {
+#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static)
+        for (long q = 0; q < n; q++) g2p_particle(g, p, q, dt, pic, 3);
     }
 }
 
@@ -183,7 +231,8 @@ void lm_step_strain_velocity(lm_sim *sim)
         double *const out[2] = {g->vx, g->vy};
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
         for (long i = 0; i < (long)nn; i++) g->vx[i] = g->vy[i] = 0;
-        scatter(sim, SCATTER_MOMENTUM, 2, out);
+        static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
+        scatter(sim, SCATTER_MOMENTUM, 2, out, comp);
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
         for (long i = 0; i < (long)nn; i++) {
             if (g->m[i] > 0) {
@@ -199,21 +248,33 @@ void lm_step_strain_velocity(lm_sim *sim)
         }
     }
     lm_grid_apply_bc(g, g->vx, g->vy);
+    double *const fill[2] = {g->vx, g->vy};
+    static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
+    lm_grid_fill(g, 2, fill, comp);
 }
 
-/* L = sum_i v_i (x) G_ip (L = dv/dx) at particle q. */
-static void velocity_gradient(const lm_grid *g, const lm_particles *p, size_t q, double L[4])
+/* L = sum_i v_i (x) G_ip (L = dv/dx) at particle q, stencil W wide. */
+static LM_FORCE_INLINE void velocity_gradient_w(const lm_grid *g, const lm_particles *p,
+                                                size_t q, double L[4], const int W)
 {
+    const int NS = W * W;
     double Lxx = 0, Lxy = 0, Lyx = 0, Lyy = 0;
-    for (int k = 0; k < 4; k++) {
-        int i = corner(g, p->node[q], k);
-        double gx = p->Gx[4 * q + k], gy = p->Gy[4 * q + k];
+    for (int k = 0; k < NS; k++) {
+        int i = lm_stencil_node(g, W, p->node[q], k);
+        double gx = p->Gx[NS * q + k], gy = p->Gy[NS * q + k];
         Lxx += g->vx[i] * gx;
         Lxy += g->vx[i] * gy;
         Lyx += g->vy[i] * gx;
         Lyy += g->vy[i] * gy;
     }
     L[0] = Lxx; L[1] = Lxy; L[2] = Lyx; L[3] = Lyy;
+}
+
+static inline void velocity_gradient(const lm_grid *g, const lm_particles *p, size_t q,
+                                     double L[4])
+{
+    if (g->sw == 2) velocity_gradient_w(g, p, q, L, 2);
+    else velocity_gradient_w(g, p, q, L, 3);
 }
 
 /* The artificial viscosity of [F] eq 24 needs, before any gas point is
