@@ -173,13 +173,35 @@ static LM_FORCE_INLINE void g2p_particle(const lm_grid *g, lm_particles *p, long
 {
     const int NS = W * W;
     double ax = 0, ay = 0, ux = 0, uy = 0;
-    for (int k = 0; k < NS; k++) {
-        int i = lm_stencil_node(g, W, p->node[q], k);
-        double w = p->N[NS * q + k];
-        ax += w * g->ax[i];
-        ay += w * g->ay[i];
-        ux += w * g->vx[i];
-        uy += w * g->vy[i];
+    if (W == 2) {
+        for (int k = 0; k < NS; k++) {
+            int i = lm_stencil_node(g, W, p->node[q], k);
+            double w = p->N[NS * q + k];
+            ax += w * g->ax[i];
+            ay += w * g->ay[i];
+            ux += w * g->vx[i];
+            uy += w * g->vy[i];
+        }
+    } else {
+        /* row by row, then the rows: at a point on a fixed wall the
+         * antisymmetric ghost row (or column) cancels its mirror exactly
+         * (grid_walls.c), so the point does not move by a rounding error */
+        for (int b = 0; b < W; b++) {
+            double rax = 0, ray = 0, rux = 0, ruy = 0;
+            for (int a = 0; a < W; a++) {
+                int k = b * W + a;
+                int i = lm_stencil_node(g, W, p->node[q], k);
+                double w = p->N[NS * q + k];
+                rax += w * g->ax[i];
+                ray += w * g->ay[i];
+                rux += w * g->vx[i];
+                ruy += w * g->vy[i];
+            }
+            ax += rax;
+            ay += ray;
+            ux += rux;
+            uy += ruy;
+        }
     }
     /* FLIP, optionally blended with the PIC velocity sum_i N_ip v_i^L
      * (pic = 0, the papers' scheme, by default) */
