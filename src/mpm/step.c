@@ -56,43 +56,60 @@ typedef enum scatter_kind {
 } scatter_kind;
 
 /* The loops of each sum for a stencil W nodes wide (the kind is chosen
- * outside them: a switch per corner costs a fifth of the step). */
-static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size_t a,
-                                      size_t b, double *const *f, const int W)
+ * outside them: a switch per corner costs a fifth of the step). The
+ * particle's values are read into locals once: the nodal sums are doubles
+ * too, so the compiler could not otherwise keep them in registers across
+ * the stores. Node (a, b) of the stencil is row b, column a (k = b W + a). */
+static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size_t a0,
+                                      size_t b0, double *const *f, const int W)
 {
     const lm_grid *g = &sim->grid;
     const lm_particles *p = &sim->p;
     const int NS = W * W;
+    const long sx = g->sx;
+    double *const f0 = f[0], *const f1 = f[1], *const f2 = kind == SCATTER_MASS_MOMENTUM ? f[2] : NULL;
     switch (kind) {
     case SCATTER_MASS_MOMENTUM:
-        for (size_t q = a; q < b; q++) {
-            for (int k = 0; k < NS; k++) {
-                int i = lm_stencil_node(g, W, p->node[q], k);
-                double w = p->m[q] * p->N[NS * q + k];
-                f[0][i] += w;
-                f[1][i] += w * p->vx[q];
-                f[2][i] += w * p->vy[q];
+        for (size_t q = a0; q < b0; q++) {
+            const double m = p->m[q], vx = p->vx[q], vy = p->vy[q];
+            const double *N = p->N + NS * q;
+            for (int b = 0; b < W; b++) {
+                const long row = p->node[q] + b * sx;
+                for (int a = 0; a < W; a++) {
+                    double w = m * N[b * W + a];
+                    f0[row + a] += w;
+                    f1[row + a] += w * vx;
+                    f2[row + a] += w * vy;
+                }
             }
         }
         break;
     case SCATTER_FORCES:
-        for (size_t q = a; q < b; q++) {
-            double V = p->m[q] / p->rho[q];
-            for (int k = 0; k < NS; k++) {
-                int i = lm_stencil_node(g, W, p->node[q], k);
-                double gx = p->Gx[NS * q + k], gy = p->Gy[NS * q + k];
-                f[0][i] -= V * (p->sxx[q] * gx + p->sxy[q] * gy);
-                f[1][i] -= V * (p->sxy[q] * gx + p->syy[q] * gy);
+        for (size_t q = a0; q < b0; q++) {
+            const double V = p->m[q] / p->rho[q];
+            const double sxx = p->sxx[q], syy = p->syy[q], sxy = p->sxy[q];
+            const double *Gx = p->Gx + NS * q, *Gy = p->Gy + NS * q;
+            for (int b = 0; b < W; b++) {
+                const long row = p->node[q] + b * sx;
+                for (int a = 0; a < W; a++) {
+                    double gx = Gx[b * W + a], gy = Gy[b * W + a];
+                    f0[row + a] -= V * (sxx * gx + sxy * gy);
+                    f1[row + a] -= V * (sxy * gx + syy * gy);
+                }
             }
         }
         break;
     case SCATTER_MOMENTUM:
-        for (size_t q = a; q < b; q++) {
-            for (int k = 0; k < NS; k++) {
-                int i = lm_stencil_node(g, W, p->node[q], k);
-                double w = p->m[q] * p->N[NS * q + k];
-                f[0][i] += w * p->vx[q];
-                f[1][i] += w * p->vy[q];
+        for (size_t q = a0; q < b0; q++) {
+            const double m = p->m[q], vx = p->vx[q], vy = p->vy[q];
+            const double *N = p->N + NS * q;
+            for (int b = 0; b < W; b++) {
+                const long row = p->node[q] + b * sx;
+                for (int a = 0; a < W; a++) {
+                    double w = m * N[b * W + a];
+                    f0[row + a] += w * vx;
+                    f1[row + a] += w * vy;
+                }
             }
         }
         break;
@@ -102,6 +119,8 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
 static void scatter_range(const lm_sim *sim, scatter_kind kind, size_t a, size_t b,
                           double *const *f)
 {
+    /* (lm_stencil_node(g, W, node, k) is node + (k / W) sx + k % W: the
+     * loops above walk the same nodes row by row) */
     if (sim->grid.sw == 2) scatter_w(sim, kind, a, b, f, 2);
     else scatter_w(sim, kind, a, b, f, 3);
 }
@@ -172,31 +191,26 @@ static LM_FORCE_INLINE void g2p_particle(const lm_grid *g, lm_particles *p, long
                                          double dt, double pic, const int W)
 {
     const int NS = W * W;
+    const double *N = p->N + NS * q;
+    const double *gax = g->ax, *gay = g->ay, *gvx = g->vx, *gvy = g->vy;
     double ax = 0, ay = 0, ux = 0, uy = 0;
-    if (W == 2) {
-        for (int k = 0; k < NS; k++) {
-            int i = lm_stencil_node(g, W, p->node[q], k);
-            double w = p->N[NS * q + k];
-            ax += w * g->ax[i];
-            ay += w * g->ay[i];
-            ux += w * g->vx[i];
-            uy += w * g->vy[i];
-        }
-    } else {
-        /* row by row, then the rows: at a point on a fixed wall the
+    for (int b = 0; b < W; b++) {
+        /* 3 x 3: row by row, then the rows: at a point on a fixed wall the
          * antisymmetric ghost row (or column) cancels its mirror exactly
-         * (grid_walls.c), so the point does not move by a rounding error */
-        for (int b = 0; b < W; b++) {
-            double rax = 0, ray = 0, rux = 0, ruy = 0;
-            for (int a = 0; a < W; a++) {
-                int k = b * W + a;
-                int i = lm_stencil_node(g, W, p->node[q], k);
-                double w = p->N[NS * q + k];
-                rax += w * g->ax[i];
-                ray += w * g->ay[i];
-                rux += w * g->vx[i];
-                ruy += w * g->vy[i];
-            }
+         * (grid_walls.c), so the point does not move by a rounding error.
+         * 2 x 2: one running sum, the papers' code path to the last bit. */
+        double rax = 0, ray = 0, rux = 0, ruy = 0;
+        double *sax = W == 2 ? &ax : &rax, *say = W == 2 ? &ay : &ray;
+        double *sux = W == 2 ? &ux : &rux, *suy = W == 2 ? &uy : &ruy;
+        const long row = p->node[q] + b * (long)g->sx;
+        for (int a = 0; a < W; a++) {
+            double w = N[b * W + a];
+            *sax += w * gax[row + a];
+            *say += w * gay[row + a];
+            *sux += w * gvx[row + a];
+            *suy += w * gvy[row + a];
+        }
+        if (W != 2) {
             ax += rax;
             ay += ray;
             ux += rux;
@@ -280,14 +294,18 @@ static LM_FORCE_INLINE void velocity_gradient_w(const lm_grid *g, const lm_parti
                                                 size_t q, double L[4], const int W)
 {
     const int NS = W * W;
+    const double *Gx = p->Gx + NS * q, *Gy = p->Gy + NS * q;
     double Lxx = 0, Lxy = 0, Lyx = 0, Lyy = 0;
-    for (int k = 0; k < NS; k++) {
-        int i = lm_stencil_node(g, W, p->node[q], k);
-        double gx = p->Gx[NS * q + k], gy = p->Gy[NS * q + k];
-        Lxx += g->vx[i] * gx;
-        Lxy += g->vx[i] * gy;
-        Lyx += g->vy[i] * gx;
-        Lyy += g->vy[i] * gy;
+    for (int b = 0; b < W; b++) {
+        const long row = p->node[q] + b * (long)g->sx;
+        for (int a = 0; a < W; a++) {
+            double gx = Gx[b * W + a], gy = Gy[b * W + a];
+            double vx = g->vx[row + a], vy = g->vy[row + a];
+            Lxx += vx * gx;
+            Lxy += vx * gy;
+            Lyx += vy * gx;
+            Lyy += vy * gy;
+        }
     }
     L[0] = Lxx; L[1] = Lxy; L[2] = Lyx; L[3] = Lyy;
 }
