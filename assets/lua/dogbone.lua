@@ -100,7 +100,7 @@ function M.setup(h, o)
   local sim = lamina.sim{ domain = {0, 0, 1.6, 1.6}, cell = h, dt = 0.5 * h / cm,
                           boundary = { left = "symmetry", bottom = "symmetry",
                                        right = "fixed", top = "fixed" },
-                          pic = o.pic or 0, threads = o.threads }
+                          pic = o.pic or 0, threads = o.threads, basis = o.basis }
   local air = lamina.gas{ rho = 1, e = 250, gamma = 1.4, mu = 0.2, split = o.split,
                           density = o.density }
   local skin = lamina.membrane{ rho = 0.5, E = 1e6, nu = 0.3, thickness = 0.1,

@@ -8,6 +8,8 @@
  *            cell size chosen for the particle count, MUSL and USL;
  *   gas    - the gas-filled quarter membrane of V6 (16 ppc gas, membrane
  *            points a third of a cell apart, connectivity normals), MUSL.
+ * `--basis NAME` runs them with that basis (lamina.sim{basis}: linear,
+ * gimp, bspline2; default linear).
  * Each case runs for about `work` particle-steps (default 4e6) after one
  * warm-up step; the table gives particles, steps, seconds and millions of
  * particle-steps per second. Timings are wall clock: run it on an idle
@@ -46,12 +48,14 @@ static int seed_disk(lm_sim *sim, int mi, double cx, double cy, double r, int np
 }
 
 static int threads = 1;
+static lm_basis basis = LM_BASIS_LINEAR;
 
 static lm_sim *make_disks(double h, lm_scheme scheme, lm_material *mat)
 {
     lm_sim_def d;
     lm_sim_def_default(&d);
     d.threads = threads;
+    d.basis = basis;
     d.hx = d.hy = h;
     d.scheme = scheme;
     d.dt = 0.2 * h / lm_material_wave_speed(mat);
@@ -72,6 +76,7 @@ static lm_sim *make_gas(double h, lm_material *gas, lm_material *skin)
     lm_sim_def d;
     lm_sim_def_default(&d);
     d.threads = threads;
+    d.basis = basis;
     d.hx = d.hy = h;
     d.bc[LM_LEFT] = d.bc[LM_BOTTOM] = LM_BC_SYMMETRY;
     d.dt = 0.5 * h / lm_material_wave_speed(skin);
@@ -178,6 +183,16 @@ int bench_engine(int argc, char **argv)
                         LM_MAX_THREADS);
                 return 2;
             }
+        } else if (strcmp(argv[i], "--basis") == 0 && i + 1 < argc) {
+            const char *name = argv[++i];
+            int b = 0;
+            while (b <= LM_BASIS_BSPLINE2 && strcmp(name, lm_basis_name((lm_basis)b)) != 0) b++;
+            if (b > LM_BASIS_BSPLINE2) {
+                fprintf(stderr, "lamina bench engine: --basis '%s' is not one of linear, gimp, "
+                        "bspline2\n", name);
+                return 2;
+            }
+            basis = (lm_basis)b;
         } else if (strcmp(argv[i], "--sizes") == 0 && i + 1 < argc) {
             nsizes = 0;
             for (char *s = argv[++i]; *s && nsizes < 8;) {
@@ -193,7 +208,8 @@ int bench_engine(int argc, char **argv)
             }
         } else {
             fprintf(stderr, "lamina bench engine: unknown option '%s' (usage: lamina bench "
-                    "engine [--sizes N,N,...] [--work PARTICLE_STEPS] [--threads N])\n", argv[i]);
+                    "engine [--sizes N,N,...] [--work PARTICLE_STEPS] [--threads N] "
+                    "[--basis linear|gimp|bspline2])\n", argv[i]);
             return 2;
         }
     }
@@ -203,8 +219,8 @@ int bench_engine(int argc, char **argv)
                        .e0 = 1000 / (0.4 * 1)};
     lm_material skin = {.kind = LM_MEMBRANE, .rho = 0.5, .E = 1e6, .nu = 0.3,
                         .thickness = 0.1, .law = LM_LAW_PLANE_STRESS};
-    printf("lamina bench engine: %d thread%s, about %.3g particle-steps per case\n\n", threads,
-           threads == 1 ? "" : "s", work);
+    printf("lamina bench engine: %d thread%s, basis %s, about %.3g particle-steps per case\n\n",
+           threads, threads == 1 ? "" : "s", lm_basis_name(basis), work);
     printf("| case         | particles |   steps |       s | M p-steps/s |\n");
     printf("|---|---:|---:|---:|---:|\n");
     int bad = 0;

@@ -165,6 +165,8 @@ int la_sim_body(lua_State *L)
         velocity_at(L, vidx, x, y, &vx, &vy);
         if (lm_sim_add_particle(sim, bi, x, y, vx, vy, part * mass, mat->rho) != LM_OK)
             return luaL_error(L, "%s: %s", fn, sim->err);
+        /* uGIMP: the particle's square is its share of the cell */
+        lm_sim_set_particle_size(sim, sim->p.n - 1, 0.5 * g->hx / npx, 0.5 * g->hy / npy);
     }
     if (sim->bodies[bi].count == 0)
         return luaL_error(L, "%s: the region holds no particles at ppc = %d "

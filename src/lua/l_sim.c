@@ -11,6 +11,8 @@
 #include "l_internal.h"
 
 static const char *const schemes[] = {"musl", "usl", NULL};
+/* in lm_basis order (mpm.h) */
+static const char *const bases[] = {"linear", "gimp", "bspline2", NULL};
 static const char *const bcs[] = {"fixed", "symmetry", "free", NULL};
 static const char *const sides[] = {"left", "right", "bottom", "top", NULL};
 
@@ -85,7 +87,8 @@ static void read_boundary(lua_State *L, const char *fn, lm_sim_def *d)
 int la_sim_new(lua_State *L)
 {
     static const char *const keys[] = {"domain", "cell", "dt", "scheme", "gravity",
-                                       "boundary", "courant", "pic", "seed", "threads", NULL};
+                                       "boundary", "courant", "pic", "seed", "threads",
+                                       "basis", NULL};
     const char *fn = "lamina.sim";
     la_check_keys(L, 1, fn, keys);
     lm_sim_def d;
@@ -97,6 +100,8 @@ int la_sim_new(lua_State *L)
                                     la_opt_string(L, 1, fn, "scheme", "musl"), schemes);
     if (la_has(L, 1, "gravity")) la_pair(L, 1, fn, "gravity", &d.gx, &d.gy);
     read_boundary(L, fn, &d);
+    d.basis = (lm_basis)la_option(L, fn, "basis", la_opt_string(L, 1, fn, "basis", "linear"),
+                                  bases);
     d.courant = la_opt_number(L, 1, fn, "courant", 1.0);
     d.pic = la_opt_number(L, 1, fn, "pic", 0.0);
     double seed = la_opt_number(L, 1, fn, "seed", 1);
@@ -229,16 +234,22 @@ static void fire_due(lua_State *L, la_sim *s)
 
 /* ---- stepping -------------------------------------------------------- */
 
-/* design.md: a dt whose Courant number exceeds `courant` is refused with
- * the limit printed. */
+/* design.md: a dt whose Courant number exceeds `courant` (times the
+ * basis' factor, lm_basis_courant_factor) is refused with the limit
+ * printed. */
 static void check_courant(lua_State *L, la_sim *s)
 {
     double c;
     int b;
     double cn = lm_sim_courant_body(s->sim, &c, &b);
-    if (cn > s->sim->def.courant * (1 + 1e-12)) {
+    double limit = lm_sim_courant_limit(s->sim);
+    if (cn > limit * (1 + 1e-12)) {
         double h = fmin(s->sim->grid.hx, s->sim->grid.hy);
-        char msg[600], who[96] = "", why[200] = "";
+        char basis[96] = "", who[96] = "", why[200] = "";
+        if (limit != s->sim->def.courant)
+            snprintf(basis, sizeof basis, " x %g for basis = \"%s\"",
+                     lm_basis_courant_factor(s->sim->def.basis),
+                     lm_basis_name(s->sim->def.basis));
         if (b >= 0) {
             const lm_body *bd = &s->sim->bodies[b];
             lm_body_label(s->sim, b, who, sizeof who);
@@ -247,11 +258,12 @@ static void check_courant(lua_State *L, la_sim *s)
                          "dt*c/h = %g, so c counts as its wave speed / %g",
                          LM_SEGMENT_COURANT, LM_SEGMENT_COURANT);
         }
+        char msg[700];
         snprintf(msg, sizeof msg,
                  "dt = %g is too large: Courant number dt*c/h = %g exceeds "
-                 "courant = %g (c_max = %g from %s%s, h = %g); use dt <= %g or raise courant",
-                 s->sim->def.dt, cn, s->sim->def.courant, c, b >= 0 ? who : "no body", why, h,
-                 s->sim->def.courant * h / c);
+                 "courant = %g%s (c_max = %g from %s%s, h = %g); use dt <= %g or raise courant",
+                 s->sim->def.dt, cn, s->sim->def.courant, basis, c, b >= 0 ? who : "no body",
+                 why, h, limit * h / c);
         luaL_error(L, "%s", msg);
     }
 }
@@ -372,6 +384,7 @@ static int sim_index(lua_State *L)
     else if (strcmp(k, "cell") == 0) lua_pushnumber(L, m->grid.hx);
     else if (strcmp(k, "n") == 0) lua_pushinteger(L, (lua_Integer)m->p.n);
     else if (strcmp(k, "scheme") == 0) lua_pushstring(L, schemes[m->def.scheme]);
+    else if (strcmp(k, "basis") == 0) lua_pushstring(L, lm_basis_name(m->def.basis));
     else if (strcmp(k, "pic") == 0) lua_pushnumber(L, m->def.pic);
     else if (strcmp(k, "threads") == 0) lua_pushinteger(L, m->def.threads);
     else if (strcmp(k, "courant") == 0) lua_pushnumber(L, m->def.courant);

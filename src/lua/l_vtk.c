@@ -163,14 +163,18 @@ static int write_grid(const lm_sim *sim, const char *path, char *err, size_t err
         return -1;
     }
     double *vel = d + nn, *force = d + 4 * nn;
-    for (size_t i = 0; i < nn; i++) {
-        d[i] = gr->m[i];
-        vel[3 * i] = gr->vx[i];
-        vel[3 * i + 1] = gr->vy[i];
-        vel[3 * i + 2] = 0;
-        force[3 * i] = gr->fx[i];
-        force[3 * i + 1] = gr->fy[i];
-        force[3 * i + 2] = 0;
+    /* the nodes 0..nx x 0..ny, without the wider bases' ghost ring */
+    for (int j = 0, i = 0; j <= gr->ny; j++) {
+        for (int a = 0; a <= gr->nx; a++, i++) {
+            long k = (long)(j + gr->pad) * gr->sx + (a + gr->pad);
+            d[i] = gr->m[k];
+            vel[3 * i] = gr->vx[k];
+            vel[3 * i + 1] = gr->vy[k];
+            vel[3 * i + 2] = 0;
+            force[3 * i] = gr->fx[k];
+            force[3 * i + 1] = gr->fy[k];
+            force[3 * i + 2] = 0;
+        }
     }
     lr_vtk_field pf[] = {{"mass", 1, d}, {"velocity", 3, vel}, {"force", 3, force}};
     int rc = lr_vtk_write_vti(path, gr->nx, gr->ny, gr->x0, gr->y0, gr->hx, gr->hy, pf, 3,

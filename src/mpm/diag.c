@@ -65,15 +65,18 @@ double lm_sim_grid_kinetic(const lm_sim *sim)
     double *px = m + nn, *py = m + 2 * nn;
     for (size_t q = 0; q < p->n; q++) {
         int node;
-        double N[4], Gx[4], Gy[4];
-        lm_shape_bilinear(g, p->x[q], p->y[q], &node, N, Gx, Gy);
-        for (int k = 0; k < 4; k++) {
-            int i = node + (k >> 1) * (g->nx + 1) + (k & 1);
+        double N[9], Gx[9], Gy[9];
+        lm_shape_particle(sim, q, &node, N, Gx, Gy);
+        for (int k = 0; k < p->ns; k++) {
+            int i = lm_stencil_node(g, g->sw, node, k);
             m[i] += p->m[q] * N[k];
             px[i] += p->m[q] * N[k] * p->vx[q];
             py[i] += p->m[q] * N[k] * p->vy[q];
         }
     }
+    double *const f[3] = {m, px, py};
+    static const lm_comp comp[3] = {LM_COMP_SCALAR, LM_COMP_X, LM_COMP_Y};
+    lm_grid_fold(g, 3, f, comp);     /* the step's view at the walls */
     double ke = 0;
     for (size_t i = 0; i < nn; i++)
         if (m[i] > 0) ke += 0.5 * (px[i] * px[i] + py[i] * py[i]) / m[i];
@@ -308,32 +311,41 @@ size_t lm_grid_gas_pressure(const lm_sim *sim, double *out)
 {
     const lm_grid *g = &sim->grid;
     size_t nn = lm_grid_nodes(g);
-    double *w = calloc(nn, sizeof *w);
+    /* the sums run over the padded grid of a 3 x 3 basis (its ghost sums
+     * folded in at the walls), and only the grid's own nodes go out */
+    double *w = calloc(g->pad ? 2 * nn : nn, sizeof *w);
     if (!w) return 0;
-    for (size_t i = 0; i < nn; i++) out[i] = 0;
+    double *v = g->pad ? w + nn : out;
+    if (!g->pad)
+        for (size_t i = 0; i < nn; i++) out[i] = 0;
     const lm_particles *p = &sim->p;
     for (size_t q = 0; q < p->n; q++) {
         const lm_material *mat = sim->mats[p->mat[q]];
         if (mat->kind != LM_GAS) continue;
         int node;
-        double N[4], Gx[4], Gy[4];
-        lm_shape_bilinear(g, p->x[q], p->y[q], &node, N, Gx, Gy);
+        double N[9], Gx[9], Gy[9];
+        lm_shape_particle(sim, q, &node, N, Gx, Gy);
         double pr = (mat->gamma - 1) * p->rho[q] * p->e[q];
-        for (int k = 0; k < 4; k++) {
-            size_t i = (size_t)node + (size_t)(k >> 1) * (size_t)(g->nx + 1) + (size_t)(k & 1);
-            out[i] += p->m[q] * N[k] * pr;
+        for (int k = 0; k < p->ns; k++) {
+            size_t i = (size_t)lm_stencil_node(g, g->sw, node, k);
+            v[i] += p->m[q] * N[k] * pr;
             w[i] += p->m[q] * N[k];
         }
     }
+    double *const f[2] = {v, w};
+    static const lm_comp comp[2] = {LM_COMP_SCALAR, LM_COMP_SCALAR};
+    lm_grid_fold(g, 2, f, comp);
     size_t have = 0;
-    for (size_t i = 0; i < nn; i++) {
-        if (w[i] > 0) {
-            out[i] /= w[i];
-            have++;
-        } else {
-            out[i] = NAN;
+    for (int j = 0; j <= g->ny; j++)
+        for (int i = 0; i <= g->nx; i++) {
+            size_t a = (size_t)lm_grid_node(g, i, j), o = (size_t)j * (g->nx + 1) + i;
+            if (w[a] > 0) {
+                out[o] = v[a] / w[a];
+                have++;
+            } else {
+                out[o] = NAN;
+            }
         }
-    }
     free(w);
     return have;
 }

@@ -26,6 +26,15 @@ typedef enum lm_status {
 
 typedef enum lm_scheme { LM_MUSL = 0, LM_USL = 1 } lm_scheme;
 
+/* Shape functions of the step (lamina.sim{basis}; docs/decisions.md
+ * "Shape functions"): the bilinear hats of the papers (shape.c, a 2 x 2
+ * stencil), uGIMP (Bardenhagen & Kober 2004, shape_gimp.c) and the
+ * node-centred quadratic B-spline (Steffen, Kirby & Berzins 2008,
+ * shape_bspline.c), both on a 3 x 3 stencil. */
+typedef enum lm_basis {
+    LM_BASIS_LINEAR = 0, LM_BASIS_GIMP = 1, LM_BASIS_BSPLINE2 = 2
+} lm_basis;
+
 /* Per-side boundary condition on the grid's outer nodes. */
 typedef enum lm_bc { LM_BC_FIXED = 0, LM_BC_SYMMETRY = 1, LM_BC_FREE = 2 } lm_bc;
 enum { LM_LEFT = 0, LM_RIGHT = 1, LM_BOTTOM = 2, LM_TOP = 3 };
@@ -82,7 +91,13 @@ int lm_material_validate(const lm_material *mat, char *err, size_t errlen);
 typedef struct lm_grid {
     double x0, y0;         /* lower-left node */
     double hx, hy;         /* cell size */
-    int nx, ny;            /* cells; nodes are (nx+1)*(ny+1), row-major in x */
+    int nx, ny;            /* cells; nodes (0..nx) x (0..ny) */
+    /* The 3 x 3 bases reach one node past each side: the nodal arrays then
+     * carry a ring of pad = 1 ghost nodes (grid_walls.c), node (i, j) at
+     * (j + pad) * sx + (i + pad) for i in -pad..nx+pad. The linear basis
+     * has pad = 0 and sx = nx + 1: the papers' layout, row-major in x. */
+    int pad, sx;
+    int sw;                /* stencil width of the basis: 2 or 3 nodes */
     lm_bc bc[4];           /* LM_LEFT, LM_RIGHT, LM_BOTTOM, LM_TOP */
     double *m;             /* lumped nodal mass */
     double *px, *py;       /* momentum p_i, then p_i^L */
@@ -114,9 +129,16 @@ typedef struct lm_particles {
     double *e, *q, *ev;
     int *body;             /* owning body index */
     int *mat;              /* material index into sim->mats */
+    /* uGIMP: the half-sizes of the particle's square domain, from its
+     * seeding (h / (2 sqrt(ppc)) per direction; h / 4 for membrane points
+     * and particles added without a ppc; docs/decisions.md). */
+    double *lx, *ly;
     /* Shape functions of the step, evaluated once at x^k ([F] eqs 13-14):
-     * lower-left node, then 4 weights and gradients in the order
-     * (i,j) (i+1,j) (i,j+1) (i+1,j+1). */
+     * the stencil's lower-left node, then ns = sw * sw weights and gradients
+     * row by row, x fastest: for the linear basis (ns = 4) the order
+     * (i,j) (i+1,j) (i,j+1) (i+1,j+1). Node k of particle q is
+     * lm_stencil_node(grid, sw, node[q], k) (step.h). */
+    int ns;
     int *node;
     double *N, *Gx, *Gy;
     /* Membranes with segment forces (membrane_force.c): L0 is the
@@ -191,6 +213,7 @@ typedef struct lm_sim_def {
     uint64_t seed;         /* random points of the normals construction */
     int threads;           /* threads of the step (<= 1: one); the state is
                               bit-identical for the same count (threads.h) */
+    lm_basis basis;        /* shape functions (default linear) */
 } lm_sim_def;
 
 /* Fills a definition with lamina's defaults (unit square, cell 0.1, MUSL,
@@ -229,6 +252,14 @@ int lm_sim_add_body(lm_sim *sim, int mat);
 /* Appends one particle to the last body (bodies are contiguous). */
 lm_status lm_sim_add_particle(lm_sim *sim, int body, double x, double y,
                               double vx, double vy, double mass, double rho);
+/* Sets particle q's uGIMP half-sizes (clamped to (0, h/2]: the domain then
+ * never reaches past the 3 x 3 stencil). */
+void lm_sim_set_particle_size(lm_sim *sim, size_t q, double lx, double ly);
+/* The basis' name ("linear", "gimp", "bspline2"). */
+const char *lm_basis_name(lm_basis b);
+/* Largest stable dt c / h of the basis relative to the linear one's
+ * (measured on a 1D bar, docs/decisions.md "Shape functions"). */
+double lm_basis_courant_factor(lm_basis b);
 
 /* Starts a membrane body: its points, added in curve order, keep that
  * order, so connectivity normals (physics.md §3) can use neighbours. */
@@ -265,6 +296,9 @@ double lm_sim_courant_body(const lm_sim *sim, double *c_max, int *body);
  * a pinned sheet under gravity with 2 to 8 points per cell (it grows
  * between 0.75 and 0.8; 0.85 with one point per cell). */
 #define LM_SEGMENT_COURANT 0.75
+/* The largest Courant number the run accepts: `courant` (stated for the
+ * linear basis) times the basis' factor. */
+double lm_sim_courant_limit(const lm_sim *sim);
 
 /* Changes the time step between steps (the clock keeps counting exactly). */
 void lm_sim_set_dt(lm_sim *sim, double dt);

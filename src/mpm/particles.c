@@ -25,11 +25,15 @@ int lm_particles_reserve(lm_particles *p, size_t cap)
                     (void **)&p->szz, (void **)&p->et, (void **)&p->ds,
                     (void **)&p->tx, (void **)&p->ty, (void **)&p->e,
                     (void **)&p->q, (void **)&p->ev, (void **)&p->L0,
-                    (void **)&p->fpx, (void **)&p->fpy};
+                    (void **)&p->fpx, (void **)&p->fpy, (void **)&p->lx,
+                    (void **)&p->ly};
     for (size_t k = 0; k < sizeof dbl / sizeof dbl[0]; k++)
         if (grow(dbl[k], d, cap)) return -1;
-    if (grow((void **)&p->N, 4 * d, cap) || grow((void **)&p->Gx, 4 * d, cap) ||
-        grow((void **)&p->Gy, 4 * d, cap) ||
+    /* the stencil's weights and gradients: ns per particle (lm_sim_new
+     * sets it from the basis before the first particle) */
+    size_t ns = p->ns > 0 ? (size_t)p->ns : 4;
+    if (grow((void **)&p->N, ns * d, cap) || grow((void **)&p->Gx, ns * d, cap) ||
+        grow((void **)&p->Gy, ns * d, cap) ||
         grow((void **)&p->body, sizeof(int), cap) ||
         grow((void **)&p->mat, sizeof(int), cap) ||
         grow((void **)&p->node, sizeof(int), cap) ||
@@ -44,7 +48,7 @@ void lm_particles_free(lm_particles *p)
     free(p->x); free(p->y); free(p->vx); free(p->vy); free(p->m);
     free(p->rho); free(p->sxx); free(p->syy); free(p->sxy); free(p->szz);
     free(p->et); free(p->ds); free(p->tx); free(p->ty);
-    free(p->e); free(p->q); free(p->ev);
+    free(p->e); free(p->q); free(p->ev); free(p->lx); free(p->ly);
     free(p->L0); free(p->fpx); free(p->fpy); free(p->pin);
     free(p->N); free(p->Gx); free(p->Gy);
     free(p->body); free(p->mat); free(p->node);

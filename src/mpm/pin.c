@@ -19,13 +19,6 @@
 
 #include "step.h"
 
-static const int corner_dx[4] = {0, 1, 0, 1};
-static const int corner_dy[4] = {0, 0, 1, 1};
-
-static inline int corner(const lm_grid *g, int node, int k)
-{
-    return node + corner_dy[k] * (g->nx + 1) + corner_dx[k];
-}
 
 int lm_sim_add_pin(lm_sim *sim, int b, const size_t *idx, size_t n, double vx, double vy)
 {
@@ -88,15 +81,16 @@ void lm_pin_p2g(lm_sim *sim)
     const lm_grid *g = &sim->grid;
     const lm_particles *p = &sim->p;
     size_t nn = lm_grid_nodes(g);
+    const int ns = g->sw * g->sw;
     memset(sim->pin_w, 0, 3 * nn * sizeof(double));
     for (int k = 0; k < sim->npins; k++) {
         const lm_pin *pn = &sim->pins[k];
         size_t first = sim->bodies[pn->body].first;
         for (size_t j = 0; j < pn->n; j++) {
             size_t q = first + pn->idx[j];
-            for (int c = 0; c < 4; c++) {
-                int i = corner(g, p->node[q], c);
-                double w = p->N[4 * q + c];
+            for (int c = 0; c < ns; c++) {
+                int i = lm_stencil_node(g, g->sw, p->node[q], c);
+                double w = p->N[(size_t)ns * q + c];
                 sim->pin_w[i] += w;
                 sim->pin_vx[i] += w * pn->vx;
                 sim->pin_vy[i] += w * pn->vy;
@@ -114,15 +108,16 @@ void lm_pin_grid(lm_sim *sim)
     lm_grid *g = &sim->grid;
     const lm_particles *p = &sim->p;
     double dt = sim->def.dt;
+    const int ns = g->sw * g->sw;
     for (int k = 0; k < sim->npins; k++) {
         lm_pin *pn = &sim->pins[k];
         size_t first = sim->bodies[pn->body].first;
         pn->rx = pn->ry = 0;
         for (size_t j = 0; j < pn->n; j++) {
             size_t q = first + pn->idx[j];
-            for (int c = 0; c < 4; c++) {
-                int i = corner(g, p->node[q], c);
-                double w = p->N[4 * q + c];
+            for (int c = 0; c < ns; c++) {
+                int i = lm_stencil_node(g, g->sw, p->node[q], c);
+                double w = p->N[(size_t)ns * q + c];
                 if (!(w > 0)) continue;
                 double s = w / sim->pin_w[i];
                 pn->rx += s * (g->m[i] * sim->pin_vx[i] / sim->pin_w[i] - g->px[i]) / dt;

@@ -1,4 +1,5 @@
-/* shape.c - the bilinear nodal basis N_i(x) and its gradient ([F] §2). */
+/* shape.c - the bilinear nodal basis N_i(x) and its gradient ([F] §2), and
+ * the choice among the bases (lamina.sim{basis}). */
 #include <math.h>
 
 #include "step.h"
@@ -32,4 +33,42 @@ void lm_shape_bilinear(const lm_grid *g, double x, double y, int *node,
     Gy[1] = -xi * ry;
     Gy[2] = (1 - xi) * ry;
     Gy[3] = xi * ry;
+}
+
+void lm_shape_particle(const lm_sim *sim, size_t q, int *node, double *N, double *Gx,
+                       double *Gy)
+{
+    const lm_particles *p = &sim->p;
+    switch (sim->def.basis) {
+    case LM_BASIS_GIMP:
+        lm_shape_gimp(&sim->grid, p->x[q], p->y[q], p->lx[q], p->ly[q], node, N, Gx, Gy);
+        break;
+    case LM_BASIS_BSPLINE2:
+        lm_shape_bspline2(&sim->grid, p->x[q], p->y[q], node, N, Gx, Gy);
+        break;
+    default:
+        lm_shape_bilinear(&sim->grid, p->x[q], p->y[q], node, N, Gx, Gy);
+        break;
+    }
+}
+
+const char *lm_basis_name(lm_basis b)
+{
+    switch (b) {
+    case LM_BASIS_GIMP: return "gimp";
+    case LM_BASIS_BSPLINE2: return "bspline2";
+    default: return "linear";
+    }
+}
+
+/* The largest stable dt c / h of each basis on a 1D elastic bar under MUSL,
+ * relative to the linear basis' (docs/decisions.md "Shape functions",
+ * measured with scripts/courant_basis.lua). */
+double lm_basis_courant_factor(lm_basis b)
+{
+    switch (b) {
+    case LM_BASIS_GIMP: return 1.0;
+    case LM_BASIS_BSPLINE2: return 1.0;
+    default: return 1.0;
+    }
 }

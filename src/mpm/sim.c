@@ -62,6 +62,11 @@ lm_sim *lm_sim_new(const lm_sim_def *def, char *err, size_t errlen)
         snprintf(err, errlen, "dt must be positive (got %g)", def->dt);
         return NULL;
     }
+    if (def->basis != LM_BASIS_LINEAR && def->basis != LM_BASIS_GIMP &&
+        def->basis != LM_BASIS_BSPLINE2) {
+        snprintf(err, errlen, "unknown basis %d (linear, gimp, bspline2)", (int)def->basis);
+        return NULL;
+    }
     if (!(def->courant > 0)) {
         snprintf(err, errlen, "courant must be positive (got %g)", def->courant);
         return NULL;
@@ -85,6 +90,8 @@ lm_sim *lm_sim_new(const lm_sim_def *def, char *err, size_t errlen)
     g->nx = cells(def->x1 - def->x0, def->hx);
     g->ny = cells(def->y1 - def->y0, def->hy);
     memcpy(g->bc, def->bc, sizeof g->bc);
+    lm_grid_layout(g, def->basis);
+    sim->p.ns = g->sw * g->sw;
     if (grid_alloc(g)) {
         lm_sim_free(sim);
         snprintf(err, errlen, "out of memory for a %d x %d grid", g->nx, g->ny);
@@ -210,6 +217,9 @@ lm_status lm_sim_add_particle(lm_sim *sim, int body, double x, double y,
     p->body[q] = body;
     p->mat[q] = sim->bodies[body].mat;
     p->node[q] = 0;
+    /* uGIMP's domain of a 2 x 2-seeded point until told otherwise */
+    p->lx[q] = 0.25 * sim->grid.hx;
+    p->ly[q] = 0.25 * sim->grid.hy;
     const lm_material *mat = sim->mats[p->mat[q]];
     if (mat->kind == LM_GAS) {
         /* the initial pressure as an isotropic stress, [F] eq 21 at rest */
@@ -221,6 +231,19 @@ lm_status lm_sim_add_particle(lm_sim *sim, int body, double x, double y,
     sim->pe_ref += mass * (sim->def.gx * x + sim->def.gy * y);
     sim->bodies[body].pe_ref += mass * (sim->def.gx * x + sim->def.gy * y);
     return LM_OK;
+}
+
+void lm_sim_set_particle_size(lm_sim *sim, size_t q, double lx, double ly)
+{
+    if (q >= sim->p.n) return;
+    double hx = 0.5 * sim->grid.hx, hy = 0.5 * sim->grid.hy;
+    sim->p.lx[q] = lx > 0 && lx < hx ? lx : hx;
+    sim->p.ly[q] = ly > 0 && ly < hy ? ly : hy;
+}
+
+double lm_sim_courant_limit(const lm_sim *sim)
+{
+    return sim->def.courant * lm_basis_courant_factor(sim->def.basis);
 }
 
 /* physics.md §5: dt_c = h / c_max; the number is dt / dt_c. A gas's

@@ -23,15 +23,16 @@ static void copy_particle(lm_particles *p, size_t to, size_t from)
 {
     double *const d[] = {p->x, p->y, p->vx, p->vy, p->m, p->rho, p->sxx, p->syy, p->sxy,
                          p->szz, p->et, p->ds, p->tx, p->ty, p->e, p->q, p->ev,
-                         p->L0, p->fpx, p->fpy};
+                         p->L0, p->fpx, p->fpy, p->lx, p->ly};
     for (size_t k = 0; k < sizeof d / sizeof d[0]; k++) d[k][to] = d[k][from];
     p->body[to] = p->body[from];
     p->mat[to] = p->mat[from];
     p->pin[to] = p->pin[from];
     p->node[to] = p->node[from];
-    memcpy(&p->N[4 * to], &p->N[4 * from], 4 * sizeof(double));
-    memcpy(&p->Gx[4 * to], &p->Gx[4 * from], 4 * sizeof(double));
-    memcpy(&p->Gy[4 * to], &p->Gy[4 * from], 4 * sizeof(double));
+    size_t ns = (size_t)p->ns;
+    memcpy(&p->N[ns * to], &p->N[ns * from], ns * sizeof(double));
+    memcpy(&p->Gx[ns * to], &p->Gx[ns * from], ns * sizeof(double));
+    memcpy(&p->Gy[ns * to], &p->Gy[ns * from], ns * sizeof(double));
 }
 
 /* Is (x, y) closer than d to a membrane's polyline? */
@@ -84,6 +85,8 @@ static void split_one(lm_sim *sim, size_t q, size_t r)
     double x1 = g->x0 + g->nx * g->hx, y1 = g->y0 + g->ny * g->hy;
     double cx = p->x[q], cy = p->y[q];
     p->m[q] *= 0.25;
+    p->lx[q] *= 0.5;     /* uGIMP: each child covers a quarter of the square */
+    p->ly[q] *= 0.5;
     for (int k = 0; k < 4; k++) {
         size_t c = k == 0 ? q : r + (size_t)k - 1;
         if (k > 0) copy_particle(p, c, q);

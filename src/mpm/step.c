@@ -10,22 +10,42 @@
 #include "step.h"
 #include "threads.h"
 
-static const int corner_dx[4] = {0, 1, 0, 1};
-static const int corner_dy[4] = {0, 0, 1, 1};
-
-static inline int corner(const lm_grid *g, int node, int k)
-{
-    return node + corner_dy[k] * (g->nx + 1) + corner_dx[k];
-}
+/* The step's loops over a particle's stencil come in two widths, chosen
+ * outside the particle loops: 2 x 2 for the linear basis (the papers' code
+ * path, unchanged to the last bit) and 3 x 3 for uGIMP and the quadratic
+ * B-spline. Each loop is written once for a stencil width W and inlined
+ * with W a constant, so the compiler unrolls both. */
+#if defined(__GNUC__)
+#define LM_FORCE_INLINE inline __attribute__((always_inline))
+#else
+#define LM_FORCE_INLINE inline
+#endif
 
 void lm_step_shape(lm_sim *sim)
 {
     lm_particles *p = &sim->p;
+    const lm_grid *g = &sim->grid;
     long n = (long)p->n;
+    switch (sim->def.basis) {
+    case LM_BASIS_LINEAR:
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static)
-    for (long q = 0; q < n; q++)
-        lm_shape_bilinear(&sim->grid, p->x[q], p->y[q], &p->node[q],
-                          &p->N[4 * q], &p->Gx[4 * q], &p->Gy[4 * q]);
+        for (long q = 0; q < n; q++)
+            lm_shape_bilinear(g, p->x[q], p->y[q], &p->node[q], &p->N[4 * q],
+                              &p->Gx[4 * q], &p->Gy[4 * q]);
+        break;
+    case LM_BASIS_GIMP:
+#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static)
+        for (long q = 0; q < n; q++)
+            lm_shape_gimp(g, p->x[q], p->y[q], p->lx[q], p->ly[q], &p->node[q],
+                          &p->N[9 * q], &p->Gx[9 * q], &p->Gy[9 * q]);
+        break;
+    case LM_BASIS_BSPLINE2:
+#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static)
+        for (long q = 0; q < n; q++)
+            lm_shape_bspline2(g, p->x[q], p->y[q], &p->node[q], &p->N[9 * q],
+                              &p->Gx[9 * q], &p->Gy[9 * q]);
+        break;
+    }
 }
 
 /* Is q a point of a membrane whose tension acts along its segments? */
@@ -42,62 +62,96 @@ typedef enum scatter_kind {
     SCATTER_MOMENTUM         /* the MUSL re-map of m_p v_p (step 5) */
 } scatter_kind;
 
-/* The loops of each sum (the kind is chosen outside them: a switch per
- * corner costs a fifth of the step). */
-static void scatter_range(const lm_sim *sim, scatter_kind kind, size_t a, size_t b,
-                          double *const *f)
+/* The loops of each sum for a stencil W nodes wide (the kind is chosen
+ * outside them: a switch per corner costs a fifth of the step). The
+ * particle's values are read into locals once: the nodal sums are doubles
+ * too, so the compiler could not otherwise keep them in registers across
+ * the stores. Node (a, b) of the stencil is row b, column a (k = b W + a). */
+static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size_t a0,
+                                      size_t b0, double *const *f, const int W)
 {
     const lm_grid *g = &sim->grid;
     const lm_particles *p = &sim->p;
+    const int NS = W * W;
+    const long sx = g->sx;
+    double *const f0 = f[0], *const f1 = f[1], *const f2 = kind == SCATTER_MASS_MOMENTUM ? f[2] : NULL;
     switch (kind) {
     case SCATTER_MASS_MOMENTUM:
-        for (size_t q = a; q < b; q++) {
-            for (int k = 0; k < 4; k++) {
-                int i = corner(g, p->node[q], k);
-                double w = p->m[q] * p->N[4 * q + k];
-                f[0][i] += w;
-                f[1][i] += w * p->vx[q];
-                f[2][i] += w * p->vy[q];
+        for (size_t q = a0; q < b0; q++) {
+            const double m = p->m[q], vx = p->vx[q], vy = p->vy[q];
+            const double *N = p->N + NS * q;
+            for (int b = 0; b < W; b++) {
+                const long row = p->node[q] + b * sx;
+                for (int a = 0; a < W; a++) {
+                    double w = m * N[b * W + a];
+                    f0[row + a] += w;
+                    f1[row + a] += w * vx;
+                    f2[row + a] += w * vy;
+                }
             }
         }
         break;
     case SCATTER_FORCES:
-        for (size_t q = a; q < b; q++) {
+        for (size_t q = a0; q < b0; q++) {
             if (segment_point(sim, q)) {
                 /* the net tension of its segments, spread with N_ip
                  * (membrane_force.c) */
-                for (int k = 0; k < 4; k++) {
-                    int i = corner(g, p->node[q], k);
-                    f[0][i] += p->N[4 * q + k] * p->fpx[q];
-                    f[1][i] += p->N[4 * q + k] * p->fpy[q];
+                const double fx = p->fpx[q], fy = p->fpy[q];
+                const double *N = p->N + NS * q;
+                for (int b = 0; b < W; b++) {
+                    const long row = p->node[q] + b * sx;
+                    for (int a = 0; a < W; a++) {
+                        f0[row + a] += N[b * W + a] * fx;
+                        f1[row + a] += N[b * W + a] * fy;
+                    }
                 }
                 continue;
             }
-            double V = p->m[q] / p->rho[q];
-            for (int k = 0; k < 4; k++) {
-                int i = corner(g, p->node[q], k);
-                double gx = p->Gx[4 * q + k], gy = p->Gy[4 * q + k];
-                f[0][i] -= V * (p->sxx[q] * gx + p->sxy[q] * gy);
-                f[1][i] -= V * (p->sxy[q] * gx + p->syy[q] * gy);
+            const double V = p->m[q] / p->rho[q];
+            const double sxx = p->sxx[q], syy = p->syy[q], sxy = p->sxy[q];
+            const double *Gx = p->Gx + NS * q, *Gy = p->Gy + NS * q;
+            for (int b = 0; b < W; b++) {
+                const long row = p->node[q] + b * sx;
+                for (int a = 0; a < W; a++) {
+                    double gx = Gx[b * W + a], gy = Gy[b * W + a];
+                    f0[row + a] -= V * (sxx * gx + sxy * gy);
+                    f1[row + a] -= V * (sxy * gx + syy * gy);
+                }
             }
         }
         break;
     case SCATTER_MOMENTUM:
-        for (size_t q = a; q < b; q++) {
-            for (int k = 0; k < 4; k++) {
-                int i = corner(g, p->node[q], k);
-                double w = p->m[q] * p->N[4 * q + k];
-                f[0][i] += w * p->vx[q];
-                f[1][i] += w * p->vy[q];
+        for (size_t q = a0; q < b0; q++) {
+            const double m = p->m[q], vx = p->vx[q], vy = p->vy[q];
+            const double *N = p->N + NS * q;
+            for (int b = 0; b < W; b++) {
+                const long row = p->node[q] + b * sx;
+                for (int a = 0; a < W; a++) {
+                    double w = m * N[b * W + a];
+                    f0[row + a] += w * vx;
+                    f1[row + a] += w * vy;
+                }
             }
         }
         break;
     }
 }
 
+static void scatter_range(const lm_sim *sim, scatter_kind kind, size_t a, size_t b,
+                          double *const *f)
+{
+    /* (lm_stencil_node(g, W, node, k) is node + (k / W) sx + k % W: the
+     * loops above walk the same nodes row by row) */
+    if (sim->grid.sw == 2) scatter_w(sim, kind, a, b, f, 2);
+    else scatter_w(sim, kind, a, b, f, 3);
+}
+
 /* Adds one of the sums into the nf fields `out` (zeroed by the caller),
- * each thread over its own particles (threads.h). */
-static void scatter(lm_sim *sim, scatter_kind kind, int nf, double *const *out)
+ * each thread over its own particles (threads.h); with a 3 x 3 basis the
+ * ghost nodes' sums are then folded in at the walls (grid_walls.c), comp
+ * saying what each field is. */
+static void scatter(lm_sim *sim, scatter_kind kind, int nf, double *const *out,
+                    const lm_comp *comp)
 {
     int nt = lm_sim_threads(sim);
 #pragma omp parallel num_threads(nt)
@@ -110,6 +164,7 @@ static void scatter(lm_sim *sim, scatter_kind kind, int nf, double *const *out)
         scatter_range(sim, kind, a, b, f);
     }
     lm_threads_reduce(sim, nt, nf, out);
+    lm_grid_fold(&sim->grid, nf, out, comp);
 }
 
 /* Step 1: m_i = sum_p m_p N_ip, p_i = sum_p m_p v_p N_ip (lumped mass). */
@@ -117,7 +172,8 @@ void lm_step_p2g(lm_sim *sim)
 {
     lm_grid *g = &sim->grid;
     double *const out[3] = {g->m, g->px, g->py};
-    scatter(sim, SCATTER_MASS_MOMENTUM, 3, out);
+    static const lm_comp comp[3] = {LM_COMP_SCALAR, LM_COMP_X, LM_COMP_Y};
+    scatter(sim, SCATTER_MASS_MOMENTUM, 3, out, comp);
     lm_pin_p2g(sim);
 }
 
@@ -126,8 +182,9 @@ void lm_step_forces(lm_sim *sim)
 {
     lm_grid *g = &sim->grid;
     double *const out[2] = {g->fx, g->fy};
+    static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
     lm_membrane_segment_forces(sim);
-    scatter(sim, SCATTER_FORCES, 2, out);
+    scatter(sim, SCATTER_FORCES, 2, out, comp);
     size_t nn = lm_grid_nodes(g);
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
     for (long i = 0; i < (long)nn; i++) {
@@ -153,6 +210,45 @@ void lm_step_grid_update(lm_sim *sim)
     lm_grid_apply_bc(g, g->fx, g->fy);
 }
 
+/* Step 4 for particle q with a stencil W nodes wide. */
+static LM_FORCE_INLINE void g2p_particle(const lm_grid *g, lm_particles *p, long q,
+                                         double dt, double pic, const int W)
+{
+    const int NS = W * W;
+    const double *N = p->N + NS * q;
+    const double *gax = g->ax, *gay = g->ay, *gvx = g->vx, *gvy = g->vy;
+    double ax = 0, ay = 0, ux = 0, uy = 0;
+    for (int b = 0; b < W; b++) {
+        /* 3 x 3: row by row, then the rows: at a point on a fixed wall the
+         * antisymmetric ghost row (or column) cancels its mirror exactly
+         * (grid_walls.c), so the point does not move by a rounding error.
+         * 2 x 2: one running sum, the papers' code path to the last bit. */
+        double rax = 0, ray = 0, rux = 0, ruy = 0;
+        double *sax = W == 2 ? &ax : &rax, *say = W == 2 ? &ay : &ray;
+        double *sux = W == 2 ? &ux : &rux, *suy = W == 2 ? &uy : &ruy;
+        const long row = p->node[q] + b * (long)g->sx;
+        for (int a = 0; a < W; a++) {
+            double w = N[b * W + a];
+            *sax += w * gax[row + a];
+            *say += w * gay[row + a];
+            *sux += w * gvx[row + a];
+            *suy += w * gvy[row + a];
+        }
+        if (W != 2) {
+            ax += rax;
+            ay += ray;
+            ux += rux;
+            uy += ruy;
+        }
+    }
+    /* FLIP, optionally blended with the PIC velocity sum_i N_ip v_i^L
+     * (pic = 0, the papers' scheme, by default) */
+    p->vx[q] = (1 - pic) * (p->vx[q] + dt * ax) + pic * ux;
+    p->vy[q] = (1 - pic) * (p->vy[q] + dt * ay) + pic * uy;
+    p->x[q] += dt * ux;
+    p->y[q] += dt * uy;
+}
+
 /* Step 4 ([F] eq 12): FLIP velocity update from the nodal accelerations,
  * position from the Lagrangian grid velocity. Only zero-mass nodes are
  * skipped; dropping "small" ones would break momentum conservation. */
@@ -171,24 +267,16 @@ void lm_step_g2p(lm_sim *sim)
         g->vx[i] = g->px[i] * r;
         g->vy[i] = g->py[i] * r;
     }
+    double *const fill[4] = {g->ax, g->ay, g->vx, g->vy};
+    static const lm_comp comp[4] = {LM_COMP_X, LM_COMP_Y, LM_COMP_X, LM_COMP_Y};
+    lm_grid_fill(g, 4, fill, comp);
     long n = (long)p->n;
+    if (g->sw == 2) {
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static)
-    for (long q = 0; q < n; q++) {
-        double ax = 0, ay = 0, ux = 0, uy = 0;
-        for (int k = 0; k < 4; k++) {
-            int i = corner(g, p->node[q], k);
-            double w = p->N[4 * q + k];
-            ax += w * g->ax[i];
-            ay += w * g->ay[i];
-            ux += w * g->vx[i];
-            uy += w * g->vy[i];
-        }
-        /* FLIP, optionally blended with the PIC velocity sum_i N_ip v_i^L
-         * (pic = 0, the papers' scheme, by default) */
-        p->vx[q] = (1 - pic) * (p->vx[q] + dt * ax) + pic * ux;
-        p->vy[q] = (1 - pic) * (p->vy[q] + dt * ay) + pic * uy;
-        p->x[q] += dt * ux;
-        p->y[q] += dt * uy;
+        for (long q = 0; q < n; q++) g2p_particle(g, p, q, dt, pic, 2);
+    } else {
+#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static)
+        for (long q = 0; q < n; q++) g2p_particle(g, p, q, dt, pic, 3);
     }
     lm_pin_particles(sim);
 }
@@ -204,7 +292,8 @@ void lm_step_strain_velocity(lm_sim *sim)
         double *const out[2] = {g->vx, g->vy};
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
         for (long i = 0; i < (long)nn; i++) g->vx[i] = g->vy[i] = 0;
-        scatter(sim, SCATTER_MOMENTUM, 2, out);
+        static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
+        scatter(sim, SCATTER_MOMENTUM, 2, out, comp);
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
         for (long i = 0; i < (long)nn; i++) {
             if (g->m[i] > 0) {
@@ -221,21 +310,37 @@ void lm_step_strain_velocity(lm_sim *sim)
     }
     lm_pin_velocity(sim);
     lm_grid_apply_bc(g, g->vx, g->vy);
+    double *const fill[2] = {g->vx, g->vy};
+    static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
+    lm_grid_fill(g, 2, fill, comp);
 }
 
-/* L = sum_i v_i (x) G_ip (L = dv/dx) at particle q. */
-static void velocity_gradient(const lm_grid *g, const lm_particles *p, size_t q, double L[4])
+/* L = sum_i v_i (x) G_ip (L = dv/dx) at particle q, stencil W wide. */
+static LM_FORCE_INLINE void velocity_gradient_w(const lm_grid *g, const lm_particles *p,
+                                                size_t q, double L[4], const int W)
 {
+    const int NS = W * W;
+    const double *Gx = p->Gx + NS * q, *Gy = p->Gy + NS * q;
     double Lxx = 0, Lxy = 0, Lyx = 0, Lyy = 0;
-    for (int k = 0; k < 4; k++) {
-        int i = corner(g, p->node[q], k);
-        double gx = p->Gx[4 * q + k], gy = p->Gy[4 * q + k];
-        Lxx += g->vx[i] * gx;
-        Lxy += g->vx[i] * gy;
-        Lyx += g->vy[i] * gx;
-        Lyy += g->vy[i] * gy;
+    for (int b = 0; b < W; b++) {
+        const long row = p->node[q] + b * (long)g->sx;
+        for (int a = 0; a < W; a++) {
+            double gx = Gx[b * W + a], gy = Gy[b * W + a];
+            double vx = g->vx[row + a], vy = g->vy[row + a];
+            Lxx += vx * gx;
+            Lxy += vx * gy;
+            Lyx += vy * gx;
+            Lyy += vy * gy;
+        }
     }
     L[0] = Lxx; L[1] = Lxy; L[2] = Lyx; L[3] = Lyy;
+}
+
+static inline void velocity_gradient(const lm_grid *g, const lm_particles *p, size_t q,
+                                     double L[4])
+{
+    if (g->sw == 2) velocity_gradient_w(g, p, q, L, 2);
+    else velocity_gradient_w(g, p, q, L, 3);
 }
 
 /* The artificial viscosity of [F] eq 24 needs, before any gas point is

@@ -3,6 +3,8 @@
 #ifndef LAMINA_STEP_H
 #define LAMINA_STEP_H
 
+#include <math.h>
+
 #include "mpm.h"
 
 /* Bilinear basis at (x, y): lower-left node, weights and gradients in the
@@ -10,6 +12,44 @@
  * inside the grid. */
 void lm_shape_bilinear(const lm_grid *g, double x, double y, int *node,
                        double N[4], double Gx[4], double Gy[4]);
+/* The 3 x 3 bases at (x, y): the stencil's lower-left node (one left of
+ * and one below the node nearest the point, on the padded grid), then 9
+ * weights and gradients row by row, x fastest. uGIMP (shape_gimp.c) takes
+ * the particle's half-sizes lx, ly <= h/2; the quadratic B-spline
+ * (shape_bspline.c) none. The caller guarantees the point is inside. */
+void lm_shape_gimp(const lm_grid *g, double x, double y, double lx, double ly, int *node,
+                   double N[9], double Gx[9], double Gy[9]);
+void lm_shape_bspline2(const lm_grid *g, double x, double y, int *node,
+                       double N[9], double Gx[9], double Gy[9]);
+/* Particle q's stencil at its present position by the sim's basis. */
+void lm_shape_particle(const lm_sim *sim, size_t q, int *node, double *N, double *Gx,
+                       double *Gy);
+
+/* Node k (0 <= k < sw * sw, row by row) of the stencil whose lower-left
+ * node is `node`, for a stencil sw nodes wide. */
+static inline int lm_stencil_node(const lm_grid *g, int sw, int node, int k)
+{
+    return node + (k / sw) * g->sx + (k % sw);
+}
+/* The node nearest to a point f cells from the grid's origin along one
+ * axis of n cells (clamped to 0..n), and the point's offset d from it in
+ * cells, |d| <= 1/2: the centre of a 3 x 3 stencil. A point within 1e-9
+ * of a cell of a wall is put on it, so that its two mirror weights are
+ * equal to the last bit and a point on a fixed wall stays exactly put
+ * (grid_walls.c). */
+static inline int lm_shape_nearest(double f, int n, double *d)
+{
+    int c = (int)floor(f + 0.5);
+    c = c < 0 ? 0 : c > n ? n : c;
+    *d = f - c;
+    if ((c == 0 || c == n) && fabs(*d) < 1e-9) *d = 0;
+    return c;
+}
+/* Node (i, j) of the grid, -pad <= i <= nx + pad. */
+static inline long lm_grid_node(const lm_grid *g, int i, int j)
+{
+    return (long)(j + g->pad) * g->sx + (i + g->pad);
+}
 
 void lm_step_clear(lm_sim *sim);            /* 0. empty nodal sums (step 9) */
 void lm_step_shape(lm_sim *sim);            /* N_ip, G_ip at x^k */
@@ -25,7 +65,21 @@ lm_status lm_step_split(lm_sim *sim);       /* thinned gas points into four */
 
 /* Zeroes the boundary-constrained components of a nodal vector field. */
 void lm_grid_apply_bc(const lm_grid *g, double *ux, double *uy);
+/* Nodes of the arrays, ghosts included. */
 size_t lm_grid_nodes(const lm_grid *g);
+/* Sets the ghost ring and stride for the basis (lm_sim_new). */
+void lm_grid_layout(lm_grid *g, lm_basis basis);
+
+/* The walls of the 3 x 3 bases (grid_walls.c): what a field's ghost nodes
+ * mean. A scalar (mass) folds with +1; a vector's components fold and fill
+ * with the image the wall stands for. */
+typedef enum lm_comp { LM_COMP_SCALAR = 0, LM_COMP_X = 1, LM_COMP_Y = 2 } lm_comp;
+/* After a scatter: adds each ghost node's sum into its mirror node (with
+ * the image's sign) and zeroes it, on fixed and symmetry sides. */
+void lm_grid_fold(const lm_grid *g, int nf, double *const *f, const lm_comp *comp);
+/* Before a gather: sets each ghost node of a fixed or symmetry side to the
+ * image of its mirror node. */
+void lm_grid_fill(const lm_grid *g, int nf, double *const *f, const lm_comp *comp);
 
 /* Objective stress update of an elastic solid, [F] eq 19 (Jaumann rate). */
 void lm_elastic_update(const lm_material *mat, double dexx, double deyy,

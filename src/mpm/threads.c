@@ -54,7 +54,8 @@ void lm_thread_fields(lm_sim *sim, int t, size_t a, size_t b, int nf, double *co
         if (i < lo) lo = i;
         if (i > hi) hi = i;
     }
-    hi += g->nx + 2;            /* the upper-right corner of the last cell */
+    /* the upper-right node of the last particle's stencil (sw wide) */
+    hi += (long)(g->sw - 1) * g->sx + (g->sw - 1);
     g->tlo[t] = lo;
     g->thi[t] = hi;
     for (int f = 0; f < nf; f++) {

@@ -36,7 +36,8 @@ static inline void lm_thread_range(size_t n, int t, int nt, size_t *a, size_t *b
 lm_status lm_threads_reserve(lm_sim *sim);
 /* Thread t's copies of the nf fields `out` for scattering particles
  * [a, b): `out` itself for thread 0, private arrays for the others, zeroed
- * over the nodes those particles touch (particles are stored body by body
+ * over the nodes those particles' stencils touch (2 x 2 or 3 x 3 by the
+ * basis; particles are stored body by body
  * and seeded row by row, so a range touches a band of the grid, and large
  * grids cost no more than the particles' share). */
 void lm_thread_fields(lm_sim *sim, int t, size_t a, size_t b, int nf, double *const *out,

@@ -53,3 +53,30 @@ end
 local t1, t1b, t2, t2b = trampoline(1), trampoline(1), trampoline(2), trampoline(2)
 print("trampoline hash, 1 thread", t1, t1b, "2 threads", t2, t2b)
 assert(t1 == t1b and t2 == t2b, "trampoline runs differ for the same thread count")
+
+-- Every basis (lamina.sim{basis}): the dog-bone again with the 3 x 3
+-- stencils, whose walls fold ghost nodes (grid_walls.c) and whose threads
+-- zero wider bands (threads.c): bit-identical for the same thread count,
+-- and one thread against two to rounding.
+for _, basis in ipairs{ "gimp", "bspline2" } do
+  local runs = {}
+  for _, threads in ipairs{ 1, 1, 2, 2 } do
+    local sim, gas = dog.setup(0.4, { threads = threads, basis = basis })
+    sim:run{ t_end = 0.05 }
+    runs[#runs + 1] = { sim = sim, gas = gas }
+  end
+  local h = {}
+  for i, r in ipairs(runs) do h[i] = r.sim:hash() end
+  print(string.format("dog-bone, basis %s: 1 thread %s %s, 2 threads %s %s", basis,
+                      h[1], h[2], h[3], h[4]))
+  assert(runs[1].sim.basis == basis, "the basis was not taken")
+  assert(h[1] == h[2], basis .. ": two identical one-thread runs differ")
+  assert(h[3] == h[4], basis .. ": two identical two-thread runs differ")
+  local b1, b2 = runs[1].sim:energy().total, runs[3].sim:energy().total
+  local p1, p2 = runs[1].gas:pressure(), runs[3].gas:pressure()
+  local r = math.abs(b1 - b2) / b1
+  print(string.format("  1 vs 2 threads: energy %.15g vs %.15g (%.1e), pressure %.12g vs %.12g",
+                      b1, b2, r, p1, p2))
+  assert(r < 1e-9 and math.abs(p1 - p2) < 1e-7 * p1,
+         basis .. ": two threads do not reproduce the one-thread run to rounding")
+end

@@ -1,18 +1,20 @@
 /* test_p2g.c - particle-to-grid transfers conserve mass and momentum, the
  * internal forces sum to zero (sum_i G_ip = 0), and a whole step conserves
- * linear momentum to round-off when no boundary is touched (physics.md §1). */
+ * linear momentum to round-off when no boundary is touched (physics.md §1);
+ * for every scheme and every basis. */
 #include <math.h>
 
 #include "check.h"
 #include "sim_fixture.h"
 #include "step.h"
 
-static void one_scheme(lm_scheme scheme)
+static void one_scheme(lm_scheme scheme, lm_basis basis)
 {
     lm_sim_def d;
     lm_sim_def_default(&d);
     d.x1 = 2; d.y1 = 1; d.hx = 0.1; d.hy = 0.1; d.dt = 1e-4;
     d.scheme = scheme;
+    d.basis = basis;
     char err[256];
     lm_sim *sim = lm_sim_new(&d, err, sizeof err);
     CHECK(sim != NULL);
@@ -63,7 +65,9 @@ static void one_scheme(lm_scheme scheme)
 
 int main(void)
 {
-    one_scheme(LM_MUSL);
-    one_scheme(LM_USL);
+    for (int b = LM_BASIS_LINEAR; b <= LM_BASIS_BSPLINE2; b++) {
+        one_scheme(LM_MUSL, (lm_basis)b);
+        one_scheme(LM_USL, (lm_basis)b);
+    }
     return CHECK_DONE();
 }
