@@ -11,6 +11,8 @@
 #include "l_internal.h"
 
 static const char *const schemes[] = {"musl", "usl", NULL};
+/* lm_stress: [T] §5.4.3 (stress_cell.c) */
+static const char *const stresses[] = {"points", "cell", NULL};
 static const char *const bcs[] = {"fixed", "symmetry", "free", NULL};
 static const char *const sides[] = {"left", "right", "bottom", "top", NULL};
 
@@ -85,7 +87,8 @@ static void read_boundary(lua_State *L, const char *fn, lm_sim_def *d)
 int la_sim_new(lua_State *L)
 {
     static const char *const keys[] = {"domain", "cell", "dt", "scheme", "gravity",
-                                       "boundary", "courant", "pic", "seed", "threads", NULL};
+                                       "boundary", "courant", "pic", "seed", "threads",
+                                       "stress", NULL};
     const char *fn = "lamina.sim";
     la_check_keys(L, 1, fn, keys);
     lm_sim_def d;
@@ -95,6 +98,8 @@ int la_sim_new(lua_State *L)
     d.dt = la_number(L, 1, fn, "dt");
     d.scheme = (lm_scheme)la_option(L, fn, "scheme",
                                     la_opt_string(L, 1, fn, "scheme", "musl"), schemes);
+    d.stress = (lm_stress)la_option(L, fn, "stress",
+                                    la_opt_string(L, 1, fn, "stress", "points"), stresses);
     if (la_has(L, 1, "gravity")) la_pair(L, 1, fn, "gravity", &d.gx, &d.gy);
     read_boundary(L, fn, &d);
     d.courant = la_opt_number(L, 1, fn, "courant", 1.0);
@@ -373,6 +378,7 @@ static int sim_index(lua_State *L)
     else if (strcmp(k, "n") == 0) lua_pushinteger(L, (lua_Integer)m->p.n);
     else if (strcmp(k, "scheme") == 0) lua_pushstring(L, schemes[m->def.scheme]);
     else if (strcmp(k, "pic") == 0) lua_pushnumber(L, m->def.pic);
+    else if (strcmp(k, "stress") == 0) lua_pushstring(L, stresses[m->def.stress]);
     else if (strcmp(k, "threads") == 0) lua_pushinteger(L, m->def.threads);
     else if (strcmp(k, "courant") == 0) lua_pushnumber(L, m->def.courant);
     else if (strcmp(k, "gravity") == 0) {
