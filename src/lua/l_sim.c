@@ -13,6 +13,8 @@
 static const char *const schemes[] = {"musl", "usl", NULL};
 /* in lm_basis order (mpm.h) */
 static const char *const bases[] = {"linear", "gimp", "bspline2", NULL};
+/* lm_stress: [T] §5.4.3 (stress_cell.c) */
+static const char *const stresses[] = {"points", "cell", NULL};
 static const char *const bcs[] = {"fixed", "symmetry", "free", NULL};
 static const char *const sides[] = {"left", "right", "bottom", "top", NULL};
 
@@ -88,7 +90,7 @@ int la_sim_new(lua_State *L)
 {
     static const char *const keys[] = {"domain", "cell", "dt", "scheme", "gravity",
                                        "boundary", "courant", "pic", "seed", "threads",
-                                       "basis", NULL};
+                                       "basis", "stress", NULL};
     const char *fn = "lamina.sim";
     la_check_keys(L, 1, fn, keys);
     lm_sim_def d;
@@ -98,10 +100,17 @@ int la_sim_new(lua_State *L)
     d.dt = la_number(L, 1, fn, "dt");
     d.scheme = (lm_scheme)la_option(L, fn, "scheme",
                                     la_opt_string(L, 1, fn, "scheme", "musl"), schemes);
+    d.stress = (lm_stress)la_option(L, fn, "stress",
+                                    la_opt_string(L, 1, fn, "stress", "points"), stresses);
     if (la_has(L, 1, "gravity")) la_pair(L, 1, fn, "gravity", &d.gx, &d.gy);
     read_boundary(L, fn, &d);
     d.basis = (lm_basis)la_option(L, fn, "basis", la_opt_string(L, 1, fn, "basis", "linear"),
                                   bases);
+    /* [T] §5.4.3's cell stress is a bilinear construction (gradients at the
+     * cell centre of the cell's four nodes) */
+    if (d.stress == LM_STRESS_CELL && d.basis != LM_BASIS_LINEAR)
+        luaL_error(L, "%s: stress = \"cell\" works with basis = \"linear\" only (got "
+                   "basis = \"%s\")", fn, bases[d.basis]);
     d.courant = la_opt_number(L, 1, fn, "courant", 1.0);
     d.pic = la_opt_number(L, 1, fn, "pic", 0.0);
     double seed = la_opt_number(L, 1, fn, "seed", 1);
@@ -386,6 +395,7 @@ static int sim_index(lua_State *L)
     else if (strcmp(k, "scheme") == 0) lua_pushstring(L, schemes[m->def.scheme]);
     else if (strcmp(k, "basis") == 0) lua_pushstring(L, lm_basis_name(m->def.basis));
     else if (strcmp(k, "pic") == 0) lua_pushnumber(L, m->def.pic);
+    else if (strcmp(k, "stress") == 0) lua_pushstring(L, stresses[m->def.stress]);
     else if (strcmp(k, "threads") == 0) lua_pushinteger(L, m->def.threads);
     else if (strcmp(k, "courant") == 0) lua_pushnumber(L, m->def.courant);
     else if (strcmp(k, "gravity") == 0) {

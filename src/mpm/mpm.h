@@ -200,6 +200,13 @@ typedef struct lm_pin {
 
 /* ---- the simulation (sim.c) ---------------------------------------------- */
 
+/* Which stress forms the internal force ([T] §5.4.3): each point's own,
+ * f_i = -sum_p V_p sigma_p . grad N_i(x_p) (the papers' quadrature), or
+ * the volume-weighted mean stress of each cell with the gradient at the
+ * cell centre (stress_cell.c), the dissertation's "somewhat successful"
+ * remedy for the noise of points crossing cell edges. */
+typedef enum lm_stress { LM_STRESS_POINTS = 0, LM_STRESS_CELL = 1 } lm_stress;
+
 typedef struct lm_sim_def {
     double x0, y0, x1, y1; /* domain */
     double hx, hy;         /* cell size (the domain is rounded up to whole cells) */
@@ -214,6 +221,7 @@ typedef struct lm_sim_def {
     int threads;           /* threads of the step (<= 1: one); the state is
                               bit-identical for the same count (threads.h) */
     lm_basis basis;        /* shape functions (default linear) */
+    lm_stress stress;      /* internal force from point or cell stresses */
 } lm_sim_def;
 
 /* Fills a definition with lamina's defaults (unit square, cell 0.1, MUSL,
@@ -235,6 +243,7 @@ typedef struct lm_sim {
     double pe_ref;         /* sum m g.x at seeding: potential energy datum */
     int prepared;          /* membrane stresses built from eps_t */
     double *cell_rho;      /* density.c: gas density per cell (nx * ny) */
+    double *cell_stress;   /* stress_cell.c: sum V sigma per cell (3 nx ny) */
     lm_pin *pins;          /* pin.c */
     int npins;
     double *pin_w, *pin_vx, *pin_vy;   /* per node: sum of the held particles'

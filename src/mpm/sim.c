@@ -108,6 +108,7 @@ void lm_sim_free(lm_sim *sim)
     free(sim->mats);
     free(sim->bodies);
     free(sim->cell_rho);
+    free(sim->cell_stress);
     for (int k = 0; k < sim->npins; k++) free(sim->pins[k].idx);
     free(sim->pins);
     free(sim->pin_w);

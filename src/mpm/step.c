@@ -184,7 +184,10 @@ void lm_step_forces(lm_sim *sim)
     double *const out[2] = {g->fx, g->fy};
     static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
     lm_membrane_segment_forces(sim);
-    scatter(sim, SCATTER_FORCES, 2, out, comp);
+    if (sim->def.stress == LM_STRESS_CELL)
+        lm_stress_cell_forces(sim);   /* [T] §5.4.3, stress_cell.c; linear basis only */
+    else
+        scatter(sim, SCATTER_FORCES, 2, out, comp);
     size_t nn = lm_grid_nodes(g);
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
     for (long i = 0; i < (long)nn; i++) {

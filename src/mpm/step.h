@@ -121,6 +121,12 @@ void lm_membrane_segment_strains(lm_sim *sim);   /* eps_t, sigma at x^{k+1} */
 double lm_membrane_segment_energy(const lm_sim *sim, int b);
 lm_status lm_membrane_check_torn(lm_sim *sim);
 
+/* stress_cell.c: step 2's internal force from the cells' volume-weighted
+ * mean stresses, gradients at the cell centres ([T] §5.4.3), for
+ * def.stress = LM_STRESS_CELL; segment membranes' forces spread as usual.
+ * Adds into g->fx, g->fy. */
+void lm_stress_cell_forces(lm_sim *sim);
+
 /* pin.c: held particles (lm_sim_add_pin). */
 void lm_pin_p2g(lm_sim *sim);        /* step 1: the held nodes' weights */
 void lm_pin_grid(lm_sim *sim);       /* step 3: p^L and f at held nodes */
