@@ -7,11 +7,12 @@ local riemann = require("riemann")
 local M = {}
 
 -- o: dx (default 0.005, [F]; [T] 0.01), ppc (default {3, 1}), density
--- (default "continuity"; lamina.gas{density}). Returns sim, left, right.
+-- (default "continuity"; lamina.gas{density}), basis (lamina.sim{basis},
+-- default "linear"). Returns sim, left, right.
 function M.setup(o)
   o = o or {}
   local dx, ppc = o.dx or 0.005, o.ppc or {3, 1}
-  local sim = lamina.sim{ domain = {0, 0, 1, dx}, cell = dx, dt = 1e-4,
+  local sim = lamina.sim{ domain = {0, 0, 1, dx}, cell = dx, dt = 1e-4, basis = o.basis,
                           boundary = { left = "fixed", right = "fixed",
                                        bottom = "symmetry", top = "symmetry" } }
   local hi = lamina.gas{ rho = 1, p = 1, gamma = 1.4, av = true, density = o.density }

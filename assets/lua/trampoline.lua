@@ -8,12 +8,12 @@
 -- on the sheet's wave speed at cell 0.05).
 local M = {}
 
--- o.cell (0.05), o.force ("segment"), o.threads (1). Returns sim, sheet, ball, {pin1, pin2}.
+-- o.cell (0.05), o.force ("segment"), o.threads (1), o.basis ("linear"). Returns sim, sheet, ball, {pin1, pin2}.
 function M.setup(o)
   o = o or {}
   local h = o.cell or 0.05
   local sim = lamina.sim{domain = {0, 0, 2, 1.5}, cell = h, dt = 1e-4, gravity = {0, -9.81},
-                         threads = o.threads,
+                         threads = o.threads, basis = o.basis,
                          boundary = {left = "free", right = "free", bottom = "free", top = "free"}}
   local sheet_mat = lamina.membrane{rho = 1000, E = 1e7, nu = 0, thickness = 0.005,
                                     law = "uniaxial"}

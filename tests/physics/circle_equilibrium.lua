@@ -7,11 +7,13 @@
 -- ringing periods): radius (at 0, 45 and 90 degrees) within 0.2 % and
 -- hoop stress within 1 % at every sample (every 1e-3), with the tension
 -- along segments. The papers' point quadrature is run too and its figures
--- printed (measured: radius 0.39 %, hoop 5.1 %: it does not hold).
+-- printed (measured: radius 0.39 %, hoop 5.1 %: it does not hold). With
+-- the quadratic B-spline (lamina.sim{basis = "bspline2"}) and segments it
+-- holds too (0.013 %, 0.05 %); GIMP with segments just misses (printed).
 local p0, r, t, E, nu = 1000, 0.5, 0.1, 1e6, 0.3
 
-local function run(force)
-  local sim = lamina.sim{ domain = {0, 0, 1, 1}, cell = 0.1, dt = 0.5e-4,
+local function run(force, basis)
+  local sim = lamina.sim{ domain = {0, 0, 1, 1}, cell = 0.1, dt = 0.5e-4, basis = basis,
                           boundary = { left = "symmetry", bottom = "symmetry",
                                        right = "fixed", top = "fixed" } }
   local air = lamina.gas{ rho = 1, p = p0, gamma = 1.4, mu = 0.2 }
@@ -32,13 +34,19 @@ local function run(force)
     ws = math.max(ws, math.abs(mem:hoop_stress() / s_start - 1))
   end)
   sim:run{ t_end = 0.05 }
-  print(string.format("%-7s: radius change max %.3f %%, hoop stress change max %.3f %%, gas out %d",
-                      force, 100 * wr, 100 * ws, mem:escaped(gas)))
+  print(string.format("%-8s %-7s: radius change max %.3f %%, hoop stress change max %.3f %%, gas out %d",
+                      basis or "linear", force, 100 * wr, 100 * ws, mem:escaped(gas)))
   return wr, ws, mem:escaped(gas)
 end
 
-local wr, ws, out = run("segment")
-assert(wr < 0.002, string.format("radius moved %.3f %% (limit 0.2 %%)", 100 * wr))
-assert(ws < 0.01, string.format("hoop stress moved %.3f %% (limit 1 %%)", 100 * ws))
-assert(out == 0, "gas escaped")
-run("point")   -- measured, not asserted: docs/robustness.md
+for _, basis in ipairs{"linear", "bspline2"} do
+  local wr, ws, out = run("segment", basis)
+  assert(wr < 0.002, string.format("%s: radius moved %.3f %% (limit 0.2 %%)", basis, 100 * wr))
+  assert(ws < 0.01, string.format("%s: hoop stress moved %.3f %% (limit 1 %%)", basis, 100 * ws))
+  assert(out == 0, "gas escaped")
+end
+-- measured, not asserted (docs/robustness.md): point quadrature (linear:
+-- radius 0.39 %, hoop 5.1 %), and GIMP even with segments (radius 0.22 %,
+-- hoop 1.5 %: just outside the limits)
+run("point")
+run("segment", "gimp")
