@@ -88,6 +88,15 @@ static int parse_args(int argc, char **argv, lamina_run *run, const char **repor
                 return -1;
             }
             setenv("LAMINA_THREADS", v, 1);
+        } else if (strcmp(a, "--restart") == 0 || strncmp(a, "--restart=", 10) == 0) {
+            /* continue from a checkpoint (sim:checkpoint, docs/api.md) */
+            const char *f = a[9] == '=' ? a + 10 : (i + 1 < argc ? argv[++i] : NULL);
+            if (!f || !*f || run->restart) {
+                fprintf(stderr, "lamina run: %s\n", run->restart ? "--restart given twice"
+                                                                 : "--restart needs a FILE");
+                return -1;
+            }
+            run->restart = f;
         } else if (strcmp(a, "--quiet") == 0 || strcmp(a, "-q") == 0) {
             run->quiet = 1;
         } else if (a[0] == '-' && a[1]) {

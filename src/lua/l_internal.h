@@ -83,6 +83,9 @@ typedef struct la_sim {
     int nev, capev;
     la_pin_fn *pinf;            /* pins driven by a function of time */
     int npinf;
+    int index;                  /* 1 + the sims the script made before it */
+    char *ck_file;              /* sim:checkpoint (l_checkpoint.c) */
+    double ck_every, ck_next;
 } la_sim;
 
 void la_open_sim(lua_State *L);
@@ -105,6 +108,16 @@ void la_open_pin(lua_State *L);
 void la_sim_add_pin_function(lua_State *L, int sidx, int pin, int fidx);
 void la_pins_update(lua_State *L, int sidx, la_sim *s);
 
+/* l_checkpoint.c: sim:checkpoint{...}; la_checkpoint_due writes one when
+ * due (after the step's callbacks); la_checkpoint_restore replaces the
+ * state of the sim at sidx by `lamina run --restart FILE`'s, once, at its
+ * first run/step; la_sim_skip_due (l_sim.c) marks the events due at or
+ * before the present time as fired. */
+int la_sim_checkpoint(lua_State *L);
+void la_checkpoint_due(lua_State *L, int sidx, la_sim *s);
+void la_checkpoint_restore(lua_State *L, int sidx, la_sim *s);
+void la_sim_skip_due(la_sim *s);
+
 /* l_record.c */
 int la_sim_record(lua_State *L);
 /* l_vtk.c: sim:vtk{file, every}, the run for ParaView */
@@ -112,6 +125,13 @@ int la_sim_vtk(lua_State *L);
 void la_open_record(lua_State *L);
 /* Writes the CSV files of the sim's recorders (at the end of run/step). */
 void la_record_flush(lua_State *L, int sidx);
+/* Checkpoints: the recorders of the sim at sidx (1-based, creation order),
+ * their rows, and replacing them (-1 if the columns differ). */
+int la_record_count(lua_State *L, int sidx);
+void la_record_rows(lua_State *L, int sidx, int i, int *ncols, size_t *nrows,
+                    const double **rows);
+int la_record_set_rows(lua_State *L, int sidx, int i, int ncols, size_t nrows,
+                       const double *rows);
 
 /* l_body.c */
 void la_open_body(lua_State *L);

@@ -202,5 +202,11 @@ int lamina_run_script(lua_State *L, lamina_run *run)
         return run->sim_failed ? LAMINA_EXIT_SIM : LAMINA_EXIT_USAGE;
     }
     lua_settop(L, 0);
+    if (run->restart && !run->restored) {
+        /* the checkpoint's simulation never ran: nothing was continued */
+        fprintf(stderr, "lamina: --restart %s: the script never ran the simulation it was "
+                "taken from\n", run->restart);
+        return LAMINA_EXIT_USAGE;
+    }
     return check_sets(run) ? LAMINA_EXIT_USAGE : LAMINA_EXIT_OK;
 }

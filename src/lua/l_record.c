@@ -481,3 +481,52 @@ void la_open_record(lua_State *L)
     lua_setfield(L, -2, "__index");
     lua_pop(L, 1);
 }
+
+/* ---- checkpoints (l_checkpoint.c) -------------------------------------- */
+
+/* Recorder i (1-based, creation order) of the sim at sidx, or NULL. */
+static la_record *nth_record(lua_State *L, int sidx, int i)
+{
+    sidx = lua_absindex(L, sidx);
+    la_record *r = NULL;
+    lua_getiuservalue(L, sidx, 1);
+    if (lua_getfield(L, -1, "recorders") == LUA_TTABLE && lua_rawgeti(L, -1, i) == LUA_TUSERDATA)
+        r = luaL_testudata(L, -1, LA_RECORD);
+    lua_pop(L, 3);
+    return r;
+}
+
+int la_record_count(lua_State *L, int sidx)
+{
+    sidx = lua_absindex(L, sidx);
+    lua_getiuservalue(L, sidx, 1);
+    int n = lua_getfield(L, -1, "recorders") == LUA_TTABLE ? (int)lua_rawlen(L, -1) : 0;
+    lua_pop(L, 2);
+    return n;
+}
+
+void la_record_rows(lua_State *L, int sidx, int i, int *ncols, size_t *nrows,
+                    const double **rows)
+{
+    la_record *r = nth_record(L, sidx, i);
+    *ncols = r ? r->ncols : 0;
+    *nrows = r ? r->nrows : 0;
+    *rows = r ? r->rows : NULL;
+}
+
+int la_record_set_rows(lua_State *L, int sidx, int i, int ncols, size_t nrows,
+                       const double *rows)
+{
+    la_record *r = nth_record(L, sidx, i);
+    if (!r || r->ncols != ncols) return -1;
+    if (nrows > r->cap) {
+        double *q = realloc(r->rows, nrows * (size_t)ncols * sizeof *q);
+        if (!q) luaL_error(L, "out of memory restoring a recorder's rows");
+        r->rows = q;
+        r->cap = nrows;
+    }
+    if (nrows) memcpy(r->rows, rows, nrows * (size_t)ncols * sizeof *rows);
+    r->nrows = nrows;
+    r->dirty = 1;
+    return 0;
+}

@@ -129,6 +129,8 @@ int la_sim_new(lua_State *L)
 
     la_sim *s = lua_newuserdatauv(L, sizeof *s, 1);
     memset(s, 0, sizeof *s);
+    lamina_run *run = la_run(L);
+    s->index = run ? ++run->nsims : 1;   /* which sim a checkpoint belongs to */
     luaL_setmetatable(L, LA_SIM);
     lua_newtable(L);
     lua_setiuservalue(L, -2, 1);
@@ -144,6 +146,8 @@ static int sim_gc(lua_State *L)
     lm_sim_free(s->sim);
     free(s->ev);
     free(s->pinf);
+    free(s->ck_file);
+    s->ck_file = NULL;
     s->sim = NULL;
     s->ev = NULL;
     s->pinf = NULL;
@@ -241,6 +245,23 @@ static void fire_due(lua_State *L, la_sim *s)
     }
 }
 
+void la_sim_skip_due(la_sim *s)
+{
+    double now = s->sim->t + 0.5 * s->sim->def.dt;
+    for (int i = 0; i < s->nev; i++) {
+        la_event *e = &s->ev[i];
+        if (e->done || e->next > now) continue;
+        if (e->interval > 0) {
+            do {
+                e->k++;
+                e->next = e->t0 + e->k * e->interval;
+            } while (e->next <= now);
+        } else {
+            e->done = 1;
+        }
+    }
+}
+
 /* ---- stepping -------------------------------------------------------- */
 
 /* design.md: a dt whose Courant number exceeds `courant` (times the
@@ -286,6 +307,7 @@ static void advance(lua_State *L, la_sim *s, long nsteps)
     run->active = s->sim;
     la_progress_begin(L, 1, nsteps);
     fire_due(L, s);
+    la_checkpoint_due(L, 1, s);
     for (long n = 0; n < nsteps; n++) {
         la_pins_update(L, 1, s);
         lm_status st = lm_sim_step(s->sim);
@@ -298,6 +320,7 @@ static void advance(lua_State *L, la_sim *s, long nsteps)
             luaL_error(L, "simulation failed: %s", s->sim->err);
         }
         fire_due(L, s);
+        la_checkpoint_due(L, 1, s);
         if (la_progress_tick(L, s->sim)) {   /* Ctrl-C, watch: stop between steps */
             s->running = 0;
             run->active = NULL;
@@ -318,6 +341,7 @@ static int sim_run(lua_State *L)
     la_sim *s = la_check_sim(L, 1);
     la_check_keys(L, 2, "sim:run", keys);
     double t_end = la_number(L, 2, "sim:run", "t_end");
+    if (!s->running) la_checkpoint_restore(L, 1, s);   /* --restart: before counting steps */
     double n = floor((t_end - s->sim->t) / s->sim->def.dt + 0.5);
     if (n > 1e12) return luaL_error(L, "sim:run: t_end = %f needs %f steps", t_end, n);
     advance(L, s, n > 0 ? (long)n : 0);
@@ -329,6 +353,14 @@ static int sim_step(lua_State *L)
     la_sim *s = la_check_sim(L, 1);
     lua_Integer n = luaL_optinteger(L, 2, 1);
     if (n < 0) return luaL_error(L, "sim:step: n must be >= 0 (got %d)", (int)n);
+    if (!s->running) {
+        /* --restart: the call's last step is the same; the steps the
+         * checkpoint already took are not taken again */
+        long before = s->sim->step;
+        la_checkpoint_restore(L, 1, s);
+        n -= s->sim->step - before;
+        if (n < 0) n = 0;
+    }
     advance(L, s, (long)n);
     return 0;
 }
@@ -487,6 +519,7 @@ void la_open_sim(lua_State *L)
                                        {"membrane", la_sim_membrane},
                                        {"record", la_sim_record},
                                        {"vtk", la_sim_vtk},
+                                       {"checkpoint", la_sim_checkpoint},
                                        {"every", sim_every},
                                        {"at", sim_at},
                                        {"run", sim_run},

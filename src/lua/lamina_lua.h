@@ -46,6 +46,9 @@ typedef struct lamina_run {
     FILE *log;                  /* NULL, or a copy of the run log */
     const char *backend;        /* --backend NAME: sim:frame's default
                                    ("cairo" or "osmesa"); NULL: cairo */
+    const char *restart;        /* --restart FILE: a checkpoint to continue */
+    int restored;               /* it has been loaded */
+    int nsims;                  /* lamina.sim calls so far */
 } lamina_run;
 
 /* A Lua state with the safe standard libraries and `lamina` as a global. */

@@ -315,6 +315,16 @@ void lm_sim_set_dt(lm_sim *sim, double dt);
 /* One step of physics.md §1. On failure sim->err says why. */
 lm_status lm_sim_step(lm_sim *sim);
 
+/* ---- checkpoints (checkpoint.c) ------------------------------------------
+ * The state that continues a run bit for bit, as bytes (the binding writes
+ * and reads the file). Loading checks the simulation the script built
+ * against the checkpoint's (materials, bodies, pins, grid, basis) and
+ * refuses, with sim->err saying why, one that does not fit. */
+#define LM_CHECKPOINT_VERSION 1
+size_t lm_sim_state_bytes(const lm_sim *sim);
+void lm_sim_state_save(const lm_sim *sim, unsigned char *buf);
+lm_status lm_sim_state_load(lm_sim *sim, const unsigned char *buf, size_t len);
+
 /* ---- seeding (seed.c, region.c) ----------------------------------------- */
 
 typedef enum lm_region_kind { LM_REGION_DISK, LM_REGION_RECT, LM_REGION_POLYGON } lm_region_kind;

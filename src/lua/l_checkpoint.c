@@ -1,0 +1,233 @@
+/* l_checkpoint.c - sim:checkpoint{file, every | at} and restarting a run
+ * from one with `lamina run SCRIPT --restart FILE` (docs/api.md).
+ *
+ * Semantics: the script runs again from the top and builds its objects as
+ * before; at the first sim:run/sim:step of the simulation the checkpoint
+ * was taken from (the n-th lamina.sim the script makes), its state is
+ * replaced by the checkpoint's — particles, clock, live settings,
+ * materials, pins, and each recorder's rows — and the run continues from
+ * the checkpoint's time. Callbacks and records that were due at or before
+ * it do not fire again. Lua's own variables are not restored; --set values
+ * may differ (a longer t_end).
+ *
+ * A checkpoint is written after every callback of its step has run, so it
+ * holds what they did. The file: a text header, a blank line, the engine's
+ * state (checkpoint.c), then each recorder's columns, rows and values. It
+ * is written whole or not at all. */
+#include <errno.h>
+#include <inttypes.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "atomic_file.h"
+#include "l_internal.h"
+
+#define MAGIC_LINE "LAMINA-CHECKPOINT"
+/* the largest checkpoint read back: 64 GiB, far above any documented use;
+ * a file claiming more is refused before anything is allocated */
+#define MAX_BYTES ((uint64_t)1 << 36)
+
+int la_sim_checkpoint(lua_State *L)
+{
+    static const char *const keys[] = {"file", "every", "at", NULL};
+    const char *fn = "sim:checkpoint";
+    la_sim *s = la_check_sim(L, 1);
+    la_check_keys(L, 2, fn, keys);
+    lua_getfield(L, 2, "file");
+    size_t len;
+    const char *file = lua_tolstring(L, -1, &len);
+    if (!file || !len) return luaL_error(L, "%s: 'file' is required", fn);
+    if (strlen(file) != len) return luaL_error(L, "%s: 'file' contains a NUL byte", fn);
+    int has_every = la_has(L, 2, "every"), has_at = la_has(L, 2, "at");
+    if (has_every == has_at) return luaL_error(L, "%s: give exactly one of 'every' and 'at'", fn);
+    double every = has_every ? la_number(L, 2, fn, "every") : 0;
+    double at = has_at ? la_number(L, 2, fn, "at") : 0;
+    if (has_every && !(every > 0 && isfinite(every)))
+        return luaL_error(L, "%s: every must be positive (got %f)", fn, every);
+    if (has_at && !isfinite(at)) return luaL_error(L, "%s: at must be a finite time", fn);
+    char *copy = malloc(len + 1);
+    if (!copy) return luaL_error(L, "%s: out of memory", fn);
+    memcpy(copy, file, len + 1);
+    free(s->ck_file);
+    s->ck_file = copy;
+    s->ck_every = every;
+    s->ck_next = has_every ? s->sim->t + every : at;
+    return 0;
+}
+
+/* Writes the checkpoint of the sim at sidx now. */
+static void write_checkpoint(lua_State *L, int sidx, la_sim *s)
+{
+    size_t eb = lm_sim_state_bytes(s->sim);
+    int nrec = la_record_count(L, sidx);
+    size_t rb = 0;
+    for (int i = 1; i <= nrec; i++) {
+        int nc;
+        size_t nr;
+        const double *rows;
+        la_record_rows(L, sidx, i, &nc, &nr, &rows);
+        rb += sizeof(uint32_t) + sizeof(uint64_t) + nr * (size_t)nc * sizeof(double);
+    }
+    char head[256];
+    int hl = snprintf(head, sizeof head, "%s %d\nsim %d\nt %.17g\nstep %ld\nengine %zu\n"
+                      "recorders %d\n\n", MAGIC_LINE, LM_CHECKPOINT_VERSION, s->index,
+                      s->sim->t, s->sim->step, eb, nrec);
+    size_t total = (size_t)hl + eb + rb;
+    unsigned char *buf = malloc(total);
+    if (!buf) luaL_error(L, "sim:checkpoint: out of memory for %zu bytes", total);
+    memcpy(buf, head, (size_t)hl);
+    lm_sim_state_save(s->sim, buf + hl);
+    unsigned char *b = buf + hl + eb;
+    for (int i = 1; i <= nrec; i++) {
+        int nc;
+        size_t nr;
+        const double *rows;
+        la_record_rows(L, sidx, i, &nc, &nr, &rows);
+        uint32_t c = (uint32_t)nc;
+        uint64_t r = nr;
+        memcpy(b, &c, sizeof c);
+        b += sizeof c;
+        memcpy(b, &r, sizeof r);
+        b += sizeof r;
+        if (nr) memcpy(b, rows, nr * (size_t)nc * sizeof(double));
+        b += nr * (size_t)nc * sizeof(double);
+    }
+    char err[600];
+    int rc = lr_write_file(s->ck_file, buf, total, err, sizeof err);
+    free(buf);
+    if (rc) luaL_error(L, "sim:checkpoint: %s", err);
+}
+
+void la_checkpoint_due(lua_State *L, int sidx, la_sim *s)
+{
+    if (!s->ck_file || !(s->ck_next <= s->sim->t + 0.5 * s->sim->def.dt)) return;
+    write_checkpoint(L, sidx, s);
+    if (s->ck_every > 0) {
+        /* the next multiple after now, as events do: no bursts */
+        while (s->ck_next <= s->sim->t + 0.5 * s->sim->def.dt) s->ck_next += s->ck_every;
+    } else {
+        s->ck_next = INFINITY;
+    }
+}
+
+/* Reads the whole file (a regular file of bounded size); NULL with msg. */
+static unsigned char *read_all(const char *path, size_t *len, char *msg, size_t msglen)
+{
+    struct stat st;
+    FILE *fp = fopen(path, "rb");
+    if (!fp) {
+        snprintf(msg, msglen, "cannot read '%s': %s", path, strerror(errno));
+        return NULL;
+    }
+    if (fstat(fileno(fp), &st) != 0 || !S_ISREG(st.st_mode) ||
+        (uint64_t)st.st_size > MAX_BYTES) {
+        snprintf(msg, msglen, "'%s' is not a regular file of at most 64 GiB", path);
+        fclose(fp);
+        return NULL;
+    }
+    size_t n = (size_t)st.st_size;
+    unsigned char *buf = malloc(n ? n : 1);
+    if (!buf || fread(buf, 1, n, fp) != n) {
+        snprintf(msg, msglen, "cannot read '%s' (%zu bytes)", path, n);
+        free(buf);
+        fclose(fp);
+        return NULL;
+    }
+    fclose(fp);
+    *len = n;
+    return buf;
+}
+
+/* The text header: fills sim index, engine bytes, recorder count; returns
+ * the offset of the binary part, or 0 if the header is not one of ours. */
+static size_t parse_header(const unsigned char *buf, size_t len, int *version, int *sim,
+                           uint64_t *eb, int *nrec)
+{
+    const unsigned char *end = NULL;
+    for (size_t i = 0; i + 1 < len && i < 512; i++)
+        if (buf[i] == '\n' && buf[i + 1] == '\n') {
+            end = buf + i + 2;
+            break;
+        }
+    if (!end) return 0;
+    char head[520];
+    size_t hl = (size_t)(end - buf);
+    memcpy(head, buf, hl);
+    head[hl] = 0;
+    double t;
+    long step;
+    if (sscanf(head, MAGIC_LINE " %d\nsim %d\nt %lf\nstep %ld\nengine %" SCNu64 "\nrecorders %d\n",
+               version, sim, &t, &step, eb, nrec) != 6)
+        return 0;
+    return hl;
+}
+
+void la_checkpoint_restore(lua_State *L, int sidx, la_sim *s)
+{
+    lamina_run *run = la_run(L);
+    if (!run || !run->restart || run->restored) return;
+    char msg[700];
+    size_t len = 0;
+    unsigned char *buf = read_all(run->restart, &len, msg, sizeof msg);
+    if (!buf) luaL_error(L, "--restart: %s", msg);
+    int version = 0, index = 0, nrec = 0;
+    uint64_t eb = 0;
+    size_t off = parse_header(buf, len, &version, &index, &eb, &nrec);
+    if (!off) {
+        free(buf);
+        luaL_error(L, "--restart: '%s' is not a lamina checkpoint", run->restart);
+    }
+    if (version != LM_CHECKPOINT_VERSION) {
+        free(buf);
+        luaL_error(L, "--restart: '%s' is checkpoint format %d; this lamina %s reads format %d",
+                   run->restart, version, LAMINA_VERSION, LM_CHECKPOINT_VERSION);
+    }
+    if (index != s->index) {   /* another sim of the script: not this one */
+        free(buf);
+        return;
+    }
+    run->restored = 1;
+    if (eb > len - off || nrec != la_record_count(L, sidx)) {
+        free(buf);
+        luaL_error(L, "--restart: '%s' does not fit the script: %s", run->restart,
+                   eb > len - off ? "it is truncated" : "its recorders differ");
+    }
+    if (lm_sim_state_load(s->sim, buf + off, (size_t)eb) != LM_OK) {
+        free(buf);
+        luaL_error(L, "--restart: '%s': %s", run->restart, s->sim->err);
+    }
+    const unsigned char *b = buf + off + eb, *stop = buf + len;
+    for (int i = 1; i <= nrec; i++) {
+        uint32_t c;
+        uint64_t r;
+        if ((size_t)(stop - b) < sizeof c + sizeof r) goto truncated;
+        memcpy(&c, b, sizeof c);
+        b += sizeof c;
+        memcpy(&r, b, sizeof r);
+        b += sizeof r;
+        if (c == 0 || r > (uint64_t)(stop - b) / (c * sizeof(double))) goto truncated;
+        double *rows = malloc(r ? r * c * sizeof(double) : 1);
+        if (!rows) goto truncated;
+        memcpy(rows, b, r * c * sizeof(double));   /* aligned copy of the values */
+        b += r * c * sizeof(double);
+        int bad = la_record_set_rows(L, sidx, i, (int)c, (size_t)r, rows);
+        free(rows);
+        if (bad) {
+            free(buf);
+            luaL_error(L, "--restart: '%s' does not fit the script: recorder %d has other "
+                       "columns", run->restart, i);
+        }
+    }
+    free(buf);
+    la_sim_skip_due(s);
+    if (s->ck_file && s->ck_every > 0)
+        while (s->ck_next <= s->sim->t + 0.5 * s->sim->def.dt) s->ck_next += s->ck_every;
+    else if (s->ck_file && s->ck_next <= s->sim->t + 0.5 * s->sim->def.dt)
+        s->ck_next = INFINITY;
+    return;
+truncated:
+    free(buf);
+    luaL_error(L, "--restart: '%s' is truncated (its recorders' rows)", run->restart);
+}

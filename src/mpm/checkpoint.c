@@ -1,0 +1,235 @@
+/* checkpoint.c - the state a run needs to continue bit for bit, as bytes
+ * (the engine does no I/O: the binding writes and reads the file).
+ *
+ * What continues a run exactly: the clock (t, step, the base of the exact
+ * t = t_base + (step - step_base) dt, dt itself), the settings a script can
+ * change live (gravity, pic, courant), every material's parameters (a
+ * callback may have changed them), each body's extent and flags (gas
+ * splitting moves bodies and adds particles), the pins' velocities, and
+ * every per-particle array the next step reads before writing. Not stored,
+ * because each step rebuilds them before use: the grid's nodal fields, the
+ * shape functions, the cell densities, the segment forces (fpx, fpy).
+ *
+ * Layout: a fixed header (magic, format version, sizes to check against
+ * the simulation the script built), then little blocks in a fixed order.
+ * Doubles and integers are copied in this machine's byte order; the header
+ * records it, and a checkpoint from a machine of the other order is
+ * refused. */
+#include <stdio.h>
+#include <string.h>
+
+#include "particles.h"
+#include "step.h"
+
+#define MAGIC 0x4b434d4cu   /* "LMCK" */
+
+/* The per-particle double arrays, in file order. */
+static int particle_doubles(lm_particles *p, double **a)
+{
+    double *const d[] = {p->x, p->y, p->vx, p->vy, p->m, p->rho, p->sxx, p->syy, p->sxy,
+                         p->szz, p->et, p->ds, p->tx, p->ty, p->e, p->q, p->ev, p->lx, p->ly,
+                         p->L0};
+    int n = (int)(sizeof d / sizeof d[0]);
+    for (int k = 0; k < n; k++) a[k] = d[k];
+    return n;
+}
+#define NDOUBLES 20
+
+typedef struct header {
+    uint32_t magic, version, endian, nmats;
+    int32_t nbodies, npins, nx, ny, basis;
+    uint32_t pad;
+    uint64_t n;                 /* particles */
+    double hx, hy;
+} header;
+
+typedef struct body_rec {
+    uint64_t first, count;
+    int32_t mat, membrane, closed, force, normals, orient, seg_ready, pad;
+    double ox, oy, pe_ref;
+} body_rec;
+
+typedef struct clock_rec {
+    double t, t_base, dt, pe_ref, gx, gy, pic, courant;
+    int64_t step, step_base;
+    int32_t prepared, pad;
+} clock_rec;
+
+typedef struct pin_rec {
+    double vx, vy, rx, ry;
+} pin_rec;
+
+static uint32_t endian_mark(void)
+{
+    const uint32_t one = 1;
+    return *(const unsigned char *)&one ? 1u : 2u;
+}
+
+size_t lm_sim_state_bytes(const lm_sim *sim)
+{
+    size_t n = sim->p.n;
+    return sizeof(header) + sizeof(clock_rec) + (size_t)sim->nmats * sizeof(lm_material) +
+           (size_t)sim->nbodies * sizeof(body_rec) + (size_t)sim->npins * sizeof(pin_rec) +
+           n * (NDOUBLES * sizeof(double) + 3 * sizeof(int32_t));
+}
+
+static unsigned char *put(unsigned char *b, const void *v, size_t n)
+{
+    memcpy(b, v, n);
+    return b + n;
+}
+
+void lm_sim_state_save(const lm_sim *sim, unsigned char *buf)
+{
+    lm_particles *p = (lm_particles *)&sim->p;   /* read only: the arrays' addresses */
+    header h = {MAGIC, LM_CHECKPOINT_VERSION, endian_mark(), (uint32_t)sim->nmats,
+                sim->nbodies, sim->npins, sim->grid.nx, sim->grid.ny, (int32_t)sim->def.basis,
+                0, (uint64_t)p->n, sim->grid.hx, sim->grid.hy};
+    unsigned char *b = put(buf, &h, sizeof h);
+    clock_rec c = {sim->t, sim->t_base, sim->def.dt, sim->pe_ref, sim->def.gx, sim->def.gy,
+                   sim->def.pic, sim->def.courant, sim->step, sim->step_base, sim->prepared, 0};
+    b = put(b, &c, sizeof c);
+    for (int k = 0; k < sim->nmats; k++) b = put(b, sim->mats[k], sizeof(lm_material));
+    for (int k = 0; k < sim->nbodies; k++) {
+        const lm_body *bd = &sim->bodies[k];
+        body_rec r = {bd->first, bd->count, bd->mat, bd->membrane, bd->closed, (int32_t)bd->force,
+                      (int32_t)bd->normals, bd->orient, bd->seg_ready, 0, bd->ox, bd->oy,
+                      bd->pe_ref};
+        b = put(b, &r, sizeof r);
+    }
+    for (int k = 0; k < sim->npins; k++) {
+        pin_rec r = {sim->pins[k].vx, sim->pins[k].vy, sim->pins[k].rx, sim->pins[k].ry};
+        b = put(b, &r, sizeof r);
+    }
+    double *a[NDOUBLES];
+    int nd = particle_doubles(p, a);
+    for (int k = 0; k < nd; k++) b = put(b, a[k], p->n * sizeof(double));
+    const int *ia[3] = {p->body, p->mat, p->pin};
+    for (int k = 0; k < 3; k++)
+        for (size_t q = 0; q < p->n; q++) {
+            int32_t v = ia[k][q];
+            b = put(b, &v, sizeof v);
+        }
+}
+
+static lm_status refuse(lm_sim *sim, const char *why)
+{
+    snprintf(sim->err, sizeof sim->err, "the checkpoint does not fit this simulation: %s", why);
+    return LM_ERR_INPUT;
+}
+
+lm_status lm_sim_state_load(lm_sim *sim, const unsigned char *buf, size_t len)
+{
+    header h;
+    if (len < sizeof h) return refuse(sim, "it is truncated");
+    memcpy(&h, buf, sizeof h);
+    char why[200];
+    if (h.magic != MAGIC) return refuse(sim, "it is not a lamina checkpoint");
+    if (h.version != LM_CHECKPOINT_VERSION) {
+        snprintf(why, sizeof why, "it is format version %u, this lamina reads version %u",
+                 h.version, LM_CHECKPOINT_VERSION);
+        return refuse(sim, why);
+    }
+    if (h.endian != endian_mark()) return refuse(sim, "it was written on a machine of the other byte order");
+    if ((int)h.nmats != sim->nmats || h.nbodies != sim->nbodies || h.npins != sim->npins) {
+        snprintf(why, sizeof why, "it has %u materials, %d bodies and %d pins; the script made "
+                 "%d, %d and %d", h.nmats, h.nbodies, h.npins, sim->nmats, sim->nbodies,
+                 sim->npins);
+        return refuse(sim, why);
+    }
+    if (h.nx != sim->grid.nx || h.ny != sim->grid.ny || h.hx != sim->grid.hx ||
+        h.hy != sim->grid.hy || h.basis != (int32_t)sim->def.basis)
+        return refuse(sim, "its grid or basis differs from the script's");
+    size_t n = (size_t)h.n;
+    size_t need = sizeof h + sizeof(clock_rec) + (size_t)h.nmats * sizeof(lm_material) +
+                  (size_t)h.nbodies * sizeof(body_rec) + (size_t)h.npins * sizeof(pin_rec) +
+                  n * (NDOUBLES * sizeof(double) + 3 * sizeof(int32_t));
+    if (len != need) return refuse(sim, "its size does not match its header (truncated?)");
+    const unsigned char *b = buf + sizeof h;
+    clock_rec c;
+    memcpy(&c, b, sizeof c);
+    b += sizeof c;
+    /* materials: the kinds must match; the parameters are the checkpoint's */
+    for (int k = 0; k < sim->nmats; k++) {
+        lm_material m;
+        memcpy(&m, b + (size_t)k * sizeof m, sizeof m);
+        if (m.kind != sim->mats[k]->kind) {
+            snprintf(why, sizeof why, "material %d is of another kind", k + 1);
+            return refuse(sim, why);
+        }
+    }
+    const unsigned char *bodies = b + (size_t)sim->nmats * sizeof(lm_material);
+    for (int k = 0; k < sim->nbodies; k++) {
+        body_rec r;
+        memcpy(&r, bodies + (size_t)k * sizeof r, sizeof r);
+        const lm_body *bd = &sim->bodies[k];
+        if (r.mat != bd->mat || r.membrane != bd->membrane || r.closed != bd->closed ||
+            r.first + r.count > n) {
+            char who[96];
+            snprintf(why, sizeof why, "%s differs (material, kind or extent)",
+                     lm_body_label(sim, k, who, sizeof who));
+            return refuse(sim, why);
+        }
+    }
+    /* everything checked: from here on nothing can fail but memory */
+    if (n > sim->p.cap && lm_particles_reserve(&sim->p, n)) {
+        snprintf(sim->err, sizeof sim->err, "out of memory for the checkpoint's %zu particles", n);
+        return LM_ERR_MEMORY;
+    }
+    for (int k = 0; k < sim->nmats; k++) {
+        memcpy(sim->mats[k], b, sizeof(lm_material));
+        b += sizeof(lm_material);
+    }
+    for (int k = 0; k < sim->nbodies; k++) {
+        body_rec r;
+        memcpy(&r, b, sizeof r);
+        b += sizeof r;
+        lm_body *bd = &sim->bodies[k];
+        bd->first = (size_t)r.first;
+        bd->count = (size_t)r.count;
+        bd->force = (lm_mforce)r.force;
+        bd->normals = (lm_normals)r.normals;
+        bd->orient = r.orient;
+        bd->seg_ready = r.seg_ready;
+        bd->ox = r.ox;
+        bd->oy = r.oy;
+        bd->pe_ref = r.pe_ref;
+    }
+    for (int k = 0; k < sim->npins; k++) {
+        pin_rec r;
+        memcpy(&r, b, sizeof r);
+        b += sizeof r;
+        sim->pins[k].vx = r.vx;
+        sim->pins[k].vy = r.vy;
+        sim->pins[k].rx = r.rx;
+        sim->pins[k].ry = r.ry;
+    }
+    lm_particles *p = &sim->p;
+    p->n = n;
+    double *a[NDOUBLES];
+    int nd = particle_doubles(p, a);
+    for (int k = 0; k < nd; k++) {
+        memcpy(a[k], b, n * sizeof(double));
+        b += n * sizeof(double);
+    }
+    int *ia[3] = {p->body, p->mat, p->pin};
+    for (int k = 0; k < 3; k++)
+        for (size_t q = 0; q < n; q++) {
+            int32_t v;
+            memcpy(&v, b, sizeof v);
+            b += sizeof v;
+            ia[k][q] = v;
+        }
+    sim->t = c.t;
+    sim->t_base = c.t_base;
+    sim->def.dt = c.dt;
+    sim->pe_ref = c.pe_ref;
+    sim->def.gx = c.gx;
+    sim->def.gy = c.gy;
+    sim->def.pic = c.pic;
+    sim->def.courant = c.courant;
+    sim->step = (long)c.step;
+    sim->step_base = (long)c.step_base;
+    sim->prepared = c.prepared;
+    return LM_OK;
+}
