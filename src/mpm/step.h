@@ -39,7 +39,10 @@ static inline int lm_stencil_node(const lm_grid *g, int sw, int node, int k)
  * (grid_walls.c). */
 static inline int lm_shape_nearest(double f, int n, double *d)
 {
-    int c = (int)floor(f + 0.5);
+    /* truncation is floor for the points inside, and cheaper (floor() is a
+     * library call on baseline x86-64) */
+    double u = f + 0.5;
+    int c = u >= 0 ? (int)u : (int)floor(u);
     c = c < 0 ? 0 : c > n ? n : c;
     *d = f - c;
     if ((c == 0 || c == n) && fabs(*d) < 1e-9) *d = 0;
