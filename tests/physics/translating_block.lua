@@ -4,11 +4,10 @@
 -- |v0| after crossing 40 cells along x and 6 along y, with every basis
 -- (lamina.sim{basis}), MUSL. A uniform velocity is in the span of every
 -- basis (partition of unity, sum G = 0), so any stress here would be a
--- transfer error, not physics. (USL is left out: with the linear basis it
--- tears this block apart at a Courant number of 0.4 - measured, step 463 -
--- through the nearly empty nodes at its edges; physics.md §1 calls it the
--- less stable scheme.) Then the same block sliding along a symmetry and a
--- free wall.
+-- transfer error, not physics. (USL is left out: with the linear basis
+-- this block fails at step 463, a particle inverted, at a Courant number of
+-- 0.4 - measured; physics.md §1 calls USL the less stable scheme.) Then the
+-- same block sliding along a symmetry and a free wall.
 local E, rho, nu = 1e5, 1000, 0.3
 local v0 = {2.0, 0.3}
 local h = 0.05
