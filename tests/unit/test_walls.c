@@ -135,6 +135,9 @@ static lm_sim *straddling(lm_basis b, int full, int axis)
             double x = axis == 0 ? u : v, y = axis == 0 ? v : u;
             double vx = axis == 0 ? vu : vv, vy = axis == 0 ? vv : vu;
             CHECK(lm_sim_add_particle(sim, bi, x, y, vx, vy, 10 * s * s, 10) == LM_OK);
+            /* uGIMP squares wider than the seeding's h/4, so that the
+             * points next to the line reach past it */
+            lm_sim_set_particle_size(sim, sim->p.n - 1, 0.4 * h, 0.4 * h);
         }
     return sim;
 }
