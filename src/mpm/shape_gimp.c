@@ -19,26 +19,43 @@
  * weights sum to one because the hats do. */
 #include "step.h"
 
-/* Weight and gradient (times r = 1/h) of a node xi cells from the
- * particle; written in |xi| so that the mirror nodes of a point on a wall
- * get equal weights to the last bit. */
-static inline void gimp_1d(double xi, double l, double r, double *w, double *g)
+/* The two outer nodes of the stencil lie a = 1 -+ d >= 1/2 >= l cells
+ * from the particle: the middle or the outer piece of the weight. Returns
+ * the weight and its derivative in a (times r = 1/h); il = 1/l. */
+static inline void gimp_outer(double a, double l, double il, double r, double *w, double *dw)
 {
-    double a = fabs(xi), s = xi < 0 ? -1 : 1;
-    if (a < l) {
-        *w = 1 - (xi * xi + l * l) / (2 * l);
-        *g = -xi / l * r;
-    } else if (a <= 1 - l) {
+    if (a <= 1 - l) {
         *w = 1 - a;
-        *g = -s * r;
+        *dw = -r;
     } else if (a < 1 + l) {
         double u = 1 + l - a;
-        *w = u * u / (4 * l);
-        *g = -s * u / (2 * l) * r;
+        *w = 0.25 * u * u * il;
+        *dw = -0.5 * u * il * r;
     } else {
         *w = 0;
-        *g = 0;
+        *dw = 0;
     }
+}
+
+/* Weights and x-gradients (times r = 1/h) of the nodes c-1, c, c+1 for a
+ * particle d cells from the nearest node c (|d| <= 1/2), half-size l cells.
+ * The middle node is within 1/2 <= 1 - l: the inner or the middle piece.
+ * Written in the distances |xi|, so that the mirror nodes of a point on a
+ * wall (d = 0) get equal weights to the last bit. */
+static inline void gimp_1d(double d, double l, double r, double w[3], double g[3])
+{
+    double il = 1 / l, ad = fabs(d), dw;
+    if (ad < l) {
+        w[1] = 1 - 0.5 * (d * d + l * l) * il;
+        g[1] = -d * il * r;
+    } else {
+        w[1] = 1 - ad;
+        g[1] = d < 0 ? r : -r;
+    }
+    gimp_outer(1 + d, l, il, r, &w[0], &dw);    /* node c-1 at xi = +(1 + d) */
+    g[0] = dw;
+    gimp_outer(1 - d, l, il, r, &w[2], &dw);    /* node c+1 at xi = -(1 - d) */
+    g[2] = -dw;
 }
 
 void lm_shape_gimp(const lm_grid *g, double x, double y, double lx, double ly, int *node,
@@ -48,10 +65,8 @@ void lm_shape_gimp(const lm_grid *g, double x, double y, double lx, double ly, i
     double dx, dy, wx[3], wy[3], gx[3], gy[3];
     int cx = lm_shape_nearest((x - g->x0) * rx, g->nx, &dx);
     int cy = lm_shape_nearest((y - g->y0) * ry, g->ny, &dy);
-    for (int a = 0; a < 3; a++) {
-        gimp_1d(dx + 1 - a, lx * rx, rx, &wx[a], &gx[a]);
-        gimp_1d(dy + 1 - a, ly * ry, ry, &wy[a], &gy[a]);
-    }
+    gimp_1d(dx, lx * rx, rx, wx, gx);
+    gimp_1d(dy, ly * ry, ry, wy, gy);
     *node = (int)lm_grid_node(g, cx - 1, cy - 1);
     for (int b = 0; b < 3; b++)
         for (int a = 0; a < 3; a++) {

@@ -73,15 +73,15 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
     const lm_grid *g = &sim->grid;
     const lm_particles *p = &sim->p;
     const int NS = W * W;
-    const long sx = g->sx;
-    double *const f0 = f[0], *const f1 = f[1], *const f2 = kind == SCATTER_MASS_MOMENTUM ? f[2] : NULL;
+    double *const f0 = f[0], *const f1 = f[1];
+    double *const f2 = kind == SCATTER_MASS_MOMENTUM ? f[2] : NULL;
     switch (kind) {
     case SCATTER_MASS_MOMENTUM:
         for (size_t q = a0; q < b0; q++) {
             const double m = p->m[q], vx = p->vx[q], vy = p->vy[q];
             const double *N = p->N + NS * q;
             for (int b = 0; b < W; b++) {
-                const long row = p->node[q] + b * sx;
+                const long row = lm_stencil_row(g, p->node[q], b);
                 for (int a = 0; a < W; a++) {
                     double w = m * N[b * W + a];
                     f0[row + a] += w;
@@ -111,7 +111,7 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
             const double sxx = p->sxx[q], syy = p->syy[q], sxy = p->sxy[q];
             const double *Gx = p->Gx + NS * q, *Gy = p->Gy + NS * q;
             for (int b = 0; b < W; b++) {
-                const long row = p->node[q] + b * sx;
+                const long row = lm_stencil_row(g, p->node[q], b);
                 for (int a = 0; a < W; a++) {
                     double gx = Gx[b * W + a], gy = Gy[b * W + a];
                     f0[row + a] -= V * (sxx * gx + sxy * gy);
@@ -125,7 +125,7 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
             const double m = p->m[q], vx = p->vx[q], vy = p->vy[q];
             const double *N = p->N + NS * q;
             for (int b = 0; b < W; b++) {
-                const long row = p->node[q] + b * sx;
+                const long row = lm_stencil_row(g, p->node[q], b);
                 for (int a = 0; a < W; a++) {
                     double w = m * N[b * W + a];
                     f0[row + a] += w * vx;
@@ -140,8 +140,7 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
 static void scatter_range(const lm_sim *sim, scatter_kind kind, size_t a, size_t b,
                           double *const *f)
 {
-    /* (lm_stencil_node(g, W, node, k) is node + (k / W) sx + k % W: the
-     * loops above walk the same nodes row by row) */
+    /* (the loops above walk lm_stencil_node(g, W, node, k) row by row) */
     if (sim->grid.sw == 2) scatter_w(sim, kind, a, b, f, 2);
     else scatter_w(sim, kind, a, b, f, 3);
 }
@@ -219,25 +218,31 @@ static LM_FORCE_INLINE void g2p_particle(const lm_grid *g, lm_particles *p, long
 {
     const int NS = W * W;
     const double *N = p->N + NS * q;
-    const double *gax = g->ax, *gay = g->ay, *gvx = g->vx, *gvy = g->vy;
     double ax = 0, ay = 0, ux = 0, uy = 0;
-    for (int b = 0; b < W; b++) {
-        /* 3 x 3: row by row, then the rows: at a point on a fixed wall the
-         * antisymmetric ghost row (or column) cancels its mirror exactly
-         * (grid_walls.c), so the point does not move by a rounding error.
-         * 2 x 2: one running sum, the papers' code path to the last bit. */
-        double rax = 0, ray = 0, rux = 0, ruy = 0;
-        double *sax = W == 2 ? &ax : &rax, *say = W == 2 ? &ay : &ray;
-        double *sux = W == 2 ? &ux : &rux, *suy = W == 2 ? &uy : &ruy;
-        const long row = p->node[q] + b * (long)g->sx;
-        for (int a = 0; a < W; a++) {
-            double w = N[b * W + a];
-            *sax += w * gax[row + a];
-            *say += w * gay[row + a];
-            *sux += w * gvx[row + a];
-            *suy += w * gvy[row + a];
+    if (W == 2) {
+        /* one running sum over the corners: the papers' code path, to the
+         * last bit */
+        for (int k = 0; k < NS; k++) {
+            int i = lm_stencil_node(g, W, p->node[q], k);
+            ax += N[k] * g->ax[i];
+            ay += N[k] * g->ay[i];
+            ux += N[k] * g->vx[i];
+            uy += N[k] * g->vy[i];
         }
-        if (W != 2) {
+    } else {
+        /* row by row, then the rows: at a point on a fixed wall the
+         * antisymmetric ghost row (or column) cancels its mirror exactly
+         * (grid_walls.c), so the point does not move by a rounding error */
+        for (int b = 0; b < W; b++) {
+            const long row = lm_stencil_row(g, p->node[q], b);
+            double rax = 0, ray = 0, rux = 0, ruy = 0;
+            for (int a = 0; a < W; a++) {
+                double w = N[b * W + a];
+                rax += w * g->ax[row + a];
+                ray += w * g->ay[row + a];
+                rux += w * g->vx[row + a];
+                ruy += w * g->vy[row + a];
+            }
             ax += rax;
             ay += ray;
             ux += rux;
@@ -326,7 +331,7 @@ static LM_FORCE_INLINE void velocity_gradient_w(const lm_grid *g, const lm_parti
     const double *Gx = p->Gx + NS * q, *Gy = p->Gy + NS * q;
     double Lxx = 0, Lxy = 0, Lyx = 0, Lyy = 0;
     for (int b = 0; b < W; b++) {
-        const long row = p->node[q] + b * (long)g->sx;
+        const long row = lm_stencil_row(g, p->node[q], b);
         for (int a = 0; a < W; a++) {
             double gx = Gx[b * W + a], gy = Gy[b * W + a];
             double vx = g->vx[row + a], vy = g->vy[row + a];

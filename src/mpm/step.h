@@ -31,6 +31,12 @@ static inline int lm_stencil_node(const lm_grid *g, int sw, int node, int k)
 {
     return node + (k / sw) * g->sx + (k % sw);
 }
+/* The first node of row b of that stencil: node k = b sw + a is
+ * lm_stencil_row(g, node, b) + a. */
+static inline long lm_stencil_row(const lm_grid *g, int node, int b)
+{
+    return node + (long)b * g->sx;
+}
 /* The node nearest to a point f cells from the grid's origin along one
  * axis of n cells (clamped to 0..n), and the point's offset d from it in
  * cells, |d| <= 1/2: the centre of a 3 x 3 stencil. A point within 1e-9
@@ -39,7 +45,10 @@ static inline int lm_stencil_node(const lm_grid *g, int sw, int node, int k)
  * (grid_walls.c). */
 static inline int lm_shape_nearest(double f, int n, double *d)
 {
-    int c = (int)floor(f + 0.5);
+    /* truncation is floor for the points inside, and cheaper (floor() is a
+     * library call on baseline x86-64) */
+    double u = f + 0.5;
+    int c = u >= 0 ? (int)u : (int)floor(u);
     c = c < 0 ? 0 : c > n ? n : c;
     *d = f - c;
     if ((c == 0 || c == n) && fabs(*d) < 1e-9) *d = 0;

@@ -2,7 +2,7 @@
  * with mass, momentum, centre of mass, kinetic and internal energy kept;
  * a point that is not thin enough, one within a cell of a membrane, and any
  * point of a material without `split` stay whole; bodies after the gas
- * keep their points in order. */
+ * keep their points in order; the children's uGIMP squares are quarters. */
 #include <math.h>
 
 #include "check.h"
@@ -57,7 +57,12 @@ int main(void)
     double a = 0.25 * sqrt(m / 0.5);
     CHECK_NEAR(sim->p.x[0], 0.5 - a, 1e-15);
     CHECK_NEAR(sim->p.y[0], 0.5 - a, 1e-15);
+    /* uGIMP: each child's square is a quarter of the parent's (h/4 at the
+     * default seeding), the others keep theirs */
+    CHECK(sim->p.lx[0] == 0.125 * 0.1 && sim->p.ly[0] == 0.125 * 0.1);
+    CHECK(sim->p.lx[1] == 0.25 * 0.1);
     for (int k = 3; k < 6; k++) {             /* three siblings after the body */
+        CHECK(sim->p.lx[k] == 0.125 * 0.1 && sim->p.ly[k] == 0.125 * 0.1);
         CHECK_NEAR(sim->p.m[k], m / 4, 1e-20);
         CHECK_NEAR(sim->p.vx[k], 0.3, 0);
         CHECK_NEAR(sim->p.e[k], 400, 0);
