@@ -99,7 +99,7 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
                 const double fx = p->fpx[q], fy = p->fpy[q];
                 const double *N = p->N + NS * q;
                 for (int b = 0; b < W; b++) {
-                    const long row = p->node[q] + b * sx;
+                    const long row = lm_stencil_row(g, p->node[q], b);
                     for (int a = 0; a < W; a++) {
                         f0[row + a] += N[b * W + a] * fx;
                         f1[row + a] += N[b * W + a] * fy;
