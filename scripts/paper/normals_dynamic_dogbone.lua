@@ -8,7 +8,9 @@
 --   the end); both end near the taut radius 1.39. Kept visible: a few
 --   wrinkles on the isosurface side. With the paper's per-cell hybrid rule
 --   the wrinkles grow unresisted after t ~ 0.6, the radius reaches 1.50 and
---   the pressure ends 16 % lower (docs/normals.md)
+--   the pressure ends 16 % lower (docs/normals.md). Fig 16's close-ups after
+--   4 and 7 steps draw the construction's phi (phi = 1 bold through the
+--   points) with the normals
 -- checks: the largest difference of the two pressure histories after the
 --   first oscillation; final radii at 0 and 90 degrees of both runs
 -- assumed: the dog-bone of gas_dogbone (assets/lua/dogbone.lua) at cell 0.1,
@@ -40,6 +42,22 @@ for _, tf in ipairs{0, 0.05, 0.1, 0.2, 0.4, 1, 2} do
   iso:frame{ file = string.format("%s/fig14_t%.2f.png", out, tf), width = 720, height = 420,
              mirror = "x", split = con, names = {"isosurface", "connectivity"}, normals = true,
              window = {-1.6, 0, 1.6, 1.6}, title = string.format("Figs 14/16: t = %.2f", tf) }
+  if tf == 0 then
+    -- Fig 16: the first steps close up, as the paper shows them: the
+    -- membrane points, their normals and the phi of the construction that
+    -- gave them (phi = 1 bold through the points, 0.5 and 1.5 thin, 0
+    -- dashed; the connectivity half shows the isosurface construction on
+    -- its own points)
+    for _, n in ipairs{4, 7} do
+      iso:step(n - iso.step)
+      con:step(n - con.step)
+      iso:frame{ file = string.format("%s/fig16_step%d.png", out, n), width = 760, height = 380,
+                 mirror = "x", split = con, names = {"isosurface", "connectivity"},
+                 normals = true, phi = true, particles = "membranes",
+                 window = {-0.4, 0.8, 0.4, 1.15},
+                 title = string.format("Fig 16: after %d steps, phi contours and normals", n) }
+    end
+  end
 end
 iso:run{ t_end = t_end }
 con:run{ t_end = t_end }

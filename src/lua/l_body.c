@@ -455,6 +455,7 @@ void la_open_body(lua_State *L)
                                        {"escaped", body_escaped},
                                        {"enclosed_area", body_enclosed_area},
                                        {"pin", la_body_pin},
+                                       {"phi", la_body_phi},
                                        {NULL, NULL}};
     luaL_newmetatable(L, LA_BODY);
     luaL_setfuncs(L, meta, 0);

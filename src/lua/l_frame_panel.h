@@ -10,7 +10,7 @@
  * panel, or as defaults for every table in `panels`). */
 #define LA_PANEL_KEYS "window", "grid", "colour", "range", "colourmap", \
     "colourbar", "scalebar", "units", "mirror", "split", "split_at", "names", \
-    "normals", "contours", "contour_levels", "particles"
+    "normals", "contours", "contour_levels", "particles", "phi"
 
 typedef struct la_frame_ctx {
     const char *fn;     /* "sim:frame", for messages */
@@ -25,6 +25,10 @@ void *la_frame_scratch(lua_State *L, la_frame_ctx *ctx, size_t n);
 /* Fills *p from the panel table at pidx (0: none), each key looked up there
  * first and then in the frame table at fidx; the simulation is the panel's
  * `sim`, else the one at sidx. Raises a Lua error naming a bad key. */
+/* l_frame_phi.c: the membranes' phi contours (phi = true) as curves, one
+ * per level, in scratch memory; returns their count. */
+size_t la_frame_phi(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, lr_curve **out);
+
 void la_frame_panel(lua_State *L, la_frame_ctx *ctx, int fidx, int pidx, int sidx,
                     lr_panel *p);
 

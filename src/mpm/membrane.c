@@ -60,24 +60,71 @@ static void orient_away(lm_particles *p, const lm_body *bd)
  * normal is undefined keeps last step's tangent. The sign of the normal
  * does not matter to the stress (sigma_t t(x)t, t.de.t); it is oriented
  * only for drawing. */
+/* The construction's grid and options for body b as the step numbered
+ * `step` uses them (its random points come from the sim's seed, the body
+ * and the step, so the same inputs give the same fit). */
+static void body_nopts(const lm_sim *sim, int b, lm_normals method, long step,
+                       lm_ngrid *g, lm_nopts *o)
+{
+    const lm_body *bd = &sim->bodies[b];
+    lm_ngrid gg = {2, {sim->grid.x0, sim->grid.y0, 0}, {sim->grid.hx, sim->grid.hy, 1},
+                   {sim->grid.nx, sim->grid.ny, 1}};
+    *g = gg;
+    if (method == LM_NORMALS_ISOSURFACE)
+        lm_nopts_centred(o);
+    else
+        lm_nopts_default(o);
+    o->skip_cond = 1;
+    o->seed = lm_nrng_mix(sim->def.seed, ((uint64_t)b << 40) ^ (uint64_t)step);
+    o->orient = bd->orient == 1 ? LM_NORIENT_AWAY
+              : bd->orient == 2 ? LM_NORIENT_NEIGHBOURS : LM_NORIENT_NONE;
+    o->orient_point[0] = bd->ox;
+    o->orient_point[1] = bd->oy;
+    if (method != LM_NORMALS_ISOSURFACE)
+        o->basis = method == LM_NORMALS_HYBRID ? LM_NB_HYBRID : LM_NB_LINEAR;
+    o->solver = method == LM_NORMALS_MASS_MATRIX ? LM_NS_NORMAL : LM_NS_QR;
+}
+
+int lm_membrane_phi(const lm_sim *sim, int b, struct lm_nreport *rep, char *err, size_t errlen)
+{
+    const lm_body *bd = &sim->bodies[b];
+    if (!bd->membrane || bd->count < 2 || bd->normals == LM_NORMALS_COLOUR ||
+        bd->normals == LM_NORMALS_QUADRATIC_COLOUR) {
+        snprintf(err, errlen, "body %d has no phi (not a membrane, or a colour-function "
+                 "method)", b + 1);
+        return -1;
+    }
+    /* connectivity membranes: the isosurface construction on the present
+     * points; the others: their own, as the last step ran it (its normals
+     * were found at these positions, with the step number before the
+     * count advanced) */
+    lm_normals method = bd->normals == LM_NORMALS_CONNECTIVITY ? LM_NORMALS_ISOSURFACE
+                                                                : bd->normals;
+    long step = sim->step > 0 ? sim->step - 1 : 0;
+    lm_ngrid g;
+    lm_nopts o;
+    body_nopts(sim, b, method, step, &g, &o);
+    size_t n = bd->count;
+    double *nx = malloc(2 * n * sizeof *nx);
+    if (!nx) {
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
+    const double *x[3] = {sim->p.x + bd->first, sim->p.y + bd->first, NULL};
+    double *nrm[3] = {nx, nx + n, NULL};
+    lm_nerr e = lm_normals_grid(&g, n, x, &o, nrm, NULL, rep, err, errlen);
+    free(nx);
+    return e == LM_NERR_NONE ? 0 : -1;
+}
+
 static lm_status without_connectivity(lm_sim *sim, int b)
 {
     const lm_body *bd = &sim->bodies[b];
     lm_particles *p = &sim->p;
     size_t n = bd->count;
-    lm_ngrid g = {2, {sim->grid.x0, sim->grid.y0, 0}, {sim->grid.hx, sim->grid.hy, 1},
-                  {sim->grid.nx, sim->grid.ny, 1}};
+    lm_ngrid g;
     lm_nopts o;
-    if (bd->normals == LM_NORMALS_ISOSURFACE)
-        lm_nopts_centred(&o);
-    else
-        lm_nopts_default(&o);
-    o.skip_cond = 1;
-    o.seed = lm_nrng_mix(sim->def.seed, ((uint64_t)b << 40) ^ (uint64_t)sim->step);
-    o.orient = bd->orient == 1 ? LM_NORIENT_AWAY
-             : bd->orient == 2 ? LM_NORIENT_NEIGHBOURS : LM_NORIENT_NONE;
-    o.orient_point[0] = bd->ox;
-    o.orient_point[1] = bd->oy;
+    body_nopts(sim, b, bd->normals, sim->step, &g, &o);
     double *nx = malloc(2 * n * sizeof *nx);
     unsigned char *flags = malloc(n);
     if (!nx || !flags) {
@@ -99,9 +146,6 @@ static lm_status without_connectivity(lm_sim *sim, int b)
         e = lm_normals_quadratic_colour(&g, n, x, nrm, flags, why, sizeof why);
         break;
     default:
-        if (bd->normals != LM_NORMALS_ISOSURFACE)
-            o.basis = bd->normals == LM_NORMALS_HYBRID ? LM_NB_HYBRID : LM_NB_LINEAR;
-        o.solver = bd->normals == LM_NORMALS_MASS_MATRIX ? LM_NS_NORMAL : LM_NS_QR;
         e = lm_normals_grid(&g, n, x, &o, nrm, flags, NULL, why, sizeof why);
         break;
     }

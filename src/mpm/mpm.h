@@ -292,6 +292,17 @@ int lm_sim_add_pin(lm_sim *sim, int b, const size_t *idx, size_t n, double vx, d
 /* Changes a pin's velocity between steps. */
 void lm_sim_set_pin_velocity(lm_sim *sim, int pin, double vx, double vy);
 
+/* The phi of membrane body b's normals construction ([N] §3) at its
+ * present points, element by element, into rep (normals.h; free with
+ * lm_nreport_free): for "isosurface", "hybrid", "linear" and
+ * "mass_matrix" the fit the last step made (same points, same random
+ * points: the same fit); for connectivity membranes the isosurface
+ * construction on the present points. 0, or -1 with err (the colour
+ * methods have no phi). */
+struct lm_nreport;
+int lm_membrane_phi(const lm_sim *sim, int b, struct lm_nreport *rep, char *err,
+                    size_t errlen);
+
 /* Builds what depends on whole bodies (membrane tangents and stresses from
  * their strains); called by the first step, and by anyone who needs the
  * tangents before it. */

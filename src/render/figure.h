@@ -49,6 +49,8 @@ typedef struct lr_curve {       /* a polyline through world points */
     double width;               /* pixels */
     double dash;                /* pixels, 0: solid */
     lr_rgba colour;
+    int pairs;                  /* 1: points (2k, 2k+1) are separate
+                                   segments (contour lines), not a polyline */
 } lr_curve;
 
 typedef struct lr_arrows {      /* arrows from (x, y) along unit (ux, uy) */

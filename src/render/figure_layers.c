@@ -194,11 +194,13 @@ static void map(const fig_view *v, const fig_mirror *m, double x, double y,
 void fig_draw_curve(lr_canvas *c, const fig_view *v, const fig_mirror *m,
                     const lr_curve *cv)
 {
-    size_t segments = cv->closed && cv->n > 2 ? cv->n : cv->n - (cv->n > 0);
+    size_t segments = cv->pairs ? cv->n / 2
+                    : cv->closed && cv->n > 2 ? cv->n : cv->n - (cv->n > 0);
     /* solid pieces overlap a little so that the joints have no notches */
     double ext = cv->dash > 0 ? 0.0 : 0.25 * cv->width;
-    for (size_t i = 0; i < segments; i++) {
-        size_t j = (i + 1) % cv->n;
+    for (size_t s = 0; s < segments; s++) {
+        size_t i = cv->pairs ? 2 * s : s;
+        size_t j = cv->pairs ? i + 1 : (i + 1) % cv->n;
         double ax, ay, bx, by;
         map(v, m, cv->x[i], cv->y[i], &ax, &ay);
         map(v, m, cv->x[j], cv->y[j], &bx, &by);

@@ -95,8 +95,8 @@ static void make_scene(scene *s)
         s->cy[i] = 0.9 + 0.04 * sin(18.0 * t);
     }
     const lr_rgba green = { 0.0, 0.55, 0.3, 1 }, grey = { 0.3, 0.3, 0.3, 1 };
-    s->curves[0] = (lr_curve){ 97, s->cx, s->cy, 0, 2.0, 0.0, green };
-    s->curves[1] = (lr_curve){ 64, s->ax, s->ay, 1, 1.0, 5.0, grey };
+    s->curves[0] = (lr_curve){ 97, s->cx, s->cy, 0, 2.0, 0.0, green, 0 };
+    s->curves[1] = (lr_curve){ 64, s->ax, s->ay, 1, 1.0, 5.0, grey, 0 };
     for (int j = 0; j <= NF; j++)       /* a bump: filled contour bands */
         for (int i = 0; i <= NF; i++) {
             double x = (double)i / NF - 0.5, y = (double)j / NF - 0.5;
