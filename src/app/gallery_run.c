@@ -27,7 +27,7 @@ int g_run(const g_script *s, const char *out, const char *report, const char *lo
     /* everything the child needs is built before fork: after it, the child
      * may only call async-signal-safe functions */
     int argc = 0;
-    char **argv = g_alloc((size_t)(10 + 2 * nsets) * sizeof *argv);
+    char **argv = g_alloc((size_t)(12 + 2 * nsets) * sizeof *argv);
     char *set_out = g_fmt("out=%s", out);
     argv[argc++] = "lamina";
     argv[argc++] = "run";
@@ -36,6 +36,8 @@ int g_run(const g_script *s, const char *out, const char *report, const char *lo
     argv[argc++] = set_out;
     argv[argc++] = "--report";
     argv[argc++] = (char *)report;
+    argv[argc++] = "--out-root";   /* the script writes into out, wherever it is */
+    argv[argc++] = (char *)out;
     for (int i = 0; i < nsets; i++) {
         argv[argc++] = "--set";
         argv[argc++] = (char *)sets[i];

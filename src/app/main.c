@@ -13,6 +13,8 @@ static void usage(FILE *out)
             "  lamina run SCRIPT.lua [--set name=value ...] [--backend cairo|osmesa] [--threads N] [--quiet]\n"
             "                          run a scenario; its frames go where it says\n"
             "                          (--report FILE: also write lamina.report values as JSON)\n"
+            "                          (--out-root DIR: the files it writes must stay in DIR,\n"
+            "                           by default the working directory)\n"
             "  lamina diff EXPECTED.png ACTUAL.png [--out DIFF.png] [--threshold T]\n"
             "              [--max-pixels N] [--max-window N] [--hard-limit L] [--quiet]\n"
             "                          compare two images: 0 same, 1 different, 2 error\n"

@@ -21,7 +21,7 @@ static la_body *check_body(lua_State *L, int idx, lm_sim **sim)
 /* ppc = n (a square: 4 = 2x2, 16 = 4x4, as the papers count) or {nx, ny}. */
 static void read_ppc(lua_State *L, const char *fn, int *npx, int *npy)
 {
-    int t = lua_getfield(L, 2, "ppc");
+    int t = la_getfield(L, 2, "ppc");
     lua_pop(L, 1);
     if (t == LUA_TNIL) {
         *npx = *npy = 2;
@@ -38,7 +38,7 @@ static void read_ppc(lua_State *L, const char *fn, int *npx, int *npy)
         if (n < 1 || r * r != n || n > 4096)
             luaL_error(L, "%s: ppc = %s is not a square number (1, 4, 9, 16, ...); "
                        "use ppc = {nx, ny} for other patterns", fn,
-                       (lua_getfield(L, 2, "ppc"), lua_tostring(L, -1)));
+                       (la_getfield(L, 2, "ppc"), lua_tostring(L, -1)));
         *npx = *npy = (int)r;
     }
 }
@@ -69,7 +69,7 @@ static int clip_inside(void *ctx, double x, double y)
 static int read_fill(lua_State *L, const char *fn)
 {
     static const char *const fills[] = {"centres", "clipped", NULL};
-    lua_getfield(L, 2, "fill");
+    la_getfield(L, 2, "fill");
     int clipped = 0;
     if (!lua_isnil(L, -1)) {
         const char *f = lua_tostring(L, -1);
@@ -113,7 +113,7 @@ int la_sim_body(lua_State *L)
     if (s->running) return luaL_error(L, "%s: bodies cannot be added during a run", fn);
     lm_sim *sim = s->sim;
 
-    lua_getfield(L, 2, "material");
+    la_getfield(L, 2, "material");
     if (lua_isnil(L, -1)) return luaL_error(L, "%s: 'material' is required", fn);
     lm_material *mat = luaL_testudata(L, -1, LA_MATERIAL);
     if (!mat) return luaL_error(L, "%s: 'material' must be a material (lamina.elastic{...})", fn);
@@ -121,7 +121,7 @@ int la_sim_body(lua_State *L)
         return luaL_error(L, "%s: a membrane material goes into sim:membrane{...}", fn);
     int midx = lua_gettop(L);
 
-    lua_getfield(L, 2, "region");
+    la_getfield(L, 2, "region");
     int ridx = lua_gettop(L);
     lm_region *region = la_test_region(L, ridx);
     if (!region && !lua_isfunction(L, ridx))
@@ -135,7 +135,7 @@ int la_sim_body(lua_State *L)
 
     double vx0 = 0, vy0 = 0;
     int vidx = 0;
-    int vt = lua_getfield(L, 2, "velocity");
+    int vt = la_getfield(L, 2, "velocity");
     if (vt == LUA_TFUNCTION) vidx = lua_gettop(L);
     else {
         lua_pop(L, 1);
@@ -170,7 +170,7 @@ int la_sim_body(lua_State *L)
         return luaL_error(L, "%s: the region holds no particles at ppc = %d "
                           "(is it inside the domain, and larger than a cell?)", fn, npx * npy);
 
-    lua_getfield(L, 2, "name");
+    la_getfield(L, 2, "name");
     la_push_body(L, 1, bi, lua_gettop(L));
     return 1;
 }
@@ -429,7 +429,7 @@ static int body_index(lua_State *L)
         return 1;
     }
     luaL_getmetafield(L, 1, "methods");
-    lua_getfield(L, -1, k);
+    la_getfield(L, -1, k);
     if (lua_isnil(L, -1)) return luaL_error(L, "body has no field or method '%s'", k);
     return 1;
 }
@@ -451,7 +451,7 @@ void la_open_body(lua_State *L)
                                        {"escaped", body_escaped},
                                        {"enclosed_area", body_enclosed_area},
                                        {NULL, NULL}};
-    luaL_newmetatable(L, LA_BODY);
+    la_new_metatable(L, LA_BODY);
     luaL_setfuncs(L, meta, 0);
     luaL_newlib(L, methods);
     lua_setfield(L, -2, "methods");

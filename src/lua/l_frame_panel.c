@@ -26,12 +26,12 @@ static int get(lua_State *L, int fidx, int pidx, const char *key)
         return LUA_TNIL;
     }
     if (pidx) {
-        int t = lua_getfield(L, pidx, key);
+        int t = la_getfield(L, pidx, key);
         if (t != LUA_TNIL || !fidx)
             return t;
         lua_pop(L, 1);
     }
-    return lua_getfield(L, fidx, key);
+    return la_getfield(L, fidx, key);
 }
 
 /* ---- what particles show ------------------------------------------------ */

@@ -81,16 +81,16 @@ int la_sim_membrane(lua_State *L)
     lm_sim *sim = s->sim;
     const lm_grid *g = &sim->grid;
 
-    lua_getfield(L, 2, "material");
+    la_getfield(L, 2, "material");
     lm_material *mat = luaL_testudata(L, -1, LA_MATERIAL);
     if (!mat || mat->kind != LM_MEMBRANE)
         return luaL_error(L, "%s: 'material' must be lamina.membrane{...}", fn);
     int midx = lua_gettop(L);
-    lua_getfield(L, 2, "name");
+    la_getfield(L, 2, "name");
     int nameidx = lua_gettop(L);
     const char *what = label(L, nameidx, sim->nbodies);
 
-    lua_getfield(L, 2, "curve");
+    la_getfield(L, 2, "curve");
     int cidx = lua_gettop(L);
     la_curve_points cp;
     if (la_curve_sample(L, cidx, &cp))
@@ -112,7 +112,7 @@ int la_sim_membrane(lua_State *L)
      * from the curve's centroid for the constructions without connectivity */
     int orient = 0;
     double ox = 0, oy = 0;
-    int ot = lua_getfield(L, 2, "orient");
+    int ot = la_getfield(L, 2, "orient");
     lua_pop(L, 1);
     if (ot == LUA_TTABLE) {
         la_pair(L, 2, fn, "orient", &ox, &oy);
@@ -130,14 +130,14 @@ int la_sim_membrane(lua_State *L)
         return luaL_error(L, "%s: end_mass must be positive (got %f)", fn, end_mass);
     double vx = 0, vy = 0;
     int vidx = 0;
-    int vt = lua_getfield(L, 2, "velocity");
+    int vt = la_getfield(L, 2, "velocity");
     if (vt == LUA_TFUNCTION) vidx = lua_gettop(L);
     else {
         lua_pop(L, 1);
         if (vt != LUA_TNIL) la_pair(L, 2, fn, "velocity", &vx, &vy);
     }
     int sidx = 0;
-    int st = lua_getfield(L, 2, "initial_strain");
+    int st = la_getfield(L, 2, "initial_strain");
     if (st == LUA_TNUMBER || st == LUA_TFUNCTION) sidx = lua_gettop(L);
     else if (st != LUA_TNIL)
         return luaL_error(L, "%s: initial_strain must be a number or a function(u, i)", fn);

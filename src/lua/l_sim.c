@@ -33,7 +33,7 @@ void la_sim_keep(lua_State *L, int sidx, int idx)
 
 static void read_cell(lua_State *L, const char *fn, lm_sim_def *d)
 {
-    int t = lua_getfield(L, 1, "cell");
+    int t = la_getfield(L, 1, "cell");
     lua_pop(L, 1);
     if (t == LUA_TTABLE) {
         la_pair(L, 1, fn, "cell", &d->hx, &d->hy);
@@ -44,7 +44,7 @@ static void read_cell(lua_State *L, const char *fn, lm_sim_def *d)
 
 static void read_domain(lua_State *L, const char *fn, lm_sim_def *d)
 {
-    if (lua_getfield(L, 1, "domain") == LUA_TNIL) {
+    if (la_getfield(L, 1, "domain") == LUA_TNIL) {
         lua_pop(L, 1);
         return;
     }
@@ -66,7 +66,7 @@ static void read_domain(lua_State *L, const char *fn, lm_sim_def *d)
  * top = ...}; sides not named keep the default, fixed. */
 static void read_boundary(lua_State *L, const char *fn, lm_sim_def *d)
 {
-    int t = lua_getfield(L, 1, "boundary");
+    int t = la_getfield(L, 1, "boundary");
     if (t == LUA_TSTRING) {
         int bc = la_option(L, fn, "boundary", lua_tostring(L, -1), bcs);
         for (int s = 0; s < 4; s++) d->bc[s] = (lm_bc)bc;
@@ -96,6 +96,8 @@ int la_sim_new(lua_State *L)
     d.scheme = (lm_scheme)la_option(L, fn, "scheme",
                                     la_opt_string(L, 1, fn, "scheme", "musl"), schemes);
     if (la_has(L, 1, "gravity")) la_pair(L, 1, fn, "gravity", &d.gx, &d.gy);
+    if (!isfinite(d.gx) || !isfinite(d.gy))   /* else blamed on dt steps later */
+        luaL_error(L, "%s: 'gravity' must be two finite numbers (got {%f, %f})", fn, d.gx, d.gy);
     read_boundary(L, fn, &d);
     d.courant = la_opt_number(L, 1, fn, "courant", 1.0);
     d.pic = la_opt_number(L, 1, fn, "pic", 0.0);
@@ -124,6 +126,8 @@ int la_sim_new(lua_State *L)
     return 1;
 }
 
+/* Only the collector calls this (the metatable is locked, there is no
+ * __close); it is idempotent anyway, and la_check_sim refuses a freed sim. */
 static int sim_gc(lua_State *L)
 {
     la_sim *s = luaL_checkudata(L, 1, LA_SIM);
@@ -131,6 +135,7 @@ static int sim_gc(lua_State *L)
     free(s->ev);
     s->sim = NULL;
     s->ev = NULL;
+    s->nev = s->capev = 0;
     return 0;
 }
 
@@ -187,12 +192,21 @@ static void fire_due(lua_State *L, la_sim *s)
         la_event *e = &s->ev[i];
         if (e->done || e->next > now) continue;
         if (e->interval > 0) {
-            /* next multiple after now: an interval shorter than dt fires
-             * once per step, not in bursts */
-            do {
-                e->k++;
-                e->next = e->t0 + e->k * e->interval;
-            } while (e->next <= now);
+            /* the first multiple after now, computed, not counted up to: an
+             * interval far below dt (1e-300) would loop for ever; an
+             * interval shorter than dt fires once per step, not in bursts */
+            double k = floor((now - e->t0) / e->interval) + 1;
+            if (!(k > e->k)) k = e->k + 1;
+            /* the division may round: settle on the first multiple past now,
+             * as counting up did (a step or two at most) */
+            for (int j = 0; j < 4 && k - 1 > e->k && e->t0 + (k - 1) * e->interval > now; j++)
+                k--;
+            for (int j = 0; j < 4 && !(e->t0 + k * e->interval > now); j++) k++;
+            e->k = k;
+            e->next = e->t0 + k * e->interval;
+            /* rounding, or an interval so small that the count overflows
+             * (5e-324): the next step */
+            if (!(e->next > now) || !isfinite(e->next)) e->next = nextafter(now, HUGE_VAL);
         } else {
             e->done = 1;
         }
@@ -268,6 +282,8 @@ static int sim_run(lua_State *L)
     la_sim *s = la_check_sim(L, 1);
     la_check_keys(L, 2, "sim:run", keys);
     double t_end = la_number(L, 2, "sim:run", "t_end");
+    if (!isfinite(t_end))   /* NaN compared false everywhere: 0 steps, exit 0 */
+        return luaL_error(L, "sim:run: t_end must be a finite number (got %f)", t_end);
     double n = floor((t_end - s->sim->t) / s->sim->def.dt + 0.5);
     if (n > 1e12) return luaL_error(L, "sim:run: t_end = %f needs %f steps", t_end, n);
     advance(L, s, n > 0 ? (long)n : 0);
@@ -355,7 +371,7 @@ static int sim_index(lua_State *L)
     }
     else {
         luaL_getmetafield(L, 1, "methods");
-        lua_getfield(L, -1, k);
+        la_getfield(L, -1, k);
         if (lua_isnil(L, -1)) return luaL_error(L, "sim has no field or method '%s'", k);
     }
     return 1;
@@ -378,8 +394,11 @@ static int sim_newindex(lua_State *L)
         luaL_checktype(L, 3, LUA_TTABLE);
         lua_rawgeti(L, 3, 1);
         lua_rawgeti(L, 3, 2);
-        m->def.gx = luaL_checknumber(L, -2);
-        m->def.gy = luaL_checknumber(L, -1);
+        double gx = luaL_checknumber(L, -2), gy = luaL_checknumber(L, -1);
+        if (!isfinite(gx) || !isfinite(gy))
+            return luaL_error(L, "sim.gravity must be two finite numbers (got {%f, %f})", gx, gy);
+        m->def.gx = gx;
+        m->def.gy = gy;
         lua_pop(L, 2);
     } else if (strcmp(k, "pic") == 0) {
         double v = luaL_checknumber(L, 3);
@@ -426,7 +445,7 @@ void la_open_sim(lua_State *L)
     lua_setmetatable(L, -2);
     lua_pop(L, 1);
 
-    static const luaL_Reg meta[] = {{"__gc", sim_gc}, {"__close", sim_gc},
+    static const luaL_Reg meta[] = {{"__gc", sim_gc},
                                     {"__index", sim_index},
                                     {"__newindex", sim_newindex},
                                     {"__tostring", sim_tostring},
@@ -444,7 +463,7 @@ void la_open_sim(lua_State *L)
                                        {"courant", sim_courant},
                                        {"frame", la_sim_frame},
                                        {NULL, NULL}};
-    luaL_newmetatable(L, LA_SIM);
+    la_new_metatable(L, LA_SIM);
     luaL_setfuncs(L, meta, 0);
     luaL_newlib(L, methods);
     lua_setfield(L, -2, "methods");

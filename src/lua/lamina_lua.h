@@ -50,6 +50,12 @@ typedef struct lamina_run {
 
 /* A Lua state with the safe standard libraries and `lamina` as a global. */
 lua_State *lamina_open_state(lamina_run *run);
+/* `lamina run --out-root DIR`: the folder every file a script writes must
+ * stay in (else the working directory). 0, or -1 with err. */
+int lamina_set_output_root(lua_State *L, const char *dir, char *err, size_t len);
+/* 0 when path names a regular file (not /dev/zero, a FIFO, a folder), else
+ * -1 with err "cannot read script 'PATH': why". */
+int lamina_check_script_file(const char *path, char *err, size_t len);
 /* Loads and runs run->script in L; prints errors with file:line and a
  * traceback to stderr; returns the exit status. */
 int lamina_run_script(lua_State *L, lamina_run *run);
