@@ -72,6 +72,17 @@ static int parse_args(int argc, char **argv, lamina_run *run, const char **repor
                 return -1;
             }
             *out_root = d;
+        } else if (strcmp(a, "--lua-mem") == 0 || strncmp(a, "--lua-mem=", 10) == 0) {
+            /* the cap on the script's Lua memory (l_alloc.c), MB */
+            const char *v = a[9] == '=' ? a + 10 : (i + 1 < argc ? argv[++i] : NULL);
+            char *end = NULL;
+            double mb = v ? strtod(v, &end) : 0;
+            if (!v || !*v || *end || !(mb >= 1 && mb <= 1048576)) {
+                fprintf(stderr, "lamina run: --lua-mem needs a size in MB from 1 to 1048576 "
+                        "(default %d)\n", LAMINA_LUA_MEM_DEFAULT_MB);
+                return -1;
+            }
+            run->lua_mem_limit = (size_t)(mb * 1048576.0);
         } else if (strcmp(a, "--backend") == 0 || strncmp(a, "--backend=", 10) == 0) {
             /* sim:frame's default renderer for this run (docs/rendering.md) */
             const char *b = a[9] == '=' ? a + 10 : (i + 1 < argc ? argv[++i] : NULL);

@@ -50,6 +50,9 @@ void la_provenance(lua_State *L, la_prov *p);
 /* Counts an image written and remembers its folder for the run's summary. */
 void la_note_image(lua_State *L, const char *path);
 
+/* l_alloc.c: luaL_newstate with the run's memory cap (run may be NULL) */
+lua_State *la_new_state(lamina_run *run);
+
 /* l_sandbox.c: the standard library a script gets (design.md: a script is
  * untrusted input); la_load_script loads a regular text file only. */
 void la_open_sandbox(lua_State *L, const char *script);

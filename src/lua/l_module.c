@@ -88,7 +88,7 @@ static int luaopen_lamina(lua_State *L)
 
 lua_State *lamina_open_state(lamina_run *run)
 {
-    lua_State *L = luaL_newstate();
+    lua_State *L = la_new_state(run);
     if (!L) return NULL;
     lua_pushlightuserdata(L, run);
     lua_setfield(L, LUA_REGISTRYINDEX, "lamina.run");
@@ -135,9 +135,20 @@ int lamina_run_script(lua_State *L, lamina_run *run)
     lua_pushstring(L, run->script);
     lua_setglobal(L, "SCRIPT");
     int rc = lua_pcall(L, 0, 0, base);
+    if (rc == LUA_ERRMEM) {   /* no traceback: the handler is not called */
+        lamina_progress_clear_line();
+        fprintf(stderr, "lamina: %s: the script's Lua memory reached its cap of %zu MB "
+                "(lamina run --lua-mem MB raises it)\n", run->script, run->lua_mem_limit >> 20);
+        lua_settop(L, 0);
+        return LAMINA_EXIT_USAGE;
+    }
     if (rc != LUA_OK) {
         lamina_progress_clear_line();   /* the message starts a line of its own */
-        fprintf(stderr, "lamina: %s\n", lua_tostring(L, -1));
+        const char *msg = lua_tostring(L, -1);
+        fprintf(stderr, "lamina: %s\n", msg ? msg : "(error object is not a string)");
+        if (msg && strstr(msg, "not enough memory"))   /* raised again by a callback */
+            fprintf(stderr, "lamina: the script's Lua memory is capped at %zu MB "
+                    "(lamina run --lua-mem MB raises it)\n", run->lua_mem_limit >> 20);
         lua_settop(L, 0);
         return run->sim_failed ? LAMINA_EXIT_SIM : LAMINA_EXIT_USAGE;
     }

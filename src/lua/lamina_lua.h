@@ -46,9 +46,18 @@ typedef struct lamina_run {
     FILE *log;                  /* NULL, or a copy of the run log */
     const char *backend;        /* --backend NAME: sim:frame's default
                                    ("cairo" or "osmesa"); NULL: cairo */
+    /* the Lua state's memory (l_alloc.c): a cap, bytes (0: the default,
+     * LAMINA_LUA_MEM_DEFAULT_MB; lamina run --lua-mem MB), in use, peak */
+    size_t lua_mem_limit, lua_mem_used, lua_mem_peak;
 } lamina_run;
 
-/* A Lua state with the safe standard libraries and `lamina` as a global. */
+/* The default cap on a script's Lua memory, in MB: far above what any
+ * script in scripts/ or tests/ uses (a few MB; the engine's particles and
+ * grid are not Lua memory), far below what would make a machine swap. */
+#define LAMINA_LUA_MEM_DEFAULT_MB 1024
+
+/* A Lua state with the safe standard libraries and `lamina` as a global;
+ * its memory is capped at run->lua_mem_limit (run must outlive it). */
 lua_State *lamina_open_state(lamina_run *run);
 /* `lamina run --out-root DIR`: the folder every file a script writes must
  * stay in (else the working directory). 0, or -1 with err. */
