@@ -1,6 +1,7 @@
 /* l_body.c - sim:body{...}: a region of one material filled with particles,
  * and the body handle (com, velocity, particles). */
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "l_internal.h"
@@ -18,7 +19,9 @@ static la_body *check_body(lua_State *L, int idx, lm_sim **sim)
     return b;
 }
 
-/* ppc = n (a square: 4 = 2x2, 16 = 4x4, as the papers count) or {nx, ny}. */
+/* ppc = n (a square: 4 = 2x2, 16 = 4x4, as the papers count) or {nx, ny};
+ * at most LA_MAX_PPC points per cell, named in the error. */
+#define LA_MAX_PPC 4096
 static void read_ppc(lua_State *L, const char *fn, int *npx, int *npy)
 {
     int t = la_getfield(L, 2, "ppc");
@@ -28,14 +31,25 @@ static void read_ppc(lua_State *L, const char *fn, int *npx, int *npy)
     } else if (t == LUA_TTABLE) {
         double a, b;
         la_pair(L, 2, fn, "ppc", &a, &b);
-        if (a < 1 || b < 1 || a != floor(a) || b != floor(b) || a * b > 4096)
+        if (a < 1 || b < 1 || a != floor(a) || b != floor(b))
             luaL_error(L, "%s: ppc = {%f, %f} must be two positive integers", fn, a, b);
+        if (a * b > LA_MAX_PPC) {
+            char m[96];   /* lua_pushfstring knows no %g */
+            snprintf(m, sizeof m, "ppc = {%g, %g} gives %g points per cell", a, b, a * b);
+            luaL_error(L, "%s: %s, more than the limit of %d", fn, m, LA_MAX_PPC);
+        }
         *npx = (int)a;
         *npy = (int)b;
     } else {
         double n = la_number(L, 2, fn, "ppc");
         double r = floor(sqrt(n) + 0.5);
-        if (n < 1 || r * r != n || n > 4096)
+        if (n > LA_MAX_PPC) {
+            char m[48];
+            snprintf(m, sizeof m, "ppc = %g", n);
+            luaL_error(L, "%s: %s is more than the limit of %d points per cell", fn, m,
+                       LA_MAX_PPC);
+        }
+        if (n < 1 || r * r != n)
             luaL_error(L, "%s: ppc = %s is not a square number (1, 4, 9, 16, ...); "
                        "use ppc = {nx, ny} for other patterns", fn,
                        (la_getfield(L, 2, "ppc"), lua_tostring(L, -1)));

@@ -367,7 +367,7 @@ static field colours(lua_State *L, const la_frame_ctx *ctx, int fidx, int pidx,
         double r[2];
         numbers(L, ctx, lua_gettop(L), "range", "{min, max}", 2, r);
         if (!(r[1] > r[0]))
-            luaL_error(L, "%s: 'range' must have max > min (got {%g, %g})", ctx->fn,
+            luaL_error(L, "%s: 'range' must have max > min (got {%f, %f})", ctx->fn,
                        r[0], r[1]);
         p->vmin = r[0];
         p->vmax = r[1];

@@ -43,6 +43,8 @@ static const char *label(lua_State *L, int nameidx, int body)
     return lua_pushfstring(L, "membrane %d", body + 1);
 }
 
+#define LA_MAX_MEMBRANE_POINTS 10000000
+
 static int point_count(lua_State *L, const char *fn, const la_curve_points *cp, double h,
                        const char **what)
 {
@@ -50,7 +52,10 @@ static int point_count(lua_State *L, const char *fn, const la_curve_points *cp, 
     int have_spacing = la_has(L, 2, "spacing");
     if ((count > 0) == have_spacing)
         luaL_error(L, "%s: give exactly one of 'spacing' and 'count'", fn);
-    int intervals;
+    /* counted in double first: spacing = 1e-12 or count = 1e12 overflowed
+     * an int and came out as one interval ("spacing 0.8 is larger than a
+     * cell") */
+    double iv;
     if (have_spacing) {
         double sp = la_number(L, 2, fn, "spacing");
         if (!(sp > 0)) luaL_error(L, "%s: spacing must be positive (got %f)", fn, sp);
@@ -58,14 +63,19 @@ static int point_count(lua_State *L, const char *fn, const la_curve_points *cp, 
             luaL_error(L, "%s: %s spacing %f is larger than a cell (%f): neighbouring "
                        "points must stay within one cell or the membrane breaks", fn,
                        *what, sp, h);
-        intervals = (int)ceil(cp->length / sp - 1e-9);
+        iv = ceil(cp->length / sp - 1e-9);
     } else {
         if (count != floor(count) || count < 2)
             luaL_error(L, "%s: count must be a whole number >= 2 (got %f)", fn, count);
-        intervals = cp->closed ? (int)count : (int)count - 1;
+        iv = cp->closed ? count : count - 1;
     }
-    if (intervals < 1) intervals = 1;
-    if (intervals > 10000000) luaL_error(L, "%s: %d points are too many", fn, intervals);
+    if (!(iv <= LA_MAX_MEMBRANE_POINTS)) {
+        char m[64];   /* lua_pushfstring knows no %.0f */
+        snprintf(m, sizeof m, "%.0f", cp->closed ? iv : iv + 1);
+        luaL_error(L, "%s: %s would have %s points, more than the limit of %d per membrane",
+                   fn, *what, m, LA_MAX_MEMBRANE_POINTS);
+    }
+    int intervals = iv < 1 ? 1 : (int)iv;
     return intervals;
 }
 

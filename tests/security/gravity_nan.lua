@@ -1,5 +1,5 @@
 -- expect: 2
--- stderr: gravity_nan\.lua:[0-9]+: lamina\.sim: 'gravity' must be two finite numbers
+-- stderr: gravity_nan\.lua:8: lamina\.sim: 'gravity' must be two finite numbers
 -- Issue 18, unclear messages: gravity = {0, 0/0} was accepted, then blamed
 -- on the time step. It is refused, naming the key (and so is sim.gravity).
 local s = lamina.sim{ dt = 1e-3 }

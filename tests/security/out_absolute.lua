@@ -1,5 +1,5 @@
 -- expect: 2
--- stderr: out_absolute\.lua:[0-9]+: sim:record: cannot write '/tmp/lamina_security_x\.csv': .*outside the output root
+-- stderr: out_absolute\.lua:18: sim:record: cannot write '/tmp/lamina_security_x\.csv': .*outside the output root
 -- Issue 18, item 2: an absolute path outside the working directory (as
 -- root it reached a system folder) is refused, for every writer.
 local sim = lamina.sim{ dt = 1e-3 }

@@ -1,5 +1,5 @@
 -- expect: 2
--- stderr: out_control\.lua:[0-9]+: sim:frame: cannot write 'out/security/a\\10b\.png': the file name contains a control character
+-- stderr: out_control\.lua:6: sim:frame: cannot write 'out/security/a\\10b\.png': the file name contains a control character
 -- Issue 18, item 2: control characters in a file name are refused (shown
 -- escaped in the message, so the message stays one line).
 local sim = lamina.sim{ dt = 1e-3 }

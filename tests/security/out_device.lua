@@ -1,5 +1,5 @@
 -- expect: 2
--- stderr: out_device\.lua:[0-9]+: sim:frame: cannot write '/dev/null'
+-- stderr: out_device\.lua:9: sim:frame: cannot write '/dev/null'
 -- Issue 18, item 2: device files are no target (rename(2) over /dev/null,
 -- as root, would replace it). Outside the root it is refused as such; a
 -- folder inside it is refused as not a regular file.

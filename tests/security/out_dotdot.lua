@@ -1,5 +1,5 @@
 -- expect: 2
--- stderr: out_dotdot\.lua:[0-9]+: sim:frame: cannot write 'out/\.\./\.\./\.\./x\.png': it resolves to '.*', outside the output root
+-- stderr: out_dotdot\.lua:10: sim:frame: cannot write 'out/\.\./\.\./\.\./x\.png': it resolves to '.*', outside the output root
 -- Issue 18, item 2: frames went to ../../x.png. A path that leaves the
 -- working directory through ".." is refused, naming it; nothing is written.
 local sim = lamina.sim{ dt = 1e-3 }

@@ -1,5 +1,5 @@
 -- expect: 2
--- stderr: record_header_injection\.lua:[0-9]+: sim:record: column name '\\10echo INJECTED > pwned\\10#' contains a control character
+-- stderr: record_header_injection\.lua:12: sim:record: column name '\\10echo INJECTED > pwned\\10#' contains a control character
 -- Issue 18: sim:record wrote column names unescaped, so a name with
 -- newlines planted shell lines in the CSV. Control characters, commas and
 -- quotes in column names (the CSV header) are refused; plot labels too.
