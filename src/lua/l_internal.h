@@ -112,6 +112,12 @@ void la_push_energy(lua_State *L, lm_energy e);
  * `interval` (0: once), between steps. */
 void la_sim_add_event(lua_State *L, int sidx, double first, double interval, int fidx);
 
+/* Raises "file:line: simulation failed: why" and remembers it; the exit
+ * status of a script's final error msg: 1 when it is that failure (not
+ * caught, or raised again), else 2. */
+void la_raise_sim_failure(lua_State *L, const char *why);
+int la_exit_status_of(lua_State *L, const char *msg);
+
 /* l_record.c */
 int la_sim_record(lua_State *L);
 void la_open_record(lua_State *L);

@@ -149,8 +149,9 @@ int lamina_run_script(lua_State *L, lamina_run *run)
         if (msg && strstr(msg, "not enough memory"))   /* raised again by a callback */
             fprintf(stderr, "lamina: the script's Lua memory is capped at %zu MB "
                     "(lamina run --lua-mem MB raises it)\n", run->lua_mem_limit >> 20);
+        int status = la_exit_status_of(L, msg);
         lua_settop(L, 0);
-        return run->sim_failed ? LAMINA_EXIT_SIM : LAMINA_EXIT_USAGE;
+        return status;
     }
     lua_settop(L, 0);
     return check_sets(run) ? LAMINA_EXIT_USAGE : LAMINA_EXIT_OK;

@@ -224,6 +224,32 @@ static void fire_due(lua_State *L, la_sim *s)
 
 /* ---- stepping -------------------------------------------------------- */
 
+/* "simulation failed: ..." (exit status 1). The message is remembered: a
+ * script may catch it with pcall and then fail for another reason, which
+ * is its own mistake (exit status 2), not the simulation's. */
+void la_raise_sim_failure(lua_State *L, const char *why)
+{
+    luaL_where(L, 1);
+    lua_pushfstring(L, "simulation failed: %s", why);
+    lua_concat(L, 2);
+    lua_pushvalue(L, -1);
+    lua_setfield(L, LUA_REGISTRYINDEX, "lamina.sim_failure");
+    la_run(L)->sim_failed = 1;
+    lua_error(L);
+}
+
+int la_exit_status_of(lua_State *L, const char *msg)
+{
+    lamina_run *run = la_run(L);
+    int failed = 0;
+    if (run && run->sim_failed && msg &&
+        lua_getfield(L, LUA_REGISTRYINDEX, "lamina.sim_failure") == LUA_TSTRING) {
+        failed = strstr(msg, lua_tostring(L, -1)) != NULL;
+    }
+    if (run && run->sim_failed) lua_pop(L, 1);
+    return failed ? LAMINA_EXIT_SIM : LAMINA_EXIT_USAGE;
+}
+
 /* design.md: a dt whose Courant number exceeds `courant` is refused with
  * the limit printed. */
 static void check_courant(lua_State *L, la_sim *s)
@@ -256,10 +282,9 @@ static void advance(lua_State *L, la_sim *s, long nsteps)
         if (st != LM_OK) {
             s->running = 0;
             run->active = NULL;
-            run->sim_failed = 1;
             la_progress_end(L);
             la_record_flush(L, 1);   /* the history up to the failure is kept */
-            luaL_error(L, "simulation failed: %s", s->sim->err);
+            la_raise_sim_failure(L, s->sim->err);
         }
         fire_due(L, s);
         if (la_progress_tick(L, s->sim)) {   /* Ctrl-C, watch: stop between steps */
