@@ -22,6 +22,10 @@ static la_body *check_body(lua_State *L, int idx, lm_sim **sim)
 /* ppc = n (a square: 4 = 2x2, 16 = 4x4, as the papers count) or {nx, ny};
  * at most LA_MAX_PPC points per cell, named in the error. */
 #define LA_MAX_PPC 4096
+/* Particles of a simulation, trial points of one body: five times the 10^7
+ * particles of the performance benchmark (design.md). */
+#define LA_MAX_PARTICLES 50000000
+#define LA_MAX_TRIALS 200000000
 static void read_ppc(lua_State *L, const char *fn, int *npx, int *npy)
 {
     int t = la_getfield(L, 2, "ppc");
@@ -156,11 +160,6 @@ int la_sim_body(lua_State *L)
         if (vt != LUA_TNIL) la_pair(L, 2, fn, "velocity", &vx0, &vy0);
     }
 
-    int mi = lm_sim_add_material(sim, mat);
-    int bi = mi < 0 ? -1 : lm_sim_add_body(sim, mi);
-    if (bi < 0) return luaL_error(L, "%s: out of memory", fn);
-    la_sim_keep(L, 1, midx);
-
     const lm_grid *g = &sim->grid;
     lm_seed_range range = region
         ? lm_seed_range_for(g, npx, npy, region->x0, region->y0, region->x1, region->y1)
@@ -168,7 +167,25 @@ int la_sim_body(lua_State *L)
                             g->y0 + g->ny * g->hy);
     double mass = lm_seed_mass(g, npx, npy, mat->rho);
     size_t total = lm_seed_count(&range);
+    /* ppc = 4096 on a 1000 x 1000 grid is 4e9 points: refused before the
+     * first is made (trial points, then the particles themselves below) */
+    if ((double)total > LA_MAX_TRIALS) {
+        char m[64];
+        snprintf(m, sizeof m, "%.0f", (double)total);
+        return luaL_error(L, "%s: the region's cells at ppc = %d hold %s trial points, more "
+                          "than the limit of %d (a smaller ppc, region or domain)", fn,
+                          npx * npy, m, LA_MAX_TRIALS);
+    }
+
+    int mi = lm_sim_add_material(sim, mat);
+    int bi = mi < 0 ? -1 : lm_sim_add_body(sim, mi);
+    if (bi < 0) return luaL_error(L, "%s: out of memory", fn);
+    la_sim_keep(L, 1, midx);
+
     for (size_t k = 0; k < total; k++) {
+        if (sim->p.n >= LA_MAX_PARTICLES)
+            return luaL_error(L, "%s: the simulation would have more than the limit of %d "
+                              "particles", fn, LA_MAX_PARTICLES);
         double x, y, vx = vx0, vy = vy0;
         double part = 1;
         lm_seed_point(g, &range, k, &x, &y);

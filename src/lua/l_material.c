@@ -89,7 +89,11 @@ int la_gas(lua_State *L)
     m->gamma = la_opt_number(L, 1, fn, "gamma", 1.4);
     m->mu = la_opt_number(L, 1, fn, "mu", 0);
     m->split = la_opt_number(L, 1, fn, "split", 0);
-    if (!(m->split >= 0)) luaL_error(L, "%s: split must be >= 0 (got %f)", fn, m->split);
+    /* split = n keeps about n points per cell: past the particles-per-cell
+     * limit (l_body.c) it would split every point at every step (1e308) */
+    if (!(m->split >= 0) || !(m->split <= 4096))
+        luaL_error(L, "%s: split must be >= 0 and at most 4096, the limit of points per "
+                   "cell (got %f)", fn, m->split);
     m->density = (lm_density)la_option(L, fn, "density",
                                        la_opt_string(L, 1, fn, "density", "continuity"), densities);
     int has_e = la_has(L, 1, "e"), has_p = la_has(L, 1, "p");

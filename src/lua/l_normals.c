@@ -384,6 +384,8 @@ static int one_element(lua_State *L, int dim, const double lo[3], const double h
 
 /* ---- a grid ------------------------------------------------------------------ */
 
+#define LA_MAX_NORMAL_CELLS 4000000   /* 2000 x 2000, or 158^3 */
+
 static void read_cells(lua_State *L, int dim, const double lo[3], const double hi[3],
                        lm_ngrid *g)
 {
@@ -397,6 +399,14 @@ static void read_cells(lua_State *L, int dim, const double lo[3], const double h
             if (!(c[a] >= 1) || c[a] != floor(c[a]) || c[a] > 65536)
                 luaL_error(L, "%s: 'cells' must be whole numbers in [1, 65536]", FN);
             g->n[a] = (int)c[a];
+        }
+        /* each axis alone passed 65536: {1000, 1000, 1000} is 1e9 cells */
+        double total = (double)g->n[0] * g->n[1] * (dim == 3 ? g->n[2] : 1);
+        if (total > LA_MAX_NORMAL_CELLS) {
+            char m[64];   /* lua_pushfstring knows no %g */
+            snprintf(m, sizeof m, "%.0f", total);
+            luaL_error(L, "%s: 'cells' makes %s cells, more than the limit of %d", FN, m,
+                       LA_MAX_NORMAL_CELLS);
         }
     } else {
         g->n[0] = g->n[1] = g->n[2] = 1;
