@@ -252,23 +252,35 @@ int la_exit_status_of(lua_State *L, const char *msg)
 
 /* design.md: a dt whose Courant number exceeds `courant` is refused with
  * the limit printed. */
-static void check_courant(lua_State *L, la_sim *s)
+static int courant_exceeded(la_sim *s, char *msg, size_t len)
 {
     double c;
     double cn = lm_sim_courant(s->sim, &c);
-    if (cn > s->sim->def.courant * (1 + 1e-12)) {
-        double h = fmin(s->sim->grid.hx, s->sim->grid.hy);
-        char msg[320];
-        snprintf(msg, sizeof msg,
-                 "dt = %g is too large: Courant number dt*c/h = %g exceeds "
-                 "courant = %g (c_max = %g, h = %g); use dt <= %g or raise courant",
-                 s->sim->def.dt, cn, s->sim->def.courant, c, h,
-                 s->sim->def.courant * h / c);
-        luaL_error(L, "%s", msg);
-    }
+    if (!(cn > s->sim->def.courant * (1 + 1e-12))) return 0;
+    double h = fmin(s->sim->grid.hx, s->sim->grid.hy);
+    snprintf(msg, len,
+             "dt = %g is too large: Courant number dt*c/h = %g exceeds "
+             "courant = %g (c_max = %g, h = %g); use dt <= %g or raise courant",
+             s->sim->def.dt, cn, s->sim->def.courant, c, h, s->sim->def.courant * h / c);
+    return 1;
 }
 
-static void advance(lua_State *L, la_sim *s, long nsteps)
+static void check_courant(lua_State *L, la_sim *s)
+{
+    char msg[320];
+    if (courant_exceeded(s, msg, sizeof msg)) luaL_error(L, "%s", msg);
+}
+
+/* The steps left to t_end at the current dt: a dt changed by a callback
+ * applies at once, so the run still ends on t_end instead of overshooting. */
+static long steps_to(const la_sim *s, double t_end)
+{
+    double n = floor((t_end - s->sim->t) / s->sim->def.dt + 0.5);
+    return n > 0 ? (long)fmin(n, 1e12) : 0;
+}
+
+/* nsteps steps (sim:step), or up to t_end when it is a number (sim:run). */
+static void advance(lua_State *L, la_sim *s, long nsteps, double t_end)
 {
     if (s->running) luaL_error(L, "sim:run/sim:step called from inside a callback");
     check_courant(L, s);
@@ -277,7 +289,7 @@ static void advance(lua_State *L, la_sim *s, long nsteps)
     run->active = s->sim;
     la_progress_begin(L, 1, nsteps);
     fire_due(L, s);
-    for (long n = 0; n < nsteps; n++) {
+    for (long n = 0; isnan(t_end) ? n < nsteps : steps_to(s, t_end) > 0; n++) {
         lm_status st = lm_sim_step(s->sim);
         if (st != LM_OK) {
             s->running = 0;
@@ -311,7 +323,7 @@ static int sim_run(lua_State *L)
         return luaL_error(L, "sim:run: t_end must be a finite number (got %f)", t_end);
     double n = floor((t_end - s->sim->t) / s->sim->def.dt + 0.5);
     if (n > 1e12) return luaL_error(L, "sim:run: t_end = %f needs %f steps", t_end, n);
-    advance(L, s, n > 0 ? (long)n : 0);
+    advance(L, s, n > 0 ? (long)n : 0, t_end);
     return 0;
 }
 
@@ -320,7 +332,7 @@ static int sim_step(lua_State *L)
     la_sim *s = la_check_sim(L, 1);
     lua_Integer n = luaL_optinteger(L, 2, 1);
     if (n < 0) return luaL_error(L, "sim:step: n must be >= 0 (got %d)", (int)n);
-    advance(L, s, (long)n);
+    advance(L, s, (long)n, NAN);
     return 0;
 }
 
@@ -414,7 +426,15 @@ static int sim_newindex(lua_State *L)
     if (strcmp(k, "dt") == 0) {
         double dt = luaL_checknumber(L, 3);
         if (!(dt > 0) || !isfinite(dt)) return luaL_error(L, "sim.dt must be positive (got %f)", dt);
+        double old = m->def.dt;
         lm_sim_set_dt(m, dt);
+        /* checked as at the start of a run (s.dt = 1e300 was not): a dt
+         * past the Courant limit is refused and the old one kept */
+        char msg[320];
+        if (courant_exceeded(s, msg, sizeof msg)) {
+            lm_sim_set_dt(m, old);
+            return luaL_error(L, "sim.%s", msg);
+        }
     } else if (strcmp(k, "gravity") == 0) {
         luaL_checktype(L, 3, LUA_TTABLE);
         lua_rawgeti(L, 3, 1);
