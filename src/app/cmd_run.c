@@ -193,7 +193,13 @@ int cmd_run(int argc, char **argv)
         lr_shutdown();
         return LAMINA_EXIT_USAGE;
     }
+    /* SIGINT, SIGTERM: stop at the next step boundary (or Lua instruction),
+     * write the records, exit 128 + the signal's number (docs/api.md) */
+    lamina_interrupt_install(L);
+    lamina_interrupt_install_term();
     int rc = lamina_run_script(L, &run);
+    if (run.stopped == LAMINA_STOP_SIGINT) rc = 128 + lamina_interrupt_signal();
+    lamina_interrupt_uninstall();
     lua_close(L);
     if (run.frames && !run.quiet)
         fprintf(stderr, "lamina: %ld frame%s written to %s\n", run.frames,

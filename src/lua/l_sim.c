@@ -217,6 +217,7 @@ static void fire_due(lua_State *L, la_sim *s)
         if (lua_pcall(L, 1, 0, 0) != LUA_OK) {
             s->running = 0;
             la_run(L)->active = NULL;
+            la_record_flush(L, 1);   /* what was recorded is kept (an error, Ctrl-C) */
             lua_error(L);
         }
     }

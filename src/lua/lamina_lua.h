@@ -77,6 +77,10 @@ int lamina_run_script(lua_State *L, lamina_run *run);
  * "interrupted at t = ..., step ...". */
 void lamina_interrupt_install(lua_State *L);
 void lamina_interrupt_add_thread(lua_State *thread);
+/* lamina run: SIGTERM too; the signal that stopped the run (SIGINT or
+ * SIGTERM), whose 128 + number is lamina run's exit status then. */
+void lamina_interrupt_install_term(void);
+int lamina_interrupt_signal(void);
 void lamina_interrupt_uninstall(void);
 int lamina_interrupt_pending(void);
 void lamina_interrupt_clear(void);
