@@ -179,12 +179,16 @@ static char *value(reader *r, int depth)
     return out;
 }
 
+/* Appends s to the list of n; the capacity doubles at every power of two
+ * (one realloc per value made long reports quadratic). */
 static int push(char ***list, int n, char *s)
 {
-    char **l = realloc(*list, (size_t)(n + 1) * sizeof *l);
-    if (!l) return -1;
-    l[n] = s;
-    *list = l;
+    if ((n & (n - 1)) == 0) {
+        char **l = realloc(*list, (size_t)(n ? 2 * n : 1) * sizeof *l);
+        if (!l) return -1;
+        *list = l;
+    }
+    (*list)[n] = s;
     return 0;
 }
 
