@@ -21,6 +21,7 @@ static void usage(FILE *out)
             "  lamina gallery [--only PATTERN] [--force] [--check] [--compare]\n"
             "                 [--update-baselines] [--scripts DIR] [--gallery DIR]\n"
             "                 [--baselines DIR] [--work DIR] [--set name=value] [--quiet]\n"
+            "                 [--timeout S] (each figure's time limit, default 1800 s)\n"
             "                          render scripts/paper/*.lua into gallery/ (docs/gallery.md)\n"
             "  lamina repl [SCRIPT.lua] [--set name=value ...] [--quiet]\n"
             "                          a Lua prompt over the script's simulation, paused\n"
