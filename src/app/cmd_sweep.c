@@ -12,6 +12,7 @@
  * summary from the folders. A failed run does not stop the others. Exit
  * status: 0 every run succeeded, 1 some failed, 2 a command-line mistake. */
 #include <errno.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -252,12 +253,45 @@ static void say_done(const sw_job *j, int k, int n, int quiet)
     if (have) sw_row_free(&row);
 }
 
+/* SIGINT or SIGTERM to the sweep: no more runs start, the running ones get
+ * SIGTERM (each stops at a step boundary and writes its records), the
+ * sweep waits for them, writes its summary and exits 128 + the signal.
+ * (A SIGTERM left the children running; issue 18.) */
+static volatile sig_atomic_t stop_sig;
+
+static void on_stop(int sig)
+{
+    stop_sig = sig;
+}
+
+static void catch_stops(struct sigaction *old_int, struct sigaction *old_term)
+{
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_stop;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = 0;   /* no SA_RESTART: waitpid returns EINTR */
+    sigaction(SIGINT, &sa, old_int);
+    sigaction(SIGTERM, &sa, old_term);
+}
+
 /* Runs the jobs, at most `parallel` at a time; returns how many failed. */
 static int run_all(const sw_context *c, sw_job *jobs, int n, long parallel, int quiet)
 {
-    int next = 0, running = 0, done = 0, failed = 0;
+    int next = 0, running = 0, done = 0, failed = 0, forwarded = 0;
+    struct sigaction old_int, old_term;
+    catch_stops(&old_int, &old_term);
     while (done < n) {
-        while (running < parallel && next < n) {
+        if (stop_sig && !forwarded) {
+            for (int i = 0; i < n; i++)
+                if (jobs[i].pid > 0) kill(jobs[i].pid, SIGTERM);
+            forwarded = 1;
+            /* even with --quiet: it says why runs are missing */
+            fprintf(stderr, "sweep: stopping (%s): %d run%s stopped, %d not started\n",
+                    stop_sig == SIGTERM ? "SIGTERM" : "SIGINT", running,
+                    running == 1 ? "" : "s", n - next);
+        }
+        while (!stop_sig && running < parallel && next < n) {
             sw_job *j = &jobs[next++];
             if (sw_job_start(c, j) == 0) {
                 running++;
@@ -285,6 +319,8 @@ static int run_all(const sw_context *c, sw_job *jobs, int n, long parallel, int 
             break;
         }
     }
+    sigaction(SIGINT, &old_int, NULL);
+    sigaction(SIGTERM, &old_term, NULL);
     return failed;
 }
 
@@ -432,7 +468,7 @@ int cmd_sweep(int argc, char **argv)
     }
     fprintf(stderr, "sweep: %d run%s, %d failed; summary in %s/summary.md and summary.csv\n",
             njobs, njobs == 1 ? "" : "s", failed, outdir);
-    status = failed ? 1 : 0;
+    status = stop_sig ? 128 + stop_sig : failed ? 1 : 0;
 done:
     free_jobs(jobs, njobs);
     free(outdir);
