@@ -338,6 +338,19 @@ static int summarize(const char *outdir, const char *title, sw_job *jobs, int n)
     return rc;
 }
 
+/* Does the folder hold a run record (even one that cannot be read)?
+ * errno is left as access(2) sets it. */
+static int has_record(const char *folder)
+{
+    char path[4200];
+    snprintf(path, sizeof path, "%s/%s", folder, SW_RECORD);
+    struct stat st;
+    if (lstat(path, &st) != 0) return 0;
+    errno = 0;
+    if (access(path, R_OK) == 0 && S_ISREG(st.st_mode)) errno = EFBIG;   /* over 1 MB */
+    return 1;
+}
+
 static int collect(const char *dir)
 {
     DIR *d = opendir(dir);
@@ -347,7 +360,7 @@ static int collect(const char *dir)
         return LAMINA_EXIT_USAGE;
     }
     sw_row *rows = NULL;
-    int n = 0, cap = 0, failed = 0;
+    int n = 0, cap = 0, failed = 0, unreadable = 0;
     struct dirent *e;
     while ((e = readdir(d))) {
         if (e->d_name[0] == '.') continue;
@@ -364,14 +377,22 @@ static int collect(const char *dir)
             }
             rows = r;
         }
-        if (sw_row_load(folder, &rows[n]) == 0) failed += !rows[n++].ok;
+        if (sw_row_load(folder, &rows[n]) == 0) {
+            failed += !rows[n++].ok;
+        } else if (has_record(folder)) {
+            /* a run whose record cannot be read is not a success: it was
+             * skipped and the sweep said "0 failed" (issue 18) */
+            fprintf(stderr, "lamina sweep: --collect: cannot read '%s/%s': %s\n", folder,
+                    SW_RECORD, errno ? strerror(errno) : "not a regular file");
+            unreadable++;
+        }
         free(folder);
     }
     closedir(d);
     if (!n) {
         free(rows);
-        fprintf(stderr, "lamina sweep: --collect: no run folders (with %s) in '%s'\n",
-                SW_RECORD, dir);
+        fprintf(stderr, "lamina sweep: --collect: no %srun folders (with %s) in '%s'\n",
+                unreadable ? "readable " : "", SW_RECORD, dir);
         return LAMINA_EXIT_USAGE;
     }
     sw_rows_sort(rows, n);
@@ -380,10 +401,11 @@ static int collect(const char *dir)
     int rc = sw_summary_write(dir, title, rows, n, stdout);
     for (int i = 0; i < n; i++) sw_row_free(&rows[i]);
     free(rows);
-    fprintf(stderr, "sweep: %d run%s, %d failed or unfinished; summary in %s/summary.md and "
-            "summary.csv\n", n, n == 1 ? "" : "s", failed, dir);
+    fprintf(stderr, "sweep: %d run%s, %d failed or unfinished%s; summary in %s/summary.md "
+            "and summary.csv\n", n + unreadable, n + unreadable == 1 ? "" : "s",
+            failed + unreadable, unreadable ? " (some unreadable)" : "", dir);
     if (rc) return LAMINA_EXIT_USAGE;
-    return failed ? 1 : 0;
+    return failed || unreadable ? 1 : 0;
 }
 
 /* --job FOLDER: one run, as --emit-jobs prints it. */

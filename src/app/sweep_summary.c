@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "atomic_file.h"
 #include "sweep.h"
@@ -57,6 +58,11 @@ static char *first_error(const char *folder)
     FILE *f = path ? fopen(path, "r") : NULL;
     free(path);
     if (!f) return NULL;
+    struct stat st;   /* a log linked to /dev/zero is one endless line */
+    if (fstat(fileno(f), &st) != 0 || !S_ISREG(st.st_mode)) {
+        fclose(f);
+        return NULL;
+    }
     char *line = NULL, *found = NULL;
     size_t cap = 0;
     ssize_t n;
@@ -78,6 +84,12 @@ int sw_row_load(const char *folder, sw_row *row)
     FILE *f = path ? fopen(path, "r") : NULL;
     free(path);
     if (!f) return -1;
+    struct stat st;   /* a record linked to /dev/zero is one endless line */
+    if (fstat(fileno(f), &st) != 0 || !S_ISREG(st.st_mode) || st.st_size > (1 << 20)) {
+        fclose(f);
+        errno = 0;
+        return -1;
+    }
     const char *slash = strrchr(folder, '/');
     row->label = strdup(slash ? slash + 1 : folder);
     snprintf(row->status, sizeof row->status, "unfinished");
