@@ -1,5 +1,6 @@
 /* atomic_file.c - temporary, then rename: see atomic_file.h. */
 #include "atomic_file.h"
+#include "stale_temp.h"
 
 #include <errno.h>
 #include <stdarg.h>
@@ -116,19 +117,6 @@ static int check_target(const char *path, char *err, size_t errlen)
     return 0;
 }
 
-/* "<path>.tmp.XXXXXX": same directory, so rename(2) stays atomic. */
-static char *temp_template(const char *path)
-{
-    static const char suffix[] = ".tmp.XXXXXX";
-    size_t n = strlen(path);
-    char *t = malloc(n + sizeof suffix);
-    if (!t)
-        return NULL;
-    memcpy(t, path, n);
-    memcpy(t + n, suffix, sizeof suffix);
-    return t;
-}
-
 /* mkstemp creates mode 0600; an output should get the mode any new file of
  * this process gets (0666 less the umask), and umask can only be read by
  * setting it. Output is written from one thread, so the brief change is
@@ -150,7 +138,10 @@ int lr_atomic_open(lr_atomic *a, const char *path, char *err, size_t errlen)
     if (check_target(path, err, errlen) != 0 || make_parents(a, path, err, errlen) != 0)
         return -1;
     a->path = path;
-    a->tmp = temp_template(path);
+    lr_remove_stale_temps(path);   /* left by a killed run (stale_temp.h) */
+    /* "<path>.tmp.<host>.<pid>.XXXXXX": same directory, so rename(2) stays
+     * atomic; the owner in the name lets a later run remove it */
+    a->tmp = lr_temp_template(path);
     if (!a->tmp) {
         set_err(err, errlen, "cannot write '%s': out of memory", path);
         remove_made(a);

@@ -15,7 +15,7 @@
 
 typedef struct lr_atomic {
     FILE *fp;           /* write here */
-    char *tmp;          /* "<path>.tmp.XXXXXX" */
+    char *tmp;          /* "<path>.tmp.<host>.<pid>.XXXXXX" (stale_temp.h) */
     const char *path;   /* the target (borrowed) */
     char *dir;          /* the folders created for it, "a/b/c" (or NULL) */
     size_t made;        /* ... from the prefix of this length down: a failed
