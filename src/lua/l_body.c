@@ -22,9 +22,8 @@ static la_body *check_body(lua_State *L, int idx, lm_sim **sim)
 /* ppc = n (a square: 4 = 2x2, 16 = 4x4, as the papers count) or {nx, ny};
  * at most LA_MAX_PPC points per cell, named in the error. */
 #define LA_MAX_PPC 4096
-/* Particles of a simulation, trial points of one body: five times the 10^7
- * particles of the performance benchmark (design.md). */
-#define LA_MAX_PARTICLES 50000000
+/* Trial points of one body (the particles of a simulation are at most
+ * LM_MAX_PARTICLES, checked by lm_sim_add_particle). */
 #define LA_MAX_TRIALS 200000000
 static void read_ppc(lua_State *L, const char *fn, int *npx, int *npy)
 {
@@ -182,10 +181,7 @@ int la_sim_body(lua_State *L)
     if (bi < 0) return luaL_error(L, "%s: out of memory", fn);
     la_sim_keep(L, 1, midx);
 
-    for (size_t k = 0; k < total; k++) {
-        if (sim->p.n >= LA_MAX_PARTICLES)
-            return luaL_error(L, "%s: the simulation would have more than the limit of %d "
-                              "particles", fn, LA_MAX_PARTICLES);
+    for (size_t k = 0; k < total; k++) {   /* (the particle limit: lm_sim_add_particle) */
         double x, y, vx = vx0, vy = vy0;
         double part = 1;
         lm_seed_point(g, &range, k, &x, &y);

@@ -190,6 +190,12 @@ lm_status lm_sim_add_particle(lm_sim *sim, int body, double x, double y,
                  "particle mass and density must be positive (got %g, %g)", mass, rho);
         return LM_ERR_INPUT;
     }
+    if (p->n >= LM_MAX_PARTICLES) {   /* bodies and membranes alike */
+        snprintf(sim->err, sizeof sim->err,
+                 "the simulation would have more than the limit of %d particles",
+                 LM_MAX_PARTICLES);
+        return LM_ERR_INPUT;
+    }
     if (p->n == p->cap &&
         lm_particles_reserve(p, p->cap ? 2 * p->cap : 1024)) {
         snprintf(sim->err, sizeof sim->err, "out of memory for %zu particles", p->n + 1);
