@@ -65,6 +65,14 @@ static int parse_args(int argc, char **argv, g_options *o)
             (r = take(argc, argv, &i, "--work", &o->work))) {
             if (r < 0)
                 return -1;
+        } else if ((r = take(argc, argv, &i, "--timeout", &set))) {
+            if (r < 0)
+                return -1;
+            char *end;
+            double t = strtod(set, &end);
+            if (*end || !(t >= 1 && t <= 604800))
+                return usage_error("--timeout needs seconds from 1 to 604800 (got '%s')", set);
+            g_run_set_limit(t);
         } else if ((r = take(argc, argv, &i, "--set", &set))) {
             if (r < 0)
                 return -1;
@@ -228,8 +236,12 @@ static int render(const g_options *o, const g_script *s)
                    vals && vals->n == 1 ? "" : "s", key ? "" : " (no image: no thumbnail)");
         rc = 0;
     } else {
-        fprintf(stderr, "gallery: %s: FAILED (lamina run exit status %d) after %.1f s; "
-                        "the end of %s:\n", s->stem, r.status, r.seconds, log);
+        if (r.timed_out)
+            fprintf(stderr, "gallery: %s: FAILED: stopped after the time limit of %g s "
+                            "(--timeout S); the end of %s:\n", s->stem, g_run_limit(), log);
+        else
+            fprintf(stderr, "gallery: %s: FAILED (lamina run exit status %d) after %.1f s; "
+                            "the end of %s:\n", s->stem, r.status, r.seconds, log);
         g_show_log_tail(log, 6);
         rc = 1;
     }

@@ -28,7 +28,8 @@ static int hash_file(const char *path, char out[17])
     return bad ? -1 : 0;
 }
 
-static int parse_args(int argc, char **argv, lamina_run *run, const char **report)
+static int parse_args(int argc, char **argv, lamina_run *run, const char **report,
+                      const char **out_root)
 {
     for (int i = 0; i < argc; i++) {
         const char *a = argv[i];
@@ -62,6 +63,26 @@ static int parse_args(int argc, char **argv, lamina_run *run, const char **repor
                 return -1;
             }
             *report = f;
+        } else if (strcmp(a, "--out-root") == 0 || strncmp(a, "--out-root=", 11) == 0) {
+            /* the folder the script's files must stay in (docs/api.md, Sandbox) */
+            const char *d = a[10] == '=' ? a + 11 : (i + 1 < argc ? argv[++i] : NULL);
+            if (!d || !*d || *out_root) {
+                fprintf(stderr, "lamina run: %s\n", *out_root ? "--out-root given twice"
+                                                              : "--out-root needs a DIR");
+                return -1;
+            }
+            *out_root = d;
+        } else if (strcmp(a, "--lua-mem") == 0 || strncmp(a, "--lua-mem=", 10) == 0) {
+            /* the cap on the script's Lua memory (l_alloc.c), MB */
+            const char *v = a[9] == '=' ? a + 10 : (i + 1 < argc ? argv[++i] : NULL);
+            char *end = NULL;
+            double mb = v ? strtod(v, &end) : 0;
+            if (!v || !*v || *end || !(mb >= 1 && mb <= 1048576)) {
+                fprintf(stderr, "lamina run: --lua-mem needs a size in MB from 1 to 1048576 "
+                        "(default %d)\n", LAMINA_LUA_MEM_DEFAULT_MB);
+                return -1;
+            }
+            run->lua_mem_limit = (size_t)(mb * 1048576.0);
         } else if (strcmp(a, "--backend") == 0 || strncmp(a, "--backend=", 10) == 0) {
             /* sim:frame's default renderer for this run (docs/rendering.md) */
             const char *b = a[9] == '=' ? a + 10 : (i + 1 < argc ? argv[++i] : NULL);
@@ -146,8 +167,14 @@ int cmd_run(int argc, char **argv)
     memset(&run, 0, sizeof run);
     run.sets = calloc((size_t)argc + 1, sizeof *run.sets);
     if (!run.sets) return LAMINA_EXIT_USAGE;
-    const char *report = NULL;
-    if (parse_args(argc, argv, &run, &report)) {
+    const char *report = NULL, *out_root = NULL;
+    if (parse_args(argc, argv, &run, &report, &out_root)) {
+        free_sets(&run);
+        return LAMINA_EXIT_USAGE;
+    }
+    char why[1100];
+    if (lamina_check_script_file(run.script, why, sizeof why) != 0) {   /* before reading it */
+        fprintf(stderr, "lamina run: %s\n", why);
         free_sets(&run);
         return LAMINA_EXIT_USAGE;
     }
@@ -163,13 +190,25 @@ int cmd_run(int argc, char **argv)
         free_sets(&run);
         return LAMINA_EXIT_USAGE;
     }
+    if (out_root && lamina_set_output_root(L, out_root, why, sizeof why) != 0) {
+        fprintf(stderr, "lamina run: %s\n", why);
+        lua_close(L);
+        free_sets(&run);
+        return LAMINA_EXIT_USAGE;
+    }
     if (report && init_report(L, report)) {
         lua_close(L);
         free_sets(&run);
         lr_shutdown();
         return LAMINA_EXIT_USAGE;
     }
+    /* SIGINT, SIGTERM: stop at the next step boundary (or Lua instruction),
+     * write the records, exit 128 + the signal's number (docs/api.md) */
+    lamina_interrupt_install(L);
+    lamina_interrupt_install_term();
     int rc = lamina_run_script(L, &run);
+    if (run.stopped == LAMINA_STOP_SIGINT) rc = 128 + lamina_interrupt_signal();
+    lamina_interrupt_uninstall();
     lua_close(L);
     if (run.frames && !run.quiet)
         fprintf(stderr, "lamina: %ld frame%s written to %s\n", run.frames,

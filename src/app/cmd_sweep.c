@@ -12,6 +12,7 @@
  * summary from the folders. A failed run does not stop the others. Exit
  * status: 0 every run succeeded, 1 some failed, 2 a command-line mistake. */
 #include <errno.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -252,12 +253,45 @@ static void say_done(const sw_job *j, int k, int n, int quiet)
     if (have) sw_row_free(&row);
 }
 
+/* SIGINT or SIGTERM to the sweep: no more runs start, the running ones get
+ * SIGTERM (each stops at a step boundary and writes its records), the
+ * sweep waits for them, writes its summary and exits 128 + the signal.
+ * (A SIGTERM left the children running; issue 18.) */
+static volatile sig_atomic_t stop_sig;
+
+static void on_stop(int sig)
+{
+    stop_sig = sig;
+}
+
+static void catch_stops(struct sigaction *old_int, struct sigaction *old_term)
+{
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_stop;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = 0;   /* no SA_RESTART: waitpid returns EINTR */
+    sigaction(SIGINT, &sa, old_int);
+    sigaction(SIGTERM, &sa, old_term);
+}
+
 /* Runs the jobs, at most `parallel` at a time; returns how many failed. */
 static int run_all(const sw_context *c, sw_job *jobs, int n, long parallel, int quiet)
 {
-    int next = 0, running = 0, done = 0, failed = 0;
+    int next = 0, running = 0, done = 0, failed = 0, forwarded = 0;
+    struct sigaction old_int, old_term;
+    catch_stops(&old_int, &old_term);
     while (done < n) {
-        while (running < parallel && next < n) {
+        if (stop_sig && !forwarded) {
+            for (int i = 0; i < n; i++)
+                if (jobs[i].pid > 0) kill(jobs[i].pid, SIGTERM);
+            forwarded = 1;
+            /* even with --quiet: it says why runs are missing */
+            fprintf(stderr, "sweep: stopping (%s): %d run%s stopped, %d not started\n",
+                    stop_sig == SIGTERM ? "SIGTERM" : "SIGINT", running,
+                    running == 1 ? "" : "s", n - next);
+        }
+        while (!stop_sig && running < parallel && next < n) {
             sw_job *j = &jobs[next++];
             if (sw_job_start(c, j) == 0) {
                 running++;
@@ -285,6 +319,8 @@ static int run_all(const sw_context *c, sw_job *jobs, int n, long parallel, int 
             break;
         }
     }
+    sigaction(SIGINT, &old_int, NULL);
+    sigaction(SIGTERM, &old_term, NULL);
     return failed;
 }
 
@@ -302,6 +338,19 @@ static int summarize(const char *outdir, const char *title, sw_job *jobs, int n)
     return rc;
 }
 
+/* Does the folder hold a run record (even one that cannot be read)?
+ * errno is left as access(2) sets it. */
+static int has_record(const char *folder)
+{
+    char path[4200];
+    snprintf(path, sizeof path, "%s/%s", folder, SW_RECORD);
+    struct stat st;
+    if (lstat(path, &st) != 0) return 0;
+    errno = 0;
+    if (access(path, R_OK) == 0 && S_ISREG(st.st_mode)) errno = EFBIG;   /* over 1 MB */
+    return 1;
+}
+
 static int collect(const char *dir)
 {
     DIR *d = opendir(dir);
@@ -311,7 +360,7 @@ static int collect(const char *dir)
         return LAMINA_EXIT_USAGE;
     }
     sw_row *rows = NULL;
-    int n = 0, cap = 0, failed = 0;
+    int n = 0, cap = 0, failed = 0, unreadable = 0;
     struct dirent *e;
     while ((e = readdir(d))) {
         if (e->d_name[0] == '.') continue;
@@ -328,14 +377,22 @@ static int collect(const char *dir)
             }
             rows = r;
         }
-        if (sw_row_load(folder, &rows[n]) == 0) failed += !rows[n++].ok;
+        if (sw_row_load(folder, &rows[n]) == 0) {
+            failed += !rows[n++].ok;
+        } else if (has_record(folder)) {
+            /* a run whose record cannot be read is not a success: it was
+             * skipped and the sweep said "0 failed" (issue 18) */
+            fprintf(stderr, "lamina sweep: --collect: cannot read '%s/%s': %s\n", folder,
+                    SW_RECORD, errno ? strerror(errno) : "not a regular file");
+            unreadable++;
+        }
         free(folder);
     }
     closedir(d);
     if (!n) {
         free(rows);
-        fprintf(stderr, "lamina sweep: --collect: no run folders (with %s) in '%s'\n",
-                SW_RECORD, dir);
+        fprintf(stderr, "lamina sweep: --collect: no %srun folders (with %s) in '%s'\n",
+                unreadable ? "readable " : "", SW_RECORD, dir);
         return LAMINA_EXIT_USAGE;
     }
     sw_rows_sort(rows, n);
@@ -344,10 +401,11 @@ static int collect(const char *dir)
     int rc = sw_summary_write(dir, title, rows, n, stdout);
     for (int i = 0; i < n; i++) sw_row_free(&rows[i]);
     free(rows);
-    fprintf(stderr, "sweep: %d run%s, %d failed or unfinished; summary in %s/summary.md and "
-            "summary.csv\n", n, n == 1 ? "" : "s", failed, dir);
+    fprintf(stderr, "sweep: %d run%s, %d failed or unfinished%s; summary in %s/summary.md "
+            "and summary.csv\n", n + unreadable, n + unreadable == 1 ? "" : "s",
+            failed + unreadable, unreadable ? " (some unreadable)" : "", dir);
     if (rc) return LAMINA_EXIT_USAGE;
-    return failed ? 1 : 0;
+    return failed || unreadable ? 1 : 0;
 }
 
 /* --job FOLDER: one run, as --emit-jobs prints it. */
@@ -432,7 +490,7 @@ int cmd_sweep(int argc, char **argv)
     }
     fprintf(stderr, "sweep: %d run%s, %d failed; summary in %s/summary.md and summary.csv\n",
             njobs, njobs == 1 ? "" : "s", failed, outdir);
-    status = failed ? 1 : 0;
+    status = stop_sig ? 128 + stop_sig : failed ? 1 : 0;
 done:
     free_jobs(jobs, njobs);
     free(outdir);

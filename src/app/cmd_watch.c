@@ -11,6 +11,7 @@
  * file:line. --max-runs N (or --once) stops after N runs, with the last
  * run's exit status; otherwise Ctrl-C ends the watch. */
 #include <lua.h>
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -107,8 +108,9 @@ static int run_once(const watch_opts *o, long k, watch_poll *poll, int *stopped)
     snprintf(run.script_hash, sizeof run.script_hash, "%016llx",
              (unsigned long long)poll->sig.hash);
     if (o->log && !(run.log = fopen(o->log, "w"))) {
-        perror(o->log);
-        fprintf(stderr, "lamina watch: cannot write the log '%s'\n", o->log);
+        fprintf(stderr, "lamina watch: cannot write the log '%s': %s\n", o->log,
+                strerror(errno));
+        return LAMINA_EXIT_USAGE;
     }
     lua_State *L = lamina_open_state(&run);
     if (!L) {
@@ -150,8 +152,16 @@ static int run_once(const watch_opts *o, long k, watch_poll *poll, int *stopped)
     printf("%s\n", line);
     fflush(stdout);
     if (run.log) {
+        /* a log that could not be written (--log /dev/full) is an error,
+         * not a silent loss: the run log is the record of live changes */
         fprintf(run.log, "%s\n", line);
-        fclose(run.log);
+        int bad = ferror(run.log);
+        if (fclose(run.log) != 0) bad = 1;
+        if (bad) {
+            fprintf(stderr, "lamina watch: cannot write the log '%s': %s\n", o->log,
+                    strerror(errno ? errno : EIO));
+            if (status == LAMINA_EXIT_OK) status = LAMINA_EXIT_USAGE;
+        }
     }
     return status;
 }

@@ -144,7 +144,14 @@ void g_visual_sets(const g_script *s, g_strs *out);
 typedef struct g_run_result {
     int status;         /* lamina run's exit status; 128+N killed by signal N */
     double seconds;     /* wall-clock */
+    int timed_out;      /* stopped after the time limit (g_run_set_limit) */
 } g_run_result;
+
+/* Each figure's time limit in seconds (lamina gallery --timeout S): an
+ * endless loop in a downloaded script must not hang the gallery. */
+#define G_RUN_LIMIT 1800.0
+void g_run_set_limit(double seconds);
+double g_run_limit(void);
 
 /* `lamina run SCRIPT --set out=OUT --report REPORT [--set ...] --quiet`
  * with stdout and stderr into log. */

@@ -6,6 +6,7 @@
 #include "gallery.h"
 
 #include "atomic_file.h"
+#include "read_file.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -113,29 +114,13 @@ int g_is_dir(const char *path)
 
 int g_read_file(const char *path, char **text, size_t *len, char *err, size_t errlen)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        set_err(err, errlen, "cannot read '%s': %s", path, strerror(errno));
+    /* a regular file of at most LR_READ_MAX bytes: a report.json linked to
+     * /dev/zero was read for ever (issue 18) */
+    char why[1024];
+    if (lr_read_file(path, LR_READ_MAX, text, len, why, sizeof why) != 0) {
+        set_err(err, errlen, "%s", why);
         return -1;
     }
-    g_text t;
-    g_text_open(&t);
-    char buf[8192];
-    size_t got;
-    while ((got = fread(buf, 1, sizeof buf, f)) > 0)
-        fwrite(buf, 1, got, t.f);
-    int bad = ferror(f);
-    int e = errno;
-    fclose(f);
-    g_text_close(&t);
-    if (bad) {
-        free(t.buf);
-        set_err(err, errlen, "cannot read '%s': %s", path, strerror(e));
-        return -1;
-    }
-    *text = t.buf;
-    if (len)
-        *len = t.len;
     return 0;
 }
 

@@ -8,6 +8,7 @@
 
 #include <errno.h>
 #include <fcntl.h>
+#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/wait.h>
@@ -21,13 +22,25 @@ static double now(void)
     return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 
+static double run_limit = G_RUN_LIMIT;
+
+void g_run_set_limit(double seconds)
+{
+    run_limit = seconds;
+}
+
+double g_run_limit(void)
+{
+    return run_limit;
+}
+
 int g_run(const g_script *s, const char *out, const char *report, const char *log,
           const char *const *sets, int nsets, g_run_result *r, char *err, size_t errlen)
 {
     /* everything the child needs is built before fork: after it, the child
      * may only call async-signal-safe functions */
     int argc = 0;
-    char **argv = g_alloc((size_t)(10 + 2 * nsets) * sizeof *argv);
+    char **argv = g_alloc((size_t)(12 + 2 * nsets) * sizeof *argv);
     char *set_out = g_fmt("out=%s", out);
     argv[argc++] = "lamina";
     argv[argc++] = "run";
@@ -36,6 +49,8 @@ int g_run(const g_script *s, const char *out, const char *report, const char *lo
     argv[argc++] = set_out;
     argv[argc++] = "--report";
     argv[argc++] = (char *)report;
+    argv[argc++] = "--out-root";   /* the script writes into out, wherever it is */
+    argv[argc++] = (char *)out;
     for (int i = 0; i < nsets; i++) {
         argv[argc++] = "--set";
         argv[argc++] = (char *)sets[i];
@@ -70,12 +85,30 @@ int g_run(const g_script *s, const char *out, const char *report, const char *lo
         snprintf(err, errlen, "cannot start a process: %s", strerror(e));
         return -1;
     }
+    /* a figure has run_limit seconds: then SIGTERM (lamina run stops at a
+     * step boundary and writes what it recorded), and SIGKILL 10 s later
+     * for a script stuck where no step boundary comes */
     int status;
-    while (waitpid(pid, &status, 0) < 0) {
-        if (errno != EINTR) {
+    int sent = 0;
+    r->timed_out = 0;
+    for (;;) {
+        pid_t got = waitpid(pid, &status, WNOHANG);
+        if (got == pid) break;
+        if (got < 0 && errno != EINTR) {
             snprintf(err, errlen, "cannot wait for the run: %s", strerror(errno));
             return -1;
         }
+        double t = now() - t0;
+        if (!sent && t > run_limit) {
+            kill(pid, SIGTERM);
+            sent = 1;
+            r->timed_out = 1;
+        } else if (sent == 1 && t > run_limit + 10) {
+            kill(pid, SIGKILL);
+            sent = 2;
+        }
+        struct timespec nap = {0, 20 * 1000 * 1000};
+        nanosleep(&nap, NULL);
     }
     r->seconds = now() - t0;
     r->status = WIFEXITED(status) ? WEXITSTATUS(status)

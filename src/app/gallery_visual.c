@@ -184,6 +184,9 @@ static int candidate(const g_options *o, const g_script *s, const char *wdir, ou
         g_run(s, run, report, log, (const char *const *)sets.v, (int)sets.n, &r, err,
               sizeof err)) {
         snprintf(c->summary, sizeof c->summary, "%s", err);
+    } else if (r.status != 0 && r.timed_out) {
+        snprintf(c->summary, sizeof c->summary, "the script was stopped after the time "
+                 "limit of %g s (--timeout S); the end of %s:", g_run_limit(), log);
     } else if (r.status != 0) {
         snprintf(c->summary, sizeof c->summary, "the script failed (lamina run exit "
                  "status %d); the end of %s:", r.status, log);

@@ -26,11 +26,11 @@ int repl_compile(lua_State *L, const char *code)
     lua_pushfstring(L, "return %s;", code);
     size_t len;
     const char *ret = lua_tolstring(L, -1, &len);
-    int rc = luaL_loadbuffer(L, ret, len, CHUNKNAME);
+    int rc = luaL_loadbufferx(L, ret, len, CHUNKNAME, "t");
     lua_remove(L, -2);
     if (rc == LUA_OK) return REPL_OK;
     lua_pop(L, 1);
-    rc = luaL_loadbuffer(L, code, strlen(code), CHUNKNAME);
+    rc = luaL_loadbufferx(L, code, strlen(code), CHUNKNAME, "t");
     if (rc == LUA_OK) return REPL_OK;
     if (rc == LUA_ERRSYNTAX && incomplete(L)) {
         lua_pop(L, 1);

@@ -67,6 +67,17 @@ typedef struct sw_row {
     char *error;         /* the first error line of a failed run */
 } sw_row;
 
+/* sweep_index.c: names (borrowed, they must outlive it) to positions. put
+ * keeps the first position of a name; get gives -1 for a name not put. */
+typedef struct sw_index {
+    const char **key;
+    int *val;
+    size_t cap, n;
+} sw_index;
+int sw_index_put(sw_index *ix, const char *key, int val);   /* 0, or -1: out of memory */
+int sw_index_get(const sw_index *ix, const char *key);
+void sw_index_free(sw_index *ix);
+
 /* Loads a run folder; 0, or -1 when it holds no run record. */
 int sw_row_load(const char *folder, sw_row *row);
 void sw_row_free(sw_row *row);

@@ -19,6 +19,7 @@
 #include <unistd.h>
 
 #include "atomic_file.h"
+#include "read_file.h"
 #include "sweep.h"
 #include "workbench.h"
 
@@ -26,24 +27,9 @@
  * either quote, spaces allowed) */
 static int reads_out_param(const char *path)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f) return 0;
-    char *buf = NULL;
-    size_t len = 0, cap = 0;
-    int c, found = 0;
-    while ((c = getc(f)) != EOF) {
-        if (len + 2 > cap) {
-            size_t ncap = cap ? 2 * cap : 4096;
-            char *b = realloc(buf, ncap);
-            if (!b) break;
-            buf = b;
-            cap = ncap;
-        }
-        buf[len++] = (char)c;
-    }
-    fclose(f);
-    if (!buf) return 0;
-    buf[len] = 0;
+    char *buf, err[64];
+    int found = 0;
+    if (lr_read_file(path, LR_READ_MAX, &buf, NULL, err, sizeof err) != 0) return 0;
     for (char *p = strstr(buf, "param"); p && !found; p = strstr(p + 5, "param")) {
         const char *q = p + 5;
         while (*q == ' ' || *q == '\t') q++;

@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "read_file.h"
 #include "sweep.h"
 
 typedef struct reader {
@@ -178,12 +179,16 @@ static char *value(reader *r, int depth)
     return out;
 }
 
+/* Appends s to the list of n; the capacity doubles at every power of two
+ * (one realloc per value made long reports quadratic). */
 static int push(char ***list, int n, char *s)
 {
-    char **l = realloc(*list, (size_t)(n + 1) * sizeof *l);
-    if (!l) return -1;
-    l[n] = s;
-    *list = l;
+    if ((n & (n - 1)) == 0) {
+        char **l = realloc(*list, (size_t)(n ? 2 * n : 1) * sizeof *l);
+        if (!l) return -1;
+        *list = l;
+    }
+    (*list)[n] = s;
     return 0;
 }
 
@@ -224,28 +229,12 @@ static void entry(reader *r, char ***names, char ***values, int *n)
     (*n)++;
 }
 
+/* A regular file of at most LR_READ_MAX bytes (a report linked to
+ * /dev/zero was read for ever), or NULL. */
 static char *slurp(const char *path)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f) return NULL;
-    size_t cap = 4096, len = 0, got;
-    char *buf = malloc(cap);
-    while (buf && (got = fread(buf + len, 1, cap - len - 1, f)) > 0) {
-        len += got;
-        if (len + 1 == cap) {
-            char *b = realloc(buf, cap * 2);
-            if (!b) {
-                free(buf);
-                buf = NULL;
-                break;
-            }
-            buf = b;
-            cap *= 2;
-        }
-    }
-    fclose(f);
-    if (buf) buf[len] = 0;
-    return buf;
+    char *text, err[64];
+    return lr_read_file(path, LR_READ_MAX, &text, NULL, err, sizeof err) == 0 ? text : NULL;
 }
 
 int sw_report_read(const char *path, char ***names, char ***values, int *n)

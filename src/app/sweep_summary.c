@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "atomic_file.h"
 #include "sweep.h"
@@ -21,16 +22,21 @@ static char *path_in(const char *folder, const char *file)
     return p;
 }
 
+/* Appends a copy of s to the list of n; the capacity doubles at every
+ * power of two, so appending stays linear overall. */
 static int push(char ***list, int n, const char *s)
 {
     char *copy = strdup(s);
-    char **l = copy ? realloc(*list, (size_t)(n + 1) * sizeof *l) : NULL;
-    if (!l) {
-        free(copy);
-        return -1;
+    if (!copy) return -1;
+    if ((n & (n - 1)) == 0) {
+        char **l = realloc(*list, (size_t)(n ? 2 * n : 1) * sizeof *l);
+        if (!l) {
+            free(copy);
+            return -1;
+        }
+        *list = l;
     }
-    l[n] = copy;
-    *list = l;
+    (*list)[n] = copy;
     return 0;
 }
 
@@ -52,6 +58,11 @@ static char *first_error(const char *folder)
     FILE *f = path ? fopen(path, "r") : NULL;
     free(path);
     if (!f) return NULL;
+    struct stat st;   /* a log linked to /dev/zero is one endless line */
+    if (fstat(fileno(f), &st) != 0 || !S_ISREG(st.st_mode)) {
+        fclose(f);
+        return NULL;
+    }
     char *line = NULL, *found = NULL;
     size_t cap = 0;
     ssize_t n;
@@ -73,6 +84,12 @@ int sw_row_load(const char *folder, sw_row *row)
     FILE *f = path ? fopen(path, "r") : NULL;
     free(path);
     if (!f) return -1;
+    struct stat st;   /* a record linked to /dev/zero is one endless line */
+    if (fstat(fileno(f), &st) != 0 || !S_ISREG(st.st_mode) || st.st_size > (1 << 20)) {
+        fclose(f);
+        errno = 0;
+        return -1;
+    }
     const char *slash = strrchr(folder, '/');
     row->label = strdup(slash ? slash + 1 : folder);
     snprintf(row->status, sizeof row->status, "unfinished");
@@ -175,13 +192,14 @@ void sw_rows_sort(sw_row *rows, int n)
 typedef struct columns {
     char **params, **reports;
     int np, nr;
+    sw_index pix, rix;   /* the names above, found in constant time */
 } columns;
 
-static int add_unique(char ***list, int *n, const char *name)
+static int add_unique(char ***list, int *n, sw_index *ix, const char *name)
 {
-    for (int i = 0; i < *n; i++)
-        if (strcmp((*list)[i], name) == 0) return 0;
+    if (sw_index_get(ix, name) >= 0) return 0;
     if (push(list, *n, name)) return -1;
+    if (sw_index_put(ix, (*list)[*n], *n)) return -1;
     (*n)++;
     return 0;
 }
@@ -191,11 +209,24 @@ static int gather(const sw_row *rows, int n, columns *c)
     memset(c, 0, sizeof *c);
     for (int r = 0; r < n; r++) {
         for (int i = 0; i < rows[r].nparams; i++)
-            if (add_unique(&c->params, &c->np, rows[r].pnames[i])) return -1;
+            if (add_unique(&c->params, &c->np, &c->pix, rows[r].pnames[i])) return -1;
         for (int i = 0; i < rows[r].nrep; i++)
-            if (add_unique(&c->reports, &c->nr, rows[r].rnames[i])) return -1;
+            if (add_unique(&c->reports, &c->nr, &c->rix, rows[r].rnames[i])) return -1;
     }
     return 0;
+}
+
+/* Row w's report values in column order (NULL where it has none), so that
+ * writing a row is linear in its columns. */
+static const char **report_cells(const sw_row *w, const columns *c)
+{
+    const char **cell = calloc((size_t)(c->nr ? c->nr : 1), sizeof *cell);
+    if (!cell) return NULL;
+    for (int i = w->nrep - 1; i >= 0; i--) {   /* backwards: the first wins */
+        int k = sw_index_get(&c->rix, w->rnames[i]);
+        if (k >= 0) cell[k] = w->rvalues[i];
+    }
+    return cell;
 }
 
 static void free_columns(columns *c)
@@ -204,6 +235,8 @@ static void free_columns(columns *c)
     for (int i = 0; i < c->nr; i++) free(c->reports[i]);
     free(c->params);
     free(c->reports);
+    sw_index_free(&c->pix);
+    sw_index_free(&c->rix);
 }
 
 static void csv_field(FILE *f, const char *s, int first)
@@ -257,8 +290,11 @@ static void write_csv(FILE *f, const sw_row *rows, int n, const columns *c)
             csv_field(f, lookup(w->pnames, w->pvalues, w->nparams, c->params[i]), 0);
         csv_field(f, w->status, 0);
         csv_field(f, wall, 0);
+        const char **cell = report_cells(w, c);
         for (int i = 0; i < c->nr; i++)
-            csv_field(f, lookup(w->rnames, w->rvalues, w->nrep, c->reports[i]), 0);
+            csv_field(f, cell ? cell[i] : lookup(w->rnames, w->rvalues, w->nrep, c->reports[i]),
+                      0);
+        free(cell);
         csv_field(f, w->error, 0);
         fputc('\n', f);
     }
@@ -283,8 +319,10 @@ static void write_md_table(FILE *f, const sw_row *rows, int n, const columns *c)
             md_field(f, lookup(w->pnames, w->pvalues, w->nparams, c->params[i]));
         md_field(f, w->status);
         md_field(f, wall);
+        const char **cell = report_cells(w, c);
         for (int i = 0; i < c->nr; i++)
-            md_field(f, lookup(w->rnames, w->rvalues, w->nrep, c->reports[i]));
+            md_field(f, cell ? cell[i] : lookup(w->rnames, w->rvalues, w->nrep, c->reports[i]));
+        free(cell);
         md_field(f, w->error);
         fputc('\n', f);
     }

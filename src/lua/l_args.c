@@ -3,6 +3,20 @@
 
 #include "l_internal.h"
 
+/* Arguments are read raw: a metatable on a script's table (an __index
+ * function) would otherwise run script code in the middle of a read and hand
+ * back values that nothing references (a string made by the function is
+ * collected once popped). Raw, every value read is held by its table, which
+ * no script code can change while a binding reads it (l_sandbox.c: no
+ * __gc). Non-tables (userdata) keep their metamethods. */
+int la_getfield(lua_State *L, int idx, const char *key)
+{
+    if (lua_type(L, idx) != LUA_TTABLE) return lua_getfield(L, idx, key);
+    idx = lua_absindex(L, idx);
+    lua_pushstring(L, key);
+    return lua_rawget(L, idx);
+}
+
 void la_check_table(lua_State *L, int idx, const char *fn)
 {
     if (lua_type(L, idx) != LUA_TTABLE)
@@ -39,14 +53,14 @@ void la_check_keys(lua_State *L, int idx, const char *fn, const char *const keys
 
 int la_has(lua_State *L, int idx, const char *key)
 {
-    int t = lua_getfield(L, idx, key);
+    int t = la_getfield(L, idx, key);
     lua_pop(L, 1);
     return t != LUA_TNIL;
 }
 
 double la_opt_number(lua_State *L, int idx, const char *fn, const char *key, double def)
 {
-    int t = lua_getfield(L, idx, key);
+    int t = la_getfield(L, idx, key);
     double v = def;
     if (t != LUA_TNIL) {
         int isnum;
@@ -68,7 +82,7 @@ double la_number(lua_State *L, int idx, const char *fn, const char *key)
 const char *la_opt_string(lua_State *L, int idx, const char *fn, const char *key,
                           const char *def)
 {
-    int t = lua_getfield(L, idx, key);
+    int t = la_getfield(L, idx, key);
     const char *s = def;
     if (t != LUA_TNIL) {
         if (t != LUA_TSTRING)
@@ -82,7 +96,7 @@ const char *la_opt_string(lua_State *L, int idx, const char *fn, const char *key
 
 void la_pair(lua_State *L, int idx, const char *fn, const char *key, double *a, double *b)
 {
-    lua_getfield(L, idx, key);
+    la_getfield(L, idx, key);
     if (!lua_istable(L, -1) || lua_rawlen(L, -1) != 2)
         luaL_error(L, "%s: '%s' must be a pair {a, b}", fn, key);
     for (int i = 1; i <= 2; i++) {
@@ -121,7 +135,7 @@ int la_point_list(lua_State *L, const char *fn, int min, int *n)
     int list = 1;
     if (lua_rawlen(L, 1) == 0) {
         la_check_keys(L, 1, fn, keys);
-        lua_getfield(L, 1, "points");
+        la_getfield(L, 1, "points");
         if (!lua_istable(L, -1)) luaL_error(L, "%s: 'points' must be a list of {x, y}", fn);
         list = lua_gettop(L);
     }
@@ -150,4 +164,15 @@ lamina_run *la_run(lua_State *L)
     lamina_run *run = lua_touserdata(L, -1);
     lua_pop(L, 1);
     return run;
+}
+
+/* Every lamina object's metatable: getmetatable() gives this string and
+ * setmetatable() fails ("cannot change a protected metatable"), so a script
+ * reaches neither __gc nor __index (design.md: a script is untrusted). */
+int la_new_metatable(lua_State *L, const char *name)
+{
+    int fresh = luaL_newmetatable(L, name);
+    lua_pushliteral(L, "locked");
+    lua_setfield(L, -2, "__metatable");
+    return fresh;
 }

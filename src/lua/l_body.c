@@ -1,6 +1,7 @@
 /* l_body.c - sim:body{...}: a region of one material filled with particles,
  * and the body handle (com, velocity, particles). */
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "l_internal.h"
@@ -18,27 +19,43 @@ static la_body *check_body(lua_State *L, int idx, lm_sim **sim)
     return b;
 }
 
-/* ppc = n (a square: 4 = 2x2, 16 = 4x4, as the papers count) or {nx, ny}. */
+/* ppc = n (a square: 4 = 2x2, 16 = 4x4, as the papers count) or {nx, ny};
+ * at most LA_MAX_PPC points per cell, named in the error. */
+#define LA_MAX_PPC 4096
+/* Trial points of one body (the particles of a simulation are at most
+ * LM_MAX_PARTICLES, checked by lm_sim_add_particle). */
+#define LA_MAX_TRIALS 200000000
 static void read_ppc(lua_State *L, const char *fn, int *npx, int *npy)
 {
-    int t = lua_getfield(L, 2, "ppc");
+    int t = la_getfield(L, 2, "ppc");
     lua_pop(L, 1);
     if (t == LUA_TNIL) {
         *npx = *npy = 2;
     } else if (t == LUA_TTABLE) {
         double a, b;
         la_pair(L, 2, fn, "ppc", &a, &b);
-        if (a < 1 || b < 1 || a != floor(a) || b != floor(b) || a * b > 4096)
+        if (a < 1 || b < 1 || a != floor(a) || b != floor(b))
             luaL_error(L, "%s: ppc = {%f, %f} must be two positive integers", fn, a, b);
+        if (a * b > LA_MAX_PPC) {
+            char m[96];   /* lua_pushfstring knows no %g */
+            snprintf(m, sizeof m, "ppc = {%g, %g} gives %g points per cell", a, b, a * b);
+            luaL_error(L, "%s: %s, more than the limit of %d", fn, m, LA_MAX_PPC);
+        }
         *npx = (int)a;
         *npy = (int)b;
     } else {
         double n = la_number(L, 2, fn, "ppc");
         double r = floor(sqrt(n) + 0.5);
-        if (n < 1 || r * r != n || n > 4096)
+        if (n > LA_MAX_PPC) {
+            char m[48];
+            snprintf(m, sizeof m, "ppc = %g", n);
+            luaL_error(L, "%s: %s is more than the limit of %d points per cell", fn, m,
+                       LA_MAX_PPC);
+        }
+        if (n < 1 || r * r != n)
             luaL_error(L, "%s: ppc = %s is not a square number (1, 4, 9, 16, ...); "
                        "use ppc = {nx, ny} for other patterns", fn,
-                       (lua_getfield(L, 2, "ppc"), lua_tostring(L, -1)));
+                       (la_getfield(L, 2, "ppc"), lua_tostring(L, -1)));
         *npx = *npy = (int)r;
     }
 }
@@ -69,7 +86,7 @@ static int clip_inside(void *ctx, double x, double y)
 static int read_fill(lua_State *L, const char *fn)
 {
     static const char *const fills[] = {"centres", "clipped", NULL};
-    lua_getfield(L, 2, "fill");
+    la_getfield(L, 2, "fill");
     int clipped = 0;
     if (!lua_isnil(L, -1)) {
         const char *f = lua_tostring(L, -1);
@@ -113,7 +130,7 @@ int la_sim_body(lua_State *L)
     if (s->running) return luaL_error(L, "%s: bodies cannot be added during a run", fn);
     lm_sim *sim = s->sim;
 
-    lua_getfield(L, 2, "material");
+    la_getfield(L, 2, "material");
     if (lua_isnil(L, -1)) return luaL_error(L, "%s: 'material' is required", fn);
     lm_material *mat = luaL_testudata(L, -1, LA_MATERIAL);
     if (!mat) return luaL_error(L, "%s: 'material' must be a material (lamina.elastic{...})", fn);
@@ -121,7 +138,7 @@ int la_sim_body(lua_State *L)
         return luaL_error(L, "%s: a membrane material goes into sim:membrane{...}", fn);
     int midx = lua_gettop(L);
 
-    lua_getfield(L, 2, "region");
+    la_getfield(L, 2, "region");
     int ridx = lua_gettop(L);
     lm_region *region = la_test_region(L, ridx);
     if (!region && !lua_isfunction(L, ridx))
@@ -135,17 +152,12 @@ int la_sim_body(lua_State *L)
 
     double vx0 = 0, vy0 = 0;
     int vidx = 0;
-    int vt = lua_getfield(L, 2, "velocity");
+    int vt = la_getfield(L, 2, "velocity");
     if (vt == LUA_TFUNCTION) vidx = lua_gettop(L);
     else {
         lua_pop(L, 1);
         if (vt != LUA_TNIL) la_pair(L, 2, fn, "velocity", &vx0, &vy0);
     }
-
-    int mi = lm_sim_add_material(sim, mat);
-    int bi = mi < 0 ? -1 : lm_sim_add_body(sim, mi);
-    if (bi < 0) return luaL_error(L, "%s: out of memory", fn);
-    la_sim_keep(L, 1, midx);
 
     const lm_grid *g = &sim->grid;
     lm_seed_range range = region
@@ -154,7 +166,22 @@ int la_sim_body(lua_State *L)
                             g->y0 + g->ny * g->hy);
     double mass = lm_seed_mass(g, npx, npy, mat->rho);
     size_t total = lm_seed_count(&range);
-    for (size_t k = 0; k < total; k++) {
+    /* ppc = 4096 on a 1000 x 1000 grid is 4e9 points: refused before the
+     * first is made (trial points, then the particles themselves below) */
+    if ((double)total > LA_MAX_TRIALS) {
+        char m[64];
+        snprintf(m, sizeof m, "%.0f", (double)total);
+        return luaL_error(L, "%s: the region's cells at ppc = %d hold %s trial points, more "
+                          "than the limit of %d (a smaller ppc, region or domain)", fn,
+                          npx * npy, m, LA_MAX_TRIALS);
+    }
+
+    int mi = lm_sim_add_material(sim, mat);
+    int bi = mi < 0 ? -1 : lm_sim_add_body(sim, mi);
+    if (bi < 0) return luaL_error(L, "%s: out of memory", fn);
+    la_sim_keep(L, 1, midx);
+
+    for (size_t k = 0; k < total; k++) {   /* (the particle limit: lm_sim_add_particle) */
         double x, y, vx = vx0, vy = vy0;
         double part = 1;
         lm_seed_point(g, &range, k, &x, &y);
@@ -172,7 +199,7 @@ int la_sim_body(lua_State *L)
         return luaL_error(L, "%s: the region holds no particles at ppc = %d "
                           "(is it inside the domain, and larger than a cell?)", fn, npx * npy);
 
-    lua_getfield(L, 2, "name");
+    la_getfield(L, 2, "name");
     la_push_body(L, 1, bi, lua_gettop(L));
     return 1;
 }
@@ -433,7 +460,7 @@ static int body_index(lua_State *L)
         return 1;
     }
     luaL_getmetafield(L, 1, "methods");
-    lua_getfield(L, -1, k);
+    la_getfield(L, -1, k);
     if (lua_isnil(L, -1)) return luaL_error(L, "body has no field or method '%s'", k);
     return 1;
 }
@@ -457,7 +484,7 @@ void la_open_body(lua_State *L)
                                        {"pin", la_body_pin},
                                        {"phi", la_body_phi},
                                        {NULL, NULL}};
-    luaL_newmetatable(L, LA_BODY);
+    la_new_metatable(L, LA_BODY);
     luaL_setfuncs(L, meta, 0);
     luaL_newlib(L, methods);
     lua_setfield(L, -2, "methods");

@@ -208,7 +208,7 @@ static int curve_tostring(lua_State *L)
 
 void la_open_curve(lua_State *L)
 {
-    luaL_newmetatable(L, LA_CURVE);
+    la_new_metatable(L, LA_CURVE);
     lua_pushcfunction(L, curve_tostring);
     lua_setfield(L, -2, "__tostring");
     lua_pop(L, 1);

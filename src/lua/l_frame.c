@@ -42,7 +42,7 @@ static lr_backend backend(lua_State *L, const char *fn, const char *file,
 static size_t panels(lua_State *L, la_frame_ctx *ctx, lr_panel **out)
 {
     static const char *const panel_keys[] = { "sim", "title", LA_PANEL_KEYS, NULL };
-    if (lua_getfield(L, 2, "panels") == LUA_TNIL) {
+    if (la_getfield(L, 2, "panels") == LUA_TNIL) {
         lua_pop(L, 1);
         *out = la_frame_scratch(L, ctx, sizeof **out);
         la_frame_panel(L, ctx, 2, 0, 1, *out);
@@ -70,7 +70,7 @@ static size_t panels(lua_State *L, la_frame_ctx *ctx, lr_panel **out)
 /* layout = {rows, cols} */
 static void layout(lua_State *L, const char *fn, size_t n, lr_figure *f)
 {
-    if (lua_getfield(L, 2, "layout") != LUA_TNIL) {
+    if (la_getfield(L, 2, "layout") != LUA_TNIL) {
         double r = 0, c = 0;
         if (lua_istable(L, -1) && lua_rawlen(L, -1) == 2) {
             lua_rawgeti(L, -1, 1);
@@ -100,7 +100,7 @@ int la_sim_frame(lua_State *L)
     la_sim *s = la_check_sim(L, 1);
     la_check_keys(L, 2, fn, keys);
     const lm_sim *sim = s->sim;
-    const char *file = la_opt_string(L, 2, fn, "file", NULL);
+    const char *file = la_opt_output_path(L, 2, fn, "file");
     if (!file) return luaL_error(L, "%s: 'file' is required", fn);
     double w = la_opt_number(L, 2, fn, "width", 800);
     double h = la_opt_number(L, 2, fn, "height", 800);
@@ -122,7 +122,7 @@ int la_sim_frame(lua_State *L)
     f.panels = p;
     layout(L, fn, f.npanels, &f);
     f.title = la_opt_string(L, 2, fn, "title", NULL);
-    lua_getfield(L, 2, "label");
+    la_getfield(L, 2, "label");
     if (lua_isstring(L, -1)) f.label = lua_tostring(L, -1);
     else if (lua_isnil(L, -1) || lua_toboolean(L, -1)) {
         char t[64];

@@ -26,12 +26,12 @@ static int get(lua_State *L, int fidx, int pidx, const char *key)
         return LUA_TNIL;
     }
     if (pidx) {
-        int t = lua_getfield(L, pidx, key);
+        int t = la_getfield(L, pidx, key);
         if (t != LUA_TNIL || !fidx)
             return t;
         lua_pop(L, 1);
     }
-    return lua_getfield(L, fidx, key);
+    return la_getfield(L, fidx, key);
 }
 
 /* ---- what particles show ------------------------------------------------ */
@@ -372,7 +372,7 @@ static field colours(lua_State *L, const la_frame_ctx *ctx, int fidx, int pidx,
         double r[2];
         numbers(L, ctx, lua_gettop(L), "range", "{min, max}", 2, r);
         if (!(r[1] > r[0]))
-            luaL_error(L, "%s: 'range' must have max > min (got {%g, %g})", ctx->fn,
+            luaL_error(L, "%s: 'range' must have max > min (got {%f, %f})", ctx->fn,
                        r[0], r[1]);
         p->vmin = r[0];
         p->vmax = r[1];

@@ -16,6 +16,8 @@
 /* l_args.c: constructor tables. Every constructor takes one table of named
  * arguments and rejects a key it does not know, by name, at the script's
  * line (design.md, Lua API). */
+/* lua_getfield without metamethods on tables (l_args.c says why). */
+int la_getfield(lua_State *L, int idx, const char *key);
 void la_check_table(lua_State *L, int idx, const char *fn);
 void la_check_keys(lua_State *L, int idx, const char *fn, const char *const keys[]);
 int la_has(lua_State *L, int idx, const char *key);
@@ -33,6 +35,8 @@ int la_option(lua_State *L, const char *fn, const char *key, const char *value,
 int la_point_list(lua_State *L, const char *fn, int min, int *n);
 void la_point_at(lua_State *L, int list, int i, const char *fn, double *x, double *y);
 lamina_run *la_run(lua_State *L);
+/* luaL_newmetatable with __metatable set: every userdata type uses it. */
+int la_new_metatable(lua_State *L, const char *name);
 
 /* l_provenance.c: the tEXt chunks of every image (Software, lamina:script,
  * lamina:script-hash, lamina:set); la_provenance pushes one string that must
@@ -45,6 +49,23 @@ typedef struct la_prov {
 void la_provenance(lua_State *L, la_prov *p);
 /* Counts an image written and remembers its folder for the run's summary. */
 void la_note_image(lua_State *L, const char *path);
+
+/* l_alloc.c: luaL_newstate with the run's memory cap (run may be NULL) */
+lua_State *la_new_state(lamina_run *run);
+
+/* l_sandbox.c: the standard library a script gets (design.md: a script is
+ * untrusted input); la_load_script loads a regular text file only. */
+void la_open_sandbox(lua_State *L, const char *script);
+int la_load_script(lua_State *L, const char *path);
+
+/* l_path.c: every file a script names is checked here before it is
+ * written (inside the output root, no NUL or control character, not a
+ * device); returns the string at idx. la_opt_output_path reads table key
+ * `key` (NULL when absent). la_check_text refuses control characters in a
+ * name that goes into a file's text (CSV headers). */
+const char *la_check_output_path(lua_State *L, const char *fn, int idx);
+const char *la_opt_output_path(lua_State *L, int idx, const char *fn, const char *key);
+void la_check_text(lua_State *L, const char *fn, const char *what, const char *s);
 
 /* l_material.c */
 void la_open_material(lua_State *L);
@@ -65,7 +86,8 @@ lm_region *la_test_region(lua_State *L, int idx);
 typedef struct la_event {
     double interval;            /* 0: once (sim:at) */
     double t0;                  /* first firing */
-    long k;                     /* firings so far */
+    double k;                   /* index of the next multiple due (a double:
+                                   interval / dt can exceed any long) */
     double next;
     int ref;                    /* the function, in the sim's uservalue */
     int done;
@@ -117,6 +139,12 @@ int la_sim_checkpoint(lua_State *L);
 void la_checkpoint_due(lua_State *L, int sidx, la_sim *s);
 void la_checkpoint_restore(lua_State *L, int sidx, la_sim *s);
 void la_sim_skip_due(la_sim *s);
+
+/* Raises "file:line: simulation failed: why" and remembers it; the exit
+ * status of a script's final error msg: 1 when it is that failure (not
+ * caught, or raised again), else 2. */
+void la_raise_sim_failure(lua_State *L, const char *why);
+int la_exit_status_of(lua_State *L, const char *msg);
 
 /* l_record.c */
 int la_sim_record(lua_State *L);

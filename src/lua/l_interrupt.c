@@ -15,9 +15,10 @@
 #define MAX_THREADS 4
 
 static volatile sig_atomic_t pending;
+static volatile sig_atomic_t last_signal;   /* SIGINT or SIGTERM, for the exit status */
 static lua_State *volatile threads[MAX_THREADS];
-static int installed;
-static struct sigaction saved;
+static int installed, installed_term;
+static struct sigaction saved, saved_term;
 
 static void clear_hooks(void)
 {
@@ -41,7 +42,9 @@ int la_interrupt_raise(lua_State *L, const lm_sim *sim)
     if (why == LAMINA_STOP_POLL)
         return luaL_error(L, "stopped at t = %f, step %I: %s", sim->t, (lua_Integer)sim->step,
                           run->stop_why ? run->stop_why : "asked to stop");
-    return luaL_error(L, "interrupted at t = %f, step %I", sim->t, (lua_Integer)sim->step);
+    return luaL_error(L, "interrupted%s at t = %f, step %I",
+                      last_signal == SIGTERM ? " (SIGTERM)" : "", sim->t,
+                      (lua_Integer)sim->step);
 }
 
 /* The count hook: Lua code running when Ctrl-C came. Inside a run (a
@@ -67,8 +70,8 @@ static void hook(lua_State *L, lua_Debug *ar)
 
 static void on_sigint(int sig)
 {
-    (void)sig;
     pending = 1;
+    last_signal = sig;
     for (int i = 0; i < MAX_THREADS; i++)
         if (threads[i]) lua_sethook(threads[i], hook, LUA_MASKCOUNT, 1);
 }
@@ -87,6 +90,24 @@ void lamina_interrupt_install(lua_State *L)
     if (sigaction(SIGINT, &sa, &saved) == 0) installed = 1;
 }
 
+/* lamina run: SIGTERM (kill, a batch system's time limit) stops the run at a
+ * step boundary as Ctrl-C does, so its records are written; the repl keeps
+ * the default (a SIGTERM ends it). */
+void lamina_interrupt_install_term(void)
+{
+    if (installed_term) return;
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_sigint;
+    sigemptyset(&sa.sa_mask);
+    if (sigaction(SIGTERM, &sa, &saved_term) == 0) installed_term = 1;
+}
+
+int lamina_interrupt_signal(void)
+{
+    return last_signal ? (int)last_signal : SIGINT;
+}
+
 void lamina_interrupt_add_thread(lua_State *thread)
 {
     for (int i = 0; i < MAX_THREADS; i++)
@@ -99,7 +120,8 @@ void lamina_interrupt_add_thread(lua_State *thread)
 void lamina_interrupt_uninstall(void)
 {
     if (installed) sigaction(SIGINT, &saved, NULL);
-    installed = 0;
+    if (installed_term) sigaction(SIGTERM, &saved_term, NULL);
+    installed = installed_term = 0;
     clear_hooks();
     memset((void *)threads, 0, sizeof threads);
     pending = 0;

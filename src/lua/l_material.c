@@ -64,7 +64,7 @@ int la_membrane_material(lua_State *L)
     m->nu = la_opt_number(L, 1, fn, "nu", 0);
     m->thickness = la_number(L, 1, fn, "thickness");
     m->law = (lm_law)la_option(L, fn, "law", la_opt_string(L, 1, fn, "law", "uniaxial"), laws);
-    lua_getfield(L, 1, "one_way");
+    la_getfield(L, 1, "one_way");
     if (!lua_isnil(L, -1) && !lua_isboolean(L, -1))
         luaL_error(L, "%s: 'one_way' must be true or false", fn);
     m->one_way = lua_toboolean(L, -1);
@@ -89,7 +89,11 @@ int la_gas(lua_State *L)
     m->gamma = la_opt_number(L, 1, fn, "gamma", 1.4);
     m->mu = la_opt_number(L, 1, fn, "mu", 0);
     m->split = la_opt_number(L, 1, fn, "split", 0);
-    if (!(m->split >= 0)) luaL_error(L, "%s: split must be >= 0 (got %f)", fn, m->split);
+    /* split = n keeps about n points per cell: past the particles-per-cell
+     * limit (l_body.c) it would split every point at every step (1e308) */
+    if (!(m->split >= 0) || !(m->split <= 4096))
+        luaL_error(L, "%s: split must be >= 0 and at most 4096, the limit of points per "
+                   "cell (got %f)", fn, m->split);
     m->density = (lm_density)la_option(L, fn, "density",
                                        la_opt_string(L, 1, fn, "density", "continuity"), densities);
     int has_e = la_has(L, 1, "e"), has_p = la_has(L, 1, "p");
@@ -107,7 +111,7 @@ int la_gas(lua_State *L)
     m->av_c1 = m->av_c2 = 1;
     m->av_lambda = 0.75;
     m->av_g = 0;
-    int t = lua_getfield(L, 1, "av");
+    int t = la_getfield(L, 1, "av");
     if (t == LUA_TBOOLEAN) {
         m->av = lua_toboolean(L, -1);
     } else if (t == LUA_TTABLE) {
@@ -234,7 +238,7 @@ void la_open_material(lua_State *L)
                                     {"__newindex", mat_newindex},
                                     {"__tostring", mat_tostring},
                                     {NULL, NULL}};
-    luaL_newmetatable(L, LA_MATERIAL);
+    la_new_metatable(L, LA_MATERIAL);
     luaL_setfuncs(L, meta, 0);
     lua_pop(L, 1);
 }

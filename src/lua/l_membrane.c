@@ -43,6 +43,8 @@ static const char *label(lua_State *L, int nameidx, int body)
     return lua_pushfstring(L, "membrane %d", body + 1);
 }
 
+#define LA_MAX_MEMBRANE_POINTS 10000000
+
 static int point_count(lua_State *L, const char *fn, const la_curve_points *cp, double h,
                        const char **what)
 {
@@ -50,7 +52,10 @@ static int point_count(lua_State *L, const char *fn, const la_curve_points *cp, 
     int have_spacing = la_has(L, 2, "spacing");
     if ((count > 0) == have_spacing)
         luaL_error(L, "%s: give exactly one of 'spacing' and 'count'", fn);
-    int intervals;
+    /* counted in double first: spacing = 1e-12 or count = 1e12 overflowed
+     * an int and came out as one interval ("spacing 0.8 is larger than a
+     * cell") */
+    double iv;
     if (have_spacing) {
         double sp = la_number(L, 2, fn, "spacing");
         if (!(sp > 0)) luaL_error(L, "%s: spacing must be positive (got %f)", fn, sp);
@@ -58,14 +63,19 @@ static int point_count(lua_State *L, const char *fn, const la_curve_points *cp, 
             luaL_error(L, "%s: %s spacing %f is larger than a cell (%f): neighbouring "
                        "points must stay within one cell or the membrane breaks", fn,
                        *what, sp, h);
-        intervals = (int)ceil(cp->length / sp - 1e-9);
+        iv = ceil(cp->length / sp - 1e-9);
     } else {
         if (count != floor(count) || count < 2)
             luaL_error(L, "%s: count must be a whole number >= 2 (got %f)", fn, count);
-        intervals = cp->closed ? (int)count : (int)count - 1;
+        iv = cp->closed ? count : count - 1;
     }
-    if (intervals < 1) intervals = 1;
-    if (intervals > 10000000) luaL_error(L, "%s: %d points are too many", fn, intervals);
+    if (!(iv <= LA_MAX_MEMBRANE_POINTS)) {
+        char m[64];   /* lua_pushfstring knows no %.0f */
+        snprintf(m, sizeof m, "%.0f", cp->closed ? iv : iv + 1);
+        luaL_error(L, "%s: %s would have %s points, more than the limit of %d per membrane",
+                   fn, *what, m, LA_MAX_MEMBRANE_POINTS);
+    }
+    int intervals = iv < 1 ? 1 : (int)iv;
     return intervals;
 }
 
@@ -81,16 +91,16 @@ int la_sim_membrane(lua_State *L)
     lm_sim *sim = s->sim;
     const lm_grid *g = &sim->grid;
 
-    lua_getfield(L, 2, "material");
+    la_getfield(L, 2, "material");
     lm_material *mat = luaL_testudata(L, -1, LA_MATERIAL);
     if (!mat || mat->kind != LM_MEMBRANE)
         return luaL_error(L, "%s: 'material' must be lamina.membrane{...}", fn);
     int midx = lua_gettop(L);
-    lua_getfield(L, 2, "name");
+    la_getfield(L, 2, "name");
     int nameidx = lua_gettop(L);
     const char *what = label(L, nameidx, sim->nbodies);
 
-    lua_getfield(L, 2, "curve");
+    la_getfield(L, 2, "curve");
     int cidx = lua_gettop(L);
     la_curve_points cp;
     if (la_curve_sample(L, cidx, &cp))
@@ -116,7 +126,7 @@ int la_sim_membrane(lua_State *L)
      * from the curve's centroid for the constructions without connectivity */
     int orient = 0;
     double ox = 0, oy = 0;
-    int ot = lua_getfield(L, 2, "orient");
+    int ot = la_getfield(L, 2, "orient");
     lua_pop(L, 1);
     if (ot == LUA_TTABLE) {
         la_pair(L, 2, fn, "orient", &ox, &oy);
@@ -134,14 +144,14 @@ int la_sim_membrane(lua_State *L)
         return luaL_error(L, "%s: end_mass must be positive (got %f)", fn, end_mass);
     double vx = 0, vy = 0;
     int vidx = 0;
-    int vt = lua_getfield(L, 2, "velocity");
+    int vt = la_getfield(L, 2, "velocity");
     if (vt == LUA_TFUNCTION) vidx = lua_gettop(L);
     else {
         lua_pop(L, 1);
         if (vt != LUA_TNIL) la_pair(L, 2, fn, "velocity", &vx, &vy);
     }
     int sidx = 0;
-    int st = lua_getfield(L, 2, "initial_strain");
+    int st = la_getfield(L, 2, "initial_strain");
     if (st == LUA_TNUMBER || st == LUA_TFUNCTION) sidx = lua_gettop(L);
     else if (st != LUA_TNIL)
         return luaL_error(L, "%s: initial_strain must be a number or a function(u, i)", fn);

@@ -9,8 +9,6 @@
 #include <string.h>
 #include <time.h>
 
-#include <lualib.h>
-
 #include "l_curve.h"
 
 /* lamina.param(name, default): the --set value when given, converted to the
@@ -89,70 +87,13 @@ static int luaopen_lamina(lua_State *L)
     return 1;
 }
 
-/* Scenario scripts get io/os only as far as the API needs: output paths go
- * through lamina (design.md, Conventions). */
-static void open_sandbox(lua_State *L)
-{
-    static const luaL_Reg libs[] = {{LUA_GNAME, luaopen_base},
-                                    {LUA_LOADLIBNAME, luaopen_package},
-                                    {LUA_COLIBNAME, luaopen_coroutine},
-                                    {LUA_TABLIBNAME, luaopen_table},
-                                    {LUA_STRLIBNAME, luaopen_string},
-                                    {LUA_MATHLIBNAME, luaopen_math},
-                                    {LUA_UTF8LIBNAME, luaopen_utf8},
-                                    {LUA_OSLIBNAME, luaopen_os},
-                                    {LUA_IOLIBNAME, luaopen_io},
-                                    {NULL, NULL}};
-    for (const luaL_Reg *lib = libs; lib->func; lib++) {
-        luaL_requiref(L, lib->name, lib->func, 1);
-        lua_pop(L, 1);
-    }
-    static const char *const os_drop[] = {"execute", "exit", "remove", "rename",
-                                          "tmpname", "setlocale", NULL};
-    static const char *const io_drop[] = {"open", "popen", "tmpfile", "input",
-                                          "output", "lines", "close", NULL};
-    lua_getglobal(L, "os");
-    for (int i = 0; os_drop[i]; i++) {
-        lua_pushnil(L);
-        lua_setfield(L, -2, os_drop[i]);
-    }
-    lua_pop(L, 1);
-    lua_getglobal(L, "io");
-    for (int i = 0; io_drop[i]; i++) {
-        lua_pushnil(L);
-        lua_setfield(L, -2, io_drop[i]);
-    }
-    lua_pop(L, 1);
-}
-
-/* require() finds modules beside the script and lamina's own helpers in
- * assets/lua (LAMINA_ASSETS overrides the folder fixed at build time). */
-static void set_package_path(lua_State *L, const char *script)
-{
-    const char *assets = getenv("LAMINA_ASSETS");
-    if (!assets || !*assets) assets = LAMINA_ASSETS_DIR;
-    const char *slash = script ? strrchr(script, '/') : NULL;
-    int dirlen = slash ? (int)(slash - script) : 1;
-    const char *dir = slash ? script : ".";
-    lua_getglobal(L, "package");
-    lua_pushfstring(L, "%s/lua/?.lua;", assets);
-    lua_pushlstring(L, dir, (size_t)dirlen);
-    lua_pushliteral(L, "/?.lua");
-    lua_concat(L, 3);
-    lua_setfield(L, -2, "path");
-    lua_pushliteral(L, "");
-    lua_setfield(L, -2, "cpath");
-    lua_pop(L, 1);
-}
-
 lua_State *lamina_open_state(lamina_run *run)
 {
-    lua_State *L = luaL_newstate();
+    lua_State *L = la_new_state(run);
     if (!L) return NULL;
     lua_pushlightuserdata(L, run);
     lua_setfield(L, LUA_REGISTRYINDEX, "lamina.run");
-    open_sandbox(L);
-    set_package_path(L, run ? run->script : NULL);
+    la_open_sandbox(L, run ? run->script : NULL);   /* l_sandbox.c */
     luaL_requiref(L, "lamina", luaopen_lamina, 1);
     lua_pop(L, 1);
     return L;
@@ -187,7 +128,7 @@ int lamina_run_script(lua_State *L, lamina_run *run)
 {
     lua_pushcfunction(L, msghandler);
     int base = lua_gettop(L);
-    if (luaL_loadfile(L, run->script) != LUA_OK) {
+    if (la_load_script(L, run->script) != LUA_OK) {
         fprintf(stderr, "lamina: %s\n", lua_tostring(L, -1));
         lua_settop(L, 0);
         return LAMINA_EXIT_USAGE;
@@ -195,11 +136,23 @@ int lamina_run_script(lua_State *L, lamina_run *run)
     lua_pushstring(L, run->script);
     lua_setglobal(L, "SCRIPT");
     int rc = lua_pcall(L, 0, 0, base);
+    if (rc == LUA_ERRMEM) {   /* no traceback: the handler is not called */
+        lamina_progress_clear_line();
+        fprintf(stderr, "lamina: %s: the script's Lua memory reached its cap of %zu MB "
+                "(lamina run --lua-mem MB raises it)\n", run->script, run->lua_mem_limit >> 20);
+        lua_settop(L, 0);
+        return LAMINA_EXIT_USAGE;
+    }
     if (rc != LUA_OK) {
         lamina_progress_clear_line();   /* the message starts a line of its own */
-        fprintf(stderr, "lamina: %s\n", lua_tostring(L, -1));
+        const char *msg = lua_tostring(L, -1);
+        fprintf(stderr, "lamina: %s\n", msg ? msg : "(error object is not a string)");
+        if (msg && strstr(msg, "not enough memory"))   /* raised again by a callback */
+            fprintf(stderr, "lamina: the script's Lua memory is capped at %zu MB "
+                    "(lamina run --lua-mem MB raises it)\n", run->lua_mem_limit >> 20);
+        int status = la_exit_status_of(L, msg);
         lua_settop(L, 0);
-        return run->sim_failed ? LAMINA_EXIT_SIM : LAMINA_EXIT_USAGE;
+        return status;
     }
     lua_settop(L, 0);
     if (run->restart && !run->restored) {

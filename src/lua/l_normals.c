@@ -39,7 +39,7 @@ static void read_numbers(lua_State *L, int idx, const char *key, int len,
                          double *v, const char *what)
 {
     if (key)
-        lua_getfield(L, idx, key);
+        la_getfield(L, idx, key);
     else
         lua_pushvalue(L, idx);
     if (!lua_istable(L, -1) || (int)lua_rawlen(L, -1) != len)
@@ -58,7 +58,7 @@ static void read_numbers(lua_State *L, int idx, const char *key, int len,
 /* box = {x0, y0, x1, y1} or {x0, y0, z0, x1, y1, z1}; returns the dimension. */
 static int read_box(lua_State *L, double lo[3], double hi[3])
 {
-    lua_getfield(L, 1, "box");
+    la_getfield(L, 1, "box");
     if (lua_isnil(L, -1))
         luaL_error(L, "%s: 'box' is required ({x0, y0, x1, y1} or "
                    "{x0, y0, z0, x1, y1, z1})", FN);
@@ -85,7 +85,7 @@ static int read_box(lua_State *L, double lo[3], double hi[3])
  * userdata on the stack (freed by the collector even after an error). */
 static size_t read_points(lua_State *L, int dim, double *x[3])
 {
-    lua_getfield(L, 1, "points");
+    la_getfield(L, 1, "points");
     if (!lua_istable(L, -1))
         luaL_error(L, "%s: 'points' is required: a list of {x, y%s}", FN,
                    dim == 3 ? ", z" : "");
@@ -138,7 +138,7 @@ static uint64_t read_seed(lua_State *L)
 /* orient = "none" | "sequence" | "neighbours" | {x, y[, z]} (away from it) */
 static lm_norient read_orient(lua_State *L, int dim, double point[3])
 {
-    int t = lua_getfield(L, 1, "orient");
+    int t = la_getfield(L, 1, "orient");
     lua_pop(L, 1);
     point[0] = point[1] = point[2] = 0.0;
     if (t == LUA_TTABLE) {
@@ -197,7 +197,7 @@ la_nfield *la_to_nfield(lua_State *L, int idx)
     idx = lua_absindex(L, idx);
     int pushed = 0;
     if (lua_istable(L, idx)) {
-        lua_getfield(L, idx, "phi_at");
+        la_getfield(L, idx, "phi_at");
         idx = lua_gettop(L);
         pushed = 1;
     }
@@ -341,7 +341,7 @@ static int one_element(lua_State *L, int dim, const double lo[3], const double h
         o.random_given = 1;
     }
     o.seed = read_seed(L);
-    int t = lua_getfield(L, 1, "phi2_point");
+    int t = la_getfield(L, 1, "phi2_point");
     if (t == LUA_TTABLE) {
         read_numbers(L, -1, NULL, dim, o.phi2_point, "'phi2_point'");
         o.phi2_given = 1;
@@ -384,6 +384,8 @@ static int one_element(lua_State *L, int dim, const double lo[3], const double h
 
 /* ---- a grid ------------------------------------------------------------------ */
 
+#define LA_MAX_NORMAL_CELLS 4000000   /* 2000 x 2000, or 158^3 */
+
 static void read_cells(lua_State *L, int dim, const double lo[3], const double hi[3],
                        lm_ngrid *g)
 {
@@ -397,6 +399,14 @@ static void read_cells(lua_State *L, int dim, const double lo[3], const double h
             if (!(c[a] >= 1) || c[a] != floor(c[a]) || c[a] > 65536)
                 luaL_error(L, "%s: 'cells' must be whole numbers in [1, 65536]", FN);
             g->n[a] = (int)c[a];
+        }
+        /* each axis alone passed 65536: {1000, 1000, 1000} is 1e9 cells */
+        double total = (double)g->n[0] * g->n[1] * (dim == 3 ? g->n[2] : 1);
+        if (total > LA_MAX_NORMAL_CELLS) {
+            char m[64];   /* lua_pushfstring knows no %g */
+            snprintf(m, sizeof m, "%.0f", total);
+            luaL_error(L, "%s: 'cells' makes %s cells, more than the limit of %d", FN, m,
+                       LA_MAX_NORMAL_CELLS);
         }
     } else {
         g->n[0] = g->n[1] = g->n[2] = 1;
@@ -445,7 +455,7 @@ static int grid_isosurface(lua_State *L, const lm_ngrid *g, int method, size_t n
                           "every element draws its own from 'seed'", FN);
     o.seed = read_seed(L);
     o.cond_limit = la_opt_number(L, 1, FN, "cond_limit", 0);
-    int t = lua_getfield(L, 1, "phi2_point");
+    int t = la_getfield(L, 1, "phi2_point");
     if (t != LUA_TNIL && t != LUA_TBOOLEAN)
         return luaL_error(L, "%s: with 'cells', 'phi2_point' must be true or false", FN);
     o.phi2 = lua_toboolean(L, -1) ? LM_PHI2_RANDOM : LM_PHI2_NONE;
@@ -502,7 +512,7 @@ static int grid_variant(lua_State *L, const lm_ngrid *g, int method, size_t n,
     lm_nopts o;
     lm_nopts_default(&o);
     o.seed = read_seed(L);
-    o.phi2 = lua_getfield(L, 1, "phi2_point") == LUA_TBOOLEAN && lua_toboolean(L, -1);
+    o.phi2 = la_getfield(L, 1, "phi2_point") == LUA_TBOOLEAN && lua_toboolean(L, -1);
     lua_pop(L, 1);
     o.orient = read_orient(L, g->dim, o.orient_point);
     char err[512];
@@ -549,7 +559,7 @@ int la_normals(lua_State *L)
 
 void la_open_normals(lua_State *L)
 {
-    luaL_newmetatable(L, LA_NFIELD);
+    la_new_metatable(L, LA_NFIELD);
     lua_pop(L, 1);
     la_open_figure(L);
     lua_pushcfunction(L, la_normals);

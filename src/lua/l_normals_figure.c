@@ -104,7 +104,7 @@ static la_panel *current(lua_State *L, la_figure *f, const char *fn)
 static lr_rgba read_colour(lua_State *L, int idx, const char *fn, const char *key,
                            lr_rgba def)
 {
-    int t = lua_getfield(L, idx, key);
+    int t = la_getfield(L, idx, key);
     lr_rgba c = def;
     if (t == LUA_TSTRING) {
         static const char *const names[] = {"black", "grey", "computed", "exact",
@@ -134,7 +134,7 @@ static lr_rgba read_colour(lua_State *L, int idx, const char *fn, const char *ke
 static size_t read_list(lua_State *L, int idx, const char *fn, const char *key,
                         int dim, double *p[3])
 {
-    lua_getfield(L, idx, key);
+    la_getfield(L, idx, key);
     if (!lua_istable(L, -1))
         luaL_error(L, "%s: '%s' must be a list of {x, y%s}", fn, key,
                    dim == 3 ? ", z" : "");
@@ -168,7 +168,7 @@ static size_t read_list(lua_State *L, int idx, const char *fn, const char *key,
 static int read_box(lua_State *L, int idx, const char *fn, const char *key,
                     double lo[3], double hi[3])
 {
-    int t = lua_getfield(L, idx, key);
+    int t = la_getfield(L, idx, key);
     if (t == LUA_TNIL) {
         lua_pop(L, 1);
         return 0;
@@ -542,7 +542,7 @@ static int l_contours(lua_State *L)
     la_panel *p = current(L, f, fn);
     if (p->view.is3d)
         return luaL_error(L, "%s: contours are drawn in 2D panels only", fn);
-    lua_getfield(L, 2, "phi");
+    la_getfield(L, 2, "phi");
     int fidx = lua_gettop(L);
     la_nfield *field = la_to_nfield(L, fidx);
     if (!field && !lua_isfunction(L, fidx))
@@ -558,7 +558,7 @@ static int l_contours(lua_State *L)
     double s = la_opt_number(L, 2, fn, "samples", 160);
     if (!(s >= 2 && s <= 2000) || s != floor(s))
         return luaL_error(L, "%s: 'samples' must be a whole number in [2, 2000]", fn);
-    if (lua_getfield(L, 2, "levels") == LUA_TNIL) {
+    if (la_getfield(L, 2, "levels") == LUA_TNIL) {
         lua_pop(L, 1);
         default_levels(L);
     } else if (!lua_istable(L, -1)) {
@@ -671,7 +671,7 @@ static int l_polyline(lua_State *L)
     la_panel *p = current(L, f, fn);
     double *q[3];
     size_t n = read_list(L, 2, fn, "points", p->dim, q);
-    lua_getfield(L, 2, "dashed");
+    la_getfield(L, 2, "dashed");
     int dashed = lua_toboolean(L, -1);
     lua_pop(L, 1);
     const double *const cq[3] = {q[0], q[1], q[2]};
@@ -698,7 +698,7 @@ static int l_text(lua_State *L)
     if (!t)
         return luaL_error(L, "%s: 'text' is required", fn);
     double v[3] = {0, 0, 0}, x, y;
-    lua_getfield(L, 2, "at");
+    la_getfield(L, 2, "at");
     if (!lua_istable(L, -1) || (int)lua_rawlen(L, -1) < p->dim)
         return luaL_error(L, "%s: 'at' must be a point {x, y%s}", fn,
                           p->dim == 3 ? ", z" : "");
@@ -728,7 +728,7 @@ static int l_text(lua_State *L)
 static void draw_random_points(lua_State *L, la_figure *f, la_panel *p, int tbl)
 {
     for (int which = 0; which < 2; which++) {
-        if (lua_getfield(L, tbl, which ? "phi2_point" : "random_point") == LUA_TTABLE) {
+        if (la_getfield(L, tbl, which ? "phi2_point" : "random_point") == LUA_TTABLE) {
             double x[3] = {0, 0, 0};
             for (int a = 0; a < p->dim; a++) {
                 lua_rawgeti(L, -1, a + 1);
@@ -749,7 +749,7 @@ static void draw_random_points(lua_State *L, la_figure *f, la_panel *p, int tbl)
 /* Element outlines of a result: its box, or every element's block. */
 static void draw_elements(lua_State *L, la_figure *f, la_panel *p, int res)
 {
-    int t = lua_getfield(L, res, "elements");
+    int t = la_getfield(L, res, "elements");
     if (t == LUA_TTABLE) {
         size_t n = lua_rawlen(L, -1);
         for (size_t k = 1; k <= n; k++) {
@@ -780,7 +780,7 @@ static int l_normals(lua_State *L)
     la_figure *f = check_fig(L);
     la_check_keys(L, 2, fn, keys);
     la_panel *p = current(L, f, fn);
-    if (lua_getfield(L, 2, "result") != LUA_TTABLE)
+    if (la_getfield(L, 2, "result") != LUA_TTABLE)
         return luaL_error(L, "%s: 'result' must be what lamina.normals returned", fn);
     int res = lua_gettop(L);
     double len = la_opt_number(L, 2, fn, "length", 0.15 * panel_size(p));
@@ -791,7 +791,7 @@ static int l_normals(lua_State *L)
         lua_setfield(L, -2, "phi");
         for (int k = 0; k < 2; k++) {
             const char *key = k ? "samples" : "levels";
-            lua_getfield(L, 2, key);
+            la_getfield(L, 2, key);
             lua_setfield(L, -2, key);
         }
         lua_pushcfunction(L, l_contours);
@@ -807,14 +807,14 @@ static int l_normals(lua_State *L)
     /* a table {at = points, dir = ...} for the arrow reader */
     lua_createtable(L, 0, 2);
     int args = lua_gettop(L);
-    lua_getfield(L, 2, "points");
+    la_getfield(L, 2, "points");
     lua_setfield(L, args, "at");
     if (la_has(L, 2, "exact")) {
-        lua_getfield(L, 2, "exact");
+        la_getfield(L, 2, "exact");
         lua_setfield(L, args, "dir");
         arrows(L, f, p, args, args, len, 1.5, VERMILION, 1, fn);
     }
-    lua_getfield(L, res, "normals");
+    la_getfield(L, res, "normals");
     lua_setfield(L, args, "dir");
     arrows(L, f, p, args, args, len, 1.8, BLUE, 0, fn);
     double *q[3];
@@ -876,11 +876,11 @@ static int l_write(lua_State *L)
     la_figure *f = check_fig(L);
     const char *file = NULL;
     if (lua_type(L, 2) == LUA_TSTRING) {
-        file = lua_tostring(L, 2);
+        file = la_check_output_path(L, fn, 2);
     } else {
         static const char *const keys[] = {"file", NULL};
         la_check_keys(L, 2, fn, keys);
-        file = la_opt_string(L, 2, fn, "file", NULL);
+        file = la_opt_output_path(L, 2, fn, "file");
     }
     if (!file || !*file)
         return luaL_error(L, "%s: a file name is required", fn);
@@ -941,7 +941,7 @@ void la_open_figure(lua_State *L)
                                        {"arrows", l_arrows},     {"polyline", l_polyline},
                                        {"text", l_text},         {"normals", l_normals},
                                        {"write", l_write},       {NULL, NULL}};
-    luaL_newmetatable(L, LA_FIGURE);
+    la_new_metatable(L, LA_FIGURE);
     luaL_newlib(L, methods);
     lua_setfield(L, -2, "__index");
     lua_pushcfunction(L, l_gc);

@@ -34,7 +34,7 @@ typedef struct session {
 
 static session *get_session(lua_State *L)
 {
-    lua_getfield(L, LUA_REGISTRYINDEX, SESSION_KEY);
+    la_getfield(L, LUA_REGISTRYINDEX, SESSION_KEY);
     session *s = lua_touserdata(L, -1);
     lua_pop(L, 1);
     return s;
@@ -163,7 +163,7 @@ static int run_original(lua_State *L, int status, lua_KContext ctx)
 static void restore_run(lua_State *L)
 {
     luaL_getmetatable(L, LA_SIM);
-    lua_getfield(L, -1, "methods");
+    la_getfield(L, -1, "methods");
     lua_pushvalue(L, lua_upvalueindex(1));
     lua_setfield(L, -2, "run");
     lua_pop(L, 2);
@@ -188,8 +188,8 @@ static int run_pausing(lua_State *L)
 static void wrap_run(lua_State *L)
 {
     luaL_getmetatable(L, LA_SIM);
-    lua_getfield(L, -1, "methods");
-    lua_getfield(L, -1, "run");
+    la_getfield(L, -1, "methods");
+    la_getfield(L, -1, "run");
     lua_pushcclosure(L, run_pausing, 1);
     lua_setfield(L, -2, "run");
     lua_pop(L, 2);
@@ -248,7 +248,7 @@ static void announce_pause(lua_State *L, session *s)
     lua_pop(L, 1);
     const lm_sim *sim = la_last_sim(L);
     if (!named && sim) {
-        lua_getfield(L, LUA_REGISTRYINDEX, "lamina.last_sim");
+        la_getfield(L, LUA_REGISTRYINDEX, "lamina.last_sim");
         lua_setglobal(L, "sim");
     }
     lamina_progress_clear_line();
@@ -297,7 +297,7 @@ int lamina_script_start(lua_State *L, lamina_run *run)
     s->co = lua_newthread(L);
     lua_setfield(L, LUA_REGISTRYINDEX, THREAD_KEY);
     lamina_interrupt_add_thread(s->co);
-    if (luaL_loadfile(s->co, run->script) != LUA_OK) {
+    if (la_load_script(s->co, run->script) != LUA_OK) {
         fprintf(stderr, "lamina: %s\n", lua_tostring(s->co, -1));
         lua_settop(s->co, 0);
         return LAMINA_SCRIPT_BAD;
@@ -316,8 +316,8 @@ int lamina_script_start(lua_State *L, lamina_run *run)
     if (s->pause_at_run) {   /* it never ran: put sim:run back */
         s->pause_at_run = 0;
         luaL_getmetatable(L, LA_SIM);
-        lua_getfield(L, -1, "methods");
-        lua_getfield(L, -1, "run");
+        la_getfield(L, -1, "methods");
+        la_getfield(L, -1, "run");
         if (lua_tocfunction(L, -1) == run_pausing) {
             lua_getupvalue(L, -1, 1);
             lua_setfield(L, -3, "run");

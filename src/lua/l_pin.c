@@ -30,7 +30,7 @@ static size_t *read_points(lua_State *L, const lm_sim *sim, int b, size_t *n)
     const lm_body *bd = &sim->bodies[b];
     size_t *idx = lua_newuserdatauv(L, (bd->count ? bd->count : 1) * sizeof *idx, 0);
     size_t k = 0;
-    int t = lua_getfield(L, 2, "points");
+    int t = la_getfield(L, 2, "points");
     if (t == LUA_TSTRING) {
         const char *s = lua_tostring(L, -1);
         if (strcmp(s, "all") == 0) {
@@ -108,7 +108,7 @@ int la_body_pin(lua_State *L)
     size_t *idx = read_points(L, sim, b, &n);
     double vx = 0, vy = 0;
     int fidx = 0;
-    int vt = lua_getfield(L, 2, "velocity");
+    int vt = la_getfield(L, 2, "velocity");
     if (vt == LUA_TFUNCTION) {
         fidx = lua_gettop(L);
         call_velocity(L, fidx, sim->t + 0.5 * sim->def.dt, &vx, &vy);

@@ -34,7 +34,7 @@ static const char *num(char buf[32], double v)
 /* An optional boolean field; nil is false. */
 static int opt_flag(lua_State *L, int idx, const char *fn, const char *key)
 {
-    int t = lua_getfield(L, idx, key);
+    int t = la_getfield(L, idx, key);
     if (t != LUA_TNIL && t != LUA_TBOOLEAN)
         luaL_error(L, "%s: '%s' must be true or false (got %s)", fn, key,
                    luaL_typename(L, -1));
@@ -59,7 +59,7 @@ static int opt_range(lua_State *L, int idx, const char *fn, const char *key, dou
 
 static lr_legend legend_option(lua_State *L, int idx, const char *fn)
 {
-    int t = lua_getfield(L, idx, "legend");
+    int t = la_getfield(L, idx, "legend");
     lr_legend pos = LR_LEGEND_TOP_RIGHT;
     if (t == LUA_TBOOLEAN)
         pos = lua_toboolean(L, -1) ? LR_LEGEND_TOP_RIGHT : LR_LEGEND_NONE;
@@ -77,11 +77,12 @@ static lr_legend legend_option(lua_State *L, int idx, const char *fn)
  * here, so it lives until the binding returns. */
 static const char *csv_option(lua_State *L, int idx, const char *fn, const char *file)
 {
-    int t = lua_getfield(L, idx, "csv");
+    int t = la_getfield(L, idx, "csv");
     const char *csv = NULL;
     if (t == LUA_TSTRING) {
         csv = lua_tostring(L, -1);
         if (!*csv) luaL_error(L, "%s: 'csv' must not be empty", fn);
+        la_check_output_path(L, fn, -1);
     } else if (t == LUA_TBOOLEAN) {
         if (lua_toboolean(L, -1)) {
             size_t n = strlen(file);
@@ -91,7 +92,7 @@ static const char *csv_option(lua_State *L, int idx, const char *fn, const char 
             lua_pushlstring(L, file, png ? n - 4 : n);
             lua_pushliteral(L, ".csv");
             lua_concat(L, 2);
-            csv = lua_tostring(L, -1);
+            csv = la_check_output_path(L, fn, -1);
             lua_insert(L, -2);  /* keep the path, drop the field below it */
         }
     } else if (t != LUA_TNIL) {
@@ -106,7 +107,7 @@ static const char *csv_option(lua_State *L, int idx, const char *fn, const char 
 static void read_values(lua_State *L, int sidx, const char *sfn, const char *key,
                         double *out, size_t n)
 {
-    lua_getfield(L, sidx, key);
+    la_getfield(L, sidx, key);
     for (size_t i = 0; i < n; i++) {
         lua_rawgeti(L, -1, (lua_Integer)i + 1);
         int isnum;
@@ -122,7 +123,7 @@ static void read_values(lua_State *L, int sidx, const char *sfn, const char *key
 /* The length of array `key` of the series at sidx (an error if missing). */
 static size_t values_length(lua_State *L, int sidx, const char *sfn, const char *key)
 {
-    int t = lua_getfield(L, sidx, key);
+    int t = la_getfield(L, sidx, key);
     if (t == LUA_TNIL)
         luaL_error(L, "%s: '%s' is required (an array of numbers)", sfn, key);
     if (t != LUA_TTABLE)
@@ -138,11 +139,12 @@ static size_t values_length(lua_State *L, int sidx, const char *sfn, const char 
  * later frees them with the garbage collector. */
 static void read_series(lua_State *L, int sidx, int k, int aidx, lr_plot_series *s)
 {
-    int t = lua_getfield(L, sidx, "label");
+    int t = la_getfield(L, sidx, "label");
     if (t != LUA_TNIL && t != LUA_TSTRING)
         luaL_error(L, "lamina.plot: series %d: 'label' must be a string (got %s)", k,
                    luaL_typename(L, -1));
     s->label = lua_tostring(L, -1);   /* alive: referenced by the series table */
+    if (s->label) la_check_text(L, "lamina.plot", "series label", s->label);   /* a CSV header */
     lua_pop(L, 1);
     const char *sfn = s->label ? lua_pushfstring(L, "lamina.plot: series %d ('%s')", k,
                                                  s->label)
@@ -184,7 +186,7 @@ int la_plot(lua_State *L)
     la_check_keys(L, 1, fn, plot_keys);
     lr_plot p;
     memset(&p, 0, sizeof p);
-    const char *file = la_opt_string(L, 1, fn, "file", NULL);
+    const char *file = la_opt_output_path(L, 1, fn, "file");
     if (!file || !*file) return luaL_error(L, "%s: 'file' is required (a PNG path)", fn);
     double w = la_opt_number(L, 1, fn, "width", 800);
     double h = la_opt_number(L, 1, fn, "height", 500);
@@ -205,7 +207,7 @@ int la_plot(lua_State *L)
     if (p.csv && strcmp(p.csv, file) == 0)
         return luaL_error(L, "%s: 'csv' = '%s' is the image's own path", fn, p.csv);
 
-    if (lua_getfield(L, 1, "series") != LUA_TTABLE)
+    if (la_getfield(L, 1, "series") != LUA_TTABLE)
         return luaL_error(L, "%s: 'series' is required: a list of series, "
                           "{ {x = {...}, y = {...}, label = \"...\"}, ... }", fn);
     int list = lua_gettop(L);

@@ -39,11 +39,14 @@ typedef struct la_record {
                            taken only then */
     int has_file;
     int dirty;
+    int freed;          /* by rec_gc: every method refuses it */
 } la_record;
 
 static la_record *check_record(lua_State *L, int idx)
 {
-    return luaL_checkudata(L, idx, LA_RECORD);
+    la_record *r = luaL_checkudata(L, idx, LA_RECORD);
+    if (r->freed) luaL_error(L, "the recorder has been freed");
+    return r;
 }
 
 /* uservalue slots: 1 the sim, 2 a table {file = ..., fns = {...}} */
@@ -57,6 +60,9 @@ static la_column *add_column(lua_State *L, la_record *r, const char *name, int s
     memset(c, 0, sizeof *c);
     if (strlen(name) >= sizeof c->name)
         luaL_error(L, "sim:record: column name '%s' is too long", name);
+    la_check_text(L, "sim:record", "column name", name);   /* a CSV header line */
+    if (strpbrk(name, ",\""))
+        luaL_error(L, "sim:record: column name '%s' contains a comma or a quote", name);
     for (int i = 0; i < r->ncols - 1; i++)
         if (strcmp(r->cols[i].name, name) == 0)
             luaL_error(L, "sim:record: column '%s' is given twice", name);
@@ -74,6 +80,9 @@ static int cmp_str(const void *a, const void *b)
 static int sorted_keys(lua_State *L, int idx, const char *what, const char ***out)
 {
     idx = lua_absindex(L, idx);
+    if (!lua_istable(L, idx))   /* lua_next on a non-table crashes liblua */
+        luaL_error(L, "sim:record: '%s' must be a table of named entries (got %s)", what,
+                   luaL_typename(L, idx));
     int n = 0;
     lua_pushnil(L);
     while (lua_next(L, idx)) {
@@ -96,12 +105,12 @@ static int sorted_keys(lua_State *L, int idx, const char *what, const char ***ou
 
 static void read_points(lua_State *L, la_record *r, lm_sim *sim)
 {
-    if (lua_getfield(L, 2, "points") == LUA_TNIL) { lua_pop(L, 1); return; }
+    if (la_getfield(L, 2, "points") == LUA_TNIL) { lua_pop(L, 1); return; }
     int t = lua_gettop(L);
     const char **k;
     int n = sorted_keys(L, t, "points", &k);
     for (int i = 0; i < n; i++) {
-        lua_getfield(L, t, k[i]);
+        la_getfield(L, t, k[i]);
         if (!lua_istable(L, -1) || lua_rawlen(L, -1) != 2)
             luaL_error(L, "sim:record: points.%s must be {body, index}", k[i]);
         lua_rawgeti(L, -1, 1);
@@ -129,12 +138,12 @@ static void read_points(lua_State *L, la_record *r, lm_sim *sim)
 
 static void read_angles(lua_State *L, la_record *r, lm_sim *sim)
 {
-    if (lua_getfield(L, 2, "angle") == LUA_TNIL) { lua_pop(L, 1); return; }
+    if (la_getfield(L, 2, "angle") == LUA_TNIL) { lua_pop(L, 1); return; }
     int t = lua_gettop(L);
     const char **k;
     int n = sorted_keys(L, t, "angle", &k);
     for (int i = 0; i < n; i++) {
-        lua_getfield(L, t, k[i]);
+        la_getfield(L, t, k[i]);
         lm_sim *bs;
         int b = la_check_body(L, -1, &bs);
         if (bs != sim || sim->bodies[b].count < 2)
@@ -147,12 +156,12 @@ static void read_angles(lua_State *L, la_record *r, lm_sim *sim)
 
 static void read_values(lua_State *L, la_record *r, int fns)
 {
-    if (lua_getfield(L, 2, "values") == LUA_TNIL) { lua_pop(L, 1); return; }
+    if (la_getfield(L, 2, "values") == LUA_TNIL) { lua_pop(L, 1); return; }
     int t = lua_gettop(L);
     const char **k;
     int n = sorted_keys(L, t, "values", &k);
     for (int i = 0; i < n; i++) {
-        lua_getfield(L, t, k[i]);
+        la_getfield(L, t, k[i]);
         if (!lua_isfunction(L, -1))
             luaL_error(L, "sim:record: values.%s must be a function(sim) -> number", k[i]);
         la_column *c = add_column(L, r, k[i], SRC_VALUE);
@@ -184,7 +193,7 @@ static double sample(lua_State *L, const la_column *c, lm_sim *sim, const lm_ene
     }
     case SRC_VALUE: {
         lua_getiuservalue(L, lua_upvalueindex(1), 2);
-        lua_getfield(L, -1, "fns");
+        la_getfield(L, -1, "fns");
         lua_rawgeti(L, -1, c->which);
         lua_pushvalue(L, 1);    /* the sim */
         lua_call(L, 1, 1);
@@ -326,7 +335,7 @@ static int write_csv(lua_State *L, int ridx)
     la_record *r = check_record(L, ridx);
     if (!r->has_file) return 0;
     lua_getiuservalue(L, ridx, 2);
-    lua_getfield(L, -1, "file");
+    la_getfield(L, -1, "file");
     const char *file = lua_tostring(L, -1);
     double *avg = NULL;
     int nav = r->average > 0 ? r->ncols - 2 : 0;
@@ -379,26 +388,31 @@ void la_record_flush(lua_State *L, int sidx)
 {
     sidx = lua_absindex(L, sidx);
     lua_getiuservalue(L, sidx, 1);
-    if (lua_getfield(L, -1, "recorders") == LUA_TTABLE) {
+    if (la_getfield(L, -1, "recorders") == LUA_TTABLE) {
         int t = lua_gettop(L);
         lua_Integer n = (lua_Integer)lua_rawlen(L, t);
         for (lua_Integer i = 1; i <= n; i++) {
             lua_rawgeti(L, t, i);
-            la_record *r = check_record(L, -1);
-            if (r->dirty) write_csv(L, lua_gettop(L));
+            la_record *r = luaL_checkudata(L, -1, LA_RECORD);
+            if (!r->freed && r->dirty) write_csv(L, lua_gettop(L));
             lua_pop(L, 1);
         }
     }
     lua_pop(L, 2);
 }
 
+/* Only the collector calls this (locked metatable); idempotent anyway. */
 static int rec_gc(lua_State *L)
 {
-    la_record *r = check_record(L, 1);
+    la_record *r = luaL_checkudata(L, 1, LA_RECORD);
     free(r->cols);
     free(r->rows);
     r->cols = NULL;
     r->rows = NULL;
+    r->ncols = 0;
+    r->nrows = r->cap = 0;
+    r->dirty = 0;
+    r->freed = 1;
     return 0;
 }
 
@@ -414,7 +428,7 @@ int la_sim_record(lua_State *L)
     la_check_keys(L, 2, fn, keys);
     double every = la_opt_number(L, 2, fn, "every", s->sim->def.dt);
     if (!(every > 0)) return luaL_error(L, "%s: every must be positive (got %f)", fn, every);
-    const char *file = la_opt_string(L, 2, fn, "file", NULL);
+    const char *file = la_opt_output_path(L, 2, fn, "file");
 
     la_record *r = lua_newuserdatauv(L, sizeof *r, 2);
     memset(r, 0, sizeof *r);
@@ -436,7 +450,7 @@ int la_sim_record(lua_State *L)
 
     add_column(L, r, "t", SRC_T);
     add_column(L, r, "step", SRC_STEP);
-    lua_getfield(L, 2, "energy");
+    la_getfield(L, 2, "energy");
     int energy = lua_toboolean(L, -1);
     lua_pop(L, 1);
     r->energy = energy;
@@ -444,13 +458,13 @@ int la_sim_record(lua_State *L)
     read_points(L, r, s->sim);
     read_angles(L, r, s->sim);
     lua_getiuservalue(L, ridx, 2);
-    lua_getfield(L, -1, "fns");
+    la_getfield(L, -1, "fns");
     read_values(L, r, lua_gettop(L));
     lua_pop(L, 2);
 
     /* the sim keeps its recorders (to flush them); the event samples */
     lua_getiuservalue(L, 1, 1);
-    if (lua_getfield(L, -1, "recorders") != LUA_TTABLE) {
+    if (la_getfield(L, -1, "recorders") != LUA_TTABLE) {
         lua_pop(L, 1);
         lua_newtable(L);
         lua_pushvalue(L, -1);
@@ -475,7 +489,7 @@ void la_open_record(lua_State *L)
                                        {"mean", rec_mean},
                                        {"write", rec_write},
                                        {NULL, NULL}};
-    luaL_newmetatable(L, LA_RECORD);
+    la_new_metatable(L, LA_RECORD);
     luaL_setfuncs(L, meta, 0);
     luaL_newlib(L, methods);
     lua_setfield(L, -2, "__index");

@@ -87,6 +87,7 @@ static int region_gc(lua_State *L)
     free(r->vx);
     free(r->vy);
     r->vx = r->vy = NULL;
+    r->nv = 0;   /* idempotent, and a freed polygon contains nothing */
     return 0;
 }
 
@@ -113,7 +114,7 @@ void la_open_region(lua_State *L)
                                     {"__tostring", region_tostring},
                                     {NULL, NULL}};
     static const luaL_Reg methods[] = {{"contains", region_contains}, {NULL, NULL}};
-    luaL_newmetatable(L, LA_REGION);
+    la_new_metatable(L, LA_REGION);
     luaL_setfuncs(L, meta, 0);
     luaL_newlib(L, methods);
     lua_setfield(L, -2, "__index");

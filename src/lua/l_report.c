@@ -75,20 +75,20 @@ static void push_entry(lua_State *L, const char *name, int idx)
             luaL_error(L, "%s: '%s': unknown key '%s' (known: the value first, then "
                        "paper, unit, tol)", FN, name, luaL_tolstring(L, -1, NULL));
     }
-    if (lua_geti(L, idx, 1) == LUA_TNIL)
+    if (lua_rawgeti(L, idx, 1) == LUA_TNIL)
         luaL_error(L, "%s: '%s': the value is missing (write {value, paper = ...})", FN,
                    name);
     check_scalar(L, -1, name, " (the value)");
     lua_setfield(L, -2, "value");
-    if (lua_getfield(L, idx, "paper") != LUA_TNIL)
+    if (la_getfield(L, idx, "paper") != LUA_TNIL)
         check_scalar(L, -1, name, ".paper");
     lua_setfield(L, -2, "paper");
-    int t = lua_getfield(L, idx, "unit");
+    int t = la_getfield(L, idx, "unit");
     if (t != LUA_TNIL && t != LUA_TSTRING)
         luaL_error(L, "%s: '%s'.unit must be a string (got %s)", FN, name,
                    luaL_typename(L, -1));
     lua_setfield(L, -2, "unit");
-    t = lua_getfield(L, idx, "tol");
+    t = la_getfield(L, idx, "tol");
     if (t != LUA_TNIL && (t != LUA_TNUMBER || !(lua_tonumber(L, -1) >= 0) ||
                           !isfinite(lua_tonumber(L, -1))))
         luaL_error(L, "%s: '%s'.tol must be a finite number >= 0", FN, name);
@@ -135,11 +135,11 @@ static void add_scalar_text(lua_State *L, luaL_Buffer *b, int idx)
 static void print_entry(lua_State *L, int e)
 {
     e = lua_absindex(L, e);
-    lua_getfield(L, e, "name");
-    lua_getfield(L, e, "value");
-    lua_getfield(L, e, "unit");
-    lua_getfield(L, e, "paper");
-    lua_getfield(L, e, "tol");
+    la_getfield(L, e, "name");
+    la_getfield(L, e, "value");
+    la_getfield(L, e, "unit");
+    la_getfield(L, e, "paper");
+    la_getfield(L, e, "tol");
     int top = lua_gettop(L);
     int name = top - 4, value = top - 3, unit = top - 2, paper = top - 1, tol = top;
     luaL_Buffer b;
@@ -214,14 +214,14 @@ static void push_json(lua_State *L, int report)
 {
     static const char *const fields[] = { "name", "value", "paper", "unit", "tol" };
     lamina_run *run = la_run(L);
-    lua_Integer n = luaL_len(L, report);
+    lua_Integer n = (lua_Integer)lua_rawlen(L, report);
     int base = lua_gettop(L);
     luaL_checkstack(L, (int)(5 * n) + 4, "report too large");
     for (lua_Integer i = 1; i <= n; i++) {
-        lua_geti(L, report, i);
+        lua_rawgeti(L, report, i);
         int e = lua_gettop(L);
         for (int f = 0; f < 5; f++)
-            lua_getfield(L, e, fields[f]);
+            la_getfield(L, e, fields[f]);
         lua_remove(L, e);
     }
     luaL_Buffer b;
@@ -253,7 +253,7 @@ static void push_json(lua_State *L, int report)
 
 static void write_report(lua_State *L, int report)
 {
-    if (lua_getfield(L, LUA_REGISTRYINDEX, REPORT_FILE_KEY) != LUA_TSTRING) {
+    if (la_getfield(L, LUA_REGISTRYINDEX, REPORT_FILE_KEY) != LUA_TSTRING) {
         lua_pop(L, 1);
         return;
     }
@@ -301,23 +301,23 @@ int la_report(lua_State *L)
     int first = lua_gettop(L) + 1;
     for (size_t i = 0; i < n; i++) {
         check_name(L, names[i]);
-        lua_getfield(L, 1, names[i]);
+        la_getfield(L, 1, names[i]);
         push_entry(L, names[i], -1);
         lua_remove(L, -2);
     }
-    if (lua_getfield(L, LUA_REGISTRYINDEX, REPORT_KEY) != LUA_TTABLE) {
+    if (la_getfield(L, LUA_REGISTRYINDEX, REPORT_KEY) != LUA_TTABLE) {
         lua_pop(L, 1);
         lua_newtable(L);
         lua_pushvalue(L, -1);
         lua_setfield(L, LUA_REGISTRYINDEX, REPORT_KEY);
     }
     int report = lua_gettop(L);
-    lua_Integer len = luaL_len(L, report);
+    lua_Integer len = (lua_Integer)lua_rawlen(L, report);
     for (size_t i = 0; i < n; i++) {
         lua_Integer slot = len + 1;
         for (lua_Integer j = 1; j <= len; j++) {
-            lua_geti(L, report, j);
-            lua_getfield(L, -1, "name");
+            lua_rawgeti(L, report, j);
+            la_getfield(L, -1, "name");
             int same = strcmp(lua_tostring(L, -1), names[i]) == 0;
             lua_pop(L, 2);
             if (same) {

@@ -27,7 +27,7 @@ void la_set_last_sim(lua_State *L, int sidx)
 
 const lm_sim *la_last_sim(lua_State *L)
 {
-    lua_getfield(L, LUA_REGISTRYINDEX, LAST_SIM_KEY);
+    la_getfield(L, LUA_REGISTRYINDEX, LAST_SIM_KEY);
     la_sim *s = luaL_testudata(L, -1, LA_SIM);
     lua_pop(L, 1);
     return s ? s->sim : NULL;
@@ -36,7 +36,7 @@ const lm_sim *la_last_sim(lua_State *L)
 static void record(lua_State *L, const lm_sim *sim, const char *what, const char *value,
                    int prompt)
 {
-    if (lua_getfield(L, LUA_REGISTRYINDEX, CHANGES_KEY) != LUA_TTABLE) {
+    if (la_getfield(L, LUA_REGISTRYINDEX, CHANGES_KEY) != LUA_TTABLE) {
         lua_pop(L, 1);
         lua_newtable(L);
         lua_pushvalue(L, -1);
@@ -97,7 +97,7 @@ void la_log_change(lua_State *L, const char *what, const char *key, int validx)
 int la_changes(lua_State *L)
 {
     lua_newtable(L);
-    if (lua_getfield(L, LUA_REGISTRYINDEX, CHANGES_KEY) != LUA_TTABLE) {
+    if (la_getfield(L, LUA_REGISTRYINDEX, CHANGES_KEY) != LUA_TTABLE) {
         lua_pop(L, 1);
         return 1;
     }

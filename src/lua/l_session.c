@@ -42,7 +42,7 @@ int lamina_run_watched(lua_State *L, lamina_run *run, char *msg, size_t len)
     run->stop_why = NULL;
     lua_pushcfunction(L, msghandler);
     int base = lua_gettop(L);
-    if (luaL_loadfile(L, run->script) != LUA_OK) {
+    if (la_load_script(L, run->script) != LUA_OK) {
         fprintf(stderr, "lamina: %s\n", lua_tostring(L, -1));
         first_line(lua_tostring(L, -1), msg, len);
         lua_settop(L, base - 1);
@@ -58,7 +58,7 @@ int lamina_run_watched(lua_State *L, lamina_run *run, char *msg, size_t len)
         if (!run->stopped) {
             lamina_progress_clear_line();
             fprintf(stderr, "lamina: %s\n", err ? err : "(error)");
-            status = run->sim_failed ? LAMINA_EXIT_SIM : LAMINA_EXIT_USAGE;
+            status = la_exit_status_of(L, err);
         }
     } else {
         for (int i = 0; i < run->nsets; i++) {
@@ -91,7 +91,7 @@ void lamina_report_line(lua_State *L, char *buf, size_t len)
 {
     if (!len) return;
     buf[0] = 0;
-    if (lua_getfield(L, LUA_REGISTRYINDEX, REPORT_KEY) != LUA_TTABLE) {
+    if (la_getfield(L, LUA_REGISTRYINDEX, REPORT_KEY) != LUA_TTABLE) {
         lua_pop(L, 1);
         return;
     }
@@ -99,8 +99,8 @@ void lamina_report_line(lua_State *L, char *buf, size_t len)
     for (lua_Integer i = 1; i <= n; i++) {
         lua_geti(L, -1, i);
         if (lua_istable(L, -1)) {
-            lua_getfield(L, -1, "name");
-            lua_getfield(L, -2, "value");
+            la_getfield(L, -1, "name");
+            la_getfield(L, -2, "value");
             size_t used = strlen(buf);
             snprintf(buf + used, len - used, "%s%s = ", i > 1 ? ", " : "",
                      lua_isstring(L, -2) ? lua_tostring(L, -2) : "?");

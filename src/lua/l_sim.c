@@ -37,7 +37,7 @@ void la_sim_keep(lua_State *L, int sidx, int idx)
 
 static void read_cell(lua_State *L, const char *fn, lm_sim_def *d)
 {
-    int t = lua_getfield(L, 1, "cell");
+    int t = la_getfield(L, 1, "cell");
     lua_pop(L, 1);
     if (t == LUA_TTABLE) {
         la_pair(L, 1, fn, "cell", &d->hx, &d->hy);
@@ -48,7 +48,7 @@ static void read_cell(lua_State *L, const char *fn, lm_sim_def *d)
 
 static void read_domain(lua_State *L, const char *fn, lm_sim_def *d)
 {
-    if (lua_getfield(L, 1, "domain") == LUA_TNIL) {
+    if (la_getfield(L, 1, "domain") == LUA_TNIL) {
         lua_pop(L, 1);
         return;
     }
@@ -70,7 +70,7 @@ static void read_domain(lua_State *L, const char *fn, lm_sim_def *d)
  * top = ...}; sides not named keep the default, fixed. */
 static void read_boundary(lua_State *L, const char *fn, lm_sim_def *d)
 {
-    int t = lua_getfield(L, 1, "boundary");
+    int t = la_getfield(L, 1, "boundary");
     if (t == LUA_TSTRING) {
         int bc = la_option(L, fn, "boundary", lua_tostring(L, -1), bcs);
         for (int s = 0; s < 4; s++) d->bc[s] = (lm_bc)bc;
@@ -103,6 +103,8 @@ int la_sim_new(lua_State *L)
     d.stress = (lm_stress)la_option(L, fn, "stress",
                                     la_opt_string(L, 1, fn, "stress", "points"), stresses);
     if (la_has(L, 1, "gravity")) la_pair(L, 1, fn, "gravity", &d.gx, &d.gy);
+    if (!isfinite(d.gx) || !isfinite(d.gy))   /* else blamed on dt steps later */
+        luaL_error(L, "%s: 'gravity' must be two finite numbers (got {%f, %f})", fn, d.gx, d.gy);
     read_boundary(L, fn, &d);
     d.basis = (lm_basis)la_option(L, fn, "basis", la_opt_string(L, 1, fn, "basis", "linear"),
                                   bases);
@@ -140,6 +142,8 @@ int la_sim_new(lua_State *L)
     return 1;
 }
 
+/* Only the collector calls this (the metatable is locked, there is no
+ * __close); it is idempotent anyway, and la_check_sim refuses a freed sim. */
 static int sim_gc(lua_State *L)
 {
     la_sim *s = luaL_checkudata(L, 1, LA_SIM);
@@ -152,6 +156,7 @@ static int sim_gc(lua_State *L)
     s->ev = NULL;
     s->pinf = NULL;
     s->npinf = 0;
+    s->nev = s->capev = 0;
     return 0;
 }
 
@@ -224,12 +229,21 @@ static void fire_due(lua_State *L, la_sim *s)
         la_event *e = &s->ev[i];
         if (e->done || e->next > now) continue;
         if (e->interval > 0) {
-            /* next multiple after now: an interval shorter than dt fires
-             * once per step, not in bursts */
-            do {
-                e->k++;
-                e->next = e->t0 + e->k * e->interval;
-            } while (e->next <= now);
+            /* the first multiple after now, computed, not counted up to: an
+             * interval far below dt (1e-300) would loop for ever; an
+             * interval shorter than dt fires once per step, not in bursts */
+            double k = floor((now - e->t0) / e->interval) + 1;
+            if (!(k > e->k)) k = e->k + 1;
+            /* the division may round: settle on the first multiple past now,
+             * as counting up did (a step or two at most) */
+            for (int j = 0; j < 4 && k - 1 > e->k && e->t0 + (k - 1) * e->interval > now; j++)
+                k--;
+            for (int j = 0; j < 4 && !(e->t0 + k * e->interval > now); j++) k++;
+            e->k = k;
+            e->next = e->t0 + k * e->interval;
+            /* rounding, or an interval so small that the count overflows
+             * (5e-324): the next step */
+            if (!(e->next > now) || !isfinite(e->next)) e->next = nextafter(now, HUGE_VAL);
         } else {
             e->done = 1;
         }
@@ -240,6 +254,7 @@ static void fire_due(lua_State *L, la_sim *s)
         if (lua_pcall(L, 1, 0, 0) != LUA_OK) {
             s->running = 0;
             la_run(L)->active = NULL;
+            la_record_flush(L, 1);   /* what was recorded is kept (an error, Ctrl-C) */
             lua_error(L);
         }
     }
@@ -264,41 +279,79 @@ void la_sim_skip_due(la_sim *s)
 
 /* ---- stepping -------------------------------------------------------- */
 
+/* "simulation failed: ..." (exit status 1). The message is remembered: a
+ * script may catch it with pcall and then fail for another reason, which
+ * is its own mistake (exit status 2), not the simulation's. */
+void la_raise_sim_failure(lua_State *L, const char *why)
+{
+    luaL_where(L, 1);
+    lua_pushfstring(L, "simulation failed: %s", why);
+    lua_concat(L, 2);
+    lua_pushvalue(L, -1);
+    lua_setfield(L, LUA_REGISTRYINDEX, "lamina.sim_failure");
+    la_run(L)->sim_failed = 1;
+    lua_error(L);
+}
+
+int la_exit_status_of(lua_State *L, const char *msg)
+{
+    lamina_run *run = la_run(L);
+    int failed = 0;
+    if (run && run->sim_failed && msg &&
+        lua_getfield(L, LUA_REGISTRYINDEX, "lamina.sim_failure") == LUA_TSTRING) {
+        failed = strstr(msg, lua_tostring(L, -1)) != NULL;
+    }
+    if (run && run->sim_failed) lua_pop(L, 1);
+    return failed ? LAMINA_EXIT_SIM : LAMINA_EXIT_USAGE;
+}
+
 /* design.md: a dt whose Courant number exceeds `courant` (times the
  * basis' factor, lm_basis_courant_factor) is refused with the limit
- * printed. */
-static void check_courant(lua_State *L, la_sim *s)
+ * printed, naming the body whose wave speed sets it. */
+static int courant_exceeded(la_sim *s, char *msg, size_t len)
 {
     double c;
     int b;
     double cn = lm_sim_courant_body(s->sim, &c, &b);
     double limit = lm_sim_courant_limit(s->sim);
-    if (cn > limit * (1 + 1e-12)) {
-        double h = fmin(s->sim->grid.hx, s->sim->grid.hy);
-        char basis[96] = "", who[96] = "", why[200] = "";
-        if (limit != s->sim->def.courant)
-            snprintf(basis, sizeof basis, " x %g for basis = \"%s\"",
-                     lm_basis_courant_factor(s->sim->def.basis),
-                     lm_basis_name(s->sim->def.basis));
-        if (b >= 0) {
-            const lm_body *bd = &s->sim->bodies[b];
-            lm_body_label(s->sim, b, who, sizeof who);
-            if (bd->membrane && bd->force == LM_MFORCE_SEGMENT)
-                snprintf(why, sizeof why, "; its tension acts along segments, stable to "
-                         "dt*c/h = %g, so c counts as its wave speed / %g",
-                         LM_SEGMENT_COURANT, LM_SEGMENT_COURANT);
-        }
-        char msg[700];
-        snprintf(msg, sizeof msg,
-                 "dt = %g is too large: Courant number dt*c/h = %g exceeds "
-                 "courant = %g%s (c_max = %g from %s%s, h = %g); use dt <= %g or raise courant",
-                 s->sim->def.dt, cn, s->sim->def.courant, basis, c, b >= 0 ? who : "no body",
-                 why, h, limit * h / c);
-        luaL_error(L, "%s", msg);
+    if (!(cn > limit * (1 + 1e-12))) return 0;
+    double h = fmin(s->sim->grid.hx, s->sim->grid.hy);
+    char basis[96] = "", who[96] = "", why[200] = "";
+    if (limit != s->sim->def.courant)
+        snprintf(basis, sizeof basis, " x %g for basis = \"%s\"",
+                 lm_basis_courant_factor(s->sim->def.basis), lm_basis_name(s->sim->def.basis));
+    if (b >= 0) {
+        const lm_body *bd = &s->sim->bodies[b];
+        lm_body_label(s->sim, b, who, sizeof who);
+        if (bd->membrane && bd->force == LM_MFORCE_SEGMENT)
+            snprintf(why, sizeof why, "; its tension acts along segments, stable to "
+                     "dt*c/h = %g, so c counts as its wave speed / %g",
+                     LM_SEGMENT_COURANT, LM_SEGMENT_COURANT);
     }
+    snprintf(msg, len,
+             "dt = %g is too large: Courant number dt*c/h = %g exceeds "
+             "courant = %g%s (c_max = %g from %s%s, h = %g); use dt <= %g or raise courant",
+             s->sim->def.dt, cn, s->sim->def.courant, basis, c, b >= 0 ? who : "no body", why,
+             h, limit * h / c);
+    return 1;
 }
 
-static void advance(lua_State *L, la_sim *s, long nsteps)
+static void check_courant(lua_State *L, la_sim *s)
+{
+    char msg[700];
+    if (courant_exceeded(s, msg, sizeof msg)) luaL_error(L, "%s", msg);
+}
+
+/* The steps left to t_end at the current dt: a dt changed by a callback
+ * applies at once, so the run still ends on t_end instead of overshooting. */
+static long steps_to(const la_sim *s, double t_end)
+{
+    double n = floor((t_end - s->sim->t) / s->sim->def.dt + 0.5);
+    return n > 0 ? (long)fmin(n, 1e12) : 0;
+}
+
+/* nsteps steps (sim:step), or up to t_end when it is a number (sim:run). */
+static void advance(lua_State *L, la_sim *s, long nsteps, double t_end)
 {
     if (s->running) luaL_error(L, "sim:run/sim:step called from inside a callback");
     check_courant(L, s);
@@ -308,16 +361,15 @@ static void advance(lua_State *L, la_sim *s, long nsteps)
     la_progress_begin(L, 1, nsteps);
     fire_due(L, s);
     la_checkpoint_due(L, 1, s);
-    for (long n = 0; n < nsteps; n++) {
+    for (long n = 0; isnan(t_end) ? n < nsteps : steps_to(s, t_end) > 0; n++) {
         la_pins_update(L, 1, s);
         lm_status st = lm_sim_step(s->sim);
         if (st != LM_OK) {
             s->running = 0;
             run->active = NULL;
-            run->sim_failed = 1;
             la_progress_end(L);
             la_record_flush(L, 1);   /* the history up to the failure is kept */
-            luaL_error(L, "simulation failed: %s", s->sim->err);
+            la_raise_sim_failure(L, s->sim->err);
         }
         fire_due(L, s);
         la_checkpoint_due(L, 1, s);
@@ -341,10 +393,12 @@ static int sim_run(lua_State *L)
     la_sim *s = la_check_sim(L, 1);
     la_check_keys(L, 2, "sim:run", keys);
     double t_end = la_number(L, 2, "sim:run", "t_end");
+    if (!isfinite(t_end))   /* NaN compared false everywhere: 0 steps, exit 0 */
+        return luaL_error(L, "sim:run: t_end must be a finite number (got %f)", t_end);
     if (!s->running) la_checkpoint_restore(L, 1, s);   /* --restart: before counting steps */
     double n = floor((t_end - s->sim->t) / s->sim->def.dt + 0.5);
     if (n > 1e12) return luaL_error(L, "sim:run: t_end = %f needs %f steps", t_end, n);
-    advance(L, s, n > 0 ? (long)n : 0);
+    advance(L, s, n > 0 ? (long)n : 0, t_end);
     return 0;
 }
 
@@ -361,7 +415,7 @@ static int sim_step(lua_State *L)
         n -= s->sim->step - before;
         if (n < 0) n = 0;
     }
-    advance(L, s, (long)n);
+    advance(L, s, (long)n, NAN);
     return 0;
 }
 
@@ -439,7 +493,7 @@ static int sim_index(lua_State *L)
     }
     else {
         luaL_getmetafield(L, 1, "methods");
-        lua_getfield(L, -1, k);
+        la_getfield(L, -1, k);
         if (lua_isnil(L, -1)) return luaL_error(L, "sim has no field or method '%s'", k);
     }
     return 1;
@@ -457,13 +511,24 @@ static int sim_newindex(lua_State *L)
     if (strcmp(k, "dt") == 0) {
         double dt = luaL_checknumber(L, 3);
         if (!(dt > 0) || !isfinite(dt)) return luaL_error(L, "sim.dt must be positive (got %f)", dt);
+        double old = m->def.dt;
         lm_sim_set_dt(m, dt);
+        /* checked as at the start of a run (s.dt = 1e300 was not): a dt
+         * past the Courant limit is refused and the old one kept */
+        char msg[700];
+        if (courant_exceeded(s, msg, sizeof msg)) {
+            lm_sim_set_dt(m, old);
+            return luaL_error(L, "sim.%s", msg);
+        }
     } else if (strcmp(k, "gravity") == 0) {
         luaL_checktype(L, 3, LUA_TTABLE);
         lua_rawgeti(L, 3, 1);
         lua_rawgeti(L, 3, 2);
-        m->def.gx = luaL_checknumber(L, -2);
-        m->def.gy = luaL_checknumber(L, -1);
+        double gx = luaL_checknumber(L, -2), gy = luaL_checknumber(L, -1);
+        if (!isfinite(gx) || !isfinite(gy))
+            return luaL_error(L, "sim.gravity must be two finite numbers (got {%f, %f})", gx, gy);
+        m->def.gx = gx;
+        m->def.gy = gy;
         lua_pop(L, 2);
     } else if (strcmp(k, "pic") == 0) {
         double v = luaL_checknumber(L, 3);
@@ -510,7 +575,7 @@ void la_open_sim(lua_State *L)
     lua_setmetatable(L, -2);
     lua_pop(L, 1);
 
-    static const luaL_Reg meta[] = {{"__gc", sim_gc}, {"__close", sim_gc},
+    static const luaL_Reg meta[] = {{"__gc", sim_gc},
                                     {"__index", sim_index},
                                     {"__newindex", sim_newindex},
                                     {"__tostring", sim_tostring},
@@ -530,7 +595,7 @@ void la_open_sim(lua_State *L)
                                        {"courant", sim_courant},
                                        {"frame", la_sim_frame},
                                        {NULL, NULL}};
-    luaL_newmetatable(L, LA_SIM);
+    la_new_metatable(L, LA_SIM);
     luaL_setfuncs(L, meta, 0);
     luaL_newlib(L, methods);
     lua_setfield(L, -2, "methods");

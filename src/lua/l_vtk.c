@@ -245,12 +245,16 @@ int la_sim_vtk(lua_State *L)
     const char *fn = "sim:vtk";
     la_sim *s = la_check_sim(L, 1);
     la_check_keys(L, 2, fn, keys);
-    lua_getfield(L, 2, "file");
+    la_getfield(L, 2, "file");
     size_t len;
     const char *file = lua_tolstring(L, -1, &len);
     if (!file || len == 0) return luaL_error(L, "%s: 'file' (a path without extension) is required", fn);
     if (strlen(file) != len) return luaL_error(L, "%s: 'file' contains a NUL byte", fn);
     if (len >= PREFIX_MAX - 32) return luaL_error(L, "%s: 'file' is too long", fn);
+    /* every file goes beside FILE.pvd: confined as every output is (l_path.c) */
+    lua_pushfstring(L, "%s.pvd", file);
+    la_check_output_path(L, fn, -1);
+    lua_pop(L, 1);
     double every = la_opt_number(L, 2, fn, "every", 0);
     if (la_has(L, 2, "every") && !(every > 0))
         return luaL_error(L, "%s: every must be positive (got %f)", fn, every);

@@ -49,10 +49,25 @@ typedef struct lamina_run {
     const char *restart;        /* --restart FILE: a checkpoint to continue */
     int restored;               /* it has been loaded */
     int nsims;                  /* lamina.sim calls so far */
+    /* the Lua state's memory (l_alloc.c): a cap, bytes (0: the default,
+     * LAMINA_LUA_MEM_DEFAULT_MB; lamina run --lua-mem MB), in use, peak */
+    size_t lua_mem_limit, lua_mem_used, lua_mem_peak;
 } lamina_run;
 
-/* A Lua state with the safe standard libraries and `lamina` as a global. */
+/* The default cap on a script's Lua memory, in MB: far above what any
+ * script in scripts/ or tests/ uses (a few MB; the engine's particles and
+ * grid are not Lua memory), far below what would make a machine swap. */
+#define LAMINA_LUA_MEM_DEFAULT_MB 1024
+
+/* A Lua state with the safe standard libraries and `lamina` as a global;
+ * its memory is capped at run->lua_mem_limit (run must outlive it). */
 lua_State *lamina_open_state(lamina_run *run);
+/* `lamina run --out-root DIR`: the folder every file a script writes must
+ * stay in (else the working directory). 0, or -1 with err. */
+int lamina_set_output_root(lua_State *L, const char *dir, char *err, size_t len);
+/* 0 when path names a regular file (not /dev/zero, a FIFO, a folder), else
+ * -1 with err "cannot read script 'PATH': why". */
+int lamina_check_script_file(const char *path, char *err, size_t len);
 /* Loads and runs run->script in L; prints errors with file:line and a
  * traceback to stderr; returns the exit status. */
 int lamina_run_script(lua_State *L, lamina_run *run);
@@ -65,6 +80,10 @@ int lamina_run_script(lua_State *L, lamina_run *run);
  * "interrupted at t = ..., step ...". */
 void lamina_interrupt_install(lua_State *L);
 void lamina_interrupt_add_thread(lua_State *thread);
+/* lamina run: SIGTERM too; the signal that stopped the run (SIGINT or
+ * SIGTERM), whose 128 + number is lamina run's exit status then. */
+void lamina_interrupt_install_term(void);
+int lamina_interrupt_signal(void);
 void lamina_interrupt_uninstall(void);
 int lamina_interrupt_pending(void);
 void lamina_interrupt_clear(void);

@@ -86,6 +86,10 @@ int lm_material_validate(const lm_material *mat, char *err, size_t errlen);
 /* Most threads a step can use (lamina.sim{threads}; threads.h). */
 #define LM_MAX_THREADS 256
 
+/* Most particles of a simulation, however they come (seeding, gas
+ * splitting): five times the performance benchmark's 10^7 (design.md). */
+#define LM_MAX_PARTICLES 50000000
+
 /* ---- grid (grid.c) ----------------------------------------------------- */
 
 typedef struct lm_grid {

@@ -5,7 +5,10 @@
 
 #include "mpm.h"
 
-static int clampi(int v, int lo, int hi) { return v < lo ? lo : v > hi ? hi : v; }
+/* A cell index in [0, hi] from a double: clamped before the conversion, as
+ * a region far larger than the domain (a disk of radius 1e12) or a NaN
+ * would not fit an int (found by fuzzing, tests/fuzz). */
+static int cell_index(double v, int hi) { return !(v > 0) ? 0 : v > hi ? hi : (int)v; }
 
 lm_seed_range lm_seed_range_for(const lm_grid *g, int npx, int npy,
                                 double x0, double y0, double x1, double y1)
@@ -13,10 +16,10 @@ lm_seed_range lm_seed_range_for(const lm_grid *g, int npx, int npy,
     lm_seed_range r;
     r.npx = npx;
     r.npy = npy;
-    r.i0 = clampi((int)floor((x0 - g->x0) / g->hx), 0, g->nx);
-    r.i1 = clampi((int)ceil((x1 - g->x0) / g->hx), 0, g->nx);
-    r.j0 = clampi((int)floor((y0 - g->y0) / g->hy), 0, g->ny);
-    r.j1 = clampi((int)ceil((y1 - g->y0) / g->hy), 0, g->ny);
+    r.i0 = cell_index(floor((x0 - g->x0) / g->hx), g->nx);
+    r.i1 = cell_index(ceil((x1 - g->x0) / g->hx), g->nx);
+    r.j0 = cell_index(floor((y0 - g->y0) / g->hy), g->ny);
+    r.j1 = cell_index(ceil((y1 - g->y0) / g->hy), g->ny);
     return r;
 }
 

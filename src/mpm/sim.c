@@ -23,11 +23,11 @@ void lm_sim_def_default(lm_sim_def *def)
 
 /* Whole cells cover the domain; a domain that is a multiple of the cell
  * size up to rounding gets exactly that many. */
-static int cells(double len, double h)
+static double cells(double len, double h)
 {
     double n = len / h;
     double r = floor(n + 0.5);
-    return fabs(n - r) < 1e-9 * (r > 1 ? r : 1) ? (int)r : (int)ceil(n);
+    return fabs(n - r) < 1e-9 * (r > 1 ? r : 1) ? r : ceil(n);
 }
 
 static int grid_alloc(lm_grid *g)
@@ -71,9 +71,12 @@ lm_sim *lm_sim_new(const lm_sim_def *def, char *err, size_t errlen)
         snprintf(err, errlen, "courant must be positive (got %g)", def->courant);
         return NULL;
     }
-    double ncells = ((def->x1 - def->x0) / def->hx) * ((def->y1 - def->y0) / def->hy);
-    if (ncells > 1e8) {
-        snprintf(err, errlen, "grid of %.3g cells is too large (limit 1e8)", ncells);
+    /* the product of the rounded counts: unequal cells (1e9 x 1e-8 before
+     * rounding, 1e9 x 1 after) must not pass as 10 cells */
+    double cx = cells(def->x1 - def->x0, def->hx), cy = cells(def->y1 - def->y0, def->hy);
+    if (cx * cy > 1e8) {
+        snprintf(err, errlen, "grid of %.0f x %.0f = %.3g cells is too large (limit 1e8)",
+                 cx, cy, cx * cy);
         return NULL;
     }
     lm_sim *sim = calloc(1, sizeof *sim);
@@ -87,8 +90,8 @@ lm_sim *lm_sim_new(const lm_sim_def *def, char *err, size_t errlen)
     g->y0 = def->y0;
     g->hx = def->hx;
     g->hy = def->hy;
-    g->nx = cells(def->x1 - def->x0, def->hx);
-    g->ny = cells(def->y1 - def->y0, def->hy);
+    g->nx = (int)cx;
+    g->ny = (int)cy;
     memcpy(g->bc, def->bc, sizeof g->bc);
     lm_grid_layout(g, def->basis);
     sim->p.ns = g->sw * g->sw;
@@ -196,6 +199,12 @@ lm_status lm_sim_add_particle(lm_sim *sim, int body, double x, double y,
     if (!(mass > 0) || !(rho > 0)) {
         snprintf(sim->err, sizeof sim->err,
                  "particle mass and density must be positive (got %g, %g)", mass, rho);
+        return LM_ERR_INPUT;
+    }
+    if (p->n >= LM_MAX_PARTICLES) {   /* bodies and membranes alike */
+        snprintf(sim->err, sizeof sim->err,
+                 "the simulation would have more than the limit of %d particles",
+                 LM_MAX_PARTICLES);
         return LM_ERR_INPUT;
     }
     if (p->n == p->cap &&

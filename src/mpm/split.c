@@ -110,6 +110,12 @@ lm_status lm_step_split(lm_sim *sim)
     size_t total = 0;
     for (size_t q = 0; q < p->n; q++) total += flag[q] = (unsigned char)wants_split(sim, q);
     size_t n_new = p->n + 3 * total;
+    if (n_new > LM_MAX_PARTICLES) {   /* splitting must not bypass the limit */
+        free(flag);
+        snprintf(sim->err, sizeof sim->err, "gas splitting would make %zu particles, more "
+                 "than the limit of %d (a smaller split)", n_new, LM_MAX_PARTICLES);
+        return LM_ERR_MEMORY;
+    }
     if (total == 0 || (n_new > p->cap &&
                        lm_particles_reserve(p, n_new > 2 * p->cap ? n_new : 2 * p->cap))) {
         free(flag);

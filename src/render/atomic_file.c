@@ -1,5 +1,6 @@
 /* atomic_file.c - temporary, then rename: see atomic_file.h. */
 #include "atomic_file.h"
+#include "stale_temp.h"
 
 #include <errno.h>
 #include <stdarg.h>
@@ -18,18 +19,22 @@ static void set_err(char *err, size_t errlen, const char *fmt, ...)
     va_end(ap);
 }
 
-/* Makes sure dir exists as a directory, creating it if missing. */
-static int ensure_dir(const char *dir, const char *path, char *err, size_t errlen)
+/* Makes sure dir exists as a directory, creating it if missing; *made is
+ * set when this call created it. */
+static int ensure_dir(const char *dir, const char *path, int *made, char *err, size_t errlen)
 {
     struct stat st;
+    *made = 0;
     if (stat(dir, &st) != 0) {
         if (errno != ENOENT) {
             set_err(err, errlen, "cannot write '%s': '%s': %s", path, dir,
                     strerror(errno));
             return -1;
         }
-        if (mkdir(dir, 0777) == 0)
+        if (mkdir(dir, 0777) == 0) {
+            *made = 1;
             return 0;
+        }
         /* another process may have created it in between */
         if (errno != EEXIST || stat(dir, &st) != 0) {
             set_err(err, errlen, "cannot write '%s': cannot create directory "
@@ -45,8 +50,26 @@ static int ensure_dir(const char *dir, const char *path, char *err, size_t errle
     return 0;
 }
 
-/* mkdir -p for the directory part of path. */
-static int make_parents(const char *path, char *err, size_t errlen)
+/* Removes the folders a->dir created, deepest first (rmdir: only while
+ * empty, so nothing another writer put there is lost). */
+static void remove_made(lr_atomic *a)
+{
+    if (!a->dir) return;
+    size_t len = strlen(a->dir);
+    while (a->made && len >= a->made) {
+        a->dir[len] = '\0';
+        if (rmdir(a->dir) != 0) break;
+        while (len > 0 && a->dir[len - 1] != '/') len--;   /* up one */
+        while (len > 1 && a->dir[len - 1] == '/') len--;
+        if (len == 0) break;
+    }
+    free(a->dir);
+    a->dir = NULL;
+    a->made = 0;
+}
+
+/* mkdir -p for the directory part of path; remembers in a what it made. */
+static int make_parents(lr_atomic *a, const char *path, char *err, size_t errlen)
 {
     const char *slash = strrchr(path, '/');
     if (!slash || slash == path)
@@ -60,16 +83,27 @@ static int make_parents(const char *path, char *err, size_t errlen)
     memcpy(dir, path, len);
     dir[len] = '\0';
     int rc = 0;
+    a->dir = dir;
+    a->made = 0;
     for (size_t i = 1; i <= len && rc == 0; i++) {
         if (i < len && (dir[i] != '/' || dir[i - 1] == '/'))
             continue;   /* not the end of a component (or a repeated '/') */
         char keep = dir[i];
         dir[i] = '\0';
-        rc = ensure_dir(dir, path, err, errlen);
+        int made;
+        rc = ensure_dir(dir, path, &made, err, errlen);
         dir[i] = keep;
+        if (made && !a->made) a->made = i;
     }
-    free(dir);
-    return rc;
+    if (rc != 0) {
+        remove_made(a);
+        return -1;
+    }
+    if (!a->made) {   /* nothing created: nothing to undo */
+        free(a->dir);
+        a->dir = NULL;
+    }
+    return 0;
 }
 
 static int check_target(const char *path, char *err, size_t errlen)
@@ -81,19 +115,6 @@ static int check_target(const char *path, char *err, size_t errlen)
         return -1;
     }
     return 0;
-}
-
-/* "<path>.tmp.XXXXXX": same directory, so rename(2) stays atomic. */
-static char *temp_template(const char *path)
-{
-    static const char suffix[] = ".tmp.XXXXXX";
-    size_t n = strlen(path);
-    char *t = malloc(n + sizeof suffix);
-    if (!t)
-        return NULL;
-    memcpy(t, path, n);
-    memcpy(t + n, suffix, sizeof suffix);
-    return t;
 }
 
 /* mkstemp creates mode 0600; an output should get the mode any new file of
@@ -114,12 +135,16 @@ int lr_atomic_open(lr_atomic *a, const char *path, char *err, size_t errlen)
         set_err(err, errlen, "cannot write: empty path");
         return -1;
     }
-    if (make_parents(path, err, errlen) != 0 || check_target(path, err, errlen) != 0)
+    if (check_target(path, err, errlen) != 0 || make_parents(a, path, err, errlen) != 0)
         return -1;
     a->path = path;
-    a->tmp = temp_template(path);
+    lr_remove_stale_temps(path);   /* left by a killed run (stale_temp.h) */
+    /* "<path>.tmp.<host>.<pid>.XXXXXX": same directory, so rename(2) stays
+     * atomic; the owner in the name lets a later run remove it */
+    a->tmp = lr_temp_template(path);
     if (!a->tmp) {
         set_err(err, errlen, "cannot write '%s': out of memory", path);
+        remove_made(a);
         return -1;
     }
     int fd = mkstemp(a->tmp);
@@ -128,6 +153,7 @@ int lr_atomic_open(lr_atomic *a, const char *path, char *err, size_t errlen)
                 "file: %s", path, strerror(errno));
         free(a->tmp);
         a->tmp = NULL;
+        remove_made(a);
         return -1;
     }
     if (give_default_mode(fd) != 0 || !(a->fp = fdopen(fd, "wb"))) {
@@ -137,6 +163,7 @@ int lr_atomic_open(lr_atomic *a, const char *path, char *err, size_t errlen)
         set_err(err, errlen, "cannot write '%s': %s", path, strerror(e));
         free(a->tmp);
         a->tmp = NULL;
+        remove_made(a);
         return -1;
     }
     return 0;
@@ -154,6 +181,7 @@ int lr_atomic_abort(lr_atomic *a, const char *why, char *err, size_t errlen)
         set_err(err, errlen, "cannot write '%s': %s", a->path, why);
     free(a->tmp);
     a->tmp = NULL;
+    remove_made(a);
     return -1;
 }
 
@@ -174,6 +202,8 @@ int lr_atomic_commit(lr_atomic *a, char *err, size_t errlen)
         return lr_atomic_abort(a, e ? strerror(e) : "write error", err, errlen);
     free(a->tmp);
     a->tmp = NULL;
+    free(a->dir);   /* the folders stay: they hold the file */
+    a->dir = NULL;
     return 0;
 }
 

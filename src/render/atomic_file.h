@@ -3,7 +3,8 @@
  * Every output of lamina (PNG frames, plots, CSV, reports) goes into a
  * temporary beside its target and is renamed over it only once written and
  * closed without error; on any failure the temporary is removed and the
- * target is untouched. Missing parent folders are created. A target that
+ * target is untouched. Missing parent folders are created, and removed
+ * again when the write fails (a failed deep path leaves no folders). A target that
  * exists and is not a regular file (a device, FIFO or folder) is refused:
  * rename(2) would replace it, and as root that could be /dev/null. */
 #ifndef LAMINA_ATOMIC_FILE_H
@@ -14,8 +15,11 @@
 
 typedef struct lr_atomic {
     FILE *fp;           /* write here */
-    char *tmp;          /* "<path>.tmp.XXXXXX" */
+    char *tmp;          /* "<path>.tmp.<host>.<pid>.XXXXXX" (stale_temp.h) */
     const char *path;   /* the target (borrowed) */
+    char *dir;          /* the folders created for it, "a/b/c" (or NULL) */
+    size_t made;        /* ... from the prefix of this length down: a failed
+                           write removes them again */
 } lr_atomic;
 
 /* 0, or -1 with err set ("cannot write 'PATH': why"). */

@@ -102,15 +102,19 @@ lr_canvas *lr_canvas_cairo_new(int width, int height, char *err, size_t errlen)
         set_err(err, errlen, "cannot create canvas", why);
         return NULL;
     }
+    /* the size is named: "out of memory" alone does not say that a 16384
+     * x 16384 image needs 1 GB (issue 18) */
+    char what[64];
+    snprintf(what, sizeof what, "cannot create a %d x %d canvas", width, height);
     cc_canvas *c = canvas_alloc(width, height);
     if (!c) {
-        set_err(err, errlen, "cannot create canvas", "out of memory");
+        set_err(err, errlen, what, "out of memory");
         return NULL;
     }
     c->surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height);
     cairo_status_t st = canvas_start(c);
     if (st != CAIRO_STATUS_SUCCESS) {
-        set_err(err, errlen, "cannot create canvas", cairo_status_to_string(st));
+        set_err(err, errlen, what, cairo_status_to_string(st));
         lr_canvas_free(&c->base);
         return NULL;
     }

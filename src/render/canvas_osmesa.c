@@ -151,7 +151,10 @@ lr_canvas *lr_canvas_osmesa_new(int width, int height, char *err, size_t errlen)
         c->buf = malloc(4 * (size_t)width * (size_t)height);
     if (!c || !c->buf) {
         free(c);
-        set_err(err, errlen, "out of memory");
+        char why[80];   /* the size named, as the cairo canvas does */
+        snprintf(why, sizeof why, "cannot create a %d x %d canvas: out of memory", width,
+                 height);
+        set_err(err, errlen, why);
         return NULL;
     }
     c->base.ops = &osmesa_ops;

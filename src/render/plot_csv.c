@@ -5,14 +5,13 @@
  * with numbers that read back to the same doubles. */
 #include "plot.h"
 
-#include <errno.h>
+#include "atomic_file.h"
+
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 static void set_err(char *err, size_t errlen, const char *fmt, ...)
 {
@@ -24,39 +23,6 @@ static void set_err(char *err, size_t errlen, const char *fmt, ...)
     va_end(ap);
 }
 
-/* Creates every missing folder above path (mkdir -p of its directory). A
- * folder that appears meanwhile (EEXIST) is fine; something else in the way
- * is reported. */
-static int make_folders(const char *path, char *err, size_t errlen)
-{
-    size_t len = strlen(path);
-    char *dir = malloc(len + 1);
-    if (!dir) {
-        set_err(err, errlen, "cannot write '%s': out of memory", path);
-        return -1;
-    }
-    memcpy(dir, path, len + 1);
-    int rc = 0;
-    for (size_t i = 1; i < len && rc == 0; i++) {
-        if (dir[i] != '/' || dir[i - 1] == '/')
-            continue;
-        dir[i] = '\0';
-        struct stat st;
-        if (stat(dir, &st) != 0) {
-            if (mkdir(dir, 0777) != 0 && errno != EEXIST) {
-                set_err(err, errlen, "cannot write '%s': cannot create folder "
-                        "'%s': %s", path, dir, strerror(errno));
-                rc = -1;
-            }
-        } else if (!S_ISDIR(st.st_mode)) {
-            set_err(err, errlen, "cannot write '%s': '%s' is not a folder", path, dir);
-            rc = -1;
-        }
-        dir[i] = '/';
-    }
-    free(dir);
-    return rc;
-}
 
 /* One header field, quoted (RFC 4180) when it holds a separator, a quote,
  * a line break or edge spaces that a reader could trim. */
@@ -134,34 +100,6 @@ static void put_table(FILE *fp, const lr_plot *p)
 
 /* Writes the table through the temporary file descriptor fd (closed in
  * every case); *why says what failed. */
-static int write_temp(int fd, const lr_plot *p, char *why, size_t whylen)
-{
-    /* mkstemp makes 0600; a CSV gets what any new file of ours gets */
-    mode_t mask = umask(0);
-    umask(mask);
-    if (fchmod(fd, 0666 & ~mask) != 0) {
-        snprintf(why, whylen, "%s", strerror(errno));
-        close(fd);
-        return -1;
-    }
-    FILE *fp = fdopen(fd, "w");
-    if (!fp) {
-        snprintf(why, whylen, "%s", strerror(errno));
-        close(fd);
-        return -1;
-    }
-    put_table(fp, p);
-    int rc = 0;
-    if (ferror(fp) || fflush(fp) != 0) {
-        snprintf(why, whylen, "%s", errno ? strerror(errno) : "write error");
-        rc = -1;
-    }
-    if (fclose(fp) != 0 && rc == 0) {
-        snprintf(why, whylen, "%s", strerror(errno));
-        rc = -1;
-    }
-    return rc;
-}
 
 int lr_plot_write_csv(const lr_plot *p, const char *path, char *err, size_t errlen)
 {
@@ -179,45 +117,11 @@ int lr_plot_write_csv(const lr_plot *p, const char *path, char *err, size_t errl
                     path, k + 1);
             return -1;
         }
-    if (make_folders(path, err, errlen) != 0)
+    /* the one writer of every output (atomic_file.h): temporary, then
+     * rename; folders made for a failed write are removed again */
+    lr_atomic a;
+    if (lr_atomic_open(&a, path, err, errlen) != 0)
         return -1;
-    /* rename(2) would replace a device, FIFO or folder at path */
-    struct stat st;
-    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
-        set_err(err, errlen, "cannot write '%s': it exists and is not a regular file",
-                path);
-        return -1;
-    }
-    static const char suffix[] = ".tmp.XXXXXX";   /* same folder: atomic rename */
-    size_t n = strlen(path);
-    char *tmp = malloc(n + sizeof suffix);
-    if (!tmp) {
-        set_err(err, errlen, "cannot write '%s': out of memory", path);
-        return -1;
-    }
-    memcpy(tmp, path, n);
-    memcpy(tmp + n, suffix, sizeof suffix);
-    int fd = mkstemp(tmp);
-    if (fd < 0) {
-        set_err(err, errlen, "cannot write '%s': cannot create temporary file: %s",
-                path, strerror(errno));
-        free(tmp);
-        return -1;
-    }
-    char why[256] = "";
-    errno = 0;
-    int rc = write_temp(fd, p, why, sizeof why);
-    if (rc == 0 && rename(tmp, path) != 0) {
-        snprintf(why, sizeof why, "%s", strerror(errno));
-        rc = -1;
-    }
-    if (rc != 0) {
-        if (unlink(tmp) == 0)
-            set_err(err, errlen, "cannot write '%s': %s", path, why);
-        else
-            set_err(err, errlen, "cannot write '%s': %s (and cannot remove "
-                    "temporary '%s': %s)", path, why, tmp, strerror(errno));
-    }
-    free(tmp);
-    return rc;
+    put_table(a.fp, p);
+    return lr_atomic_commit(&a, err, errlen);
 }

@@ -276,6 +276,8 @@ static int decode_pixels(png_structp png, png_infop info, png_bytepp rows)
     return 0;
 }
 
+#define LR_PNG_MAX_PIXELS (16384.0 * 16384.0)
+
 /* Decodes io->fp (signature already consumed) into a new RGBA buffer. */
 static int decode(png_io *io, int *width, int *height, unsigned char **rgba)
 {
@@ -293,15 +295,20 @@ static int decode(png_io *io, int *width, int *height, unsigned char **rgba)
     unsigned char *buf = NULL;
     png_bytep *rows = NULL;
     int rc = decode_header(io, png, info, &w, &h);
-    if (rc == 0 && (w > INT_MAX || h > INT_MAX || h > SIZE_MAX / 4 / w)) {
-        snprintf(io->msg, sizeof io->msg, "image too large");
+    /* checked on the header, before allocating: a 6 MB file declaring
+     * 40000 x 40000 pixels asked for 6.4 GB */
+    if (rc == 0 && (w > INT_MAX || h > INT_MAX || (double)w * h > LR_PNG_MAX_PIXELS)) {
+        snprintf(io->msg, sizeof io->msg, "the image is %lu x %lu pixels, more than the "
+                 "limit of %.0f pixels (16384 x 16384, the largest lamina writes)",
+                 (unsigned long)w, (unsigned long)h, LR_PNG_MAX_PIXELS);
         rc = -1;
     }
     if (rc == 0) {
         buf = malloc(4 * (size_t)w * h);
         rows = malloc(h * sizeof *rows);
         if (!buf || !rows) {
-            snprintf(io->msg, sizeof io->msg, "out of memory");
+            snprintf(io->msg, sizeof io->msg, "out of memory for a %lu x %lu image",
+                     (unsigned long)w, (unsigned long)h);
             rc = -1;
         }
     }
