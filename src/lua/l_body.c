@@ -120,6 +120,45 @@ static void velocity_at(lua_State *L, int vidx, double x, double y, double *vx, 
     }
 }
 
+/* What fill_body seeds: everything sim:body read from its table. */
+typedef struct fill_ctx {
+    lm_sim *sim;
+    int bi;
+    const lm_material *mat;
+    const lm_seed_range *range;
+    const lm_region *region;
+    int clipped, npx, npy;
+    double vx0, vy0, mass;
+    size_t total;
+} fill_ctx;
+
+/* fill_body(region, velocity, ctx), called protected: the particles of
+ * the body. Index 1 is the region (a shape or a function), 2 the velocity
+ * function or nil. */
+static int fill_body(lua_State *L)
+{
+    fill_ctx *c = lua_touserdata(L, 3);
+    lm_sim *sim = c->sim;
+    const lm_grid *g = &sim->grid;
+    int vidx = lua_isfunction(L, 2) ? 2 : 0;
+    clip_ctx cc = { L, 1, c->region };
+    for (size_t k = 0; k < c->total; k++) {   /* (the particle limit: lm_sim_add_particle) */
+        double x, y, vx = c->vx0, vy = c->vy0;
+        double part = 1;
+        lm_seed_point(g, c->range, k, &x, &y);
+        if (c->clipped) {
+            part = lm_seed_clip(g, c->npx, c->npy, x, y, clip_inside, &cc, &x, &y);
+            if (part == 0) continue;
+        } else if (!inside(L, 1, c->region, x, y)) continue;
+        velocity_at(L, vidx, x, y, &vx, &vy);
+        if (lm_sim_add_particle(sim, c->bi, x, y, vx, vy, part * c->mass, c->mat->rho) != LM_OK)
+            return luaL_error(L, "sim:body: %s", sim->err);
+        /* uGIMP: the particle's square is its share of the cell */
+        lm_sim_set_particle_size(sim, sim->p.n - 1, 0.5 * g->hx / c->npx, 0.5 * g->hy / c->npy);
+    }
+    return 0;
+}
+
 int la_sim_body(lua_State *L)
 {
     static const char *const keys[] = {"material", "region", "ppc", "velocity", "name",
@@ -148,8 +187,6 @@ int la_sim_body(lua_State *L)
     int npx, npy;
     read_ppc(L, fn, &npx, &npy);
     int clipped = read_fill(L, fn);
-    clip_ctx cc = { L, ridx, region };
-
     double vx0 = 0, vy0 = 0;
     int vidx = 0;
     int vt = la_getfield(L, 2, "velocity");
@@ -179,25 +216,27 @@ int la_sim_body(lua_State *L)
     int mi = lm_sim_add_material(sim, mat);
     int bi = mi < 0 ? -1 : lm_sim_add_body(sim, mi);
     if (bi < 0) return luaL_error(L, "%s: out of memory", fn);
-    la_sim_keep(L, 1, midx);
 
-    for (size_t k = 0; k < total; k++) {   /* (the particle limit: lm_sim_add_particle) */
-        double x, y, vx = vx0, vy = vy0;
-        double part = 1;
-        lm_seed_point(g, &range, k, &x, &y);
-        if (clipped) {
-            part = lm_seed_clip(g, npx, npy, x, y, clip_inside, &cc, &x, &y);
-            if (part == 0) continue;
-        } else if (!inside(L, ridx, region, x, y)) continue;
-        velocity_at(L, vidx, x, y, &vx, &vy);
-        if (lm_sim_add_particle(sim, bi, x, y, vx, vy, part * mass, mat->rho) != LM_OK)
-            return luaL_error(L, "%s: %s", fn, sim->err);
-        /* uGIMP: the particle's square is its share of the cell */
-        lm_sim_set_particle_size(sim, sim->p.n - 1, 0.5 * g->hx / npx, 0.5 * g->hy / npy);
+    /* All or nothing: the seeding calls the script's region and velocity
+     * functions, and any of them (or the engine) may fail part-way; the
+     * body is then taken out again before the error goes on, so a script
+     * that catches it with pcall runs on without half a body. */
+    fill_ctx fc = { sim, bi, mat, &range, region, clipped, npx, npy, vx0, vy0, mass, total };
+    lua_pushcfunction(L, fill_body);
+    lua_pushvalue(L, ridx);
+    if (vidx) lua_pushvalue(L, vidx);
+    else lua_pushnil(L);
+    lua_pushlightuserdata(L, &fc);
+    if (lua_pcall(L, 3, 0, 0) != LUA_OK) {
+        lm_sim_drop_last_body(sim);
+        return lua_error(L);
     }
-    if (sim->bodies[bi].count == 0)
+    if (sim->bodies[bi].count == 0) {
+        lm_sim_drop_last_body(sim);
         return luaL_error(L, "%s: the region holds no particles at ppc = %d "
                           "(is it inside the domain, and larger than a cell?)", fn, npx * npy);
+    }
+    la_sim_keep(L, 1, midx);
 
     la_getfield(L, 2, "name");
     la_push_body(L, 1, bi, lua_gettop(L));

@@ -166,24 +166,17 @@ int la_sim_membrane(lua_State *L)
                               "{%f, %f, %f, %f}", fn, what, k + 1, px[k], py[k],
                               g->x0, g->y0, x1, y1);
 
-    int mi = lm_sim_add_material(sim, mat);
-    int bi = mi < 0 ? -1 : lm_sim_add_membrane(sim, mi, cp.closed);
-    if (bi < 0) return luaL_error(L, "%s: out of memory", fn);
-    la_sim_keep(L, 1, midx);
+    /* The script's functions run first (any may fail): every point's strain
+     * and velocity, before the engine is touched, so that creating a
+     * membrane is all or nothing. */
+    double *pe = lua_newuserdatauv(L, 3 * (size_t)n * sizeof(double), 0);
+    double *pux = pe + n, *puy = pe + 2 * (size_t)n;
     for (int k = 0; k < n; k++) {
         double u = cp.closed ? (double)k / n : (n > 1 ? (double)k / (n - 1) : 0);
         double e = strain_at(L, sidx, u, k + 1);
         if (!(e > -5 && e < 5))
             return luaL_error(L, "%s: %s initial strain %f at point %d must lie in (-5, 5)",
                               fn, what, e, k + 1);
-        /* Strains are logarithmic (membrane.c): a point placed ds apart with
-         * strain e stands for ds exp(-e) of unstrained membrane: that is its
-         * mass (a slack membrane carries its extra material) and its
-         * reference length. */
-        double ds_ref = ds * exp(-e);
-        double m = (k == n - 1 && end_mass > 0) ? end_mass
-                                                : mat->rho * mat->thickness * ds_ref;
-        size_t q = sim->p.n;
         double ux = vx, uy = vy;
         if (vidx) {
             lua_pushvalue(L, vidx);
@@ -197,14 +190,37 @@ int la_sim_membrane(lua_State *L)
                 return luaL_error(L, "%s: the velocity function must return two numbers", fn);
             lua_pop(L, 2);
         }
-        if (lm_sim_add_particle(sim, bi, px[k], py[k], ux, uy, m, mat->rho) != LM_OK ||
-            lm_sim_set_membrane_point(sim, q, ds_ref, e) != LM_OK)
-            return luaL_error(L, "%s: %s", fn, sim->err);
+        pe[k] = e;
+        pux[k] = ux;
+        puy[k] = uy;
     }
+    int mi = lm_sim_add_material(sim, mat);
+    int bi = mi < 0 ? -1 : lm_sim_add_membrane(sim, mi, cp.closed);
+    if (bi < 0) return luaL_error(L, "%s: out of memory", fn);
+    for (int k = 0; k < n; k++) {
+        /* Strains are logarithmic (membrane.c): a point placed ds apart with
+         * strain e stands for ds exp(-e) of unstrained membrane: that is its
+         * mass (a slack membrane carries its extra material) and its
+         * reference length. */
+        double ds_ref = ds * exp(-pe[k]);
+        double m = (k == n - 1 && end_mass > 0) ? end_mass
+                                                : mat->rho * mat->thickness * ds_ref;
+        size_t q = sim->p.n;
+        if (lm_sim_add_particle(sim, bi, px[k], py[k], pux[k], puy[k], m, mat->rho) != LM_OK ||
+            lm_sim_set_membrane_point(sim, q, ds_ref, pe[k]) != LM_OK) {
+            lua_pushfstring(L, "%s: %s", fn, sim->err);
+            lm_sim_drop_last_body(sim);
+            return lua_error(L);
+        }
+    }
+    la_sim_keep(L, 1, midx);
     lm_body *bd = &sim->bodies[bi];
     bd->normals = (lm_normals)method;
-    if (lm_sim_set_membrane_force(sim, bi, (lm_mforce)force) != LM_OK)
-        return luaL_error(L, "%s: %s", fn, sim->err);
+    if (lm_sim_set_membrane_force(sim, bi, (lm_mforce)force) != LM_OK) {
+        lua_pushfstring(L, "%s: %s", fn, sim->err);
+        lm_sim_drop_last_body(sim);
+        return lua_error(L);
+    }
     bd = &sim->bodies[bi];
     bd->orient = orient;
     bd->ox = ox;
@@ -221,7 +237,11 @@ int la_sim_membrane(lua_State *L)
         bd->ox = cx / (double)bd->count;
         bd->oy = cy / (double)bd->count;
     }
-    if (lm_sim_prepare(sim) != LM_OK) return luaL_error(L, "%s: %s", fn, sim->err);
+    if (lm_sim_prepare(sim) != LM_OK) {
+        lua_pushfstring(L, "%s: %s", fn, sim->err);
+        lm_sim_drop_last_body(sim);
+        return lua_error(L);
+    }
     la_push_body(L, 1, bi, nameidx);
     return 1;
 }

@@ -281,6 +281,9 @@ int lm_sim_add_membrane(lm_sim *sim, int mat, int closed);
  * strain; mass stays as given (the heavy end point has its own). */
 lm_status lm_sim_set_membrane_point(lm_sim *sim, size_t q, double ds, double et);
 
+/* Takes the newest body out again with its particles (a body whose
+ * creation failed part-way: creating one is all or nothing). */
+lm_status lm_sim_drop_last_body(lm_sim *sim);
 /* Names body b for messages (truncated to LM_NAME_MAX - 1 bytes). */
 void lm_sim_set_body_name(lm_sim *sim, int b, const char *name);
 /* Chooses how membrane body b's stress reaches the grid (before the first

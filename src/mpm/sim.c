@@ -321,3 +321,21 @@ const char *lm_body_label(const lm_sim *sim, int b, char *buf, size_t len)
         snprintf(buf, len, "%s %d", kind, b + 1);
     return buf;
 }
+
+lm_status lm_sim_drop_last_body(lm_sim *sim)
+{
+    if (sim->nbodies == 0) {
+        snprintf(sim->err, sizeof sim->err, "no body to take out");
+        return LM_ERR_INPUT;
+    }
+    lm_body *bd = &sim->bodies[sim->nbodies - 1];
+    for (int k = 0; k < sim->npins; k++)
+        if (sim->pins[k].body == sim->nbodies - 1) {
+            snprintf(sim->err, sizeof sim->err, "the body is pinned");
+            return LM_ERR_INPUT;
+        }
+    sim->p.n = bd->first;
+    sim->pe_ref -= bd->pe_ref;
+    sim->nbodies--;
+    return LM_OK;
+}
