@@ -9,7 +9,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 PACKAGES=(cmake make gcc pkg-config liblua5.4-dev libcairo2-dev libpng-dev
           libfontconfig-dev fonts-dejavu-core libosmesa6-dev valgrind libreadline-dev
-          libfreetype-dev zlib1g-dev python3-meshio clang)
+          libfreetype-dev zlib1g-dev python3-meshio clang parallel)
 
 missing=()
 for p in "${PACKAGES[@]}"; do

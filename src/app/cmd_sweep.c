@@ -27,7 +27,7 @@
 
 static const char usage_text[] =
     "usage: lamina sweep SCRIPT.lua --set name=v1,v2,... [--set ...] [--jobs N]\n"
-    "                    [--out DIR] [--emit-jobs] [--quiet]\n"
+    "                    [--out DIR] [--emit-jobs | --slurm FILE] [--quiet]\n"
     "       lamina sweep --collect DIR\n"
     "       lamina sweep --job FOLDER SCRIPT.lua [--set name=value ...] [--quiet]";
 
@@ -44,6 +44,7 @@ typedef struct sweep_opts {
     int np;
     long jobs;
     int emit, quiet, has_jobs;
+    const char *slurm;      /* --slurm FILE: an sbatch script instead of running */
 } sweep_opts;
 
 static int usage_error(const char *what, const char *arg)
@@ -117,6 +118,9 @@ static int parse_args(int argc, char **argv, sweep_opts *o)
         } else if ((got = wb_option("sweep", argc, argv, &i, "--job", &v))) {
             if (got < 0) return -1;
             o->job = v;
+        } else if ((got = wb_option("sweep", argc, argv, &i, "--slurm", &v))) {
+            if (got < 0) return -1;
+            o->slurm = v;
         } else if (strcmp(a, "--emit-jobs") == 0) {
             o->emit = 1;
         } else if (strcmp(a, "--quiet") == 0 || strcmp(a, "-q") == 0) {
@@ -130,13 +134,16 @@ static int parse_args(int argc, char **argv, sweep_opts *o)
         }
     }
     if (o->collect) {
-        if (o->script || o->np || o->job || o->emit || o->out || o->has_jobs)
+        if (o->script || o->np || o->job || o->emit || o->out || o->has_jobs || o->slurm)
             return usage_error("%s", "--collect DIR takes no script or other option");
         return 0;
     }
     if (!o->script) return usage_error("%s", "no script given");
-    if (o->job && (o->emit || o->out || o->has_jobs))
-        return usage_error("%s", "--job runs one run: --emit-jobs, --out, --jobs do not apply");
+    if (o->job && (o->emit || o->out || o->has_jobs || o->slurm))
+        return usage_error("%s", "--job runs one run: --emit-jobs, --slurm, --out, --jobs do "
+                                 "not apply");
+    if (o->emit && o->slurm)
+        return usage_error("%s", "give one of --emit-jobs and --slurm FILE");
     if (!o->job && !o->np) return usage_error("%s", "nothing to sweep: give --set name=v1,v2,...");
     return 0;
 }
@@ -474,6 +481,10 @@ int cmd_sweep(int argc, char **argv)
     if (o.emit) {
         for (int i = 0; i < njobs; i++) sw_job_print_command(stdout, &c, &jobs[i]);
         status = fflush(stdout) == 0 ? 0 : LAMINA_EXIT_USAGE;
+        goto done;
+    }
+    if (o.slurm) {
+        status = sw_write_slurm(o.slurm, &c, jobs, njobs, outdir) == 0 ? 0 : LAMINA_EXIT_USAGE;
         goto done;
     }
     long parallel = o.has_jobs ? o.jobs : sysconf(_SC_NPROCESSORS_ONLN);

@@ -47,6 +47,10 @@ int sw_job_start(const sw_context *c, sw_job *job);
 void sw_job_finish(const sw_context *c, sw_job *job, int wstatus);
 /* The run as one shell command line (what --emit-jobs prints). */
 void sw_job_print_command(FILE *out, const sw_context *c, const sw_job *job);
+/* sweep_slurm.c: PATH (an sbatch script, --array over the runs) and
+ * PATH.jobs (their commands); 0, or -1 with a message on stderr. */
+int sw_write_slurm(const char *path, const sw_context *c, const sw_job *jobs, int njobs,
+                   const char *outdir);
 /* Writes s quoted for a POSIX shell. */
 void sw_shell_quote(FILE *out, const char *s);
 
