@@ -25,7 +25,8 @@ static lm_energy energy_of(const lm_sim *sim, size_t first, size_t last, double 
         case LM_MEMBRANE:
             /* segment membranes: their segments' energy, added below */
             if (sim->bodies[p->body[q]].force != LM_MFORCE_SEGMENT)
-                e.strain += lm_membrane_energy(mat, V, p->et[q]);
+                e.strain += sim->def.axisym ? lm_axisym_membrane_energy(sim, q)
+                                            : lm_membrane_energy(mat, V, p->et[q]);
             break;
         case LM_GAS:
             e.internal += p->m[q] * p->e[q];

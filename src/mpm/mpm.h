@@ -148,6 +148,9 @@ typedef struct lm_particles {
     double *L0, *fpx, *fpy;
     /* Pins (pin.c): 1 + the index of the pin holding the particle, else 0. */
     int *pin;
+    /* Axisymmetric membranes (axisym.c): the point's unstrained ring radius
+     * r0 (0 for a point on the axis); its hoop strain is ln(r / r0). */
+    double *r0;
 } lm_particles;
 
 /* How a membrane finds its normals (physics.md §3). */
@@ -222,6 +225,9 @@ typedef struct lm_sim_def {
                               bit-identical for the same count (threads.h) */
     lm_basis basis;        /* shape functions (default linear) */
     lm_stress stress;      /* internal force from point or cell stresses */
+    int axisym;            /* the axisymmetric form (axisym.c): x is r, y is
+                              z, the left side is the axis r = 0; masses,
+                              volumes, forces and energies per radian */
 } lm_sim_def;
 
 /* Fills a definition with lamina's defaults (unit square, cell 0.1, MUSL,
@@ -277,6 +283,10 @@ int lm_sim_add_membrane(lm_sim *sim, int mat, int closed);
  * strain; mass stays as given (the heavy end point has its own). */
 lm_status lm_sim_set_membrane_point(lm_sim *sim, size_t q, double ds, double et);
 
+/* Axisymmetric form (axisym.c): the radius a membrane point of length l
+ * at radius r stands for as a ring (r, or l / 4 for a point on the axis). */
+double lm_axisym_ring_radius(double r, double l);
+
 /* Names body b for messages (truncated to LM_NAME_MAX - 1 bytes). */
 void lm_sim_set_body_name(lm_sim *sim, int b, const char *name);
 /* Chooses how membrane body b's stress reaches the grid (before the first
@@ -320,7 +330,7 @@ lm_status lm_sim_step(lm_sim *sim);
  * and reads the file). Loading checks the simulation the script built
  * against the checkpoint's (materials, bodies, pins, grid, basis) and
  * refuses, with sim->err saying why, one that does not fit. */
-#define LM_CHECKPOINT_VERSION 1
+#define LM_CHECKPOINT_VERSION 2   /* 2: r0 (axisymmetric membranes) */
 size_t lm_sim_state_bytes(const lm_sim *sim);
 void lm_sim_state_save(const lm_sim *sim, unsigned char *buf);
 lm_status lm_sim_state_load(lm_sim *sim, const unsigned char *buf, size_t len);
