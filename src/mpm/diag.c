@@ -241,8 +241,16 @@ double lm_body_mean_tangential_stress(const lm_sim *sim, int body)
     const lm_material *mat = sim->mats[b->mat];
     if (mat->kind != LM_MEMBRANE || b->count == 0) return 0;
     double s = 0;
-    for (size_t q = b->first; q < b->first + b->count; q++)
-        s += lm_membrane_stress(mat, sim->p.et[q]);
+    for (size_t q = b->first; q < b->first + b->count; q++) {
+        if (sim->def.axisym) {   /* a ring: the biaxial law's sigma_t (axisym.c) */
+            double st, sh;
+            lm_membrane_stress_biaxial(mat, sim->p.et[q], lm_axisym_membrane_hoop(&sim->p, q),
+                                       &st, &sh);
+            s += st;
+        } else {
+            s += lm_membrane_stress(mat, sim->p.et[q]);
+        }
+    }
     return s / (double)b->count;
 }
 
