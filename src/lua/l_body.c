@@ -260,7 +260,8 @@ static la_body *check_membrane(lua_State *L, int idx, lm_sim **sim, const char *
 
 /* gas:pressure() - the mass-weighted mean over the particles (without q);
  * gas:pressure(membrane [, {cx, cy}]) - the mean over the space the
- * membrane encloses, sum_p V_p p_p / A (docs/decisions.md). */
+ * membrane encloses, sum_p V_p p_p / A (docs/decisions.md); axisymmetric:
+ * over its volume per radian, as V_p is. */
 static int body_pressure(lua_State *L)
 {
     lm_sim *sim, *sim2;
@@ -276,7 +277,7 @@ static int body_pressure(lua_State *L)
         return luaL_error(L, "gas:pressure(membrane): needs a membrane of the same sim");
     double cx, cy;
     center_arg(L, 3, &cx, &cy);
-    double a = lm_membrane_enclosed_area(sim, m, cx, cy);
+    double a = lm_membrane_enclosed_volume(sim, m, cx, cy);
     if (!(a > 0))
         return luaL_error(L, "gas:pressure(membrane): the membrane encloses no area");
     lua_pushnumber(L, lm_body_pressure_integral(sim, b->index) / a);

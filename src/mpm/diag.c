@@ -235,6 +235,23 @@ double lm_membrane_enclosed_area(const lm_sim *sim, int body, double cx, double 
     return 0.5 * fabs(a);
 }
 
+double lm_membrane_enclosed_volume(const lm_sim *sim, int body, double cx, double cy)
+{
+    if (!sim->def.axisym) return lm_membrane_enclosed_area(sim, body, cx, cy);
+    /* per radian: the polygon's first moment int x dA, by Green's theorem
+     * (1/6) sum (x_j + x_k)(x_j y_k - x_k y_j) */
+    const lm_body *m = &sim->bodies[body];
+    size_t nv = polygon_size(m);
+    double v = 0;
+    for (size_t k = 0, j = nv - 1; k < nv; j = k++) {
+        double xk, yk, xj, yj;
+        polygon_vertex(sim, m, k, cx, cy, &xk, &yk);
+        polygon_vertex(sim, m, j, cx, cy, &xj, &yj);
+        v += (xj + xk) * (xj * yk - xk * yj);
+    }
+    return fabs(v) / 6;
+}
+
 double lm_body_mean_tangential_stress(const lm_sim *sim, int body)
 {
     const lm_body *b = &sim->bodies[body];

@@ -392,6 +392,9 @@ double lm_body_mean_pressure(const lm_sim *sim, int body);
 double lm_body_pressure_integral(const lm_sim *sim, int body);
 /* Area of the membrane's polygon (closed through (cx, cy) if open). */
 double lm_membrane_enclosed_area(const lm_sim *sim, int body, double cx, double cy);
+/* The space it encloses: its area, or when axisymmetric its volume per
+ * radian (int r dA over the polygon). */
+double lm_membrane_enclosed_volume(const lm_sim *sim, int body, double cx, double cy);
 /* Mean tangential (hoop) stress sigma_t over a membrane. */
 double lm_body_mean_tangential_stress(const lm_sim *sim, int body);
 /* Distance from (cx, cy) to the membrane along the ray at `deg` degrees;
