@@ -151,7 +151,9 @@ static int fill_body(lua_State *L)
             if (part == 0) continue;
         } else if (!inside(L, 1, c->region, x, y)) continue;
         velocity_at(L, vidx, x, y, &vx, &vy);
-        if (lm_sim_add_particle(sim, c->bi, x, y, vx, vy, part * c->mass, c->mat->rho) != LM_OK)
+        /* axisymmetric: per radian, rho r A (x the sub-cell's centroid) */
+        double m = sim->def.axisym ? part * c->mass * x : part * c->mass;
+        if (lm_sim_add_particle(sim, c->bi, x, y, vx, vy, m, c->mat->rho) != LM_OK)
             return luaL_error(L, "sim:body: %s", sim->err);
         /* uGIMP: the particle's square is its share of the cell */
         lm_sim_set_particle_size(sim, sim->p.n - 1, 0.5 * g->hx / c->npx, 0.5 * g->hy / c->npy);
@@ -176,6 +178,13 @@ int la_sim_body(lua_State *L)
     if (mat->kind == LM_MEMBRANE)
         return luaL_error(L, "%s: a membrane material goes into sim:membrane{...}", fn);
     int midx = lua_gettop(L);
+    /* The cell-based gas densities and splitting count area, not r dA. */
+    if (sim->def.axisym && mat->kind == LM_GAS && mat->density != LM_DENSITY_CONTINUITY)
+        return luaL_error(L, "%s: axisymmetric: a gas's density must come from the continuity "
+                          "equation (density = \"continuity\"); the cell densities are plane", fn);
+    if (sim->def.axisym && mat->kind == LM_GAS && mat->split > 0)
+        return luaL_error(L, "%s: axisymmetric: gas splitting (split = %f) is plane only", fn,
+                          mat->split);
 
     la_getfield(L, 2, "region");
     int ridx = lua_gettop(L);
@@ -317,7 +326,8 @@ static la_body *check_membrane(lua_State *L, int idx, lm_sim **sim, const char *
 
 /* gas:pressure() - the mass-weighted mean over the particles (without q);
  * gas:pressure(membrane [, {cx, cy}]) - the mean over the space the
- * membrane encloses, sum_p V_p p_p / A (docs/decisions.md). */
+ * membrane encloses, sum_p V_p p_p / A (docs/decisions.md); axisymmetric:
+ * over its volume per radian, as V_p is. */
 static int body_pressure(lua_State *L)
 {
     lm_sim *sim, *sim2;
@@ -333,7 +343,7 @@ static int body_pressure(lua_State *L)
         return luaL_error(L, "gas:pressure(membrane): needs a membrane of the same sim");
     double cx, cy;
     center_arg(L, 3, &cx, &cy);
-    double a = lm_membrane_enclosed_area(sim, m, cx, cy);
+    double a = lm_membrane_enclosed_volume(sim, m, cx, cy);
     if (!(a > 0))
         return luaL_error(L, "gas:pressure(membrane): the membrane encloses no area");
     lua_pushnumber(L, lm_body_pressure_integral(sim, b->index) / a);
@@ -415,7 +425,8 @@ static void push_array(lua_State *L, const double *a, size_t first, size_t n, co
 }
 
 /* A table of arrays (design.md): x, y, vx, vy, mass, rho, and the global
- * Cauchy stress sxx, syy, sxy. */
+ * Cauchy stress sxx, syy, sxy, szz (out of plane; axisymmetric: the hoop
+ * stress sigma_thth). */
 static int body_particles(lua_State *L)
 {
     lm_sim *sim;
@@ -423,7 +434,7 @@ static int body_particles(lua_State *L)
     const lm_body *bd = &sim->bodies[b->index];
     const lm_particles *p = &sim->p;
     size_t a = bd->first, n = bd->count;
-    lua_createtable(L, 0, 10);
+    lua_createtable(L, 0, 11);
     push_array(L, p->x, a, n, "x");
     push_array(L, p->y, a, n, "y");
     push_array(L, p->vx, a, n, "vx");
@@ -433,6 +444,7 @@ static int body_particles(lua_State *L)
     push_array(L, p->sxx, a, n, "sxx");
     push_array(L, p->syy, a, n, "syy");
     push_array(L, p->sxy, a, n, "sxy");
+    push_array(L, p->szz, a, n, "szz");
     const lm_material *mat = sim->mats[bd->mat];
     if (mat->kind == LM_GAS) {
         /* p without the artificial viscosity q (design.md) */

@@ -160,6 +160,15 @@ int la_sim_membrane(lua_State *L)
     double *py = px + n;
     la_curve_place(&cp, n, px, py);
     double x1 = g->x0 + g->nx * g->hx, y1 = g->y0 + g->ny * g->hy;
+    /* axisymmetric: a point is a ring about the axis r = 0; a membrane may
+     * end on the axis (a pole) but not reach across or touch it between */
+    for (int k = 0; sim->def.axisym && k < n; k++) {
+        int end = !cp.closed && (k == 0 || k == n - 1);
+        if (px[k] < 0 || (px[k] == 0 && !end))
+            return luaL_error(L, "%s: axisymmetric: %s crosses the axis r = 0 at point %d "
+                              "(%f, %f); only an end of an open membrane may lie on it", fn,
+                              what, k + 1, px[k], py[k]);
+    }
     for (int k = 0; k < n; k++)
         if (!(px[k] >= g->x0 && px[k] <= x1 && py[k] >= g->y0 && py[k] <= y1))
             return luaL_error(L, "%s: %s leaves the domain: point %d at (%f, %f) is outside "
@@ -205,6 +214,10 @@ int la_sim_membrane(lua_State *L)
         double ds_ref = ds * exp(-pe[k]);
         double m = (k == n - 1 && end_mass > 0) ? end_mass
                                                 : mat->rho * mat->thickness * ds_ref;
+        /* axisymmetric: per radian, times the unstrained ring radius
+         * (an initial strain stretches the ring too; axisym.c) */
+        if (sim->def.axisym && !(k == n - 1 && end_mass > 0))
+            m *= lm_axisym_ring_radius(px[k] * exp(-pe[k]), ds_ref);
         size_t q = sim->p.n;
         if (lm_sim_add_particle(sim, bi, px[k], py[k], pux[k], puy[k], m, mat->rho) != LM_OK ||
             lm_sim_set_membrane_point(sim, q, ds_ref, pe[k]) != LM_OK) {

@@ -90,7 +90,7 @@ int la_sim_new(lua_State *L)
 {
     static const char *const keys[] = {"domain", "cell", "dt", "scheme", "gravity",
                                        "boundary", "courant", "pic", "seed", "threads",
-                                       "basis", "stress", NULL};
+                                       "basis", "stress", "axisymmetric", NULL};
     const char *fn = "lamina.sim";
     la_check_keys(L, 1, fn, keys);
     lm_sim_def d;
@@ -113,6 +113,12 @@ int la_sim_new(lua_State *L)
     if (d.stress == LM_STRESS_CELL && d.basis != LM_BASIS_LINEAR)
         luaL_error(L, "%s: stress = \"cell\" works with basis = \"linear\" only (got "
                    "basis = \"%s\")", fn, bases[d.basis]);
+    /* axisymmetric = true: x is r, y is z, per radian (src/mpm/axisym.c) */
+    int at = lua_getfield(L, 1, "axisymmetric");
+    if (at != LUA_TNIL && at != LUA_TBOOLEAN)
+        luaL_error(L, "%s: axisymmetric must be true or false (got %s)", fn, lua_typename(L, at));
+    d.axisym = lua_toboolean(L, -1);
+    lua_pop(L, 1);
     d.courant = la_opt_number(L, 1, fn, "courant", 1.0);
     d.pic = la_opt_number(L, 1, fn, "pic", 0.0);
     double seed = la_opt_number(L, 1, fn, "seed", 1);
@@ -483,6 +489,7 @@ static int sim_index(lua_State *L)
     else if (strcmp(k, "pic") == 0) lua_pushnumber(L, m->def.pic);
     else if (strcmp(k, "stress") == 0) lua_pushstring(L, stresses[m->def.stress]);
     else if (strcmp(k, "threads") == 0) lua_pushinteger(L, m->def.threads);
+    else if (strcmp(k, "axisymmetric") == 0) lua_pushboolean(L, m->def.axisym);
     else if (strcmp(k, "courant") == 0) lua_pushnumber(L, m->def.courant);
     else if (strcmp(k, "gravity") == 0) {
         lua_createtable(L, 2, 0);

@@ -28,17 +28,17 @@ static int particle_doubles(lm_particles *p, double **a)
 {
     double *const d[] = {p->x, p->y, p->vx, p->vy, p->m, p->rho, p->sxx, p->syy, p->sxy,
                          p->szz, p->et, p->ds, p->tx, p->ty, p->e, p->q, p->ev, p->lx, p->ly,
-                         p->L0};
+                         p->L0, p->r0};
     int n = (int)(sizeof d / sizeof d[0]);
     for (int k = 0; k < n; k++) a[k] = d[k];
     return n;
 }
-#define NDOUBLES 20
+#define NDOUBLES 21
 
 typedef struct header {
     uint32_t magic, version, endian, nmats;
     int32_t nbodies, npins, nx, ny, basis;
-    uint32_t pad;
+    uint32_t axisym;            /* the form: plane 0, axisymmetric 1 */
     uint64_t n;                 /* particles */
     double hx, hy;
 } header;
@@ -84,7 +84,7 @@ void lm_sim_state_save(const lm_sim *sim, unsigned char *buf)
     lm_particles *p = (lm_particles *)&sim->p;   /* read only: the arrays' addresses */
     header h = {MAGIC, LM_CHECKPOINT_VERSION, endian_mark(), (uint32_t)sim->nmats,
                 sim->nbodies, sim->npins, sim->grid.nx, sim->grid.ny, (int32_t)sim->def.basis,
-                0, (uint64_t)p->n, sim->grid.hx, sim->grid.hy};
+                (uint32_t)(sim->def.axisym != 0), (uint64_t)p->n, sim->grid.hx, sim->grid.hy};
     unsigned char *b = put(buf, &h, sizeof h);
     clock_rec c = {sim->t, sim->t_base, sim->def.dt, sim->pe_ref, sim->def.gx, sim->def.gy,
                    sim->def.pic, sim->def.courant, sim->step, sim->step_base, sim->prepared, 0};
@@ -140,6 +140,8 @@ lm_status lm_sim_state_load(lm_sim *sim, const unsigned char *buf, size_t len)
     if (h.nx != sim->grid.nx || h.ny != sim->grid.ny || h.hx != sim->grid.hx ||
         h.hy != sim->grid.hy || h.basis != (int32_t)sim->def.basis)
         return refuse(sim, "its grid or basis differs from the script's");
+    if (h.axisym != (uint32_t)(sim->def.axisym != 0))
+        return refuse(sim, "one of it and the script is axisymmetric, the other plane");
     size_t n = (size_t)h.n;
     size_t need = sizeof h + sizeof(clock_rec) + (size_t)h.nmats * sizeof(lm_material) +
                   (size_t)h.nbodies * sizeof(body_rec) + (size_t)h.npins * sizeof(pin_rec) +

@@ -25,7 +25,8 @@ static lm_energy energy_of(const lm_sim *sim, size_t first, size_t last, double 
         case LM_MEMBRANE:
             /* segment membranes: their segments' energy, added below */
             if (sim->bodies[p->body[q]].force != LM_MFORCE_SEGMENT)
-                e.strain += lm_membrane_energy(mat, V, p->et[q]);
+                e.strain += sim->def.axisym ? lm_axisym_membrane_energy(sim, q)
+                                            : lm_membrane_energy(mat, V, p->et[q]);
             break;
         case LM_GAS:
             e.internal += p->m[q] * p->e[q];
@@ -234,14 +235,39 @@ double lm_membrane_enclosed_area(const lm_sim *sim, int body, double cx, double 
     return 0.5 * fabs(a);
 }
 
+double lm_membrane_enclosed_volume(const lm_sim *sim, int body, double cx, double cy)
+{
+    if (!sim->def.axisym) return lm_membrane_enclosed_area(sim, body, cx, cy);
+    /* per radian: the polygon's first moment int x dA, by Green's theorem
+     * (1/6) sum (x_j + x_k)(x_j y_k - x_k y_j) */
+    const lm_body *m = &sim->bodies[body];
+    size_t nv = polygon_size(m);
+    double v = 0;
+    for (size_t k = 0, j = nv - 1; k < nv; j = k++) {
+        double xk, yk, xj, yj;
+        polygon_vertex(sim, m, k, cx, cy, &xk, &yk);
+        polygon_vertex(sim, m, j, cx, cy, &xj, &yj);
+        v += (xj + xk) * (xj * yk - xk * yj);
+    }
+    return fabs(v) / 6;
+}
+
 double lm_body_mean_tangential_stress(const lm_sim *sim, int body)
 {
     const lm_body *b = &sim->bodies[body];
     const lm_material *mat = sim->mats[b->mat];
     if (mat->kind != LM_MEMBRANE || b->count == 0) return 0;
     double s = 0;
-    for (size_t q = b->first; q < b->first + b->count; q++)
-        s += lm_membrane_stress(mat, sim->p.et[q]);
+    for (size_t q = b->first; q < b->first + b->count; q++) {
+        if (sim->def.axisym) {   /* a ring: the biaxial law's sigma_t (axisym.c) */
+            double st, sh;
+            lm_membrane_stress_biaxial(mat, sim->p.et[q], lm_axisym_membrane_hoop(&sim->p, q),
+                                       &st, &sh);
+            s += st;
+        } else {
+            s += lm_membrane_stress(mat, sim->p.et[q]);
+        }
+    }
     return s / (double)b->count;
 }
 

@@ -204,6 +204,31 @@ double lm_membrane_stress(const lm_material *mat, double et)
     return mat->E * et;
 }
 
+void lm_membrane_stress_biaxial(const lm_material *mat, double et, double eh, double *st,
+                                double *sh)
+{
+    if (mat->law != LM_LAW_PLANE_STRESS) {
+        *st = lm_membrane_stress(mat, et);
+        *sh = 0;
+        return;
+    }
+    double Ep = mat->E / (1 - mat->nu * mat->nu);
+    *st = Ep * (et + mat->nu * eh);
+    *sh = Ep * (eh + mat->nu * et);
+    if (!mat->one_way || (*st >= 0 && *sh >= 0)) return;
+    /* one-way ([M] §3.2) in two directions, the tension-field rule: a
+     * membrane that would carry compression wrinkles across it and is
+     * pulled only along its larger strain, uniaxially; slack when neither
+     * strain is positive. Continuous where the smaller stress reaches 0. */
+    if (et >= eh) {
+        *st = et > 0 ? mat->E * et : 0;
+        *sh = 0;
+    } else {
+        *sh = eh > 0 ? mat->E * eh : 0;
+        *st = 0;
+    }
+}
+
 static void rebuild(const lm_material *mat, double st, double tx, double ty,
                     double *sxx, double *syy, double *sxy, double *szz)
 {
@@ -241,6 +266,10 @@ lm_status lm_membrane_prepare(lm_sim *sim)
     lm_status st = lm_membrane_tangents(sim);
     if (st != LM_OK) return st;
     lm_membrane_segment_prepare(sim);
+    if (sim->def.axisym) {
+        lm_axisym_membrane_prepare(sim);   /* rings: the hoop too (axisym.c) */
+        return LM_OK;
+    }
     for (size_t q = 0; q < p->n; q++) {
         const lm_material *mat = sim->mats[p->mat[q]];
         if (mat->kind != LM_MEMBRANE) continue;

@@ -65,6 +65,21 @@ void lm_membrane_segment_prepare(lm_sim *sim)
     }
 }
 
+/* Axisymmetric form (axisym.c): the segment is a conical band; its
+ * tension per radian is sigma_t thickness r_m at its mid radius r_m, with
+ * sigma_t of the biaxial law at its own meridional strain ln(l / L0) and
+ * hoop strain ln(r_m / r0_m) (r0 the points' unstrained ring radii; a
+ * segment ending on the axis has r0_m > 0). The hoop stress's own pull
+ * toward the axis is the point term of lm_axisym_forces. */
+static double segment_ring_tension(const lm_particles *p, const lm_material *mat, size_t q,
+                                   size_t r, double l)
+{
+    double rm = 0.5 * (p->x[q] + p->x[r]), r0m = 0.5 * (p->r0[q] + p->r0[r]);
+    double et = log(l / p->L0[q]), st, sh;
+    lm_membrane_stress_biaxial(mat, et, r0m > 0 && rm > 0 ? log(rm / r0m) : et, &st, &sh);
+    return st * mat->thickness * rm;
+}
+
 /* The net tension of each point's two segments at x^k: (fpx, fpy). */
 void lm_membrane_segment_forces(lm_sim *sim)
 {
@@ -80,6 +95,7 @@ void lm_membrane_segment_forces(lm_sim *sim)
             double l = seg_len(p, q, r);
             if (!(l > 0)) continue;   /* coincident points: no direction */
             double F = lm_membrane_stress(mat, log(l / p->L0[q])) * mat->thickness;
+            if (sim->def.axisym) F = segment_ring_tension(p, mat, q, r, l);
             double tx = (p->x[r] - p->x[q]) / l, ty = (p->y[r] - p->y[q]) / l;
             p->fpx[q] += F * tx;
             p->fpy[q] += F * ty;
@@ -115,6 +131,10 @@ void lm_membrane_segment_strains(lm_sim *sim)
             }
             if (k == 0 || !isfinite(sum)) continue;
             double et = sum / k;
+            if (sim->def.axisym) {   /* a ring: the hoop too (axisym.c) */
+                lm_axisym_membrane_set(sim, q, et);
+                continue;
+            }
             lm_membrane_set_strain(mat, et, p->tx[q], p->ty[q], p->m[q], p->ds[q], &p->et[q],
                                    &p->rho[q], &p->sxx[q], &p->syy[q], &p->sxy[q], &p->szz[q]);
         }
@@ -127,6 +147,15 @@ void lm_membrane_segment_strains(lm_sim *sim)
 double lm_membrane_segment_energy(const lm_sim *sim, int b)
 {
     if (!segment_body(sim, b)) return 0;
+    if (sim->def.axisym) {
+        /* rings: the points' biaxial energy (lm_axisym_membrane_energy), the
+         * small-strain form of the band's */
+        double w = 0;
+        const lm_body *bd = &sim->bodies[b];
+        for (size_t q = bd->first; q < bd->first + bd->count; q++)
+            w += lm_axisym_membrane_energy(sim, q);
+        return w;
+    }
     const lm_particles *p = &sim->p;
     const lm_body *bd = &sim->bodies[b];
     const lm_material *mat = sim->mats[bd->mat];

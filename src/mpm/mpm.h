@@ -152,6 +152,9 @@ typedef struct lm_particles {
     double *L0, *fpx, *fpy;
     /* Pins (pin.c): 1 + the index of the pin holding the particle, else 0. */
     int *pin;
+    /* Axisymmetric membranes (axisym.c): the point's unstrained ring radius
+     * r0 (0 for a point on the axis); its hoop strain is ln(r / r0). */
+    double *r0;
 } lm_particles;
 
 /* How a membrane finds its normals (physics.md §3). */
@@ -226,6 +229,9 @@ typedef struct lm_sim_def {
                               bit-identical for the same count (threads.h) */
     lm_basis basis;        /* shape functions (default linear) */
     lm_stress stress;      /* internal force from point or cell stresses */
+    int axisym;            /* the axisymmetric form (axisym.c): x is r, y is
+                              z, the left side is the axis r = 0; masses,
+                              volumes, forces and energies per radian */
 } lm_sim_def;
 
 /* Fills a definition with lamina's defaults (unit square, cell 0.1, MUSL,
@@ -284,6 +290,10 @@ lm_status lm_sim_set_membrane_point(lm_sim *sim, size_t q, double ds, double et)
 /* Takes the newest body out again with its particles (a body whose
  * creation failed part-way: creating one is all or nothing). */
 lm_status lm_sim_drop_last_body(lm_sim *sim);
+/* Axisymmetric form (axisym.c): the radius a membrane point of length l
+ * at radius r stands for as a ring (r, or l / 4 for a point on the axis). */
+double lm_axisym_ring_radius(double r, double l);
+
 /* Names body b for messages (truncated to LM_NAME_MAX - 1 bytes). */
 void lm_sim_set_body_name(lm_sim *sim, int b, const char *name);
 /* Chooses how membrane body b's stress reaches the grid (before the first
@@ -338,7 +348,7 @@ lm_status lm_sim_step(lm_sim *sim);
  * and reads the file). Loading checks the simulation the script built
  * against the checkpoint's (materials, bodies, pins, grid, basis) and
  * refuses, with sim->err saying why, one that does not fit. */
-#define LM_CHECKPOINT_VERSION 1
+#define LM_CHECKPOINT_VERSION 2   /* 2: r0 (axisymmetric membranes) */
 size_t lm_sim_state_bytes(const lm_sim *sim);
 void lm_sim_state_save(const lm_sim *sim, unsigned char *buf);
 lm_status lm_sim_state_load(lm_sim *sim, const unsigned char *buf, size_t len);
@@ -400,6 +410,9 @@ double lm_body_mean_pressure(const lm_sim *sim, int body);
 double lm_body_pressure_integral(const lm_sim *sim, int body);
 /* Area of the membrane's polygon (closed through (cx, cy) if open). */
 double lm_membrane_enclosed_area(const lm_sim *sim, int body, double cx, double cy);
+/* The space it encloses: its area, or when axisymmetric its volume per
+ * radian (int r dA over the polygon). */
+double lm_membrane_enclosed_volume(const lm_sim *sim, int body, double cx, double cy);
 /* Mean tangential (hoop) stress sigma_t over a membrane. */
 double lm_body_mean_tangential_stress(const lm_sim *sim, int body);
 /* Distance from (cx, cy) to the membrane along the ray at `deg` degrees;

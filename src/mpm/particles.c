@@ -26,7 +26,7 @@ int lm_particles_reserve(lm_particles *p, size_t cap)
                     (void **)&p->tx, (void **)&p->ty, (void **)&p->e,
                     (void **)&p->q, (void **)&p->ev, (void **)&p->L0,
                     (void **)&p->fpx, (void **)&p->fpy, (void **)&p->lx,
-                    (void **)&p->ly};
+                    (void **)&p->ly, (void **)&p->r0};
     for (size_t k = 0; k < sizeof dbl / sizeof dbl[0]; k++)
         if (grow(dbl[k], d, cap)) return -1;
     /* the stencil's weights and gradients: ns per particle (lm_sim_new
@@ -49,7 +49,7 @@ void lm_particles_free(lm_particles *p)
     free(p->rho); free(p->sxx); free(p->syy); free(p->sxy); free(p->szz);
     free(p->et); free(p->ds); free(p->tx); free(p->ty);
     free(p->e); free(p->q); free(p->ev); free(p->lx); free(p->ly);
-    free(p->L0); free(p->fpx); free(p->fpy); free(p->pin);
+    free(p->L0); free(p->fpx); free(p->fpy); free(p->pin); free(p->r0);
     free(p->N); free(p->Gx); free(p->Gy);
     free(p->body); free(p->mat); free(p->node);
     memset(p, 0, sizeof *p);

@@ -71,6 +71,28 @@ lm_sim *lm_sim_new(const lm_sim_def *def, char *err, size_t errlen)
         snprintf(err, errlen, "courant must be positive (got %g)", def->courant);
         return NULL;
     }
+    /* The axisymmetric form (axisym.c): the left side is the axis. */
+    if (def->axisym && def->x0 < 0) {
+        snprintf(err, errlen, "axisymmetric: the domain reaches r = %g < 0; x is the radius, "
+                 "so the domain must start on the axis (x0 = 0)", def->x0);
+        return NULL;
+    }
+    if (def->axisym && def->x0 > 0) {
+        snprintf(err, errlen, "axisymmetric: the domain starts at r = %g; its left side must "
+                 "be the axis (x0 = 0)", def->x0);
+        return NULL;
+    }
+    if (def->axisym && def->bc[LM_LEFT] != LM_BC_SYMMETRY) {
+        snprintf(err, errlen, "axisymmetric: the left side is the axis r = 0 and must be "
+                 "boundary \"symmetry\" (it is \"%s\")",
+                 def->bc[LM_LEFT] == LM_BC_FIXED ? "fixed" : "free");
+        return NULL;
+    }
+    if (def->axisym && def->stress == LM_STRESS_CELL) {
+        snprintf(err, errlen, "axisymmetric: stress = \"cell\" is a plane construction; "
+                 "use stress = \"points\"");
+        return NULL;
+    }
     /* the product of the rounded counts: unequal cells (1e9 x 1e-8 before
      * rounding, 1e9 x 1 after) must not pass as 10 cells */
     double cx = cells(def->x1 - def->x0, def->hx), cy = cells(def->y1 - def->y0, def->hy);
@@ -182,6 +204,7 @@ lm_status lm_sim_set_membrane_point(lm_sim *sim, size_t q, double ds, double et)
     double st = lm_membrane_stress(mat, et);
     p->sxx[q] = p->syy[q] = p->sxy[q] = 0;
     p->szz[q] = mat->law == LM_LAW_PLANE_STRESS ? mat->nu * st : 0;
+    if (sim->def.axisym) lm_axisym_membrane_point(sim, q);   /* a ring (axisym.c) */
     /* the tangent is not known until the body is complete: the stress
      * tensor is rebuilt from eps_t at the first step (lm_membrane_prepare) */
     return LM_OK;
@@ -223,6 +246,7 @@ lm_status lm_sim_add_particle(lm_sim *sim, int body, double x, double y,
     p->et[q] = p->ds[q] = p->tx[q] = p->ty[q] = 0;
     p->e[q] = p->q[q] = p->ev[q] = 0;
     p->L0[q] = p->fpx[q] = p->fpy[q] = 0;
+    p->r0[q] = 0;
     p->pin[q] = 0;
     p->body[q] = body;
     p->mat[q] = sim->bodies[body].mat;

@@ -23,7 +23,7 @@ static void copy_particle(lm_particles *p, size_t to, size_t from)
 {
     double *const d[] = {p->x, p->y, p->vx, p->vy, p->m, p->rho, p->sxx, p->syy, p->sxy,
                          p->szz, p->et, p->ds, p->tx, p->ty, p->e, p->q, p->ev,
-                         p->L0, p->fpx, p->fpy, p->lx, p->ly};
+                         p->L0, p->fpx, p->fpy, p->lx, p->ly, p->r0};
     for (size_t k = 0; k < sizeof d / sizeof d[0]; k++) d[k][to] = d[k][from];
     p->body[to] = p->body[from];
     p->mat[to] = p->mat[from];

@@ -187,6 +187,7 @@ void lm_step_forces(lm_sim *sim)
         lm_stress_cell_forces(sim);   /* [T] §5.4.3, stress_cell.c; linear basis only */
     else
         scatter(sim, SCATTER_FORCES, 2, out, comp);
+    if (sim->def.axisym) lm_axisym_forces(sim);   /* -V sigma_thth N / r (axisym.c) */
     size_t nn = lm_grid_nodes(g);
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
     for (long i = 0; i < (long)nn; i++) {
@@ -368,7 +369,8 @@ static int gas_maxima(lm_sim *sim, double *max_div, double *c_max)
         if (mat->kind != LM_GAS || !mat->av) continue;
         double L[4];
         velocity_gradient(&sim->grid, p, (size_t)q, L);
-        double div = fabs(L[0] + L[3]);
+        double div = fabs(sim->def.axisym ? L[0] + L[3] + lm_axisym_hoop_rate(sim, (size_t)q)
+                                           : L[0] + L[3]);
         double c = lm_gas_sound_speed(mat, p->e[q]);
         if (div > md) md = div;
         if (c > cm) cm = c;
@@ -400,6 +402,10 @@ lm_status lm_step_stress(lm_sim *sim)
     for (long q = 0; q < n; q++) {
         double L[4];
         velocity_gradient(g, p, (size_t)q, L);
+        if (sim->def.axisym) {   /* the hoop terms (axisym.c) */
+            lm_axisym_stress(sim, (size_t)q, L, max_div, c_max, h);
+            continue;
+        }
         double dexx = dt * L[0], deyy = dt * L[3];
         double dexy = 0.5 * dt * (L[1] + L[2]);
         double w = 0.5 * (L[1] - L[2]);

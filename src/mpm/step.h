@@ -158,4 +158,30 @@ void lm_gas_update(const lm_material *mat, double exx, double eyy, double exy,
 void lm_linear_fluid_update(const lm_material *mat, double dexx, double deyy, double *ev,
                             double *sxx, double *syy, double *sxy, double *szz);
 
+/* axisym.c: the axisymmetric form (lamina.sim{axisymmetric = true}). */
+/* D_thth = sum_i N_ip v_ri / r_p at particle q (0 on the axis). */
+double lm_axisym_hoop_rate(const lm_sim *sim, size_t q);
+/* Step 2's hoop term f_ri -= V_p sigma_thth N_ip / r_p, added to g->fx. */
+void lm_axisym_forces(lm_sim *sim);
+/* Steps 6-8 for particle q, L its in-plane velocity gradient. */
+void lm_axisym_stress(lm_sim *sim, size_t q, const double L[4], double max_div, double c_max,
+                      double h);
+/* A membrane point's hoop strain ln(r / r0) (eps_t on the axis). */
+double lm_axisym_membrane_hoop(const lm_particles *p, size_t q);
+/* Sets eps_t of membrane point q, its stresses and volume (per radian). */
+void lm_axisym_membrane_set(lm_sim *sim, size_t q, double et);
+/* A new membrane point: r0 from its radius and initial strain. */
+void lm_axisym_membrane_point(lm_sim *sim, size_t q);
+/* Stresses and volumes of every membrane point (lm_membrane_prepare). */
+void lm_axisym_membrane_prepare(lm_sim *sim);
+/* 1/2 V (sigma_t eps_t + sigma_thth eps_thth) of membrane point q. */
+double lm_axisym_membrane_energy(const lm_sim *sim, size_t q);
+/* membrane.c: the in-surface law of a ring (axisymmetric form): a
+ * plane-stress membrane is biaxial, sigma_t = E' (eps_t + nu eps_h),
+ * sigma_h = E' (eps_h + nu eps_t), E' = E / (1 - nu^2) ([T] eq 5.15 with
+ * the hoop strain); a string (uniaxial) carries sigma_t = E eps_t only
+ * (meridional cords). One-way: the tension-field rule. */
+void lm_membrane_stress_biaxial(const lm_material *mat, double et, double eh, double *st,
+                                double *sh);
+
 #endif
