@@ -12,8 +12,9 @@
  *     15 % of the pixels differ at all, nearly all by 1 to 5 levels (8-bit
  *     blending rounds differently in GL and pixman);
  *   - OSMesa vs EGL: none beyond anti-aliasing; 160 pixels (0.05 %) differ
- *     at all, by one level (the same drawing code and rasteriser, into an
- *     OSMesa buffer or a framebuffer object).
+ *     at all, by one level: the same drawing code and rasteriser, into an
+ *     OSMesa buffer or a framebuffer object; only lines' edges round
+ *     differently (discs, fills and text alone come out byte for byte).
  *
  * Also, per backend: rows come back top to bottom (GL reads bottom-up),
  * premultiplied colour comes back straight, clips, the nonzero fill rule,
