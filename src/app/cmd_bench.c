@@ -27,7 +27,7 @@ typedef struct bench_opts {
     int width, height, runs;
     size_t counts[MAX_COUNTS];
     int ncounts;
-    int backends[2];            /* which to run */
+    int backends[LR_BACKEND_COUNT]; /* which to run */
 } bench_opts;
 
 static double now_ms(void)
@@ -221,19 +221,21 @@ static int parse_args(int argc, char **argv, bench_opts *o)
             i++;
         } else if (strcmp(a, "--backend") == 0) {
             lr_backend b;
-            char why[160];
+            char why[512];
             if (v && strcmp(v, "all") == 0) {
-                o->backends[0] = o->backends[1] = 1;
+                /* every backend this lamina has and that starts here */
+                for (int k = 0; k < LR_BACKEND_COUNT; k++)
+                    o->backends[k] = lr_backend_check((lr_backend)k, NULL, 0) == 0;
             } else if (!v || lr_backend_parse(v, &b, why, sizeof why) != 0) {
                 fprintf(stderr, "lamina bench render: --backend: %s\n",
-                        v ? why : "needs cairo, osmesa or all");
+                        v ? why : "needs cairo, osmesa, egl, gl or all");
                 return -1;
             } else if (lr_backend_check(b, why, sizeof why) != 0) {
                 fprintf(stderr, "lamina bench render: --backend %s: %s\n", v, why);
                 return -1;
             } else {
-                o->backends[0] = b == LR_BACKEND_CAIRO;
-                o->backends[1] = b == LR_BACKEND_OSMESA;
+                for (int k = 0; k < LR_BACKEND_COUNT; k++)
+                    o->backends[k] = k == (int)b;
             }
             i++;
         } else {
@@ -246,8 +248,9 @@ static int parse_args(int argc, char **argv, bench_opts *o)
 
 static int bench_render(int argc, char **argv)
 {
-    bench_opts o = { 1024, 1024, 5, { 1000, 10000, 100000, 1000000 }, 4, { 1, 1 } };
-    o.backends[1] = lr_backend_check(LR_BACKEND_OSMESA, NULL, 0) == 0;
+    bench_opts o = { 1024, 1024, 5, { 1000, 10000, 100000, 1000000 }, 4, { 1, 1, 1 } };
+    for (int k = 1; k < LR_BACKEND_COUNT; k++)
+        o.backends[k] = lr_backend_check((lr_backend)k, NULL, 0) == 0;
     if (parse_args(argc, argv, &o) != 0)
         return 2;
     const char *tmpdir = getenv("TMPDIR");
@@ -263,15 +266,18 @@ static int bench_render(int argc, char **argv)
     printf("lamina bench render: %dx%d frames, ms per frame, median of %d runs\n",
            o.width, o.height, o.runs);
     printf("machine: %ld CPUs (nproc), %s\n", sysconf(_SC_NPROCESSORS_ONLN), cpu);
-    if (lr_backend_check(LR_BACKEND_OSMESA, NULL, 0) != 0)
-        printf("(this lamina was built without OSMesa: cairo only)\n");
+    for (int k = 1; k < LR_BACKEND_COUNT; k++) {
+        char why[512];
+        if (lr_backend_check((lr_backend)k, why, sizeof why) != 0)
+            printf("(no %s column: %s)\n", lr_backend_name((lr_backend)k), why);
+    }
     printf("\n| particles | radius px |");
-    const char *names[2] = { "cairo", "osmesa" };
-    for (int b = 0; b < 2; b++)
+    for (int b = 0; b < LR_BACKEND_COUNT; b++)
         if (o.backends[b])
-            printf(" %s draw | %s +PNG |", names[b], names[b]);
+            printf(" %s draw | %s +PNG |", lr_backend_name((lr_backend)b),
+                   lr_backend_name((lr_backend)b));
     printf("\n|---:|---:|");
-    for (int b = 0; b < 2; b++)
+    for (int b = 0; b < LR_BACKEND_COUNT; b++)
         if (o.backends[b])
             printf("---:|---:|");
     printf("\n");
@@ -287,7 +293,7 @@ static int bench_render(int argc, char **argv)
         }
         printf("| %zu | %.2f |", s.n, radius_px(&s));
         fflush(stdout);
-        for (int b = 0; b < 2 && status == 0; b++) {
+        for (int b = 0; b < LR_BACKEND_COUNT && status == 0; b++) {
             double draw, total;
             if (!o.backends[b])
                 continue;
@@ -315,7 +321,7 @@ int cmd_bench(int argc, char **argv)
     if (argc >= 1 && strcmp(argv[0], "engine") == 0)
         return bench_engine(argc - 1, argv + 1);
     fprintf(stderr, "lamina bench: %s (usage: lamina bench render [--width W] "
-            "[--height H] [--runs N] [--counts N,N,...] [--backend cairo|osmesa|all])\n",
+            "[--height H] [--runs N] [--counts N,N,...] [--backend cairo|osmesa|egl|gl|all])\n",
             argc >= 1 ? "unknown benchmark" : "which benchmark?");
     if (argc >= 1)
         fprintf(stderr, "lamina bench: '%s' is not a benchmark; known: render, engine\n", argv[0]);

@@ -87,9 +87,9 @@ static int parse_args(int argc, char **argv, lamina_run *run, const char **repor
             /* sim:frame's default renderer for this run (docs/rendering.md) */
             const char *b = a[9] == '=' ? a + 10 : (i + 1 < argc ? argv[++i] : NULL);
             lr_backend which;
-            char why[160];
+            char why[512];
             if (!b || !*b) {
-                fprintf(stderr, "lamina run: --backend needs a NAME (cairo or osmesa)\n");
+                fprintf(stderr, "lamina run: --backend needs a NAME (cairo, osmesa, egl or gl)\n");
                 return -1;
             }
             if (lr_backend_parse(b, &which, why, sizeof why) != 0 ||

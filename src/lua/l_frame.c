@@ -17,9 +17,10 @@
 
 
 
-/* backend = "cairo" | "osmesa"; else `lamina run --backend`; else cairo.
- * SVG and PDF are cairo's: a run-wide osmesa does not apply to them, an
- * explicit one is refused when the file is written. */
+/* backend = "cairo" | "osmesa" | "egl" | "gl" (EGL, else OSMesa); else
+ * `lamina run --backend`; else cairo. SVG and PDF are cairo's: a run-wide
+ * GL backend does not apply to them, an explicit one is refused when the
+ * file is written. */
 static lr_backend backend(lua_State *L, const char *fn, const char *file,
                           const lamina_run *run)
 {
@@ -29,7 +30,7 @@ static lr_backend backend(lua_State *L, const char *fn, const char *file,
     if (!name)
         name = run && run->backend ? run->backend : "cairo";
     lr_backend b;
-    char why[160];
+    char why[512];
     if (lr_backend_parse(name, &b, why, sizeof why) != 0)
         luaL_error(L, "%s: %s", fn, why);
     if (lr_backend_check(b, why, sizeof why) != 0)

@@ -7,11 +7,12 @@
  *
  * 3D panels are a view of their own (src/render/view3d.h): what is drawn
  * into them is kept as a scene and drawn when the figure is written -
- * through OpenGL with a depth buffer (OSMesa: spheres, shaded cone heads,
- * hidden parts hidden) when lamina has OSMesa, otherwise as cairo's
+ * through OpenGL with a depth buffer (OSMesa or EGL: spheres, shaded cone
+ * heads, hidden parts hidden) when lamina has either, otherwise as cairo's
  * orthographic projection in painter's order, with the same camera.
- * `backend = "cairo" | "osmesa"` (or `lamina run --backend`) chooses; the
- * PNG says which in its "lamina:view3d" text chunk.
+ * `backend = "cairo" | "osmesa" | "egl" | "gl"` (or `lamina run
+ * --backend`) chooses; the PNG says which in its "lamina:view3d" text
+ * chunk.
  *
  *   local fig = lamina.figure{ width = 800, height = 800, panels = {2, 2},
  *                              title = "...", backend = "osmesa" }
@@ -197,19 +198,24 @@ static int read_box(lua_State *L, int idx, const char *fn, const char *key,
 
 /* ---- lamina.figure{...} ------------------------------------------------- */
 
-/* What draws the 3D panels: backend = "cairo" | "osmesa"; else `lamina run
- * --backend`; else OSMesa when this lamina has it, cairo otherwise. */
+/* What draws the 3D panels: backend = "cairo" | "osmesa" | "egl" | "gl";
+ * else `lamina run --backend`; else OpenGL when this lamina has it: OSMesa
+ * first (the pictures stay what they were where it is built; EGL's differ
+ * from them by a level in a few pixels), then EGL, then cairo. */
 static lr_backend view3d_backend(lua_State *L, const char *fn)
 {
     const char *name = la_opt_string(L, 1, fn, "backend", NULL);
     const lamina_run *run = la_run(L);
     lr_backend b = LR_BACKEND_CAIRO;
-    char why[160];
+    char why[512];
     if (!name && run && run->backend)
         name = run->backend;
-    if (!name)
-        return lr_backend_check(LR_BACKEND_OSMESA, NULL, 0) == 0 ? LR_BACKEND_OSMESA
-                                                                 : LR_BACKEND_CAIRO;
+    if (!name) {
+        if (lr_backend_check(LR_BACKEND_OSMESA, NULL, 0) == 0)
+            return LR_BACKEND_OSMESA;
+        return lr_backend_check(LR_BACKEND_EGL, NULL, 0) == 0 ? LR_BACKEND_EGL
+                                                              : LR_BACKEND_CAIRO;
+    }
     if (lr_backend_parse(name, &b, why, sizeof why) != 0)
         luaL_error(L, "%s: %s", fn, why);
     if (lr_backend_check(b, why, sizeof why) != 0)
@@ -869,7 +875,7 @@ static int draw_views(la_figure *f, unsigned char *rgba, char *err, size_t errle
 
 /* fig:write(path) or fig:write{file = path}: the PNG, atomically, with the
  * provenance of sim:frame (Software, lamina:script, -hash, lamina:set) and,
- * when it has 3D panels, what drew them (lamina:view3d = cairo | osmesa). */
+ * when it has 3D panels, what drew them (lamina:view3d = cairo | osmesa | egl). */
 static int l_write(lua_State *L)
 {
     const char *fn = "figure:write";

@@ -45,7 +45,7 @@ typedef struct lamina_run {
     long changes;               /* live parameter changes logged */
     FILE *log;                  /* NULL, or a copy of the run log */
     const char *backend;        /* --backend NAME: sim:frame's default
-                                   ("cairo" or "osmesa"); NULL: cairo */
+                                   ("cairo", "osmesa", "egl", "gl"); NULL: cairo */
     const char *restart;        /* --restart FILE: a checkpoint to continue */
     int restored;               /* it has been loaded */
     int nsims;                  /* lamina.sim calls so far */

@@ -21,50 +21,90 @@ static void set_err(char *err, size_t errlen, const char *msg)
 
 /* ---- backends ---------------------------------------------------------- */
 
-static const char *const backend_names[] = { "cairo", "osmesa" };
+static const char *const backend_names[LR_BACKEND_COUNT] = { "cairo", "osmesa", "egl" };
+
+/* "gl" asks for OpenGL without caring how: EGL where it works, since
+ * OSMesa is gone from Mesa 25.1 on. */
+static lr_backend gl_choice(void)
+{
+    if (lr_backend_check(LR_BACKEND_EGL, NULL, 0) == 0)
+        return LR_BACKEND_EGL;
+#ifdef LAMINA_HAVE_OSMESA
+    return LR_BACKEND_OSMESA;
+#else
+    return LR_BACKEND_EGL;
+#endif
+}
 
 int lr_backend_parse(const char *name, lr_backend *b, char *err, size_t errlen)
 {
-    for (int i = 0; i < 2; i++)
+    for (int i = 0; i < LR_BACKEND_COUNT; i++)
         if (name && strcmp(name, backend_names[i]) == 0) {
             *b = (lr_backend)i;
             return 0;
         }
+    if (name && strcmp(name, "gl") == 0) {
+        *b = gl_choice();
+        return 0;
+    }
     if (err && errlen > 0)
-        snprintf(err, errlen, "unknown backend '%s' (known: cairo, osmesa)",
+        snprintf(err, errlen, "unknown backend '%s' (known: cairo, osmesa, egl, gl)",
                  name ? name : "");
     return -1;
 }
 
 const char *lr_backend_name(lr_backend b)
 {
-    return b == LR_BACKEND_OSMESA ? "osmesa" : "cairo";
+    return b >= 0 && b < LR_BACKEND_COUNT ? backend_names[b] : "cairo";
 }
 
 int lr_backend_check(lr_backend b, char *err, size_t errlen)
 {
-#ifndef LAMINA_HAVE_OSMESA
-    if (b == LR_BACKEND_OSMESA) {
+    switch (b) {
+    case LR_BACKEND_CAIRO:
+        return 0;
+    case LR_BACKEND_OSMESA:
+#ifdef LAMINA_HAVE_OSMESA
+        return 0;
+#else
         set_err(err, errlen, "this lamina was built without OSMesa (install "
-                "libosmesa6-dev and rebuild, or use the cairo backend)");
+                "libosmesa6-dev and rebuild, or use the egl or cairo backend)");
         return -1;
-    }
 #endif
-    if (b != LR_BACKEND_CAIRO && b != LR_BACKEND_OSMESA) {
-        set_err(err, errlen, "unknown backend");
+    case LR_BACKEND_EGL:
+#ifdef LAMINA_HAVE_EGL
+        return lr_canvas_egl_probe(err, errlen);
+#else
+        set_err(err, errlen, "this lamina was built without EGL (install "
+                "libegl-dev, libegl-mesa0 and libgl-dev and rebuild, or use the "
+                "osmesa or cairo backend)");
         return -1;
+#endif
     }
-    return 0;
+    set_err(err, errlen, "unknown backend");
+    return -1;
 }
 
-#ifndef LAMINA_HAVE_OSMESA
-void lr_canvas_osmesa_release(void) {}
+#ifndef LAMINA_HAVE_GL
+void lr_canvas_gl_release(void) {}
+#endif
 
+#ifndef LAMINA_HAVE_OSMESA
 lr_canvas *lr_canvas_osmesa_new(int width, int height, char *err, size_t errlen)
 {
     (void)width;
     (void)height;
     lr_backend_check(LR_BACKEND_OSMESA, err, errlen);
+    return NULL;
+}
+#endif
+
+#ifndef LAMINA_HAVE_EGL
+lr_canvas *lr_canvas_egl_new(int width, int height, char *err, size_t errlen)
+{
+    (void)width;
+    (void)height;
+    lr_backend_check(LR_BACKEND_EGL, err, errlen);
     return NULL;
 }
 #endif
@@ -80,8 +120,14 @@ lr_canvas *lr_canvas_new(lr_backend b, int width, int height, char *err, size_t 
                      "(1..%d each)", width, height, LR_CANVAS_MAX_SIZE);
         return NULL;
     }
-    return b == LR_BACKEND_OSMESA ? lr_canvas_osmesa_new(width, height, err, errlen)
-                                  : lr_canvas_cairo_new(width, height, err, errlen);
+    switch (b) {
+    case LR_BACKEND_OSMESA:
+        return lr_canvas_osmesa_new(width, height, err, errlen);
+    case LR_BACKEND_EGL:
+        return lr_canvas_egl_new(width, height, err, errlen);
+    default:
+        return lr_canvas_cairo_new(width, height, err, errlen);
+    }
 }
 
 lr_backend lr_canvas_backend(const lr_canvas *c)

@@ -55,8 +55,12 @@ int lr_font_setup(cairo_t *cr);
 /* Drops the cached face; lr_shutdown calls it before cairo's own reset. */
 void lr_font_release(void);
 
-/* Destroys the OSMesa context kept for the next canvas (canvas_osmesa.c;
- * nothing without OSMesa); lr_shutdown calls it. */
-void lr_canvas_osmesa_release(void);
+/* Makes no GL context current and destroys the ones kept for the next
+ * canvas (canvas_gl.c; nothing without GL); lr_shutdown calls it. */
+void lr_canvas_gl_release(void);
+
+/* 0 if EGL starts here (a display, a context, a pixel read back), tried
+ * once per process; else -1 with "EGL cannot start: why" (canvas_egl.c). */
+int lr_canvas_egl_probe(char *err, size_t errlen);
 
 #endif

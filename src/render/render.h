@@ -3,7 +3,7 @@
  * Nothing here knows about the engine: a frame is described by plain arrays
  * (lr_frame), so the renderer can be tested alone and later issues can add
  * layers (phi contours, normal arrows, colour maps) and a second backend
- * (OSMesa) behind the same lr_canvas calls.
+ * (OSMesa, then EGL) behind the same lr_canvas calls.
  *
  * Errors are values: every function that can fail returns 0 on success and
  * -1 on failure with a one-line message written into err[errlen]. */
@@ -56,28 +56,41 @@ int lr_png_write(const char *path, int width, int height,
 int lr_png_read(const char *path, int *width, int *height,
                 unsigned char **rgba, char *err, size_t errlen);
 
-/* ---- backends (canvas.c; issue 5) --------------------------------------
+/* ---- backends (canvas.c; issues 5, 20) ---------------------------------
  *
- * The same lr_canvas calls draw through cairo (always built; vector output)
- * or OSMesa (software OpenGL; built when pkg-config finds osmesa, then
- * LAMINA_HAVE_OSMESA is defined). Both take pixel coordinates with the
- * origin top-left, y down, and give straight RGBA8 rows top to bottom. */
+ * The same lr_canvas calls draw through cairo (always built; vector output),
+ * OSMesa (software OpenGL; built when pkg-config finds osmesa, then
+ * LAMINA_HAVE_OSMESA is defined) or EGL (OpenGL on EGL's surfaceless
+ * platform; built when pkg-config finds egl, then LAMINA_HAVE_EGL). The two
+ * GL backends share their drawing code (LAMINA_HAVE_GL: either is built).
+ * All take pixel coordinates with the origin top-left, y down, and give
+ * straight RGBA8 rows top to bottom. */
 
-typedef enum lr_backend { LR_BACKEND_CAIRO = 0, LR_BACKEND_OSMESA = 1 } lr_backend;
+typedef enum lr_backend {
+    LR_BACKEND_CAIRO = 0,
+    LR_BACKEND_OSMESA = 1,
+    LR_BACKEND_EGL = 2
+} lr_backend;
+#define LR_BACKEND_COUNT 3
 
-/* "cairo" or "osmesa" into *b; -1 with "unknown backend 'x' (known: cairo,
- * osmesa)" otherwise. Does not check that the backend was built. */
+/* "cairo", "osmesa", "egl" into *b, or "gl": EGL when it is built and
+ * starts here (lr_backend_check), else OSMesa when built, else EGL (whose
+ * check then says what to install). -1 with "unknown backend 'x' (known:
+ * cairo, osmesa, egl, gl)" otherwise. Apart from "gl", does not check that
+ * the backend was built. */
 int lr_backend_parse(const char *name, lr_backend *b, char *err, size_t errlen);
 const char *lr_backend_name(lr_backend b);
-/* 0 if this build has backend b, else -1 with "this lamina was built
- * without OSMesa". */
+/* 0 if this build has backend b and it can start here (EGL: a display and
+ * a context, tried once per process), else -1 with "this lamina was built
+ * without X (install PACKAGE ...)" or "EGL cannot start: why". */
 int lr_backend_check(lr_backend b, char *err, size_t errlen);
-/* A raster canvas of either backend (the OSMesa one fails cleanly in a
- * build without it). Sizes: 1..LR_CANVAS_MAX_SIZE each side, and OSMesa's
- * own maximum, which it reports. */
+/* A raster canvas of any backend (a GL one fails cleanly in a build
+ * without it). Sizes: 1..LR_CANVAS_MAX_SIZE each side, and the GL
+ * implementation's own maximum, which it reports. */
 #define LR_CANVAS_MAX_SIZE 16384
 lr_canvas *lr_canvas_new(lr_backend b, int width, int height, char *err, size_t errlen);
 lr_canvas *lr_canvas_osmesa_new(int width, int height, char *err, size_t errlen);
+lr_canvas *lr_canvas_egl_new(int width, int height, char *err, size_t errlen);
 lr_backend lr_canvas_backend(const lr_canvas *c);
 
 /* Vector output through cairo: a canvas that draws into an SVG or PDF file

@@ -11,7 +11,7 @@
 
 void lr_shutdown(void)
 {
-    lr_canvas_osmesa_release();     /* the OSMesa context kept for reuse */
+    lr_canvas_gl_release();     /* the GL contexts kept for reuse, EGL's display */
     lr_font_release();      /* lamina's cached face first: cairo's reset frees what it held */
     cairo_debug_reset_static_data();
     FcFini();

@@ -1,7 +1,8 @@
 /* view3d.c - the 3D scene (view3d.h): items kept in the order they were
  * added, drawn through cairo's painter's order with the layers of
- * layer_glyphs.c, or handed to OpenGL (canvas_osmesa_view3d.c) when the
- * canvas is an OSMesa one; and compositing a drawn view into an image. */
+ * layer_glyphs.c, or handed to OpenGL (canvas_gl_view3d.c) when the
+ * canvas is a GL one (OSMesa or EGL); and compositing a drawn view into
+ * an image. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -321,11 +322,12 @@ int lr_scene3d_draw(lr_canvas *c, const lr_view *v, const lr_scene3d *s, char *e
         set_err(err, errlen, "3D view: the view is not a 3D one (lr_view_3d)");
         return -1;
     }
-    if (lr_canvas_backend(c) != LR_BACKEND_OSMESA) {
+    lr_backend b = lr_canvas_backend(c);
+    if (b != LR_BACKEND_OSMESA && b != LR_BACKEND_EGL) {
         painter(c, v, s);
         return 0;
     }
-#ifdef LAMINA_HAVE_OSMESA
+#ifdef LAMINA_HAVE_GL
     if (gl_view3d(c, v, s, err, errlen) != 0)
         return -1;
     for (size_t i = 0; i < s->n; i++)
@@ -333,7 +335,7 @@ int lr_scene3d_draw(lr_canvas *c, const lr_view *v, const lr_scene3d *s, char *e
             draw_text(c, v, &s->items[i]);
     return 0;
 #else
-    set_err(err, errlen, "3D view: this lamina was built without OSMesa");
+    set_err(err, errlen, "3D view: this lamina was built without OpenGL (OSMesa or EGL)");
     return -1;
 #endif
 }

@@ -3,10 +3,10 @@
  * drawn through either backend with the same camera (an lr_view made by
  * lr_view_3d, layers.h).
  *
- *   - cairo (and any canvas that is not OSMesa): the layers' orthographic
+ *   - cairo (and any canvas that is not a GL one): the layers' orthographic
  *     projection in the order the items were added - painter's order, hidden
  *     cube edges dashed; exactly what layer_glyphs.c draws;
- *   - OSMesa: OpenGL with a depth buffer (canvas_osmesa_view3d.c): the same
+ *   - OSMesa or EGL: OpenGL with a depth buffer (canvas_gl_view3d.c): the same
  *     projection, points as shaded spheres, arrows as lines with shaded cone
  *     heads, lines and dashes as before, hidden surfaces removed by the
  *     depth test, antialiased by rendering 4 x 4 samples a pixel.
@@ -15,7 +15,7 @@
  * arrow heads) are pixels here too, at the view's scale. Each add call is
  * a "layer": where two layers' items coincide in depth (an exact normal
  * under a computed one), the later one is drawn on top, as painter's order
- * would. Text is drawn after the geometry (OSMesa) or in order (cairo),
+ * would. Text is drawn after the geometry (GL) or in order (cairo),
  * never hidden. */
 #ifndef LAMINA_VIEW3D_H
 #define LAMINA_VIEW3D_H

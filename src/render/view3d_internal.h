@@ -1,5 +1,5 @@
 /* view3d_internal.h - the items of an lr_scene3d, shared by view3d.c (the
- * scene, cairo's painter) and canvas_osmesa_view3d.c (OpenGL). Private to
+ * scene, cairo's painter) and canvas_gl_view3d.c (OpenGL). Private to
  * src/render. */
 #ifndef LAMINA_VIEW3D_INTERNAL_H
 #define LAMINA_VIEW3D_INTERNAL_H
@@ -51,9 +51,9 @@ static inline int s3_facing(const lr_view *v, int axis, int high)
     return high ? t > 0 : t < 0;
 }
 
-#ifdef LAMINA_HAVE_OSMESA
-/* canvas_osmesa_view3d.c: the geometry of s through OpenGL with depth,
- * composited onto the OSMesa canvas c (text items are left to the caller). */
+#ifdef LAMINA_HAVE_GL
+/* canvas_gl_view3d.c: the geometry of s through OpenGL with depth,
+ * composited onto the GL canvas c (text items are left to the caller). */
 int gl_view3d(lr_canvas *c, const lr_view *v, const lr_scene3d *s, char *err,
               size_t errlen);
 #endif

@@ -1,5 +1,5 @@
 -- expect: 2
--- stderr: frame_backend_unknown\.lua:7: sim:frame: unknown backend 'vulkan' \(known: cairo, osmesa\)
+-- stderr: frame_backend_unknown\.lua:7: sim:frame: unknown backend 'vulkan' \(known: cairo, osmesa, egl, gl\)
 -- An unknown renderer is named with the known ones.
 local sim = lamina.sim{ dt = 1e-3 }
 local m = lamina.elastic{ rho = 1, E = 1, nu = 0.3 }

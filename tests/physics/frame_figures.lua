@@ -18,14 +18,19 @@ end
 local musl, usl = run("musl"), run("usl")
 
 local backends = { "cairo" }
--- a build without OSMesa says so; then only cairo is exercised
-local ok, err = pcall(musl.frame, musl, { file = out .. "/probe.png", backend = "osmesa",
-                                          width = 32, height = 32 })
-if ok then
-  backends[2] = "osmesa"
-else
-  assert(tostring(err):find("built without OSMesa"), err)
+-- a build without a GL backend says so (EGL also when it cannot start);
+-- then only the others are exercised
+local function probe(name, why)
+  local ok, err = pcall(musl.frame, musl, { file = out .. "/probe.png", backend = name,
+                                            width = 32, height = 32 })
+  if ok then
+    backends[#backends + 1] = name
+  else
+    assert(tostring(err):find(why), err)
+  end
 end
+probe("osmesa", "built without OSMesa")
+probe("egl", "EGL")
 
 for _, b in ipairs(backends) do
   local f = function(name) return string.format("%s/%s_%s.png", out, name, b) end

@@ -1,6 +1,7 @@
 -- figure_view3d.lua - lamina.figure's 3D panels (src/render/view3d.h):
--- drawn through OSMesa when this lamina has it, through cairo when asked
--- (backend = "cairo", or `lamina run --backend cairo`) or when it has not;
+-- drawn through OSMesa when this lamina has it, else EGL, through cairo
+-- when asked (backend = "cairo", or `lamina run --backend cairo`) or when
+-- it has neither; EGL when asked (backend = "egl", or "gl" where it starts);
 -- the PNG's "lamina:view3d" text chunk names what drew them. Writing twice
 -- draws the views again (not over the first drawing); a figure without 3D
 -- panels has no such chunk; bad values are errors that name them.
@@ -29,8 +30,11 @@ local function figure(backend)
 end
 
 local has_osmesa = pcall(lamina.figure, {width = 16, height = 16, backend = "osmesa"})
-local default = expect ~= "" and expect or (has_osmesa and "osmesa" or "cairo")
-print("osmesa=" .. (has_osmesa and "yes" or "no") .. " default=" .. default)
+local has_egl = pcall(lamina.figure, {width = 16, height = 16, backend = "egl"})
+local default = expect ~= "" and expect or
+                (has_osmesa and "osmesa" or has_egl and "egl" or "cairo")
+print("osmesa=" .. (has_osmesa and "yes" or "no") .. " egl=" .. (has_egl and "yes" or "no")
+      .. " default=" .. default)
 
 -- the default, written twice (the views are drawn afresh each time), and
 -- again from another figure; cairo when asked; OSMesa when asked and built;
@@ -41,6 +45,10 @@ fig:write(out .. "/default_b.png")
 figure():write(out .. "/default_c.png")
 figure("cairo"):write(out .. "/cairo.png")
 if has_osmesa then figure("osmesa"):write(out .. "/osmesa.png") end
+if has_egl then
+  figure("egl"):write(out .. "/egl.png")
+  figure("gl"):write(out .. "/gl.png")     -- "gl" is EGL where EGL starts
+end
 local flat = lamina.figure{width = 64, height = 64}
 flat:panel{window = {0, 0, 1, 1}}
 flat:outline{}
@@ -52,12 +60,15 @@ local function fails(pattern, f, ...)
   assert(not ok and tostring(err):find(pattern), "expected an error like '" .. pattern
          .. "', got " .. tostring(err))
 end
-fails("lamina.figure: unknown backend 'vulkan' %(known: cairo, osmesa%)", lamina.figure,
+fails("lamina.figure: unknown backend 'vulkan' %(known: cairo, osmesa, egl, gl%)", lamina.figure,
       {backend = "vulkan"})
 fails("lamina.figure: unknown key 'backnd'", lamina.figure, {backnd = "cairo"})
 fails("'elevation' in %[%-90, 90%]", fig.panel, fig, {index = 1, box = {0, 0, 0, 1, 1, 1},
       elevation = 100})
 if not has_osmesa then
   fails("built without OSMesa", lamina.figure, {backend = "osmesa"})
+end
+if not has_egl then
+  fails("backend = \"egl\": .*libegl", lamina.figure, {backend = "egl"})
 end
 print("figure_view3d: ok")

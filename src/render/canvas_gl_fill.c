@@ -1,4 +1,4 @@
-/* canvas_osmesa_fill.c - filled polygons (and stroked rectangles) in GL.
+/* canvas_gl_fill.c - filled polygons (and stroked rectangles) in GL.
  *
  * The stencil method counts winding numbers: the fan of each ring adds one
  * where its triangles face front and takes one where they face back, so
@@ -11,7 +11,7 @@
  * the canvas with the fill colour. The offsets form a 16-rooks pattern
  * (every row and column of a 16 x 16 sub-grid used once), so edges along
  * either axis get 16 levels of coverage, like cairo's. */
-#include "canvas_osmesa.h"
+#include "canvas_gl.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -59,7 +59,7 @@ static int coverage_buffer(gl_canvas *c, int w, int h)
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT,
                               GL_RENDERBUFFER, c->gl.fill_stencil);
     GLenum st = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, c->fbo);   /* the canvas (0 under OSMesa) */
     if (st != GL_FRAMEBUFFER_COMPLETE) {
         gl_fill_free(&c->gl);
         return -1;
@@ -140,7 +140,7 @@ static void accumulate(gl_canvas *c, const float *fan, size_t nfan, int x0,
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     glUniform4f(c->gl.shape_vp, (float)c->pad, (float)c->pad,
                 (float)(c->base.width + 2 * c->pad), (float)(c->base.height + 2 * c->pad));
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, c->fbo);   /* the canvas (0 under OSMesa) */
     glViewport(-c->pad, -c->pad, c->base.width + 2 * c->pad, c->base.height + 2 * c->pad);
 }
 

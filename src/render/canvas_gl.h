@@ -1,8 +1,18 @@
-/* canvas_osmesa.h - the OSMesa canvas backend's parts (private).
+/* canvas_gl.h - the GL canvas backends' parts (private).
  *
- * One OSMesa context at a time per canvas, rendering into a buffer the
- * canvas owns; the context (with its compiled shaders) passes on to the
- * next canvas. Colours are premultiplied in GL (blend ONE,
+ * Two backends draw with the same OpenGL code: OSMesa (canvas_osmesa.c)
+ * and EGL on the surfaceless platform (canvas_egl.c). They differ only in
+ * how a context is made and where its pixels go, which a gl_platform
+ * describes; canvas_gl.c holds the lr_canvas calls they share (clear,
+ * clip, read-back) and the handing on of a context from one canvas to the
+ * next; the drawing (canvas_gl_*.c) sees only a current context drawing
+ * into the canvas's framebuffer (c->fbo: 0 under OSMesa, whose default
+ * framebuffer is the canvas's buffer; an RGBA8 + stencil framebuffer
+ * object under EGL, which has no surface).
+ *
+ * One context at a time per canvas; the context (with its compiled
+ * shaders) passes on to the next canvas of the same backend. Colours are
+ * premultiplied in GL (blend ONE,
  * ONE_MINUS_SRC_ALPHA), as in cairo's image surfaces, and straightened on
  * read-back, so a translucent clear colour or particle composites the way
  * it does through cairo.
@@ -11,16 +21,15 @@
  * shader knows the pixel centre's offset from the shape (interpolated along
  * with the vertices, or from gl_FragCoord) and turns it into the pixel's
  * coverage. Fills sample the winding number 16 times a pixel
- * (canvas_osmesa_fill.c); text is cairo's coverage (canvas_osmesa_text.c).
+ * (canvas_gl_fill.c); text is cairo's coverage (canvas_gl_text.c).
  * Small shapes are batched: consecutive lines share one draw call,
  * consecutive discs of one radius another; a call of another kind, a clip,
  * a fill, text or a read flushes the batch first, so drawing order is
  * kept. */
-#ifndef LAMINA_CANVAS_OSMESA_H
-#define LAMINA_CANVAS_OSMESA_H
+#ifndef LAMINA_CANVAS_GL_H
+#define LAMINA_CANVAS_GL_H
 
 #define GL_GLEXT_PROTOTYPES 1
-#include <GL/osmesa.h>
 #include <GL/gl.h>
 #include <GL/glext.h>
 
@@ -41,27 +50,31 @@ enum lrgl_batch { LRGL_BATCH_NONE = 0, LRGL_BATCH_SHAPES, LRGL_BATCH_POINTS };
 
 /* What outlives a canvas: the context with its compiled programs (llvmpipe
  * compiles shaders to machine code per context, which costs more than a
- * small frame), kept for the next canvas by canvas_osmesa.c. */
+ * small frame), kept for the next canvas by canvas_gl.c. */
 typedef struct gl_engine {
-    OSMesaContext ctx;
+    void *ctx;                  /* the platform's context (OSMesaContext, EGLContext) */
     /* programs and their uniform locations */
     GLuint shape_prog, point_prog, text_prog;
     GLint shape_vp, point_vp, point_r, point_h, point_dot, text_vp, text_col,
           text_tex;
     GLuint text_texture;
-    /* fills: an off-screen coverage buffer (canvas_osmesa_fill.c) */
+    /* fills: an off-screen coverage buffer (canvas_gl_fill.c) */
     GLuint fill_fbo, fill_tex, fill_stencil;
     int fill_w, fill_h;
-    /* 3D views (canvas_osmesa_view3d.c): compiled at the first one */
+    /* 3D views (canvas_gl_view3d.c): compiled at the first one */
     GLuint view3d_prog;
     GLint view3d_size;
 } gl_engine;
 
+typedef struct gl_platform gl_platform;
+
 typedef struct gl_canvas {
     lr_canvas base;
+    const gl_platform *plat;
     gl_engine gl;
     unsigned char *buf;         /* OSMesa's colour buffer, rows bottom-up */
-    int pad;                    /* viewport overhang (canvas_osmesa.c) */
+    GLuint fbo, rb[2];          /* EGL's framebuffer: colour, depth-stencil */
+    int pad;                    /* viewport overhang (canvas_gl.c) */
     int failed;                 /* a GL error or OOM: read_rgba gives NULL */
     /* the pending batch */
     enum lrgl_batch batch;
@@ -75,12 +88,35 @@ typedef struct gl_canvas {
 
 static inline gl_canvas *glc(lr_canvas *c) { return (gl_canvas *)c; }
 
-/* canvas_osmesa.c */
+/* How one way of getting a GL context works (canvas_osmesa.c,
+ * canvas_egl.c). Messages go to err without a prefix. */
+struct gl_platform {
+    lr_backend backend;
+    int slot;                   /* which spare context is its own: 0, 1 */
+    /* A new context in e->ctx, not current yet. */
+    int (*create)(gl_engine *e, char *err, size_t errlen);
+    /* Makes c's context current drawing into a new target of c's size (a
+     * buffer or a framebuffer object); checks the size against the
+     * implementation's limits. */
+    int (*target_new)(gl_canvas *c, char *err, size_t errlen);
+    /* Makes c's context current with its target (once target_new worked). */
+    void (*use)(gl_canvas *c);
+    /* Frees c's target (c's context is current). */
+    void (*target_free)(gl_canvas *c);
+    /* Makes no context of this platform current. */
+    void (*release)(void);
+    void (*destroy)(gl_engine *e);
+};
+
+/* canvas_gl.c */
+/* A canvas of platform p; NULL with "cannot create canvas: ..." in err. */
+lr_canvas *gl_canvas_new(const gl_platform *p, int width, int height, char *err,
+                         size_t errlen);
 /* Makes c's context current (one per thread at a time; cheap when it
  * already is). */
 void gl_use(gl_canvas *c);
 
-/* canvas_osmesa_gl.c */
+/* canvas_gl_shaders.c */
 int gl_programs_init(gl_engine *e, char *err, size_t errlen);
 /* Compiles and links a program with the attributes at fixed locations; 0
  * with a message on failure. */
@@ -103,7 +139,7 @@ void gl_draw_triangles(gl_canvas *c, const float *v, size_t n);
 void gl_vert(float *v, double x, double y, double across, double along,
              double hw, double len, double dash, enum lrgl_mode mode, lr_rgba k);
 
-/* canvas_osmesa_draw.c */
+/* canvas_gl_draw.c */
 /* A line from a to b (pixels) of half width hw as two triangles. */
 void gl_line_quad(gl_canvas *c, double ax, double ay, double bx, double by,
                   double hw, double dash, enum lrgl_mode mode, lr_rgba k);
@@ -112,22 +148,28 @@ void gl_line(lr_canvas *c, double x0, double y0, double x1, double y1,
 void gl_discs(lr_canvas *c, size_t n, const double *px, const double *py,
               double r, const lr_rgba *colours);
 
-/* canvas_osmesa_fill.c */
+/* canvas_gl_fill.c */
 void gl_fill(lr_canvas *c, size_t npoly, const size_t *counts,
              const double *xy, lr_rgba colour);
 void gl_rect(lr_canvas *c, double x, double y, double w, double h,
              double line_width, lr_rgba stroke);
 void gl_fill_free(gl_engine *e);
 
-/* canvas_osmesa_text.c */
+/* canvas_gl_text.c */
 /* Blends colour through the coverage in the alpha of texels 0..w-1,
  * 0..h-1 of texture tex (tw x th) onto canvas pixels x .. x+w, y .. y+h;
  * flip: the texture's rows run bottom-up (rendered by GL). */
 void gl_blend_coverage(gl_canvas *c, GLuint tex, double x, double y, int w,
                        int h, int tw, int th, int flip, lr_rgba colour);
 
-/* canvas_osmesa_text.c */
+/* canvas_gl_text.c */
 void gl_text(lr_canvas *c, double x, double y, double size, lr_rgba colour,
              lr_align align, const char *text);
+
+/* canvas_osmesa.c, canvas_egl.c (when built) */
+extern const gl_platform gl_osmesa_platform;
+extern const gl_platform gl_egl_platform;
+/* canvas_egl.c: lets go of the EGL display (after its contexts). */
+void gl_egl_terminate(void);
 
 #endif

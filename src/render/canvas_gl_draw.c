@@ -1,12 +1,12 @@
-/* canvas_osmesa_draw.c - lines and discs in GL.
+/* canvas_gl_draw.c - lines and discs in GL.
  *
  * Lines are quads one pixel wider than the stroke on every side, their
  * vertices carrying the distance across and along the line; the fragment
  * shader box-filters those into coverage (exact for lines on the pixel
  * grid, so 1-px grid lines are as crisp as cairo's) and cuts the dashes.
  * Discs are point sprites whose shader knows each pixel's distance to the
- * centre (canvas_osmesa_gl.c). */
-#include "canvas_osmesa.h"
+ * centre (canvas_gl_shaders.c). */
+#include "canvas_gl.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -1,7 +1,7 @@
-/* canvas_osmesa_view3d.c - 3D views through OpenGL (view3d.h): the scene
+/* canvas_gl_view3d.c - 3D views through OpenGL (view3d.h): the scene
  * drawn with a depth buffer, so what is behind is hidden, into an
  * off-screen framebuffer at 4 x 4 samples a pixel, averaged down and
- * blended onto the OSMesa canvas like any other drawing.
+ * blended onto the GL canvas (OSMesa or EGL) like any other drawing.
  *
  * The camera is the view's own: every vertex goes through lr_view_map (the
  * orthographic projection the cairo layers use) for its pixel position,
@@ -24,7 +24,7 @@
  *
  * Deterministic: one draw call in the scene's order, fixed sample grid,
  * integer averaging. */
-#include "canvas_osmesa.h"
+#include "canvas_gl.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -513,7 +513,7 @@ static unsigned char *render(gl_canvas *c, const geo *g, int W, int H, char *err
         glViewport(-c->pad, -c->pad, c->base.width + 2 * c->pad,
                    c->base.height + 2 * c->pad);
     }
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, c->fbo);   /* the canvas (0 under OSMesa) */
     glDeleteFramebuffers(1, &fbo);
     glDeleteRenderbuffers(2, rb);
     return px;

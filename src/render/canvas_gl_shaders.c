@@ -1,11 +1,12 @@
-/* canvas_osmesa_gl.c - the OSMesa backend's shaders and vertex batches.
+/* canvas_gl_shaders.c - the GL backends' shaders and vertex batches.
  *
- * GLSL 1.20 (OpenGL 2.1), which every OSMesa since Mesa 7 provides. Three
+ * GLSL 1.20 (OpenGL 2.1), which every OSMesa since Mesa 7 provides and every
+ * desktop OpenGL context that EGL makes (canvas_egl.c). Three
  * programs: shapes (lines, fills, large discs; coverage from interpolated
  * distances), points (discs as point sprites; coverage from gl_PointCoord)
  * and text (a coverage texture rasterised by cairo). All output
  * premultiplied colour times coverage. */
-#include "canvas_osmesa.h"
+#include "canvas_gl.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -15,7 +16,7 @@
 /* Vertices are given in canvas pixels (origin top-left, y down); u_vp is
  * (offset x, offset y, viewport width, viewport height): normally the
  * offsets are the pad by which the viewport overhangs the canvas on every
- * side (canvas_osmesa.c says why); fills move them (canvas_osmesa_fill.c). */
+ * side (canvas_gl.c says why); fills move them (canvas_gl_fill.c). */
 #define TO_CLIP                                                              \
     "vec4 to_clip(vec2 p) {\n"                                               \
     "  return vec4(2.0 * (p.x + u_vp.x) / u_vp.z - 1.0,\n"                   \
@@ -167,7 +168,7 @@ static GLuint compile(GLenum type, const char *src, char *err, size_t errlen)
     if (!ok) {
         char log[512] = "";
         glGetShaderInfoLog(s, sizeof log, NULL, log);
-        snprintf(err, errlen, "OSMesa: a shader does not compile: %s", log);
+        snprintf(err, errlen, "OpenGL: a shader does not compile: %s", log);
         glDeleteShader(s);
         return 0;
     }
@@ -196,7 +197,7 @@ GLuint gl_link(const char *vs, const char *fs, const char *const *attribs,
     if (!ok) {
         char log[512] = "";
         glGetProgramInfoLog(p, sizeof log, NULL, log);
-        snprintf(err, errlen, "OSMesa: a shader program does not link: %s", log);
+        snprintf(err, errlen, "OpenGL: a shader program does not link: %s", log);
         glDeleteProgram(p);
         return 0;
     }

@@ -1,4 +1,4 @@
-/* canvas_osmesa_text.c - text in the OSMesa backend.
+/* canvas_gl_text.c - text in the GL backends (OSMesa, EGL).
  *
  * Each string is rasterised by cairo, with the face and options the cairo
  * backend uses (font.c), into an A8 coverage image that sits on the
@@ -8,7 +8,7 @@
  * through either backend; only the final blend is GL's. A string per
  * texture rather than a glyph atlas: frames carry a handful of strings,
  * and whole strings keep cairo's own glyph placement. */
-#include "canvas_osmesa.h"
+#include "canvas_gl.h"
 
 #include <cairo.h>
 #include <math.h>
