@@ -2,7 +2,13 @@
 #ifndef LAMINA_APP_H
 #define LAMINA_APP_H
 
+#include <stdio.h>
+
 int cmd_run(int argc, char **argv);
+/* help.c: the commands' help, from one table. */
+void app_usage(FILE *out);
+int app_command_help(FILE *out, const char *cmd, const char *sub);
+int app_wants_help(int argc, char **argv);
 int cmd_diff(int argc, char **argv);
 int cmd_gallery(int argc, char **argv);
 int cmd_repl(int argc, char **argv);    /* the workbench, docs/workbench.md */
