@@ -12,6 +12,7 @@
  * (before any step) are not live and are not logged. Each logged change is
  * also kept for lamina.changes(). */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "l_internal.h"
@@ -59,6 +60,77 @@ static void record(lua_State *L, const lm_sim *sim, const char *what, const char
     lua_pop(L, 1);
 }
 
+/* The value as Lua source that gives it back (issue 20 item 5: a gravity
+ * change was logged as "table: 0x..."): numbers with every digit, strings
+ * quoted, booleans, and arrays of those as {a, b, ...}; anything else as
+ * tostring does. Pushes the string. */
+static const char *replayable(lua_State *L, int idx, int depth)
+{
+    idx = lua_absindex(L, idx);
+    switch (lua_type(L, idx)) {
+    case LUA_TNUMBER:
+        if (lua_isinteger(L, idx)) return lua_pushfstring(L, "%I", lua_tointeger(L, idx));
+        {
+            /* the fewest digits that read back as the same double */
+            double v = lua_tonumber(L, idx);
+            char buf[40];
+            for (int prec = 15; prec <= 17; prec++) {
+                snprintf(buf, sizeof buf, "%.*g", prec, v);
+                if (strtod(buf, NULL) == v) break;
+            }
+            return lua_pushstring(L, buf);
+        }
+    case LUA_TSTRING: {
+        luaL_Buffer b;
+        luaL_buffinit(L, &b);
+        luaL_addchar(&b, '"');
+        size_t n;
+        const char *s = lua_tolstring(L, idx, &n);
+        for (size_t i = 0; i < n; i++) {
+            unsigned char c = (unsigned char)s[i];
+            if (c == '"' || c == '\\') {
+                luaL_addchar(&b, '\\');
+                luaL_addchar(&b, (char)c);
+            } else if (c < 32 || c == 127) {
+                char esc[8];
+                snprintf(esc, sizeof esc, "\\%03d", c);
+                luaL_addstring(&b, esc);
+            } else {
+                luaL_addchar(&b, (char)c);
+            }
+        }
+        luaL_addchar(&b, '"');
+        luaL_pushresult(&b);
+        return lua_tostring(L, -1);
+    }
+    case LUA_TTABLE:
+        if (depth < 2) {
+            lua_Integer n = (lua_Integer)lua_rawlen(L, idx);
+            if (n > 64) n = 64;
+            int pieces = 1;
+            lua_pushliteral(L, "{");
+            for (lua_Integer i = 1; i <= n; i++) {
+                lua_rawgeti(L, idx, i);
+                replayable(L, -1, depth + 1);
+                lua_remove(L, -2);
+                pieces++;
+                if (i < n) {
+                    lua_pushliteral(L, ", ");
+                    pieces++;
+                }
+            }
+            lua_pushliteral(L, "}");
+            lua_concat(L, pieces + 1);
+            break;
+        }
+        /* fall through */
+    default:
+        luaL_tolstring(L, idx, NULL);
+        break;
+    }
+    return lua_tostring(L, -1);
+}
+
 void la_log_change(lua_State *L, const char *what, const char *key, int validx)
 {
     lamina_run *run = la_run(L);
@@ -73,7 +145,7 @@ void la_log_change(lua_State *L, const char *what, const char *key, int validx)
     validx = lua_absindex(L, validx);
     lua_pushfstring(L, "%s.%s", what, key);
     const char *name = lua_tostring(L, -1);
-    const char *value = luaL_tolstring(L, validx, NULL);
+    const char *value = replayable(L, validx, 0);
     char line[512];
     if (sim)
         snprintf(line, sizeof line, "lamina: t = %.9g step %ld: %s = %s%s\n", sim->t,
