@@ -169,6 +169,9 @@ void la_push_body(lua_State *L, int sidx, int bi, int nameidx);
 /* The body handle at idx and its simulation. */
 int la_check_body(lua_State *L, int idx, lm_sim **sim);
 
+/* l_csv.c: lamina.read_csv(path) -> columns, names, rows */
+int la_read_csv(lua_State *L);
+
 /* l_frame_phi.c: membrane:phi(x, y), the phi sim:frame{phi = true} draws */
 int la_body_phi(lua_State *L);
 

@@ -58,6 +58,7 @@ static int luaopen_lamina(lua_State *L)
 {
     static const luaL_Reg funcs[] = {{"param", l_param},
                                      {"clock", l_clock},
+                                     {"read_csv", la_read_csv},
                                      {"sim", la_sim_new},
                                      {"elastic", la_elastic},
                                      {"membrane", la_membrane_material},
