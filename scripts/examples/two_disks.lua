@@ -21,7 +21,7 @@ local emin, emax = e0, e0
 sim:every(0.1, function(s)
   local e = s:energy().total
   emin, emax = math.min(emin, e), math.max(emax, e)
-  s:frame{ file = string.format("%s/frame_%04d.png", out, s.step), width = 512, height = 512 }
+  s:frame{ file = string.format("%s/frame_%06d.png", out, s.step), width = 512, height = 512 }
 end)
 sim:run{ t_end = t_end }
 

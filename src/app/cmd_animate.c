@@ -11,6 +11,7 @@
  * why. Exit status: 0 written, 1 nothing written, 2 a wrong command line. */
 #include <dirent.h>
 #include <errno.h>
+#include <fnmatch.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -33,6 +34,7 @@ typedef struct options {
     double fps;
     unsigned loops;
     int quiet;
+    const char *pattern;    /* --pattern GLOB: a folder's frames whose names match */
 } options;
 
 static int ends_with(const char *s, const char *suffix)
@@ -72,7 +74,7 @@ static int by_name(const void *a, const void *b)
 
 /* The folder's PNG files in name order; hidden files, lamina's
  * temporaries and the output itself are not frames. */
-static int add_folder(frames *f, const char *dir, const char *out)
+static int add_folder(frames *f, const char *dir, const char *out, const char *pattern)
 {
     DIR *d = opendir(dir);
     if (!d) {
@@ -85,7 +87,7 @@ static int add_folder(frames *f, const char *dir, const char *out)
     int rc = 0;
     while (rc == 0 && (e = readdir(d))) {
         if (e->d_name[0] == '.' || !ends_with(e->d_name, ".png") ||
-            strstr(e->d_name, ".tmp."))
+            strstr(e->d_name, ".tmp.") || (pattern && fnmatch(pattern, e->d_name, 0) != 0))
             continue;
         char path[4096];
         size_t n = strlen(dir);
@@ -101,6 +103,43 @@ static int add_folder(frames *f, const char *dir, const char *out)
     else
         fprintf(stderr, "lamina animate: out of memory\n");
     return rc;
+}
+
+/* A PNG's size from its header (the IHDR chunk opens every PNG); 0 or -1. */
+static int png_size(const char *path, unsigned *w, unsigned *h)
+{
+    unsigned char b[24];
+    FILE *fp = fopen(path, "rb");
+    if (!fp) return -1;
+    size_t n = fread(b, 1, sizeof b, fp);
+    fclose(fp);
+    static const unsigned char sig[8] = {137, 'P', 'N', 'G', 13, 10, 26, 10};
+    if (n != sizeof b || memcmp(b, sig, 8) != 0 || memcmp(b + 12, "IHDR", 4) != 0) return -1;
+    *w = (unsigned)b[16] << 24 | (unsigned)b[17] << 16 | (unsigned)b[18] << 8 | b[19];
+    *h = (unsigned)b[20] << 24 | (unsigned)b[21] << 16 | (unsigned)b[22] << 8 | b[23];
+    return 0;
+}
+
+/* An animation has one size: frames of another size than the first (a
+ * folder holding a run's frames and a plot, say) are left out with a
+ * warning instead of failing the whole animation. Unreadable files stay,
+ * to fail later with their own message. */
+static void keep_first_size(frames *f)
+{
+    unsigned w0, h0;
+    if (f->n == 0 || png_size(f->path[0], &w0, &h0) != 0) return;
+    size_t k = 1;
+    for (size_t i = 1; i < f->n; i++) {
+        unsigned w, h;
+        if (png_size(f->path[i], &w, &h) == 0 && (w != w0 || h != h0)) {
+            fprintf(stderr, "lamina animate: warning: '%s' is %ux%u, not %ux%u like '%s': "
+                    "left out\n", f->path[i], w, h, w0, h0, f->path[0]);
+            free(f->path[i]);
+            continue;
+        }
+        f->path[k++] = f->path[i];
+    }
+    f->n = k;
 }
 
 static int parse_number(const char *opt, const char *v, double lo, double hi, double *out)
@@ -144,6 +183,13 @@ static int parse_args(int argc, char **argv, options *o, char ***inputs, int *ni
                 return -1;
             }
             o->loops = (unsigned)x;
+            i++;
+        } else if (strcmp(a, "--pattern") == 0) {
+            if (!v || !*v) {
+                fprintf(stderr, "lamina animate: --pattern needs a name pattern (e.g. 'f*.png')\n");
+                return -1;
+            }
+            o->pattern = v;
             i++;
         } else if (strcmp(a, "--quiet") == 0 || strcmp(a, "-q") == 0) {
             o->quiet = 1;
@@ -263,7 +309,7 @@ static char *apng_name(const char *mp4)
 
 int cmd_animate(int argc, char **argv)
 {
-    options o = { NULL, 10.0, 0, 0 };
+    options o = { NULL, 10.0, 0, 0, NULL };
     char **inputs = NULL;
     int ninputs = 0;
     if (parse_args(argc, argv, &o, &inputs, &ninputs) != 0) {
@@ -276,7 +322,7 @@ int cmd_animate(int argc, char **argv)
     int status = out ? 0 : 1;
     for (int i = 0; i < ninputs && status == 0; i++) {
         if (is_folder(inputs[i])) {
-            status = add_folder(&f, inputs[i], out) ? 2 : 0;
+            status = add_folder(&f, inputs[i], out, o.pattern) ? 2 : 0;
         } else if (access(inputs[i], R_OK) != 0) {
             fprintf(stderr, "lamina animate: cannot read '%s': %s\n", inputs[i],
                     strerror(errno));
@@ -286,9 +332,12 @@ int cmd_animate(int argc, char **argv)
         }
     }
     if (status == 0 && f.n == 0) {
-        fprintf(stderr, "lamina animate: no .png frames in '%s'\n", inputs[0]);
+        fprintf(stderr, "lamina animate: no .png frames in '%s'%s%s\n", inputs[0],
+                o.pattern ? " matching " : "", o.pattern ? o.pattern : "");
         status = 2;
     }
+    if (status == 0)
+        keep_first_size(&f);
     const char *where = ninputs == 1 ? inputs[0] : "their files";
     char why[1024] = "";
     char *fallback = NULL;

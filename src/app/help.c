@@ -49,9 +49,10 @@ static const command_help commands[] = {
      "--collect summarises their folders (docs/workbench.md)"},
     {"animate",
      "lamina animate FOLDER|FRAME.png... [--out FILE.apng|FILE.mp4] [--fps N]\n"
-     "               [--loop N] [--quiet]",
-     "a run's frames as one animation (APNG; MP4 through ffmpeg when installed;\n"
-     "docs/rendering.md)"},
+     "               [--loop N] [--pattern GLOB] [--quiet]",
+     "a run's frames as one animation (APNG; MP4 through ffmpeg when installed);\n"
+     "--pattern takes a folder's frames whose names match; frames of another size\n"
+     "than the first are left out with a warning (docs/rendering.md)"},
     {"bench render",
      "lamina bench render [--width W] [--height H] [--runs N] [--counts N,...]\n"
      "                    [--backend cairo|osmesa|egl|gl|all]",

@@ -274,17 +274,32 @@ static void test_command(const char *lamina)
     CHECK(s && n >= 1 && s[0] == '5');      /* the five linked frames */
     free(s);
 
-    /* frames of two sizes: nothing written, the frames stay, and why */
+    /* a frame of another size (a plot beside a run's frames): left out
+     * with a warning, the animation made of the rest (issue 20 item 5) */
     unsigned char small[4 * 8 * 8] = { 0 };
     CHECK(lr_png_write(path("frames/frame_9999.png"), 8, 8, small, NULL, 0, err,
                        sizeof err) == 0);
     snprintf(cmd, sizeof cmd, "%s animate %s --out %s", lamina, path("frames"),
              path("mixed.apng"));
-    CHECK(run(cmd) == 1);
-    CHECK(said("is 8x8 but the first frame"));
-    CHECK(said("frames stay in"));
-    CHECK(!exists(path("mixed.apng")));
+    CHECK(run(cmd) == 0);
+    CHECK(said("is 8x8, not 48x32"));
+    CHECK(said("left out"));
+    CHECK(check_file(path("mixed.apng"), 1000) == NFRAMES);
     CHECK(exists(path("frames/frame_0000.png")));
+    unlink(path("mixed.apng"));
+
+    /* --pattern: only the frames whose names match */
+    CHECK(lr_png_write(path("frames/other_0001.png"), W, H, img, NULL, 0, err,
+                       sizeof err) == 0);
+    snprintf(cmd, sizeof cmd, "%s animate %s --pattern 'frame_00*.png' --out %s", lamina,
+             path("frames"), path("pattern.apng"));
+    CHECK(run(cmd) == 0);
+    CHECK(said("5 frames"));
+    CHECK(check_file(path("pattern.apng"), 1000) == NFRAMES);
+    unlink(path("pattern.apng"));
+    snprintf(cmd, sizeof cmd, "%s animate %s --pattern 'none*.png'", lamina, path("frames"));
+    CHECK(run(cmd) == 2);
+    CHECK(said("matching none*.png"));
 
     /* a wrong command line */
     snprintf(cmd, sizeof cmd, "%s animate %s --fps 0", lamina, path("frames"));
