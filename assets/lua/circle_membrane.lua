@@ -13,6 +13,7 @@ local M = {}
 function M.setup(o)
   o = o or {}
   local sim = lamina.sim{ domain = {0, 0, 1, 1}, cell = 0.1, dt = 0.7e-4, courant = 1.05,
+                          basis = "linear",
                           boundary = { left = "symmetry", bottom = "symmetry",
                                        right = "fixed", top = "fixed" } }
   local air = lamina.gas{ rho = 1, p = 1000, gamma = 1.4, mu = 0.2 }
@@ -20,7 +21,7 @@ function M.setup(o)
                                 law = "plane_stress" }
   local gas = sim:body{ material = air, ppc = 16, name = "gas", fill = o.fill or "clipped",
                         region = lamina.disk{ center = {0, 0}, radius = 0.5 } }
-  local mem = sim:membrane{ material = skin, count = 91, name = "membrane",
+  local mem = sim:membrane{ material = skin, count = 91, name = "membrane", force = "point",
                             normals = o.normals or "connectivity", orient = {0, 0},
                             curve = lamina.arc{ center = {0, 0}, radius = 0.5, from = 0, to = 90 } }
   return sim, gas, mem

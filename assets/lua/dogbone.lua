@@ -100,7 +100,8 @@ function M.setup(h, o)
   local sim = lamina.sim{ domain = {0, 0, 1.6, 1.6}, cell = h, dt = 0.5 * h / cm,
                           boundary = { left = "symmetry", bottom = "symmetry",
                                        right = "fixed", top = "fixed" },
-                          pic = o.pic or 0, threads = o.threads, basis = o.basis }
+                          pic = o.pic or 0, threads = o.threads,
+                          basis = o.basis or "linear" }
   local air = lamina.gas{ rho = 1, e = 250, gamma = 1.4, mu = 0.2, split = o.split,
                           density = o.density }
   local skin = lamina.membrane{ rho = 0.5, E = 1e6, nu = 0.3, thickness = 0.1,
@@ -110,7 +111,7 @@ function M.setup(h, o)
   local mem = sim:membrane{ material = skin, name = "membrane",
                             count = M.counts[h] or math.floor(2 / (h / 10) + 0.5),
                             normals = o.normals or "connectivity", orient = {0, 0},
-                            force = o.force,
+                            force = o.force or "point",
                             initial_strain = math.log(M.length(pts) / M.natural_length),
                             curve = lamina.polyline(pts) }
   return sim, gas, mem

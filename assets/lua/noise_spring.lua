@@ -40,14 +40,14 @@ M.dt = M.cf * M.h / math.sqrt(M.E / M.rho)
 function M.setup(o)
   o = o or {}
   local def = { domain = {0, 1.4, 0.2, M.top}, cell = M.h, dt = M.dt, gravity = {0, -M.g},
-                stress = o.stress, scheme = o.scheme,
+                stress = o.stress, scheme = o.scheme, basis = "linear",
                 boundary = { left = "symmetry", right = "symmetry" } }
   for key, v in pairs(o.sim or {}) do def[key] = v end
   local ok, sim = pcall(lamina.sim, def)
   if not ok then return nil, sim end
   local wire = lamina.membrane{ rho = M.rho, E = M.E, nu = 0, thickness = M.A, law = "uniaxial" }
   local s = sim:membrane{ material = wire, count = o.count or M.N, end_mass = M.mass,
-                          force = o.force, name = "spring",
+                          force = o.force or "point", name = "spring",
                           curve = lamina.segment{ from = {o.x or 0.05, M.top},
                                                  to = {o.x or 0.05, M.top - M.L} } }
   return sim, s

@@ -12,7 +12,7 @@ local M = {}
 function M.setup(o)
   o = o or {}
   local dx, ppc = o.dx or 0.005, o.ppc or {3, 1}
-  local sim = lamina.sim{ domain = {0, 0, 1, dx}, cell = dx, dt = 1e-4, basis = o.basis,
+  local sim = lamina.sim{ domain = {0, 0, 1, dx}, cell = dx, dt = 1e-4, basis = o.basis or "linear",
                           boundary = { left = "fixed", right = "fixed",
                                        bottom = "symmetry", top = "symmetry" } }
   local hi = lamina.gas{ rho = 1, p = 1, gamma = 1.4, av = true, density = o.density }

@@ -26,12 +26,12 @@ M.start = { centres = 0.5, sides = 0.0001 }
 -- (energy every step), whether the run went to t_end, and the sim.
 function M.run(case, factor, scheme, t_end)
   local sim = lamina.sim{ domain = {0, 0, 5, 1}, cell = M.h, dt = factor * M.dtc,
-                          scheme = scheme, courant = 3,
+                          scheme = scheme, courant = 3, basis = "linear",
                           boundary = { left = "free", right = "free",
                                        bottom = "symmetry", top = "symmetry" } }
   local bar = lamina.membrane{ rho = M.rho, E = M.E, nu = 0, thickness = 1, law = "uniaxial" }
   local x0 = M.start[case]
-  sim:membrane{ material = bar, count = 5, name = "bar",
+  sim:membrane{ material = bar, count = 5, name = "bar", force = "point",
                 curve = lamina.segment{ from = {x0, 0.5}, to = {x0 + 4, 0.5} },
                 velocity = function(_, i) if i == 3 then return 1e-8, 0 end return 0, 0 end }
   local rec = sim:record{ energy = true }

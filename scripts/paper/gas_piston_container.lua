@@ -28,14 +28,14 @@ end
 local report, hash = {}, nil
 for _, m in ipairs{0.1, 1.0} do
   local Ls, n = 2, 3
-  local sim = lamina.sim{ domain = {0, 0, L + Ls, 1}, cell = h, dt = 0.5 * h / c,
+  local sim = lamina.sim{ basis = "linear", domain = {0, 0, L + Ls, 1}, cell = h, dt = 0.5 * h / c,
                           boundary = { left = "fixed", right = "fixed",
                                        bottom = "symmetry", top = "symmetry" } }
   local fluid = lamina.linear_fluid{ rho = rho, beta = beta }
   sim:body{ material = fluid, region = lamina.rect{ x0 = 0, y0 = 0, x1 = L, y1 = 1 }, ppc = 4 }
   local spring = lamina.membrane{ rho = m / (100 * A * Ls / (n - 1)), E = K * Ls / A, nu = 0,
                                   thickness = A }
-  local s = sim:membrane{ material = spring, count = n, end_mass = m, name = "spring",
+  local s = sim:membrane{ force = "point", material = spring, count = n, end_mass = m, name = "spring",
                           curve = lamina.segment{ from = {L + Ls, 0.5}, to = {L, 0.5} },
                           velocity = function(u, i) if i == n then return 0.1, 0 end return 0, 0 end }
   local T = theory(m)

@@ -34,10 +34,10 @@ local prev_err
 for _, r in ipairs{ {0.2, 20}, {0.1, 40}, {0.05, 80}, {0.025, 320} } do
   local h, n = r[1], r[2]
   if h < finest - 1e-12 then break end
-  local sim = lamina.sim{ domain = {0, 0, 1.2, 1.0}, cell = h, dt = 0.63 * h / c,
+  local sim = lamina.sim{ basis = "linear", domain = {0, 0, 1.2, 1.0}, cell = h, dt = 0.63 * h / c,
                           gravity = {0, -g}, pic = 0.001 }
   local wire = lamina.membrane{ rho = rho, E = E, nu = 0, thickness = t, one_way = true }
-  local s = sim:membrane{ material = wire, count = n, end_mass = m, name = "string",
+  local s = sim:membrane{ force = "point", material = wire, count = n, end_mass = m, name = "string",
                           curve = lamina.segment{ from = {px, py}, to = {mx, my} } }
   local rec = sim:record{ every = 1e-3, angle = { theta = s },
                           file = string.format("%s/theta_cell%.3f.csv", out, h) }

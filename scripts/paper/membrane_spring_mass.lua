@@ -21,11 +21,11 @@ local T = 2 * math.pi / omega
 local d_static = m * -g / k
 
 local function run(factor, frames)
-  local sim = lamina.sim{ domain = {0, 0, 0.2, 2.0}, cell = h, dt = factor * dtc,
+  local sim = lamina.sim{ basis = "linear", domain = {0, 0, 0.2, 2.0}, cell = h, dt = factor * dtc,
                           gravity = {0, g}, courant = 1.8,
                           boundary = { left = "symmetry", right = "symmetry" } }
   local wire = lamina.membrane{ rho = rho, E = E, nu = 0, thickness = A, law = "uniaxial" }
-  local s = sim:membrane{ material = wire, count = 10, end_mass = m, name = "spring",
+  local s = sim:membrane{ force = "point", material = wire, count = 10, end_mass = m, name = "spring",
                           curve = lamina.segment{ from = {0.1, 1.99}, to = {0.1, 1.69} } }
   local rec = sim:record{ every = dtc, energy = true, points = { mass = {s, -1} },
                           file = string.format("%s/history_%.1f.csv", out, factor) }

@@ -16,10 +16,10 @@ local t_end = lamina.param("t_end", 0.08)
 
 local E, A, rho, m, g, slack = 1e6, 0.1, 0.1, 3.33, -250, 0.02
 local dt = 0.1 / math.sqrt(E / rho)
-local sim = lamina.sim{ domain = {0, 0, 0.2, 2.0}, cell = 0.1, dt = dt, gravity = {0, g},
+local sim = lamina.sim{ basis = "linear", domain = {0, 0, 0.2, 2.0}, cell = 0.1, dt = dt, gravity = {0, g},
                         boundary = { left = "symmetry", right = "symmetry" } }
 local wire = lamina.membrane{ rho = rho, E = E, nu = 0, thickness = A, one_way = true }
-local s = sim:membrane{ material = wire, count = 10, end_mass = m, initial_strain = -slack / 0.3,
+local s = sim:membrane{ force = "point", material = wire, count = 10, end_mass = m, initial_strain = -slack / 0.3,
                         name = "string", curve = lamina.segment{ from = {0.1, 1.99}, to = {0.1, 1.69} } }
 local rec = sim:record{ every = dt, energy = true, points = { mass = {s, -1} },
                         file = out .. "/history.csv" }

@@ -11,7 +11,7 @@ local cells = lamina.param("cells", 40)
 local h = L / cells
 local c = math.sqrt(E / rho)
 local T = 4 * L / c
-local sim = lamina.sim{ domain = {0, 0, 1.25, h}, cell = h, dt = 0.2 * h / c,
+local sim = lamina.sim{ basis = "linear", domain = {0, 0, 1.25, h}, cell = h, dt = 0.2 * h / c,
                         boundary = { left = "fixed", right = "free",
                                      bottom = "symmetry", top = "symmetry" } }
 local steel = lamina.elastic{ rho = rho, E = E, nu = 0, plane = "stress" }

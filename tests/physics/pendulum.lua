@@ -25,10 +25,10 @@ local fem = barfem.run{ from = {px, py}, to = {mx, my}, elements = 10, rho = rho
                         every = 1e-3, safety = 0.9 }
 
 local function swing(h, n)
-  local sim = lamina.sim{ domain = {0, 0, 1.2, 1.0}, cell = h, dt = 0.63 * h / c,
+  local sim = lamina.sim{ basis = "linear", domain = {0, 0, 1.2, 1.0}, cell = h, dt = 0.63 * h / c,
                           gravity = {0, -g}, pic = 0.001 }
   local wire = lamina.membrane{ rho = rho, E = E, nu = 0, thickness = t, one_way = true }
-  local s = sim:membrane{ material = wire, count = n, end_mass = m,
+  local s = sim:membrane{ force = "point", material = wire, count = n, end_mass = m,
                           curve = lamina.segment{ from = {px, py}, to = {mx, my} } }
   local rec = sim:record{ every = 1e-3, angle = { theta = s } }
   sim:run{ t_end = T_end }

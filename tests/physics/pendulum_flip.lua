@@ -20,7 +20,7 @@ local fem = barfem.run{ from = {px, py}, to = {mx, my}, elements = 20, rho = rho
                         every = 1e-3, safety = 0.9 }
 
 local function run(h, n, force, pic, t_end)
-  local sim = lamina.sim{ domain = {0, 0, 1.2, 1.0}, cell = h, dt = 0.63 * h / c,
+  local sim = lamina.sim{ basis = "linear", domain = {0, 0, 1.2, 1.0}, cell = h, dt = 0.63 * h / c,
                           gravity = {0, -g}, pic = pic }
   local wire = lamina.membrane{ rho = rho, E = E, nu = 0, thickness = t, one_way = true }
   local s = sim:membrane{ material = wire, count = n, end_mass = m, name = "string", force = force,

@@ -26,7 +26,7 @@ end
 
 local function measure(m)
   local Ls = 2
-  local sim = lamina.sim{ domain = {0, 0, L + Ls, 1}, cell = h, dt = 0.5 * h / c,
+  local sim = lamina.sim{ basis = "linear", domain = {0, 0, L + Ls, 1}, cell = h, dt = 0.5 * h / c,
                           boundary = { left = "fixed", right = "fixed",
                                        bottom = "symmetry", top = "symmetry" } }
   local fluid = lamina.linear_fluid{ rho = rho, beta = beta }
@@ -35,7 +35,7 @@ local function measure(m)
   local spring = lamina.membrane{ rho = m / (100 * A * ds), E = K * Ls / A, nu = 0,
                                   thickness = A, law = "uniaxial" }
   -- from the wall to the piston: the piston is the heavy last point
-  local s = sim:membrane{ material = spring, count = n, end_mass = m,
+  local s = sim:membrane{ force = "point", material = spring, count = n, end_mass = m,
                           curve = lamina.segment{ from = {L + Ls, 0.5}, to = {L, 0.5} },
                           velocity = function(u, i) if i == n then return 0.1, 0 end return 0, 0 end }
   local T = theory(m)

@@ -20,11 +20,11 @@ local d_static = m * -g * L / (A * E)
 
 local function run(factor, t_end)
   -- the string on the node line x = 0.1: the side walls' nodes get no mass
-  local sim = lamina.sim{ domain = {0, 0, 0.2, 2.0}, cell = h, dt = factor * dtc,
+  local sim = lamina.sim{ basis = "linear", domain = {0, 0, 0.2, 2.0}, cell = h, dt = factor * dtc,
                           gravity = {0, g}, courant = 1.7,
                           boundary = { left = "symmetry", right = "symmetry" } }
   local wire = lamina.membrane{ rho = rho, E = E, nu = 0, thickness = A, law = "uniaxial" }
-  local s = sim:membrane{ material = wire, count = 10, end_mass = m,
+  local s = sim:membrane{ force = "point", material = wire, count = 10, end_mass = m,
                           curve = lamina.segment{ from = {0.1, 1.99}, to = {0.1, 1.69} } }
   local rec = sim:record{ every = sim.dt, energy = true, points = { mass = {s, -1} } }
   local ok, err = pcall(sim.run, sim, { t_end = t_end })
