@@ -7,6 +7,7 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "contact.h"
 #include "step.h"
 #include "threads.h"
 
@@ -363,6 +364,7 @@ static int gas_maxima(lm_sim *sim, double *max_div, double *c_max)
         if (mat->kind != LM_GAS || !mat->av) continue;
         double L[4];
         velocity_gradient(&sim->grid, p, (size_t)q, L);
+        if (sim->contact) lm_contact_gradient(sim, (size_t)q, L);
         double div = fabs(L[0] + L[3]);
         double c = lm_gas_sound_speed(mat, p->e[q]);
         if (div > md) md = div;
@@ -395,6 +397,7 @@ lm_status lm_step_stress(lm_sim *sim)
     for (long q = 0; q < n; q++) {
         double L[4];
         velocity_gradient(g, p, (size_t)q, L);
+        if (sim->contact) lm_contact_gradient(sim, (size_t)q, L);   /* contact.h */
         double dexx = dt * L[0], deyy = dt * L[3];
         double dexy = 0.5 * dt * (L[1] + L[2]);
         double w = 0.5 * (L[1] - L[2]);
@@ -543,9 +546,16 @@ lm_status lm_sim_step(lm_sim *sim)
     lm_step_shape(sim);
     lm_step_p2g(sim);
     lm_step_forces(sim);
+    if (sim->contact) {   /* the paired bodies' own fields (contact.h) */
+        st = lm_contact_sums(sim);
+        if (st != LM_OK) return st;
+    }
     lm_step_grid_update(sim);
+    if (sim->contact) lm_contact_correct(sim);
     lm_step_g2p(sim);
+    if (sim->contact) lm_contact_g2p(sim);
     lm_step_strain_velocity(sim);
+    if (sim->contact) lm_contact_strain_velocity(sim);
     st = lm_step_stress(sim);
     sim->step++;
     if (st != LM_OK) return st;
