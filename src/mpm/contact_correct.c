@@ -2,13 +2,13 @@
  * fields ([M] §4.1 eqs 20-26, [T] A.1.3 eq 9.9; friction after
  * Bardenhagen, Brackbill & Sulsky 2001), and the particles moved by it.
  *
- * At a node where both bodies of a pair have mass, with v the shared
- * (centre-of-mass) field after the boundary conditions and w^I = v^I - v
- * each body's own Lagrangian velocity relative to it, the pair separates
- * iff w^I . n^I < 0 for both, n^I the outward normal (physics.md §4, the
- * reconstructed sign; the two-bar test, tests/physics/contact_two_bar.lua,
- * settles it: with the other sign the bars never part). A body moves in
- * its own field where all its pairs at the node separate, the papers' rule.
+ * At a node where both bodies of a pair have mass, the pair separates iff
+ * they move apart along the pair's normal n (out of a, into b):
+ * (v^a - v^b) . n < 0, [T] eq 9.7, the same as [M] eq 26 "(v^I - v) . n^I
+ * < 0 for both" with outward normals for two free bodies (physics.md §4,
+ * the reconstructed sign; the two-bar test, tests/physics/contact_two_bar.lua,
+ * settles it: with the other sign the bars never part). A body moves in its
+ * own field where all its pairs at the node separate, the papers' rule.
  *
  * One departure, for momentum: the papers have two bodies, so the other
  * body's own field and the centre-of-mass field are the same thing. With a
@@ -25,8 +25,8 @@
  * tangential acceleration follows with the same s, so s = 0 is the shared
  * field (stick) and mu = 0 free sliding. The normal is the pair's common
  * one, (n^a - n^b)/|n^a - n^b|, seen from each body with its sign, so that
- * the two corrections are equal and opposite. It acts where the pair is
- * all the mass of the node (else the pair sticks).
+ * the two corrections are equal and opposite (pair_normal). It acts where
+ * the pair is all the mass of the node (else the pair sticks).
  *
  * The correction never raises the grid's kinetic energy: merging fields
  * into their centre of mass loses energy, and the slip keeps only the part
@@ -59,26 +59,51 @@ static inline int pair_here(const lm_contact *c, int k, long i)
 /* Mass share below which a body only grazes a node: see separating(). */
 #define THIN 0.2
 
-/* [M] eq 26 for pair k at node i against the shared velocity (vx, vy),
- * with each body's velocity p^I / m^I of whatever its arrays hold: do both
- * bodies move away along their outward normals? A node that one body of
- * the pair only grazes (less than THIN of the pair's mass there) counts as
- * separating: there that body's own f/m is large and of either sign from
- * one step to the next (its particles' weights are small, the gradients
- * not), and a test that reads it makes the bars of [M] Fig 20 chatter
- * between contact and release and gain energy. Measured on the two-bar
- * impact at cell 0.25 (left, right bar velocity and E/E0 at t = 0.5):
- * THIN 0 and 0.02 blow up (E/E0 4-6), 0.1: -0.15 / 2.15, E/E0 1.61;
- * 0.15: 0.08 / 1.92, 1.058; 0.2: 0.12 / 1.88, 0.995; 0.3: 0.14 / 1.86,
- * 0.954 (contact then starts late, the bars overlap a particle spacing). */
-static int separating(const lm_contact *c, int k, long i, double vx, double vy)
+/* The pair's normal at node i, pointing out of a into b: the outward
+ * normal of the body with more mass at the node (a's, or minus b's). The
+ * colour normal of a body is tilted near its corners (45 degrees at a
+ * square corner), and a block sliding on a plane would otherwise be pushed
+ * back by the tilted normal of its leading corner even without friction;
+ * the plane's own normal there is right. 0 if neither body has one. */
+static int pair_normal(const lm_contact *c, int k, long i, double *nx, double *ny)
+{
+    const lm_contact_field *fa = &c->f[c->pairs[k].a], *fb = &c->f[c->pairs[k].b];
+    int use_a = fa->m[i] >= fb->m[i];
+    for (int t = 0; t < 2; t++, use_a = !use_a) {
+        double x = use_a ? fa->nx[i] : -fb->nx[i], y = use_a ? fa->ny[i] : -fb->ny[i];
+        if (x != 0 || y != 0) {
+            *nx = x;
+            *ny = y;
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* [M] eq 26 for pair k at node i, in the form of [T] eq 9.7 (the
+ * dissertation finds both forms give the same result): do the bodies move
+ * apart along the pair's normal, (v^a - v^b) . n < 0, with each body's
+ * velocity p^I / m^I of whatever its arrays hold? For two free bodies this
+ * is eq 26 for both at once (v^I - v is m^J/(m^a + m^b) of v^I - v^J); it
+ * stays right when one body is held by a pin, whose velocity relative to
+ * the shared field is then zero. A node that one body of the pair only
+ * grazes (less than THIN of the pair's mass there) counts as separating:
+ * there that body's own f/m is large and of either sign from one step to
+ * the next (its particles' weights are small, the gradients not), and a
+ * test that reads it makes the bars of [M] Fig 20 chatter between contact
+ * and release and gain energy. Measured on the two-bar impact at cell
+ * 0.25 (left, right bar velocity and E/E0 at t = 0.5): THIN 0 and 0.02 blow
+ * up (E/E0 4-6), 0.1: -0.15 / 2.15, E/E0 1.61; 0.15: 0.08 / 1.92, 1.058;
+ * 0.2: 0.12 / 1.88, 0.995; 0.3: 0.14 / 1.86, 0.954 (contact then starts
+ * late, the bars overlap a particle spacing). */
+static int separating(const lm_contact *c, int k, long i)
 {
     const lm_contact_field *fa = &c->f[c->pairs[k].a], *fb = &c->f[c->pairs[k].b];
     double ma = fa->m[i], mb = fb->m[i];
     if (fmin(ma, mb) < THIN * (ma + mb)) return 1;
-    double wa = (fa->px[i] / ma - vx) * fa->nx[i] + (fa->py[i] / ma - vy) * fa->ny[i];
-    double wb = (fb->px[i] / mb - vx) * fb->nx[i] + (fb->py[i] / mb - vy) * fb->ny[i];
-    return wa < 0 && wb < 0;
+    double nx, ny;
+    if (!pair_normal(c, k, i, &nx, &ny)) return 0;
+    return (fa->px[i] / ma - fb->px[i] / mb) * nx + (fa->py[i] / ma - fb->py[i] / mb) * ny < 0;
 }
 
 /* Friction of pair k at node i, neither body released: each body's
@@ -87,11 +112,8 @@ static int separating(const lm_contact *c, int k, long i, double vx, double vy)
 static int friction(lm_contact *c, int k, long i, double vx, double vy)
 {
     lm_contact_field *fa = &c->f[c->pairs[k].a], *fb = &c->f[c->pairs[k].b];
-    double nx = fa->nx[i] - fb->nx[i], ny = fa->ny[i] - fb->ny[i];
-    double len = hypot(nx, ny);
-    if (len < 1e-12) return 0;
-    nx /= len;
-    ny /= len;
+    double nx, ny;
+    if (!pair_normal(c, k, i, &nx, &ny)) return 0;
     int slid = 0;
     for (int side = 0; side < 2; side++) {
         lm_contact_field *f = side ? fb : fa;
@@ -131,7 +153,6 @@ void lm_contact_release_test(lm_sim *sim)
     for (long i = 0; i < (long)nn; i++) {
         double mG = g->m[i];
         if (mG <= 0) continue;
-        double vGx = g->px[i] / mG, vGy = g->py[i] / mG;
         int any = 0;
         memset(flag, 0, (size_t)c->nf);
         for (int k = 0; k < c->npairs; k++) {
@@ -139,7 +160,7 @@ void lm_contact_release_test(lm_sim *sim)
             int a = c->pairs[k].a, b = c->pairs[k].b;
             flag[a] |= 1;
             flag[b] |= 1;
-            if (!separating(c, k, i, vGx, vGy)) flag[a] |= 2, flag[b] |= 2;
+            if (!separating(c, k, i)) flag[a] |= 2, flag[b] |= 2;
             any = 1;
         }
         if (any)
@@ -163,7 +184,7 @@ static void correct_node(lm_sim *sim, long i)
      * it was parting at time k (a compressed bar released in its own field
      * would push into the other) */
     for (int k = 0; k < c->npairs; k++)
-        if (pair_here(c, k, i) && !separating(c, k, i, vGx, vGy))
+        if (pair_here(c, k, i) && !separating(c, k, i))
             c->f[c->pairs[k].a].own[i] = c->f[c->pairs[k].b].own[i] = 0;
     /* kinetic energy before: each paired body in its own field, the rest
      * of the node's mass as one */
@@ -260,6 +281,26 @@ static void correct_node(lm_sim *sim, long i)
     else c->nodes_stick++;
 }
 
+/* A pinned body's own field moves with its pins where they hold the grid,
+ * as the shared field does (pin.c): p^L = m v_pin, the force to match. */
+static void pin_field(const lm_sim *sim, lm_contact_field *f)
+{
+    int held = 0;
+    for (int k = 0; k < sim->npins && !held; k++) held = sim->pins[k].body == f->body;
+    if (!held) return;
+    size_t nn = lm_grid_nodes(&sim->grid);
+    double dt = sim->def.dt;
+    for (size_t i = 0; i < nn; i++) {
+        if (!(sim->pin_w[i] > 0) || f->m[i] <= 0) continue;
+        double px = f->m[i] * sim->pin_vx[i] / sim->pin_w[i];
+        double py = f->m[i] * sim->pin_vy[i] / sim->pin_w[i];
+        f->fx[i] += (px - f->px[i]) / dt;
+        f->fy[i] += (py - f->py[i]) / dt;
+        f->px[i] = px;
+        f->py[i] = py;
+    }
+}
+
 void lm_contact_correct(lm_sim *sim)
 {
     lm_contact *c = sim->contact;
@@ -273,6 +314,7 @@ void lm_contact_correct(lm_sim *sim)
             f->px[i] += dt * f->fx[i];   /* [M] eq 24: p^L of the body */
             f->py[i] += dt * f->fy[i];
         }
+        pin_field(sim, f);
         lm_grid_apply_bc(g, f->px, f->py);
         lm_grid_apply_bc(g, f->fx, f->fy);
         /* s, tx, ty, dv and da cleared (own is the release test's) */
