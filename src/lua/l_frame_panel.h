@@ -10,7 +10,7 @@
  * panel, or as defaults for every table in `panels`). */
 #define LA_PANEL_KEYS "window", "grid", "colour", "range", "colourmap", \
     "colourbar", "scalebar", "units", "mirror", "split", "split_at", "names", \
-    "normals", "contours", "contour_levels", "particles"
+    "normals", "contours", "contour_levels", "particles", "contact"
 
 typedef struct la_frame_ctx {
     const char *fn;     /* "sim:frame", for messages */
@@ -27,5 +27,9 @@ void *la_frame_scratch(lua_State *L, la_frame_ctx *ctx, size_t n);
  * `sim`, else the one at sidx. Raises a Lua error naming a bad key. */
 void la_frame_panel(lua_State *L, la_frame_ctx *ctx, int fidx, int pidx, int sidx,
                     lr_panel *p);
+
+/* l_frame_contact.c: contact = true, the grid normals and node states of
+ * the last step's contact correction appended to the side's arrows. */
+void la_frame_contact(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, lr_layers *l);
 
 #endif
