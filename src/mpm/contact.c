@@ -207,6 +207,34 @@ static void body_sums(lm_sim *sim, lm_contact_field *f)
     }
 }
 
+/* The sums of the field f as the shared field's less every other field's
+ * (all bodies are paired). Mass below 1e-12 of the node's is rounding: the
+ * body is not there. */
+static void rest_sums(lm_sim *sim, lm_contact_field *f)
+{
+    const lm_grid *g = &sim->grid;
+    const lm_contact *c = sim->contact;
+    size_t nn = lm_grid_nodes(g);
+    memcpy(f->m, g->m, nn * sizeof(double));
+    memcpy(f->px, g->px, nn * sizeof(double));
+    memcpy(f->py, g->py, nn * sizeof(double));
+    memcpy(f->fx, g->fx, nn * sizeof(double));
+    memcpy(f->fy, g->fy, nn * sizeof(double));
+    for (int k = 0; k < c->nf; k++) {
+        const lm_contact_field *o = &c->f[k];
+        if (o == f) continue;
+        for (size_t i = 0; i < nn; i++) {
+            f->m[i] -= o->m[i];
+            f->px[i] -= o->px[i];
+            f->py[i] -= o->py[i];
+            f->fx[i] -= o->fx[i];
+            f->fy[i] -= o->fy[i];
+        }
+    }
+    for (size_t i = 0; i < nn; i++)
+        if (f->m[i] <= 1e-12 * g->m[i]) f->m[i] = f->px[i] = f->py[i] = f->fx[i] = f->fy[i] = 0;
+}
+
 void lm_contact_body_normals(lm_sim *sim, lm_contact_field *f);   /* contact_normals.c */
 void lm_contact_release_test(lm_sim *sim);                         /* contact_correct.c */
 
@@ -216,10 +244,17 @@ lm_status lm_contact_sums(lm_sim *sim)
     lm_status st = reserve(sim);
     if (st != LM_OK) return st;
     lm_contact *c = sim->contact;
-    for (int k = 0; k < c->nf; k++) {
-        body_sums(sim, &c->f[k]);
-        lm_contact_body_normals(sim, &c->f[k]);
-    }
+    /* when every body is in a pair, the last one's sums are the shared
+     * field's less the others': one scatter saved. Not with pins: at a
+     * node a held body barely reaches, its true mass may be below the
+     * rounding of the difference, and the node, held by the pin, would then
+     * hold the other body too (measured: the block of
+     * tests/physics/contact_friction.lua stuck to its pinned plane). */
+    int last = c->nf == sim->nbodies && sim->npins == 0 ? c->nf - 1 : -1;
+    for (int k = 0; k < c->nf; k++)
+        if (k != last) body_sums(sim, &c->f[k]);
+    if (last >= 0) rest_sums(sim, &c->f[last]);
+    for (int k = 0; k < c->nf; k++) lm_contact_body_normals(sim, &c->f[k]);
     lm_contact_release_test(sim);
     return LM_OK;
 }

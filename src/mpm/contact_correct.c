@@ -332,6 +332,19 @@ void lm_contact_correct(lm_sim *sim)
     }
 }
 
+/* Does particle q's stencil reach a node whose state is in `mask` (bit
+ * 1 << state)? Particles away from where pairs meet need no correction,
+ * and most of a body is away from them. */
+static int touches(const lm_sim *sim, size_t q, unsigned mask)
+{
+    const lm_grid *g = &sim->grid;
+    const unsigned char *st = sim->contact->state;
+    const int W = g->sw;
+    for (int k = 0; k < W * W; k++)
+        if (mask >> st[lm_stencil_node(g, W, sim->p.node[q], k)] & 1) return 1;
+    return 0;
+}
+
 /* sum_i N_iq d_i over particle q's stencil, for two nodal arrays. */
 static void gather2(const lm_grid *g, const lm_particles *p, size_t q, const double *dx,
                     const double *dy, double *sx, double *sy)
@@ -362,7 +375,7 @@ void lm_contact_g2p(lm_sim *sim)
         const lm_contact_field *f = &c->f[k];
         const lm_body *bd = &sim->bodies[f->body];
         for (size_t q = bd->first; q < bd->first + bd->count; q++) {
-            if (p->pin[q]) continue;
+            if (p->pin[q] || !touches(sim, q, ~1u)) continue;
             double ax, ay, ux, uy;
             gather2(g, p, q, f->dax, f->day, &ax, &ay);
             gather2(g, p, q, f->dvx, f->dvy, &ux, &uy);
@@ -394,6 +407,8 @@ void lm_contact_strain_velocity(lm_sim *sim)
         memset(f->px, 0, 2 * nn * sizeof(double));
         memset(f->dvx, 0, 2 * nn * sizeof(double));
         for (size_t q = bd->first; q < bd->first + bd->count; q++) {
+            /* only where a body moved in its own field or slid */
+            if (!touches(sim, q, 1u << LM_CNODE_RELEASE | 1u << LM_CNODE_SLIDE)) continue;
             const double *N = p->N + NS * q;
             for (int j = 0; j < NS; j++) {
                 long i = lm_stencil_node(g, W, p->node[q], j);
@@ -455,7 +470,7 @@ void lm_contact_gradient(const lm_sim *sim, size_t q, double L[4])
     const lm_particles *p = &sim->p;
     if (!c || c->npairs == 0 || p->pin[q]) return;
     int k = c->of_body[p->body[q]];
-    if (k < 0) return;
+    if (k < 0 || !touches(sim, q, 1u << LM_CNODE_RELEASE | 1u << LM_CNODE_SLIDE)) return;
     const lm_contact_field *f = &c->f[k];
     const lm_grid *g = &sim->grid;
     const int W = g->sw, NS = W * W;
