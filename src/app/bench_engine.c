@@ -146,7 +146,7 @@ static int time_case(const char *name, builder make, double h, void *ctx, double
         lm_sim_free(sim);
         return -1;
     }
-    printf("| %-13s | %9zu | %7ld | %7.3f | %7.2f |\n", name, n, steps_total, secs,
+    printf("| %-12s | %9zu | %7ld | %7.3f | %7.2f |\n", name, n, steps_total, secs,
            done / secs / 1e6);
     fflush(stdout);
     return 0;
@@ -230,7 +230,7 @@ int bench_engine(int argc, char **argv)
                         .thickness = 0.1, .law = LM_LAW_PLANE_STRESS};
     printf("lamina bench engine: %d thread%s, basis %s, about %.3g particle-steps per case\n\n",
            threads, threads == 1 ? "" : "s", lm_basis_name(basis), work);
-    printf("| case          | particles |   steps |       s | M p-steps/s |\n");
+    printf("| case         | particles |   steps |       s | M p-steps/s |\n");
     printf("|---|---:|---:|---:|---:|\n");
     int bad = 0;
     for (int k = 0; k < nsizes; k++) {

@@ -1,10 +1,10 @@
 -- EXPECTED FAILURE (tests/CMakeLists.txt: WILL_FAIL). [M] Fig 20 / [T]
 -- Fig 95: with contact-release the left bar ends at about 0.3 and the
 -- right at about 1.7 at t = 0.5 (issue 14, item 5: 0.2-0.4 and 1.6-1.8).
--- lamina measures 0.121 / 1.879 at the paper's mesh (cell 0.25) and
--- 0.089 / 1.911 at cell 0.125: closer to the ideal exchange (0 / 2), with
--- the total energy within -0.5 % / +0.7 % of its start where the
--- dissertation loses 11 % ([T] A.1.5, Fig 96a). The release rule that gives
+-- lamina measures 0.122 / 1.878 at the paper's mesh (cell 0.25) and
+-- 0.087 / 1.913 at cell 0.125: closer to the ideal exchange (0 / 2), with
+-- the total energy within 1.4 % of its start where the dissertation loses
+-- 11 % ([T] A.1.5, Fig 96a). The release rule that gives
 -- this is in src/mpm/contact_correct.c (the papers' rule alone, tested at
 -- one velocity level, either chatters or ends near v0/2 here). This script
 -- asserts the paper's band, so it fails until lamina reaches it; the set-up
