@@ -2,9 +2,10 @@
 -- source: York, Sulsky & Schreyer 1999 (membranes), §4.3, Figs 21 and 22, Table II
 -- look: disk I (left, v = 1.0) dents the wire until about t = 1; disk II
 --   (right, v = -1.1) arrives at the dent, pinches the wire against disk I
---   and sends disk I back to the left; the wire springs back and both disks
---   are clear of it by t = 3, disk I moving off to the left and disk II
---   staying on the right of the wire, as in Fig 22's last frames
+--   and sends disk I back to the left; disk I is clear of the wire by
+--   t = 2.2 and moves off to the left, disk II stays on the right of the
+--   wire as in Fig 22's last frames but, nearly at rest, does not get more
+--   than a cell clear of it by t = 5 (the paper: both part by t = 3-5)
 -- checks: the time disk I's dent is deepest (its velocity crosses zero) and
 --   the time each disk is more than a cell clear of the wire for good,
 --   against the paper's t = 1 and 3-5; the final disk velocities

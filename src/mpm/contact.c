@@ -254,7 +254,13 @@ lm_status lm_contact_sums(lm_sim *sim)
     for (int k = 0; k < c->nf; k++)
         if (k != last) body_sums(sim, &c->f[k]);
     if (last >= 0) rest_sums(sim, &c->f[last]);
-    for (int k = 0; k < c->nf; k++) lm_contact_body_normals(sim, &c->f[k]);
+    size_t nn = lm_grid_nodes(&sim->grid);
+    for (int k = 0; k < c->nf; k++) {
+        lm_contact_field *f = &c->f[k];
+        f->mmax = 0;
+        for (size_t i = 0; i < nn; i++) f->mmax = fmax(f->mmax, f->m[i]);
+        lm_contact_body_normals(sim, f);
+    }
     lm_contact_release_test(sim);
     return LM_OK;
 }

@@ -48,6 +48,7 @@ typedef struct lm_contact_field {
     double *dax, *day;     /* the same for the acceleration (step 4) */
     unsigned char *own;    /* 1: own field, 2: sliding, 0: shared */
     double *chi;           /* colour at cell centres, nx * ny */
+    double mmax;           /* largest nodal mass of the body this step */
 } lm_contact_field;
 
 typedef struct lm_contact {
