@@ -5,7 +5,8 @@
  * Two standard problems at several sizes, built through the engine's C API
  * (no Lua, no drawing inside the timed loop):
  *   disks  - the two elastic disks of scripts/examples/two_disks.lua, the
- *            cell size chosen for the particle count, MUSL and USL;
+ *            cell size chosen for the particle count, MUSL and USL, and
+ *            MUSL with the disks a contact-release pair (sim:contact);
  *   gas    - the gas-filled quarter membrane of V6 (16 ppc gas, membrane
  *            points a third of a cell apart, connectivity normals), MUSL.
  * `--basis NAME` runs them with that basis (lamina.sim{basis}: linear,
@@ -23,6 +24,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "contact.h"
 #include "mpm.h"
 
 static double clock_s(clockid_t id)
@@ -157,12 +159,19 @@ static int time_case(const char *name, builder make, double h, void *ctx, double
     return 0;
 }
 
-typedef struct bench_ctx { lm_material *a, *b; lm_scheme scheme; } bench_ctx;
+typedef struct bench_ctx { lm_material *a, *b; lm_scheme scheme; int contact; } bench_ctx;
 
 static lm_sim *build_disks(double h, void *ctx)
 {
     bench_ctx *c = ctx;
-    return make_disks(h, c->scheme, c->a);
+    lm_sim *sim = make_disks(h, c->scheme, c->a);
+    /* the disks as a contact-release pair (contact.h): the per-body fields
+     * cost as much before the disks meet as after */
+    if (sim && c->contact && lm_sim_add_contact(sim, 0, 1, LM_CONTACT_RELEASE, 0) < 0) {
+        lm_sim_free(sim);
+        return NULL;
+    }
+    return sim;
 }
 
 static lm_sim *build_gas(double h, void *ctx)
@@ -234,12 +243,14 @@ int bench_engine(int argc, char **argv)
     for (int k = 0; k < nsizes; k++) {
         /* two disks of radius 0.2, 4 ppc: about 1.005 / h^2 particles */
         double h = sqrt(1.005 / sizes[k]);
-        bench_ctx musl = {&rubber, NULL, LM_MUSL}, usl = {&rubber, NULL, LM_USL};
+        bench_ctx musl = {&rubber, NULL, LM_MUSL, 0}, usl = {&rubber, NULL, LM_USL, 0};
+        bench_ctx rel = {&rubber, NULL, LM_MUSL, 1};
         bad |= time_case("disks MUSL", build_disks, h, &musl, 0.8, work);
         bad |= time_case("disks USL", build_disks, h, &usl, 0.8, work);
+        bad |= time_case("disks release", build_disks, h, &rel, 0.8, work);
         /* quarter disk of radius 0.5 at 16 ppc: about 3.14 / h^2 */
         double hg = sqrt(3.14 / sizes[k]);
-        bench_ctx gm = {&air, &skin, LM_MUSL};
+        bench_ctx gm = {&air, &skin, LM_MUSL, 0};
         bad |= time_case("gas+membrane", build_gas, hg, &gm, 0.05, work);
     }
     return bad ? 1 : 0;

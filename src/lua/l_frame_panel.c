@@ -180,7 +180,7 @@ static void pressure_contours(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int 
 /* which: 0 every particle, 1 membranes only, 2 none */
 static void fill_side(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int grid,
                       field f, int with_normals, int contour_levels, int which,
-                      int with_phi, lr_layers *l)
+                      int with_phi, int with_contact, lr_layers *l)
 {
     side_store *st = la_frame_scratch(L, ctx, sizeof *st);
     if (contour_levels > 0) {
@@ -248,6 +248,7 @@ static void fill_side(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int grid,
         l->ncurves = la_frame_phi(L, ctx, sim, &cv);
         l->curves = cv;
     }
+    if (with_contact) la_frame_contact(L, ctx, sim, l);
 }
 
 /* ---- the keys ----------------------------------------------------------- */
@@ -454,6 +455,7 @@ void la_frame_panel(lua_State *L, la_frame_ctx *ctx, int fidx, int pidx, int sid
     lua_pop(L, 1);
     int with_normals = boolean(L, ctx, fidx, pidx, "normals", 0);
     int with_phi = boolean(L, ctx, fidx, pidx, "phi", 0);
+    int with_contact = boolean(L, ctx, fidx, pidx, "contact", 0);
     p->split_x = 0.5 * (p->wx0 + p->wx1);
     if (get(L, fidx, pidx, "split_at") != LUA_TNIL) {
         int isnum;
@@ -488,7 +490,9 @@ void la_frame_panel(lua_State *L, la_frame_ctx *ctx, int fidx, int pidx, int sid
     else if (pt != LUA_TNIL)
         luaL_error(L, "%s: 'particles' must be true, false or \"membranes\"", ctx->fn);
     lua_pop(L, 1);
-    fill_side(L, ctx, sim, grid, f, with_normals, nlevels, which, with_phi, &p->side[0]);
+    fill_side(L, ctx, sim, grid, f, with_normals, nlevels, which, with_phi, with_contact,
+              &p->side[0]);
     if (other)
-        fill_side(L, ctx, other, grid, f, with_normals, nlevels, which, with_phi, &p->side[1]);
+        fill_side(L, ctx, other, grid, f, with_normals, nlevels, which, with_phi, with_contact,
+                  &p->side[1]);
 }

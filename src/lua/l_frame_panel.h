@@ -10,7 +10,7 @@
  * panel, or as defaults for every table in `panels`). */
 #define LA_PANEL_KEYS "window", "grid", "colour", "range", "colourmap", \
     "colourbar", "scalebar", "units", "mirror", "split", "split_at", "names", \
-    "normals", "contours", "contour_levels", "particles", "phi"
+    "normals", "contours", "contour_levels", "particles", "phi", "contact"
 
 typedef struct la_frame_ctx {
     const char *fn;     /* "sim:frame", for messages */
@@ -31,5 +31,9 @@ size_t la_frame_phi(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, lr_curve **out
 
 void la_frame_panel(lua_State *L, la_frame_ctx *ctx, int fidx, int pidx, int sidx,
                     lr_panel *p);
+
+/* l_frame_contact.c: contact = true, the grid normals and node states of
+ * the last step's contact correction appended to the side's arrows. */
+void la_frame_contact(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, lr_layers *l);
 
 #endif

@@ -130,6 +130,10 @@ void la_open_pin(lua_State *L);
 void la_sim_add_pin_function(lua_State *L, int sidx, int pin, int fidx);
 void la_pins_update(lua_State *L, int sidx, la_sim *s);
 
+/* l_contact.c: adds sim:contact and sim:contact_info to the method table
+ * at the top of the stack. */
+void la_contact_methods(lua_State *L);
+
 /* l_checkpoint.c: sim:checkpoint{...}; la_checkpoint_due writes one when
  * due (after the step's callbacks); la_checkpoint_restore replaces the
  * state of the sim at sidx by `lamina run --restart FILE`'s, once, at its

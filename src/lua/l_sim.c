@@ -605,6 +605,7 @@ void la_open_sim(lua_State *L)
     la_new_metatable(L, LA_SIM);
     luaL_setfuncs(L, meta, 0);
     luaL_newlib(L, methods);
+    la_contact_methods(L);   /* sim:contact, sim:contact_info (l_contact.c) */
     lua_setfield(L, -2, "methods");
     lua_pop(L, 1);
 }

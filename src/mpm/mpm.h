@@ -258,6 +258,7 @@ typedef struct lm_sim {
     int npins;
     double *pin_w, *pin_vx, *pin_vy;   /* per node: sum of the held particles'
                               N_ip and N_ip v_p (allocated with the first pin) */
+    struct lm_contact *contact;   /* pairs in contact (contact.h); NULL: none */
     char err[512];
 } lm_sim;
 

@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "contact.h"
 #include "mpm.h"
 #include "particles.h"
 #include "step.h"
@@ -137,6 +138,7 @@ void lm_sim_free(lm_sim *sim)
     for (int k = 0; k < sim->npins; k++) free(sim->pins[k].idx);
     free(sim->pins);
     free(sim->pin_w);
+    lm_contact_free(sim->contact);
     free(sim);
 }
 

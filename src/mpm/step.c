@@ -7,6 +7,7 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "contact.h"
 #include "step.h"
 #include "threads.h"
 
@@ -369,6 +370,7 @@ static int gas_maxima(lm_sim *sim, double *max_div, double *c_max)
         if (mat->kind != LM_GAS || !mat->av) continue;
         double L[4];
         velocity_gradient(&sim->grid, p, (size_t)q, L);
+        if (sim->contact) lm_contact_gradient(sim, (size_t)q, L);
         double div = fabs(sim->def.axisym ? L[0] + L[3] + lm_axisym_hoop_rate(sim, (size_t)q)
                                            : L[0] + L[3]);
         double c = lm_gas_sound_speed(mat, p->e[q]);
@@ -402,6 +404,7 @@ lm_status lm_step_stress(lm_sim *sim)
     for (long q = 0; q < n; q++) {
         double L[4];
         velocity_gradient(g, p, (size_t)q, L);
+        if (sim->contact) lm_contact_gradient(sim, (size_t)q, L);   /* contact.h */
         if (sim->def.axisym) {   /* the hoop terms (axisym.c) */
             lm_axisym_stress(sim, (size_t)q, L, max_div, c_max, h);
             continue;
@@ -554,9 +557,16 @@ lm_status lm_sim_step(lm_sim *sim)
     lm_step_shape(sim);
     lm_step_p2g(sim);
     lm_step_forces(sim);
+    if (sim->contact) {   /* the paired bodies' own fields (contact.h) */
+        st = lm_contact_sums(sim);
+        if (st != LM_OK) return st;
+    }
     lm_step_grid_update(sim);
+    if (sim->contact) lm_contact_correct(sim);
     lm_step_g2p(sim);
+    if (sim->contact) lm_contact_g2p(sim);
     lm_step_strain_velocity(sim);
+    if (sim->contact) lm_contact_strain_velocity(sim);
     st = lm_step_stress(sim);
     sim->step++;
     if (st != LM_OK) return st;

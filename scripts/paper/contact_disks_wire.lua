@@ -1,0 +1,107 @@
+-- title: Two disks pinching a wire, with contact-release
+-- source: York, Sulsky & Schreyer 1999 (membranes), §4.3, Figs 21 and 22, Table II
+-- look: disk I (left, v = 1.0) dents the wire until about t = 1; disk II
+--   (right, v = -1.1) arrives at the dent, pinches the wire against disk I
+--   and sends disk I back to the left; disk I is clear of the wire by
+--   t = 2.2 and moves off to the left, disk II stays on the right of the
+--   wire as in Fig 22's last frames but, nearly at rest, does not get more
+--   than a cell clear of it by t = 5 (the paper: both part by t = 3-5)
+-- checks: the time disk I's dent is deepest (its velocity crosses zero) and
+--   the time each disk is more than a cell clear of the wire for good,
+--   against the paper's t = 1 and 3-5; the final disk velocities
+-- assumed: Fig 21 gives no dimensions and Table II lost its exponents in
+--   the scan. Here: disks of radius 0.75 (rho 1, E 1e4, nu 0.3, plane
+--   stress, 4 ppc) centred at (3.9, 5) and (7.6, 5), the wire from (5, 2) to
+--   (5, 8) pinned at its ends, uniaxial, rho 1, E 1e4, thickness 0.05, three
+--   points per cell, tension along segments; cell 0.25 as in the paper,
+--   dt = 1e-3. Disk II's start is chosen, as the paper says of its own, so
+--   that it meets the wire near the deepest point of disk I's dent. All
+--   three pairs use law "release" (the disks too: across the pinched wire
+--   they share nodes, and the single field would glue them)
+-- visual: t_end=1.5
+-- thumb: frame_t1.5.png
+local out = lamina.param("out", "out/contact_disks_wire")
+local t_end = lamina.param("t_end", 5)
+local h = 0.25
+local sim = lamina.sim{ domain = {-2, 1, 12, 9}, cell = h, dt = 1e-3 }
+local diskm = lamina.elastic{ rho = 1, E = 1e4, nu = 0.3, plane = "stress" }
+local wirem = lamina.membrane{ rho = 1, E = 1e4, nu = 0, thickness = 0.05, law = "uniaxial" }
+local wire = sim:membrane{ material = wirem, curve = lamina.segment{ from = {5, 2}, to = {5, 8} },
+                           spacing = h / 3, force = "segment", name = "wire" }
+wire:pin{ points = "ends" }
+local d1 = sim:body{ material = diskm, ppc = 4, velocity = {1.0, 0}, name = "disk I",
+                     region = lamina.disk{ center = {3.9, 5}, radius = 0.75 } }
+local d2 = sim:body{ material = diskm, ppc = 4, velocity = {-1.1, 0}, name = "disk II",
+                     region = lamina.disk{ center = {7.6, 5}, radius = 0.75 } }
+sim:contact{ d1, wire, law = "release" }
+sim:contact{ d2, wire, law = "release" }
+sim:contact{ d1, d2, law = "release" }
+
+-- the smallest distance from a disk's points to the wire's
+local function clearance(disk)
+  local P, W = disk:particles(), wire:particles()
+  local best = math.huge
+  for i = 1, #P.x do
+    for j = 1, #W.x do
+      local dx, dy = P.x[i] - W.x[j], P.y[i] - W.y[j]
+      best = math.min(best, dx * dx + dy * dy)
+    end
+  end
+  return math.sqrt(best)
+end
+
+local t, v1, v2, e = {}, {}, {}, {}
+local e0 = sim:energy().total
+local t_dent, t_pinch, clear = nil, nil, { {}, {} }
+sim:every(0.01, function(s)
+  local a, b = d1:velocity(), d2:velocity()
+  t[#t + 1], v1[#v1 + 1], v2[#v2 + 1] = s.t, a, b
+  e[#e + 1] = s:energy().total / e0
+  if not t_dent and a <= 0 then t_dent = s.t end
+  if not t_pinch and b > -1.1 + 1e-3 then t_pinch = s.t end
+  clear[1][#clear[1] + 1] = clearance(d1)
+  clear[2][#clear[2] + 1] = clearance(d2)
+end)
+for _, ft in ipairs{0, 0.5, 1, 1.5, 2, 3, 4, 5} do
+  if ft <= t_end then
+    sim:at(ft, function(s)
+      s:frame{ file = string.format("%s/frame_t%.1f.png", out, ft), width = 360, height = 300,
+               window = {0.5, 2, 9.5, 8}, title = string.format("Fig 22: t = %.1f", ft) }
+    end)
+  end
+end
+sim:run{ t_end = t_end }
+
+-- the first time after which a disk stays more than a cell from the wire
+local function parted(c)
+  local last = nil
+  for i = #c, 1, -1 do
+    if c[i] <= h then break end
+    last = t[i]
+  end
+  return last
+end
+local sep1, sep2 = parted(clear[1]), parted(clear[2])
+
+lamina.plot{ file = out .. "/velocities.png", csv = true, title = "Disk velocities",
+             xlabel = "t", ylabel = "v_x",
+             series = { { x = t, y = v1, label = "disk I" }, { x = t, y = v2, label = "disk II" } } }
+lamina.plot{ file = out .. "/clearance.png", csv = true,
+             title = "Distance from each disk to the wire (cells)", xlabel = "t", ylabel = "cells",
+             series = { { x = t, y = (function() local r = {} for i, c in ipairs(clear[1]) do r[i] = c / h end return r end)(), label = "disk I" },
+                        { x = t, y = (function() local r = {} for i, c in ipairs(clear[2]) do r[i] = c / h end return r end)(), label = "disk II" } } }
+lamina.plot{ file = out .. "/energy.png", csv = true, title = "Total energy / initial",
+             xlabel = "t", ylabel = "E / E0", series = { { x = t, y = e, label = "total" } } }
+
+print(string.format("dent deepest at t = %s, disk II slowed at t = %s, disk I clear at %s, "
+  .. "disk II clear at %s, v = %.3f / %.3f, E/E0 %.3f", tostring(t_dent), tostring(t_pinch),
+  tostring(sep1), tostring(sep2), v1[#v1], v2[#v2], e[#e]))
+lamina.report{
+  dent_deepest = { t_dent or -1, paper = 1.0, unit = "t" },
+  disk_I_clear = { sep1 or -1, paper = 4, tol = 1, unit = "t" },
+  disk_II_clear = { sep2 or -1, paper = 4, tol = 1, unit = "t" },
+  pinch_start = t_pinch or -1,
+  v_disk_I = v1[#v1], v_disk_II = v2[#v2],
+  energy_end = e[#e],
+  state_hash = sim:hash(),
+}

@@ -1,0 +1,102 @@
+/* l_contact.c - sim:contact{a, b, law = ..., mu = ...}: contact between two
+ * bodies (contact.h), and sim:contact_info() for what it did.
+ *
+ *   sim:contact{ bar1, bar2, law = "release" }            -- [M] §4.1
+ *   sim:contact{ block, plane, law = "friction", mu = 0.3 }
+ *
+ * Without a pair the bodies share one velocity field: the papers' no-slip
+ * contact, lamina's default. */
+#include <math.h>
+#include <string.h>
+
+#include "contact.h"
+#include "l_internal.h"
+
+static const char *const laws[] = {"release", "friction", NULL};
+
+/* Only the two bodies by position, and the named keys. */
+static void check_contact_keys(lua_State *L, int idx, const char *fn)
+{
+    la_check_table(L, idx, fn);
+    lua_pushnil(L);
+    while (lua_next(L, idx)) {
+        lua_pop(L, 1);
+        if (lua_type(L, -1) == LUA_TNUMBER) {
+            lua_Integer k = lua_tointeger(L, -1);
+            if (k == 1 || k == 2) continue;
+            luaL_error(L, "%s: takes two bodies by position, then law and mu by name", fn);
+        }
+        const char *k = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : "?";
+        if (strcmp(k, "law") && strcmp(k, "mu"))
+            luaL_error(L, "%s: unknown key '%s' (known keys: the two bodies, law, mu)", fn, k);
+    }
+}
+
+static int sim_contact(lua_State *L)
+{
+    const char *fn = "sim:contact";
+    la_sim *s = la_check_sim(L, 1);
+    check_contact_keys(L, 2, fn);
+    if (s->running) return luaL_error(L, "%s: contact cannot be added during a run", fn);
+    int b[2];
+    for (int k = 0; k < 2; k++) {
+        lua_geti(L, 2, k + 1);
+        if (lua_isnil(L, -1))
+            return luaL_error(L, "%s: needs two bodies, a and b (body %s is missing)", fn,
+                              k ? "b" : "a");
+        if (!luaL_testudata(L, -1, LA_BODY))
+            return luaL_error(L, "%s: %s must be a body (got %s)", fn, k ? "b" : "a",
+                              luaL_typename(L, -1));
+        lm_sim *owner;
+        b[k] = la_check_body(L, -1, &owner);
+        if (owner != s->sim)
+            return luaL_error(L, "%s: %s is a body of another simulation", fn, k ? "b" : "a");
+        lua_pop(L, 1);
+    }
+    const char *law_name = la_opt_string(L, 2, fn, "law", "release");
+    int law = la_option(L, fn, "law", law_name, laws);
+    double mu = 0;
+    if (la_has(L, 2, "mu")) {
+        if (law != 1)
+            return luaL_error(L, "%s: mu is for law = \"friction\" (law is \"%s\")", fn,
+                              law_name);
+        mu = la_number(L, 2, fn, "mu");
+        if (!(mu >= 0) || !isfinite(mu))
+            return luaL_error(L, "%s: mu must be a finite number >= 0 (got %f)", fn, mu);
+    } else if (law == 1) {
+        return luaL_error(L, "%s: law = \"friction\" needs mu, the friction coefficient", fn);
+    }
+    lm_contact_law cl = law == 1 ? LM_CONTACT_FRICTION : LM_CONTACT_RELEASE;
+    if (lm_sim_add_contact(s->sim, b[0], b[1], cl, mu) < 0)
+        return luaL_error(L, "%s: %s", fn, s->sim->err);
+    return 0;
+}
+
+/* sim:contact_info() -> {stick, release, slide = nodes of the last step,
+ * ke_before, ke_after = the grid kinetic energy at those nodes around the
+ * correction}; nil without contact pairs. */
+static int sim_contact_info(lua_State *L)
+{
+    la_sim *s = la_check_sim(L, 1);
+    const lm_contact *c = s->sim->contact;
+    if (!c || c->npairs == 0) {
+        lua_pushnil(L);
+        return 1;
+    }
+    lua_createtable(L, 0, 5);
+    lua_pushinteger(L, c->nodes_stick); lua_setfield(L, -2, "stick");
+    lua_pushinteger(L, c->nodes_release); lua_setfield(L, -2, "release");
+    lua_pushinteger(L, c->nodes_slide); lua_setfield(L, -2, "slide");
+    lua_pushnumber(L, c->ke_before); lua_setfield(L, -2, "ke_before");
+    lua_pushnumber(L, c->ke_after); lua_setfield(L, -2, "ke_after");
+    return 1;
+}
+
+/* Adds the methods to the sim's method table at the top of the stack. */
+void la_contact_methods(lua_State *L)
+{
+    lua_pushcfunction(L, sim_contact);
+    lua_setfield(L, -2, "contact");
+    lua_pushcfunction(L, sim_contact_info);
+    lua_setfield(L, -2, "contact_info");
+}

@@ -1,0 +1,89 @@
+/* contact.h - contact between bodies: release ([M] §4.1, [T] A.1.3) and
+ * Coulomb friction (Bardenhagen et al. 2001), chosen per pair of bodies.
+ *
+ * Without a pair lamina's single velocity field is the papers' no-slip
+ * contact ("stick"), and none of this runs: the default stays bit for bit.
+ * With pairs, each body of a pair also gets its own grid mass, momentum and
+ * force ([M] eqs 23-25); at a node where both bodies of a pair have mass the
+ * bodies are compared with the centre-of-mass field and either move in it
+ * (contact) or in their own (release), one sweep, no iteration (contact.c).
+ *
+ * The engine's phases stay as they are; step.c calls the four hooks below
+ * at their points, and contact.c corrects the fields and the particles of
+ * the paired bodies only. */
+#ifndef LAMINA_CONTACT_H
+#define LAMINA_CONTACT_H
+
+#include "mpm.h"
+
+typedef enum lm_contact_law {
+    LM_CONTACT_RELEASE = 1,    /* [M] eq 26: own field when separating */
+    LM_CONTACT_FRICTION = 2    /* release, and Coulomb sliding when pressed */
+} lm_contact_law;
+
+/* What a node did in the last step (for frames and tests). */
+enum {
+    LM_CNODE_NONE = 0,     /* no pair meets here */
+    LM_CNODE_STICK = 1,    /* a pair met and moved in the centre-of-mass field */
+    LM_CNODE_RELEASE = 2,  /* a body moved in its own field */
+    LM_CNODE_SLIDE = 3     /* a friction pair slid along its common tangent */
+};
+
+typedef struct lm_contact_pair {
+    int a, b;              /* indices into lm_contact.f */
+    lm_contact_law law;
+    double mu;
+} lm_contact_pair;
+
+/* The grid fields of one body in a pair. */
+typedef struct lm_contact_field {
+    int body;
+    double *m, *px, *py;   /* step 1 sums; p^L after step 3; step 5 re-map */
+    double *fx, *fy;       /* step 2: internal + gravity of this body */
+    double *nx, *ny;       /* outward unit normal -grad chi ([M] eqs 27-28) */
+    double *tx, *ty;       /* friction: the pair's common normal seen from it */
+    double *s;             /* friction: share of its tangential slip kept */
+    double *dvx, *dvy;     /* the body's velocity minus the shared field's
+                              (step 3: v^L; step 5: the strain velocity) */
+    double *dax, *day;     /* the same for the acceleration (step 4) */
+    unsigned char *own;    /* 1: own field, 2: sliding, 0: shared */
+    double *chi;           /* colour at cell centres, nx * ny */
+    double mmax;           /* largest nodal mass of the body this step */
+} lm_contact_field;
+
+typedef struct lm_contact {
+    lm_contact_pair *pairs;
+    int npairs;
+    lm_contact_field *f;
+    int nf;
+    int *of_body;          /* field of each body, -1: none (nbodies_alloc) */
+    int nbodies_alloc;
+    unsigned char *flag;   /* per field, scratch of the correction */
+    size_t nn;             /* nodes the fields were made for */
+    unsigned char *state;  /* LM_CNODE_* per node, last step */
+    /* Grid kinetic energy of the paired bodies' fields (and the rest of
+     * the mass as one field) at the contact nodes, before and after the
+     * correction of the last step: after <= before ([M] §4.1). */
+    double ke_before, ke_after;
+    long nodes_stick, nodes_release, nodes_slide;
+} lm_contact;
+
+/* Adds a pair (bodies a != b); -1 with sim->err naming the key if the
+ * input is bad. mu only for friction (>= 0). */
+int lm_sim_add_contact(lm_sim *sim, int a, int b, lm_contact_law law, double mu);
+void lm_contact_free(lm_contact *c);
+
+/* The hooks of the step (lm_sim_step), each a no-op without pairs:
+ * after step 2, the paired bodies' own sums and normals; after step 3,
+ * the release / friction correction of the fields; after step 4, the
+ * paired bodies' particles moved by their fields; after step 5, their
+ * strain velocities (MUSL re-map per body). */
+lm_status lm_contact_sums(lm_sim *sim);
+void lm_contact_correct(lm_sim *sim);
+void lm_contact_g2p(lm_sim *sim);
+void lm_contact_strain_velocity(lm_sim *sim);
+/* In steps 6-8: adds particle q's share of the velocity gradient that its
+ * own field differs by, sum_i dv_i (x) G_iq. */
+void lm_contact_gradient(const lm_sim *sim, size_t q, double L[4]);
+
+#endif

@@ -1,0 +1,491 @@
+/* contact_correct.c - the release and friction correction of the grid
+ * fields ([M] §4.1 eqs 20-26, [T] A.1.3 eq 9.9; friction after
+ * Bardenhagen, Brackbill & Sulsky 2001), and the particles moved by it.
+ *
+ * At a node where both bodies of a pair have mass, the pair separates iff
+ * they move apart along the pair's normal n (out of a, into b):
+ * (v^a - v^b) . n < 0, [T] eq 9.7, the same as [M] eq 26 "(v^I - v) . n^I
+ * < 0 for both" with outward normals for two free bodies (physics.md §4,
+ * the reconstructed sign; the two-bar test, tests/physics/contact_two_bar.lua,
+ * settles it: with the other sign the bars never part). A body moves in its
+ * own field where all its pairs at the node separate, the papers' rule.
+ *
+ * One departure, for momentum: the papers have two bodies, so the other
+ * body's own field and the centre-of-mass field are the same thing. With a
+ * third body at the node (the wire between two disks), the bodies that
+ * stay move in the centre-of-mass field of what is left once the released
+ * bodies are taken out, so that the node's momentum and force are shared
+ * exactly (to rounding) whatever mixes there. For two bodies this is the
+ * papers' algorithm.
+ *
+ * Friction (law "friction"): a pair that does not separate keeps the
+ * normal velocity of the shared field, and its relative tangential
+ * velocity w_t is cut by at most mu times the normal one it lost,
+ * w_t <- s w_t with s = max(0, 1 - mu w_n / |w_t|) (Coulomb); the
+ * tangential acceleration follows with the same s, so s = 0 is the shared
+ * field (stick) and mu = 0 free sliding. The normal is the pair's common
+ * one, (n^a - n^b)/|n^a - n^b|, seen from each body with its sign, so that
+ * the two corrections are equal and opposite (pair_normal). It acts where
+ * the pair is all the mass of the node (else the pair sticks).
+ *
+ * The correction never raises the grid's kinetic energy: merging fields
+ * into their centre of mass loses energy, and the slip keeps only the part
+ * s |w_t| <= |w_t| of the relative motion. lm_contact.ke_before/ke_after
+ * keep both sums for the tests.
+ *
+ * The shared arrays keep what the other particles use; each paired body
+ * keeps its difference from them (dv, da), so the step's own loops run
+ * unchanged and the paired particles get a second, small gather here. */
+#include <math.h>
+#include <string.h>
+
+#include "contact.h"
+#include "step.h"
+
+/* Mass below which a remainder is rounding (relative to the node's). */
+#define REST_TOL 1e-12
+
+static inline int pinned_node(const lm_sim *sim, long i)
+{
+    return sim->pin_w && sim->pin_w[i] > 0;
+}
+
+/* Is pair k present at node i (both bodies with mass)? */
+static inline int pair_here(const lm_contact *c, int k, long i)
+{
+    return c->f[c->pairs[k].a].m[i] > 0 && c->f[c->pairs[k].b].m[i] > 0;
+}
+
+/* Share of a body's largest nodal mass below which the body only grazes a
+ * node: see separating(). */
+#define THIN 0.2
+
+/* The pair's normal at node i, pointing out of a into b: the outward
+ * normal of the body with more mass at the node (a's, or minus b's). The
+ * colour normal of a body is tilted near its corners (45 degrees at a
+ * square corner), and a block sliding on a plane would otherwise be pushed
+ * back by the tilted normal of its leading corner even without friction;
+ * the plane's own normal there is right. 0 if neither body has one. */
+static int pair_normal(const lm_contact *c, int k, long i, double *nx, double *ny)
+{
+    const lm_contact_field *fa = &c->f[c->pairs[k].a], *fb = &c->f[c->pairs[k].b];
+    int use_a = fa->m[i] >= fb->m[i];
+    for (int t = 0; t < 2; t++, use_a = !use_a) {
+        double x = use_a ? fa->nx[i] : -fb->nx[i], y = use_a ? fa->ny[i] : -fb->ny[i];
+        if (x != 0 || y != 0) {
+            *nx = x;
+            *ny = y;
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* [M] eq 26 for pair k at node i, in the form of [T] eq 9.7 (the
+ * dissertation finds both forms give the same result): do the bodies move
+ * apart along the pair's normal, (v^a - v^b) . n < 0, with each body's
+ * velocity p^I / m^I of whatever its arrays hold? For two free bodies this
+ * is eq 26 for both at once (v^I - v is m^J/(m^a + m^b) of v^I - v^J); it
+ * stays right when one body is held by a pin, whose velocity relative to
+ * the shared field is then zero. A node that one body of the pair only
+ * grazes counts as separating: there that body's own f/m is large and of
+ * either sign from one step to the next (its particles' weights are small,
+ * the gradients not), and a test that reads it makes the bars of [M] Fig 20
+ * chatter between contact and release and gain energy. Grazing: less than
+ * THIN of the pair's mass at the node and less than THIN of the body's own
+ * largest nodal mass; the second condition keeps a light membrane against
+ * a heavy disk in contact where it lies (with the first alone the ball of
+ * contact_ball_net.lua passed through its net). Measured on the two-bar
+ * impact at cell 0.25 with the first condition (left, right bar velocity
+ * and E/E0 at t = 0.5): THIN 0 and 0.02 blow up (E/E0 4-6), 0.1: -0.15 /
+ * 2.15, E/E0 1.61; 0.15: 0.08 / 1.92, 1.058; 0.2: 0.12 / 1.88, 0.995; 0.3:
+ * 0.14 / 1.86, 0.954 (contact then starts late, the bars overlap a
+ * particle spacing); the second changes nothing there. */
+static int separating(const lm_contact *c, int k, long i)
+{
+    const lm_contact_field *fa = &c->f[c->pairs[k].a], *fb = &c->f[c->pairs[k].b];
+    double ma = fa->m[i], mb = fb->m[i];
+    if (fmin(ma, mb) < THIN * (ma + mb) && (ma < THIN * fa->mmax || mb < THIN * fb->mmax))
+        return 1;
+    double nx, ny;
+    if (!pair_normal(c, k, i, &nx, &ny)) return 0;
+    return (fa->px[i] / ma - fb->px[i] / mb) * nx + (fa->py[i] / ma - fb->py[i] / mb) * ny < 0;
+}
+
+/* Friction of pair k at node i, neither body released: each body's
+ * share s of its tangential slip against the shared field (vx, vy), and
+ * the common normal seen from it (tx, ty). Returns 1 if either slides. */
+static int friction(lm_contact *c, int k, long i, double vx, double vy)
+{
+    lm_contact_field *fa = &c->f[c->pairs[k].a], *fb = &c->f[c->pairs[k].b];
+    double nx, ny;
+    if (!pair_normal(c, k, i, &nx, &ny)) return 0;
+    int slid = 0;
+    for (int side = 0; side < 2; side++) {
+        lm_contact_field *f = side ? fb : fa;
+        double ux = side ? -nx : nx, uy = side ? -ny : ny;
+        double wx = f->px[i] / f->m[i] - vx, wy = f->py[i] / f->m[i] - vy;
+        double wn = wx * ux + wy * uy;
+        double wt = hypot(wx - wn * ux, wy - wn * uy);
+        double s = wt > 0 ? fmax(0, 1 - c->pairs[k].mu * fmax(wn, 0) / wt) : 0;
+        f->tx[i] = ux;
+        f->ty[i] = uy;
+        f->s[i] = s;
+        if (s > 0) {
+            f->own[i] = 2;
+            slid = 1;
+        }
+    }
+    return slid;
+}
+
+/* [M] eq 26 at every node where a pair meets, first with the velocities
+ * of time level k (p_i / m_i before the forces act, called from
+ * lm_contact_sums): a body may move in its own field (own = 1) where it
+ * meets a pair partner and every pair it meets there separates. The
+ * correction tests again with the Lagrangian velocities; a body is
+ * released only if both say so. Either test alone fails the two-bar
+ * impact: with time level k alone the bars, whose facing velocities are
+ * equal while they press on each other, are released in compression and
+ * end near v0/2 (0.83 / 1.17 at t = 0.5); with the Lagrangian one alone
+ * bars that part at time k but are pulled back for a step chatter. */
+void lm_contact_release_test(lm_sim *sim)
+{
+    lm_contact *c = sim->contact;
+    const lm_grid *g = &sim->grid;
+    size_t nn = lm_grid_nodes(g);
+    unsigned char *flag = c->flag;
+    for (int k = 0; k < c->nf; k++) memset(c->f[k].own, 0, nn);
+    for (long i = 0; i < (long)nn; i++) {
+        double mG = g->m[i];
+        if (mG <= 0) continue;
+        int any = 0;
+        memset(flag, 0, (size_t)c->nf);
+        for (int k = 0; k < c->npairs; k++) {
+            if (!pair_here(c, k, i)) continue;
+            int a = c->pairs[k].a, b = c->pairs[k].b;
+            flag[a] |= 1;
+            flag[b] |= 1;
+            if (!separating(c, k, i)) flag[a] |= 2, flag[b] |= 2;
+            any = 1;
+        }
+        if (any)
+            for (int k = 0; k < c->nf; k++) c->f[k].own[i] = flag[k] == 1;
+    }
+}
+
+/* The correction at node i. */
+static void correct_node(lm_sim *sim, long i)
+{
+    lm_contact *c = sim->contact;
+    lm_grid *g = &sim->grid;
+    double mG = g->m[i];
+    int any = 0;
+    for (int k = 0; k < c->npairs && !any; k++) any = pair_here(c, k, i);
+    if (!any) return;
+    double vGx = g->px[i] / mG, vGy = g->py[i] / mG;
+    double aGx = g->fx[i] / mG, aGy = g->fy[i] / mG;
+    /* the same test with the Lagrangian velocities p^L / m: a pair that
+     * is pressed together by the step's forces stays in contact even if
+     * it was parting at time k (a compressed bar released in its own field
+     * would push into the other) */
+    for (int k = 0; k < c->npairs; k++)
+        if (pair_here(c, k, i) && !separating(c, k, i))
+            c->f[c->pairs[k].a].own[i] = c->f[c->pairs[k].b].own[i] = 0;
+    /* kinetic energy before: each paired body in its own field, the rest
+     * of the node's mass as one */
+    double before = 0, mC = 0, pCx = 0, pCy = 0;
+    double mR = 0, pRx = 0, pRy = 0, fRx = 0, fRy = 0;
+    for (int k = 0; k < c->nf; k++) {
+        const lm_contact_field *f = &c->f[k];
+        if (f->m[i] <= 0) continue;
+        before += 0.5 * (f->px[i] * f->px[i] + f->py[i] * f->py[i]) / f->m[i];
+        mC += f->m[i];
+        pCx += f->px[i];
+        pCy += f->py[i];
+        if (f->own[i] == 1) {
+            mR += f->m[i];
+            pRx += f->px[i];
+            pRy += f->py[i];
+            fRx += f->fx[i];
+            fRy += f->fy[i];
+        }
+    }
+    double m0 = mG - mC;
+    int rest0 = m0 > REST_TOL * mG && !pinned_node(sim, i);
+    if (rest0) {
+        double p0x = g->px[i] - pCx, p0y = g->py[i] - pCy;
+        before += 0.5 * (p0x * p0x + p0y * p0y) / m0;
+    }
+    /* the field the others move in: what is left of the node */
+    double vx = vGx, vy = vGy, ax = aGx, ay = aGy;
+    int released = mR > 0;
+    if (released && !pinned_node(sim, i) && mG - mR > REST_TOL * mG) {
+        double ml = mG - mR;
+        vx = (g->px[i] - pRx) / ml;
+        vy = (g->py[i] - pRy) / ml;
+        ax = (g->fx[i] - fRx) / ml;
+        ay = (g->fy[i] - fRy) / ml;
+        g->px[i] = mG * vx;
+        g->py[i] = mG * vy;
+        g->fx[i] = mG * ax;
+        g->fy[i] = mG * ay;
+    }
+    int slid = 0;
+    for (int k = 0; k < c->npairs; k++) {
+        const lm_contact_pair *pr = &c->pairs[k];
+        if (pr->law != LM_CONTACT_FRICTION || !pair_here(c, k, i)) continue;
+        if (c->f[pr->a].own[i] || c->f[pr->b].own[i]) continue;
+        double mab = c->f[pr->a].m[i] + c->f[pr->b].m[i];
+        if (fabs(mG - mab) > 1e-9 * mG) continue;   /* not the pair alone */
+        slid |= friction(c, k, i, vx, vy);
+    }
+    /* Each paired body's corrected Lagrangian velocity u: its own, the
+     * shared one, or the shared one with the kept slip; dv = u - v and,
+     * for the FLIP update, da = (u - v_k^I)/dt - a: a body that moves in
+     * the shared field takes its velocity too, not only its acceleration
+     * (with the acceleration alone, bodies that stick for a step keep
+     * their relative velocity, the shared re-map of step 5 reads it as
+     * strain, and the two bars of [M] Fig 20 gain energy at every such
+     * step: measured six times the impact's). Bodies outside the pairs at
+     * the node keep the plain shared field: then so do the paired ones. */
+    double dt = sim->def.dt;
+    for (int k = 0; k < c->nf; k++) {
+        lm_contact_field *f = &c->f[k];
+        if (f->m[i] <= 0 || (f->own[i] == 0 && rest0)) continue;
+        double m = f->m[i];
+        double ux = vx, uy = vy;
+        if (f->own[i] == 1) {
+            ux = f->px[i] / m;
+            uy = f->py[i] / m;
+        } else if (f->own[i] == 2) {
+            double wx = f->px[i] / m - vx, wy = f->py[i] / m - vy;
+            double wn = wx * f->tx[i] + wy * f->ty[i];
+            ux += f->s[i] * (wx - wn * f->tx[i]);
+            uy += f->s[i] * (wy - wn * f->ty[i]);
+        }
+        double vkx = (f->px[i] - dt * f->fx[i]) / m, vky = (f->py[i] - dt * f->fy[i]) / m;
+        f->dvx[i] = ux - vx;
+        f->dvy[i] = uy - vy;
+        f->dax[i] = (ux - vkx) / dt - ax;
+        f->day[i] = (uy - vky) / dt - ay;
+    }
+    /* kinetic energy after */
+    double after = 0;
+    for (int k = 0; k < c->nf; k++) {
+        const lm_contact_field *f = &c->f[k];
+        if (f->m[i] <= 0) continue;
+        double ux = vx + f->dvx[i], uy = vy + f->dvy[i];
+        after += 0.5 * f->m[i] * (ux * ux + uy * uy);
+    }
+    if (rest0) after += 0.5 * m0 * (vx * vx + vy * vy);
+    c->ke_before += before;
+    c->ke_after += after;
+    c->state[i] = released ? LM_CNODE_RELEASE : slid ? LM_CNODE_SLIDE : LM_CNODE_STICK;
+    if (released) c->nodes_release++;
+    else if (slid) c->nodes_slide++;
+    else c->nodes_stick++;
+}
+
+/* A pinned body's own field moves with its pins where they hold the grid,
+ * as the shared field does (pin.c): p^L = m v_pin, the force to match. */
+static void pin_field(const lm_sim *sim, lm_contact_field *f)
+{
+    int held = 0;
+    for (int k = 0; k < sim->npins && !held; k++) held = sim->pins[k].body == f->body;
+    if (!held) return;
+    size_t nn = lm_grid_nodes(&sim->grid);
+    double dt = sim->def.dt;
+    for (size_t i = 0; i < nn; i++) {
+        if (!(sim->pin_w[i] > 0) || f->m[i] <= 0) continue;
+        double px = f->m[i] * sim->pin_vx[i] / sim->pin_w[i];
+        double py = f->m[i] * sim->pin_vy[i] / sim->pin_w[i];
+        f->fx[i] += (px - f->px[i]) / dt;
+        f->fy[i] += (py - f->py[i]) / dt;
+        f->px[i] = px;
+        f->py[i] = py;
+    }
+}
+
+void lm_contact_correct(lm_sim *sim)
+{
+    lm_contact *c = sim->contact;
+    if (!c || c->npairs == 0) return;
+    lm_grid *g = &sim->grid;
+    size_t nn = lm_grid_nodes(g);
+    double dt = sim->def.dt;
+    for (int k = 0; k < c->nf; k++) {
+        lm_contact_field *f = &c->f[k];
+        for (size_t i = 0; i < nn; i++) {
+            f->px[i] += dt * f->fx[i];   /* [M] eq 24: p^L of the body */
+            f->py[i] += dt * f->fy[i];
+        }
+        pin_field(sim, f);
+        lm_grid_apply_bc(g, f->px, f->py);
+        lm_grid_apply_bc(g, f->fx, f->fy);
+        /* s, tx, ty, dv and da cleared (own is the release test's) */
+        memset(f->tx, 0, 7 * nn * sizeof(double));
+    }
+    memset(c->state, 0, nn);
+    c->ke_before = c->ke_after = 0;
+    c->nodes_stick = c->nodes_release = c->nodes_slide = 0;
+    for (long i = 0; i < (long)nn; i++)
+        if (g->m[i] > 0) correct_node(sim, i);
+    static const lm_comp comp[4] = {LM_COMP_X, LM_COMP_Y, LM_COMP_X, LM_COMP_Y};
+    for (int k = 0; k < c->nf; k++) {
+        double *const d[4] = {c->f[k].dvx, c->f[k].dvy, c->f[k].dax, c->f[k].day};
+        lm_grid_fill(g, 4, d, comp);
+    }
+}
+
+/* Does particle q's stencil reach a node whose state is in `mask` (bit
+ * 1 << state)? Particles away from where pairs meet need no correction,
+ * and most of a body is away from them. */
+static int touches(const lm_sim *sim, size_t q, unsigned mask)
+{
+    const lm_grid *g = &sim->grid;
+    const unsigned char *st = sim->contact->state;
+    const int W = g->sw;
+    for (int k = 0; k < W * W; k++)
+        if (mask >> st[lm_stencil_node(g, W, sim->p.node[q], k)] & 1) return 1;
+    return 0;
+}
+
+/* sum_i N_iq d_i over particle q's stencil, for two nodal arrays. */
+static void gather2(const lm_grid *g, const lm_particles *p, size_t q, const double *dx,
+                    const double *dy, double *sx, double *sy)
+{
+    const int W = g->sw, NS = W * W;
+    const double *N = p->N + NS * q;
+    double ax = 0, ay = 0;
+    for (int k = 0; k < NS; k++) {
+        long i = lm_stencil_node(g, W, p->node[q], k);
+        ax += N[k] * dx[i];
+        ay += N[k] * dy[i];
+    }
+    *sx = ax;
+    *sy = ay;
+}
+
+/* Step 4 for the paired bodies: the difference of their own fields from
+ * the shared one, in the same FLIP (or blended) update; held particles
+ * stay with their pins. */
+void lm_contact_g2p(lm_sim *sim)
+{
+    lm_contact *c = sim->contact;
+    if (!c || c->npairs == 0) return;
+    const lm_grid *g = &sim->grid;
+    lm_particles *p = &sim->p;
+    double dt = sim->def.dt, pic = sim->def.pic;
+    for (int k = 0; k < c->nf; k++) {
+        const lm_contact_field *f = &c->f[k];
+        const lm_body *bd = &sim->bodies[f->body];
+        for (size_t q = bd->first; q < bd->first + bd->count; q++) {
+            if (p->pin[q] || !touches(sim, q, ~1u)) continue;
+            double ax, ay, ux, uy;
+            gather2(g, p, q, f->dax, f->day, &ax, &ay);
+            gather2(g, p, q, f->dvx, f->dvy, &ux, &uy);
+            p->vx[q] += (1 - pic) * dt * ax + pic * ux;
+            p->vy[q] += (1 - pic) * dt * ay + pic * uy;
+            p->x[q] += dt * ux;
+            p->y[q] += dt * uy;
+        }
+    }
+}
+
+/* Step 5 (MUSL) for the paired bodies: each body's re-mapped velocity
+ * where it moved in its own field, the shared re-map (less the released
+ * bodies) elsewhere; sliding bodies keep the share s of their tangential
+ * difference. USL needs nothing: its strain velocity is v^L, whose
+ * differences step 3 left in dv. */
+void lm_contact_strain_velocity(lm_sim *sim)
+{
+    lm_contact *c = sim->contact;
+    if (!c || c->npairs == 0 || sim->def.scheme != LM_MUSL) return;
+    lm_grid *g = &sim->grid;
+    const lm_particles *p = &sim->p;
+    const int W = g->sw, NS = W * W;
+    size_t nn = lm_grid_nodes(g);
+    static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
+    for (int k = 0; k < c->nf; k++) {
+        lm_contact_field *f = &c->f[k];
+        const lm_body *bd = &sim->bodies[f->body];
+        memset(f->px, 0, 2 * nn * sizeof(double));
+        memset(f->dvx, 0, 2 * nn * sizeof(double));
+        for (size_t q = bd->first; q < bd->first + bd->count; q++) {
+            /* only where a body moved in its own field or slid */
+            if (!touches(sim, q, 1u << LM_CNODE_RELEASE | 1u << LM_CNODE_SLIDE)) continue;
+            const double *N = p->N + NS * q;
+            for (int j = 0; j < NS; j++) {
+                long i = lm_stencil_node(g, W, p->node[q], j);
+                f->px[i] += p->m[q] * N[j] * p->vx[q];
+                f->py[i] += p->m[q] * N[j] * p->vy[q];
+            }
+        }
+        double *const out[2] = {f->px, f->py};
+        lm_grid_fold(g, 2, out, comp);
+        for (size_t i = 0; i < nn; i++) {
+            if (f->m[i] > 0) {
+                f->px[i] /= f->m[i];   /* now the body's velocity */
+                f->py[i] /= f->m[i];
+            }
+        }
+        lm_grid_apply_bc(g, f->px, f->py);
+    }
+    for (long i = 0; i < (long)nn; i++) {
+        if (c->state[i] != LM_CNODE_RELEASE && c->state[i] != LM_CNODE_SLIDE) continue;
+        double mG = g->m[i], mR = 0, pRx = 0, pRy = 0;
+        for (int k = 0; k < c->nf; k++) {
+            const lm_contact_field *f = &c->f[k];
+            if (f->own[i] != 1) continue;
+            mR += f->m[i];
+            pRx += f->m[i] * f->px[i];
+            pRy += f->m[i] * f->py[i];
+        }
+        double vx = g->vx[i], vy = g->vy[i];
+        if (mR > 0 && !pinned_node(sim, i) && mG - mR > REST_TOL * mG) {
+            vx = (mG * vx - pRx) / (mG - mR);
+            vy = (mG * vy - pRy) / (mG - mR);
+            g->vx[i] = vx;
+            g->vy[i] = vy;
+        }
+        for (int k = 0; k < c->nf; k++) {
+            lm_contact_field *f = &c->f[k];
+            double wx = f->px[i] - vx, wy = f->py[i] - vy;
+            if (f->own[i] == 1) {
+                f->dvx[i] = wx;
+                f->dvy[i] = wy;
+            } else if (f->own[i] == 2) {
+                double wn = wx * f->tx[i] + wy * f->ty[i];
+                f->dvx[i] = f->s[i] * (wx - wn * f->tx[i]);
+                f->dvy[i] = f->s[i] * (wy - wn * f->ty[i]);
+            }
+        }
+    }
+    double *const gv[2] = {g->vx, g->vy};
+    lm_grid_fill(g, 2, gv, comp);
+    for (int k = 0; k < c->nf; k++) {
+        double *const d[2] = {c->f[k].dvx, c->f[k].dvy};
+        lm_grid_fill(g, 2, d, comp);
+    }
+}
+
+void lm_contact_gradient(const lm_sim *sim, size_t q, double L[4])
+{
+    const lm_contact *c = sim->contact;
+    const lm_particles *p = &sim->p;
+    if (!c || c->npairs == 0 || p->pin[q]) return;
+    int k = c->of_body[p->body[q]];
+    if (k < 0 || !touches(sim, q, 1u << LM_CNODE_RELEASE | 1u << LM_CNODE_SLIDE)) return;
+    const lm_contact_field *f = &c->f[k];
+    const lm_grid *g = &sim->grid;
+    const int W = g->sw, NS = W * W;
+    const double *Gx = p->Gx + NS * q, *Gy = p->Gy + NS * q;
+    for (int j = 0; j < NS; j++) {
+        long i = lm_stencil_node(g, W, p->node[q], j);
+        L[0] += f->dvx[i] * Gx[j];
+        L[1] += f->dvx[i] * Gy[j];
+        L[2] += f->dvy[i] * Gx[j];
+        L[3] += f->dvy[i] * Gy[j];
+    }
+}

@@ -1,0 +1,83 @@
+/* contact_normals.c - a body's grid normals from its colour function
+ * ([M] eqs 27-28, [T] eqs 9.10-9.11, physics.md §1 and §4).
+ *
+ * Every point of the body carries the colour 1. The colour is spread to
+ * the cell centres with the quadratic B-spline (nine centres per point,
+ * [M] eq 27), which smooths it over about a cell; the gradient at a node
+ * is that of the bilinear interpolant of the four cell centres around it
+ * (the dual cell of which the node is the centre, [M] eq 28). The colour
+ * grows into the body, so the outward normal is n = -grad chi / |grad chi|
+ * (physics.md §4: [M] eq 26 prints "> 0" with the inward colour gradient,
+ * the same rule as "< 0" with this outward n). A membrane's colour is a
+ * ridge along it, so its normals point away from it on both sides, as
+ * [T] Fig 101 shows. Where the gradient vanishes (deep inside a body) the
+ * normal is zero, and the release test then keeps the bodies together. */
+#include <math.h>
+#include <string.h>
+
+#include "contact.h"
+#include "step.h"
+
+/* Quadratic B-spline beta_2 ([N] §5, physics.md §3). */
+static double beta2(double x)
+{
+    x = fabs(x);
+    if (x <= 0.5) return 0.75 - x * x;
+    if (x <= 1.5) return 0.5 * (1.5 - x) * (1.5 - x);
+    return 0;
+}
+
+static void colour(const lm_sim *sim, lm_contact_field *f)
+{
+    const lm_grid *g = &sim->grid;
+    const lm_particles *p = &sim->p;
+    const lm_body *bd = &sim->bodies[f->body];
+    memset(f->chi, 0, (size_t)g->nx * (size_t)g->ny * sizeof(double));
+    for (size_t q = bd->first; q < bd->first + bd->count; q++) {
+        /* position in cell-centre units: centre c sits at c + 1/2 cells */
+        double fx = (p->x[q] - g->x0) / g->hx - 0.5, fy = (p->y[q] - g->y0) / g->hy - 0.5;
+        int cx = (int)floor(fx + 0.5), cy = (int)floor(fy + 0.5);
+        for (int b = -1; b <= 1; b++) {
+            int j = cy + b;
+            if (j < 0 || j >= g->ny) continue;
+            double wy = beta2(fy - j);
+            for (int a = -1; a <= 1; a++) {
+                int i = cx + a;
+                if (i < 0 || i >= g->nx) continue;
+                f->chi[(size_t)j * g->nx + i] += wy * beta2(fx - i);
+            }
+        }
+    }
+}
+
+/* Colour of cell (i, j); 0 outside the grid. */
+static double chi_at(const lm_grid *g, const double *chi, int i, int j)
+{
+    if (i < 0 || j < 0 || i >= g->nx || j >= g->ny) return 0;
+    return chi[(size_t)j * g->nx + i];
+}
+
+void lm_contact_body_normals(lm_sim *sim, lm_contact_field *f)
+{
+    const lm_grid *g = &sim->grid;
+    colour(sim, f);
+    size_t nn = lm_grid_nodes(g);
+    memset(f->nx, 0, nn * sizeof(double));
+    memset(f->ny, 0, nn * sizeof(double));
+    for (int j = 0; j <= g->ny; j++) {
+        for (int i = 0; i <= g->nx; i++) {
+            long n = lm_grid_node(g, i, j);
+            if (f->m[n] <= 0) continue;   /* only where the body is */
+            double ll = chi_at(g, f->chi, i - 1, j - 1), lr = chi_at(g, f->chi, i, j - 1);
+            double ul = chi_at(g, f->chi, i - 1, j), ur = chi_at(g, f->chi, i, j);
+            double gx = ((lr + ur) - (ll + ul)) / (2 * g->hx);
+            double gy = ((ul + ur) - (ll + lr)) / (2 * g->hy);
+            double len = hypot(gx, gy);
+            /* below 1e-9 of a point's colour per cell the direction is
+             * rounding: no normal */
+            if (len * fmin(g->hx, g->hy) <= 1e-9) continue;
+            f->nx[n] = -gx / len;
+            f->ny[n] = -gy / len;
+        }
+    }
+}
