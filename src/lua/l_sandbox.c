@@ -345,6 +345,15 @@ void la_open_sandbox(lua_State *L, const char *script)
     lua_pushnil(L);
     lua_setfield(L, -2, "dump");
     lua_pop(L, 1);
+    /* strings' metatable locked too: an __index function set on it would
+     * run script code wherever a binding indexes a string */
+    lua_pushliteral(L, "");
+    if (lua_getmetatable(L, -1)) {
+        lua_pushliteral(L, "locked");
+        lua_setfield(L, -2, "__metatable");
+        lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
     open_os(L);
     lua_createtable(L, 0, 1);
     lua_pushcfunction(L, sb_io_write);
