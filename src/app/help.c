@@ -19,7 +19,8 @@ static const command_help commands[] = {
      "           [--restart CHECKPOINT] [--quiet]",
      "run a scenario; its frames and files go where it says, under the working\n"
      "directory or --out-root DIR; --report FILE also writes lamina.report values\n"
-     "as JSON; --restart continues a run from a sim:checkpoint file (docs/api.md)"},
+     "as JSON; --lua-mem MB caps the script's Lua memory (default 1024);\n"
+     "--restart continues a run from a sim:checkpoint file (docs/api.md)"},
     {"diff",
      "lamina diff EXPECTED.png ACTUAL.png [--out DIFF.png] [--threshold T]\n"
      "            [--max-pixels N] [--max-window N] [--hard-limit L] [--quiet]",

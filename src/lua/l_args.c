@@ -1,4 +1,5 @@
 /* l_args.c - reading constructor tables with named errors. */
+#include <math.h>
 #include <string.h>
 
 #include "l_internal.h"
@@ -108,6 +109,11 @@ void la_pair(lua_State *L, int idx, const char *fn, const char *key, double *a, 
         lua_pop(L, 1);
     }
     lua_pop(L, 1);
+    /* no pair of lamina's means anything with NaN or infinity in it (a
+     * velocity {1, 0/0} made every position NaN a step later, and was
+     * blamed on the time step) */
+    if (!isfinite(*a) || !isfinite(*b))
+        luaL_error(L, "%s: '%s' must be two finite numbers (got {%f, %f})", fn, key, *a, *b);
 }
 
 int la_option(lua_State *L, const char *fn, const char *key, const char *value,

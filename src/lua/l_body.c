@@ -114,8 +114,10 @@ static void velocity_at(lua_State *L, int vidx, double x, double y, double *vx, 
         int ok1, ok2;
         *vx = lua_tonumberx(L, -2, &ok1);
         *vy = lua_tonumberx(L, -1, &ok2);
-        if (!ok1 || !ok2)
-            luaL_error(L, "sim:body: the velocity function must return two numbers");
+        if (!ok1 || !ok2 || !isfinite(*vx) || !isfinite(*vy))
+            luaL_error(L, "sim:body: the velocity function must return two finite numbers "
+                       "(got %s, %s at (%f, %f))", luaL_tolstring(L, -2, NULL),
+                       luaL_tolstring(L, -2, NULL), x, y);
         lua_pop(L, 2);
     }
 }

@@ -195,8 +195,9 @@ int la_sim_membrane(lua_State *L)
             int ok1, ok2;
             ux = lua_tonumberx(L, -2, &ok1);
             uy = lua_tonumberx(L, -1, &ok2);
-            if (!ok1 || !ok2)
-                return luaL_error(L, "%s: the velocity function must return two numbers", fn);
+            if (!ok1 || !ok2 || !isfinite(ux) || !isfinite(uy))
+                return luaL_error(L, "%s: the velocity function must return two finite "
+                                  "numbers", fn);
             lua_pop(L, 2);
         }
         pe[k] = e;

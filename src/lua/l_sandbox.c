@@ -125,16 +125,21 @@ static int readable(lua_State *L, const char *path)
     return ok;
 }
 
-/* Loads a text chunk from a file in the read folders; never says what the
- * file holds unless it is one (a syntax error quotes the source). */
-static void load_confined(lua_State *L, const char *fn, const char *path)
+/* Pushes the text chunk of a file in the read folders (LUA_OK) or an error
+ * message; never says what the file holds unless it is one of those (a
+ * syntax error quotes the source). */
+static int load_confined(lua_State *L, const char *fn, const char *path)
 {
-    if (strlen(path) != lua_rawlen(L, 1))
-        luaL_error(L, "%s: the file name contains a NUL byte", fn);
-    if (!readable(L, path))
-        luaL_error(L, "%s('%s'): scripts may read only Lua files in lamina's assets/lua, "
-                   "lamina's scripts/ and the script's folder", fn, path);
-    if (luaL_loadfilex(L, path, "t") != LUA_OK) lua_error(L);
+    if (strlen(path) != lua_rawlen(L, 1)) {
+        lua_pushfstring(L, "%s: the file name contains a NUL byte", fn);
+        return LUA_ERRFILE;
+    }
+    if (!readable(L, path)) {
+        lua_pushfstring(L, "%s('%s'): scripts may read only Lua files in lamina's "
+                        "assets/lua, lamina's scripts/ and the script's folder", fn, path);
+        return LUA_ERRFILE;
+    }
+    return luaL_loadfilex(L, path, "t");
 }
 
 static int sb_loadfile(lua_State *L)
@@ -144,7 +149,11 @@ static int sb_loadfile(lua_State *L)
     if (strchr(mode, 'b'))
         return luaL_error(L, "loadfile: binary chunks are not allowed (mode '%s')", mode);
     int env = !lua_isnone(L, 3) ? 3 : 0;
-    load_confined(L, "loadfile", path);
+    if (load_confined(L, "loadfile", path) != LUA_OK) {   /* as the stock one: nil, why */
+        lua_pushnil(L);
+        lua_insert(L, -2);
+        return 2;
+    }
     if (env) {   /* as the stock loadfile: env becomes the chunk's _ENV */
         lua_pushvalue(L, env);
         if (!lua_setupvalue(L, -2, 1)) lua_pop(L, 1);
@@ -163,7 +172,7 @@ static int sb_dofile(lua_State *L)
 {
     const char *path = luaL_checkstring(L, 1);
     lua_settop(L, 1);
-    load_confined(L, "dofile", path);
+    if (load_confined(L, "dofile", path) != LUA_OK) return lua_error(L);
     lua_callk(L, 0, LUA_MULTRET, 0, dofile_done);
     return dofile_done(L, 0, 0);
 }
@@ -335,6 +344,15 @@ void la_open_sandbox(lua_State *L, const char *script)
     lua_getglobal(L, "string");
     lua_pushnil(L);
     lua_setfield(L, -2, "dump");
+    lua_pop(L, 1);
+    /* strings' metatable locked too: an __index function set on it would
+     * run script code wherever a binding indexes a string */
+    lua_pushliteral(L, "");
+    if (lua_getmetatable(L, -1)) {
+        lua_pushliteral(L, "locked");
+        lua_setfield(L, -2, "__metatable");
+        lua_pop(L, 1);
+    }
     lua_pop(L, 1);
     open_os(L);
     lua_createtable(L, 0, 1);

@@ -27,10 +27,12 @@ static void cell_of(const lm_grid *g, double x, double y, int *i, int *j,
                     double *dx, double *dy)
 {
     double u = (x - g->x0) / g->hx, v = (y - g->y0) / g->hy;
-    *i = (int)floor(u);
-    *j = (int)floor(v);
-    *i = *i < 0 ? 0 : *i >= g->nx ? g->nx - 1 : *i;
-    *j = *j < 0 ? 0 : *j >= g->ny ? g->ny - 1 : *j;
+    double fu = floor(u), fv = floor(v);
+    /* clamped before the conversion to int: a point gone NaN or far off in
+     * an unstable step reaches here before the step reports it (UBSan,
+     * found by fuzzing: tests/fuzz) */
+    *i = !(fu > 0) ? 0 : fu >= g->nx - 1 ? g->nx - 1 : (int)fu;
+    *j = !(fv > 0) ? 0 : fv >= g->ny - 1 ? g->ny - 1 : (int)fv;
     *dx = u - *i - 0.5;
     *dy = v - *j - 0.5;
 }

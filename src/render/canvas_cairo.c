@@ -471,10 +471,13 @@ static void stamp_disc(cc_canvas *c, unsigned char *img, int istride,
     int i1 = c->bx1 - x0 < size ? c->bx1 - x0 : size;
     for (int j = j0; j < j1; j++) {
         const unsigned char *cov = tile + (size_t)j * mstride;
-        unsigned char *row = img + (size_t)(y0 + j) * istride + 4 * (size_t)x0;
+        /* from the first pixel inside the canvas: a stamp reaching past the
+         * left edge (x0 < 0) must not form a pointer before the image
+         * (UBSan, found by fuzzing: tests/fuzz) */
+        unsigned char *row = img + (size_t)(y0 + j) * istride + 4 * (size_t)(x0 + i0);
         for (int i = i0; i < i1; i++)
             if (cov[i])
-                blend(row + 4 * (size_t)i, k, cov[i]);
+                blend(row + 4 * (size_t)(i - i0), k, cov[i]);
     }
 }
 

@@ -9,14 +9,22 @@
 #include <stdlib.h>
 #include <unistd.h>
 
+static char fuzz_path[64];
+
+static void fuzz_file_remove(void)
+{
+    unlink(fuzz_path);
+}
+
 static const char *fuzz_file(const uint8_t *data, size_t size)
 {
-    static char path[64];
+    char *path = fuzz_path;
     if (!path[0]) {
-        snprintf(path, sizeof path, "/tmp/lamina-fuzz-XXXXXX");
+        snprintf(path, sizeof fuzz_path, "/tmp/lamina-fuzz-XXXXXX");
         int fd = mkstemp(path);
         if (fd < 0) abort();
         close(fd);
+        atexit(fuzz_file_remove);   /* (libFuzzer ends with exit) */
     }
     FILE *f = fopen(path, "wb");
     if (!f) abort();

@@ -19,6 +19,8 @@ for what, o in pairs(objects) do
   ok, err = pcall(function() local x <close> = o end)
   assert(not ok and err:find("non%-closable"), what .. ": <close> accepted: " .. tostring(err))
 end
+-- strings' metatable too (string methods still work)
+assert(getmetatable("") == "locked" and ("abc"):upper() == "ABC")
 -- the objects still work after all that
 sim:every(1e-3, function(s) assert(getmetatable(s) == "locked") end)
 sim:run{ t_end = 3e-3 }
