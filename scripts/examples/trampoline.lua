@@ -23,7 +23,7 @@ sim:record{file = "out/trampoline/energy.csv", every = 0.005,
                      ball_vy = function() local _, v = ball:velocity(); return v end}}
 if frames then
   sim:every(0.05, function(s)
-    s:frame{file = string.format("out/trampoline/f%06d.png", s.step),
+    s:frame{file = string.format("out/trampoline/f%06d.png", s.nstep),
             width = 640, height = 480, colour = "speed", title = "trampoline"}
   end)
 end

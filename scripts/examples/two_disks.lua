@@ -21,13 +21,13 @@ local emin, emax = e0, e0
 sim:every(0.1, function(s)
   local e = s:energy().total
   emin, emax = math.min(emin, e), math.max(emax, e)
-  s:frame{ file = string.format("%s/frame_%06d.png", out, s.step), width = 512, height = 512 }
+  s:frame{ file = string.format("%s/frame_%06d.png", out, s.nstep), width = 512, height = 512 }
 end)
 sim:run{ t_end = t_end }
 
 local px, py = sim:momentum()
 local e = sim:energy()
-print(string.format("t = %.3f  steps = %d  particles = %d", sim.t, sim.step, sim.n))
+print(string.format("t = %.3f  steps = %d  particles = %d", sim.t, sim.nstep, sim.n))
 print(string.format("energy: start %.6g  end %.6g  (min %.6g, max %.6g; drift %.2f %%)",
                     e0, e.total, emin, emax, 100 * (e.total - e0) / e0))
 print(string.format("momentum: (%.3g, %.3g)", px, py))

@@ -93,8 +93,8 @@ for _, h in ipairs{0.4, 0.2, 0.1, 0.05} do
     .. "(%.2f M particle-steps/s; %d points at the end); r(0) %.4f r(90) %.4f p %.2f hoop %.1f p r/t %.1f (%+.1f %%; "
     .. "particle mean p %.2f: %+.1f %%); "
     .. "gas outside %d; visible energy loss %.2f %%, hidden kinetic energy %.2f, particle "
-    .. "energy %+.2f %%", h, ngas, nmem, sim.step, secs,
-    (ngas + nmem) * sim.step / secs / 1e6, sim.n, r0, r90, p, hoop, prt, 100 * (hoop - prt) / prt,
+    .. "energy %+.2f %%", h, ngas, nmem, sim.nstep, secs,
+    (ngas + nmem) * sim.nstep / secs / 1e6, sim.n, r0, r90, p, hoop, prt, 100 * (hoop - prt) / prt,
     pp, 100 * (hoop - pprt) / pprt,
     escaped, 100 * loss, hidden, 100 * dE))
   local tag = string.format("cell_%.3f", h)

@@ -49,8 +49,8 @@ for _, tf in ipairs{0, 0.05, 0.1, 0.2, 0.4, 1, 2} do
     -- dashed; the connectivity half shows the isosurface construction on
     -- its own points)
     for _, n in ipairs{4, 7} do
-      iso:step(n - iso.step)
-      con:step(n - con.step)
+      iso:step(n - iso.nstep)
+      con:step(n - con.nstep)
       iso:frame{ file = string.format("%s/fig16_step%d.png", out, n), width = 760, height = 380,
                  mirror = "x", split = con, names = {"isosurface", "connectivity"},
                  normals = true, phi = true, particles = "membranes",

@@ -480,7 +480,7 @@ static int sim_index(lua_State *L)
     const char *k = luaL_checkstring(L, 2);
     const lm_sim *m = s->sim;
     if (strcmp(k, "t") == 0) lua_pushnumber(L, m->t);
-    else if (strcmp(k, "step") == 0) lua_pushinteger(L, m->step);
+    else if (strcmp(k, "nstep") == 0) lua_pushinteger(L, m->step);
     else if (strcmp(k, "dt") == 0) lua_pushnumber(L, m->def.dt);
     else if (strcmp(k, "cell") == 0) lua_pushnumber(L, m->grid.hx);
     else if (strcmp(k, "n") == 0) lua_pushinteger(L, (lua_Integer)m->p.n);
@@ -560,28 +560,12 @@ static int sim_tostring(lua_State *L)
     return 1;
 }
 
-/* The contract has both sim.step (the step count, a number) and
- * sim:step(n). sim:step(n) is sim.step(sim, n): a call of the count. Numbers
- * get a __call metamethod that steps when its first argument is a sim and
- * otherwise fails exactly as calling a number does. */
-static int number_call(lua_State *L)
-{
-    if (luaL_testudata(L, 2, LA_SIM)) {
-        lua_remove(L, 1);
-        return sim_step(L);
-    }
-    return luaL_error(L, "attempt to call a number value");
-}
-
+/* The step count is sim.nstep and sim:step(n) the method: the count was
+ * once sim.step too, which took a __call on every number to let both work
+ * (design.md: the one rename of the contract). Queries have their own
+ * names: sim:courant_number() beside the setting sim.courant. */
 void la_open_sim(lua_State *L)
 {
-    lua_pushinteger(L, 0);
-    lua_createtable(L, 0, 1);
-    lua_pushcfunction(L, number_call);
-    lua_setfield(L, -2, "__call");
-    lua_setmetatable(L, -2);
-    lua_pop(L, 1);
-
     static const luaL_Reg meta[] = {{"__gc", sim_gc},
                                     {"__index", sim_index},
                                     {"__newindex", sim_newindex},
@@ -599,7 +583,7 @@ void la_open_sim(lua_State *L)
                                        {"energy", sim_energy},
                                        {"momentum", sim_momentum},
                                        {"hash", sim_hash},
-                                       {"courant", sim_courant},
+                                       {"courant_number", sim_courant},
                                        {"frame", la_sim_frame},
                                        {NULL, NULL}};
     la_new_metatable(L, LA_SIM);

@@ -19,7 +19,7 @@ local b = sim:body{ material = rubber, ppc = 4, velocity = {-0.1, -0.1},
 sim:at(0.1, function(s) rubber.E = 1.5 * E end)   -- a live change, logged
 sim:run{ t_end = t_end }
 local vx = a:velocity()
-lamina.report{ steps = sim.step, vx = vx, energy = sim:energy().total }
+lamina.report{ steps = sim.nstep, vx = vx, energy = sim:energy().total }
 if fail:find("yes") then
   error("deliberate failure (fail = " .. fail .. ")")
 end

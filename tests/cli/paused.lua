@@ -8,4 +8,4 @@ sim:run{ t_end = 0.05 }
 local note = "after the first run"
 lamina.pause()
 sim:run{ t_end = 0.1 }
-print("resumed", sim.step, rubber.E)
+print("resumed", sim.nstep, rubber.E)

@@ -13,15 +13,15 @@ if wait_for out.txt "^running$"; then
   sleep 1
   kill -INT $pid
 fi
-echo 'print("after", sim.step, sim.step == math.floor(sim.t / sim.dt + 0.5))' >&3
-echo 'sim:step(3); print("stepped", sim.step)' >&3
+echo 'print("after", sim.nstep, sim.nstep == math.floor(sim.t / sim.dt + 0.5))' >&3
+echo 'sim:step(3); print("stepped", sim.nstep)' >&3
 # Ctrl-C in plain Lua code typed at the prompt (a Lua hook stops it)
 echo 'print("looping"); n = 0; while true do n = n + 1 end' >&3
 if wait_for out.txt "^looping$"; then
   sleep 1
   kill -INT $pid
 fi
-echo 'print("looped", n > 0, sim.step)' >&3
+echo 'print("looped", n > 0, sim.nstep)' >&3
 exec 3>&-
 wait_exit $pid 60
 [ "$status" -eq 0 ] || { echo "FAIL: exit status $status"; fail=1; }

@@ -4,11 +4,11 @@
 # lamina.resume() runs the rest.
 . "$(dirname "$0")/lib.sh"
 "$LAMINA" repl "$SRC/paused.lua" > out.txt 2> err.txt <<'LUA'
-sim.step
+sim.nstep
 note
 rubber.E = 2000
 lamina.resume()
-sim.step
+sim.nstep
 lamina.resume()
 print("still here")
 LUA

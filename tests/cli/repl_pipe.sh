@@ -6,22 +6,22 @@
 # lamina.resume() finishes the script.
 . "$(dirname "$0")/lib.sh"
 "$LAMINA" repl "$SRC/disks.lua" > out.txt 2> err.txt <<'LUA'
-sim.step
+sim.nstep
 sim:step(10)
-sim.step, sim.t
+sim.nstep, sim.t
 x = 1 +
   2
 x
 rubber.E = 3000
 nosuch.field = 1
-print("after the error", sim.step, rubber.E)
+print("after the error", sim.nstep, rubber.E)
 print("bodies", #a, #b, sim.n == #a + #b)
 local e = sim:energy(); print("energy", e.total > 0)
 return t_end, fail
 sim:run{t_end = 0.05}
-sim.step
+sim.nstep
 lamina.resume()
-sim.step
+sim.nstep
 LUA
 status=$?
 [ $status -eq 0 ] || { echo "FAIL: exit status $status"; fail=1; }

@@ -21,4 +21,4 @@ sim:run{t_end = 4e-4}
 sim:frame{file = out .. "/f.png", width = 160, height = 160, phi = true, contact = true, normals = true}
 local h, names, n = lamina.read_csv(out .. "/h.csv")
 assert(n >= 4 and #names == 3, "read_csv")
-print("leak_features: ran", sim.step, "steps")
+print("leak_features: ran", sim.nstep, "steps")

@@ -21,5 +21,5 @@ if slow > 0 then
   end)
 end
 sim:run{ t_end = t_end }
-print(string.format("RESULT t %.6f step %d gas %d (from %d) hash %s", sim.t, sim.step, #gas, n0,
+print(string.format("RESULT t %.6f step %d gas %d (from %d) hash %s", sim.t, sim.nstep, #gas, n0,
                     sim:hash()))

@@ -30,7 +30,7 @@ for _, basis in ipairs{ "linear", "gimp", "bspline2" } do
     local speed = math.sqrt(v0[1]^2 + v0[2]^2)
     print(string.format("%-8s %-4s: %d particles, %d steps, centre at (%.4f, %.4f); "
                         .. "max |sigma| = %.2e E, max |v - v0| = %.2e |v0|", basis, scheme,
-                        #p.x, sim.step, cx, cy, smax / E, dv / speed))
+                        #p.x, sim.nstep, cx, cy, smax / E, dv / speed))
     assert(math.abs(cx - (0.45 + v0[1] * sim.t)) < 1e-9 and math.abs(cy - (0.475 + v0[2] * sim.t)) < 1e-9,
            basis .. " " .. scheme .. ": the block did not move with v0")
     assert(smax < 1e-9 * E, basis .. " " .. scheme .. ": a translating block became stressed")

@@ -11,7 +11,7 @@ sim:every(4e-4, function() n2 = n2 + 1 end)
 sim:every(5e-324, function() n3 = n3 + 1 end)   -- the smallest double
 local rec = sim:record{ every = 1e-300 }
 sim:run{ t_end = 0.01 }
-assert(sim.step == 10, sim.step)
+assert(sim.nstep == 10, sim.nstep)
 assert(n1 == 11 and n3 == 11, ("fired %d and %d times over 10 steps"):format(n1, n3))
 assert(n2 == 11, n2)
 assert(#rec == 11, #rec)

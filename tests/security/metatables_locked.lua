@@ -24,5 +24,5 @@ assert(getmetatable("") == "locked" and ("abc"):upper() == "ABC")
 -- the objects still work after all that
 sim:every(1e-3, function(s) assert(getmetatable(s) == "locked") end)
 sim:run{ t_end = 3e-3 }
-assert(#rec == 4 and poly:contains(0.2, 0.15) and sim.step == 3)
+assert(#rec == 4 and poly:contains(0.2, 0.15) and sim.nstep == 3)
 print("metatables locked")

@@ -4,4 +4,4 @@
 local out = lamina.param("out", "out/security/quick")
 local sim = lamina.sim{ dt = 1e-3 }
 sim:frame{ file = out .. "/quick.png", width = 32, height = 32 }
-lamina.report{ steps = sim.step }
+lamina.report{ steps = sim.nstep }

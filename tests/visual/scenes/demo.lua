@@ -34,7 +34,7 @@ local e0 = sim:energy().total
 local worst = 0
 sim:every(0.1, function(s)
   worst = math.max(worst, math.abs(s:energy().total - e0) / e0)
-  s:frame{ file = string.format("%s/frame_%04d.png", out, s.step), width = 320, height = 320,
+  s:frame{ file = string.format("%s/frame_%04d.png", out, s.nstep), width = 320, height = 320,
            title = title }
 end)
 sim:run{ t_end = t_end }

@@ -19,4 +19,4 @@ end
 dofile(example)
 lamina.sim = make_sim
 
-lamina.report{ state_hash = made:hash(), steps = made.step }
+lamina.report{ state_hash = made:hash(), steps = made.nstep }
