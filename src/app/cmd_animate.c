@@ -98,7 +98,7 @@ static int add_folder(frames *f, const char *dir, const char *out, const char *p
         rc = add_frame(f, path);
     }
     closedir(d);
-    if (rc == 0)
+    if (rc == 0 && f->n > first)   /* (no frames: f->path may be NULL) */
         qsort(f->path + first, f->n - first, sizeof *f->path, by_name);
     else
         fprintf(stderr, "lamina animate: out of memory\n");

@@ -65,7 +65,7 @@ void lr_canvas_gl_release(void)
 #endif
 #ifdef LAMINA_HAVE_EGL
     engine_destroy(&gl_egl_platform, &spare[gl_egl_platform.slot]);
-    gl_egl_terminate();
+    gl_egl_park();
 #endif
 }
 

@@ -171,5 +171,7 @@ extern const gl_platform gl_osmesa_platform;
 extern const gl_platform gl_egl_platform;
 /* canvas_egl.c: lets go of the EGL display (after its contexts). */
 void gl_egl_terminate(void);
+/* Unbinds the display at shutdown without terminating it (canvas_egl.c). */
+void gl_egl_park(void);
 
 #endif
