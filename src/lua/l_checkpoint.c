@@ -35,12 +35,10 @@ int la_sim_checkpoint(lua_State *L)
     const char *fn = "sim:checkpoint";
     la_sim *s = la_check_sim(L, 1);
     la_check_keys(L, 2, fn, keys);
-    la_getfield(L, 2, "file");
-    size_t len;
-    const char *file = lua_tolstring(L, -1, &len);
-    if (!file || !len) return luaL_error(L, "%s: 'file' is required", fn);
-    if (strlen(file) != len) return luaL_error(L, "%s: 'file' contains a NUL byte", fn);
-    la_check_output_path(L, fn, -1);   /* confined as every output is (l_path.c) */
+    if (la_getfield(L, 2, "file") == LUA_TNIL) return luaL_error(L, "%s: 'file' is required", fn);
+    /* a string, no NUL, confined as every output is (l_path.c) */
+    const char *file = la_check_output_path(L, fn, -1);
+    size_t len = strlen(file);
     int has_every = la_has(L, 2, "every"), has_at = la_has(L, 2, "at");
     if (has_every == has_at) return luaL_error(L, "%s: give exactly one of 'every' and 'at'", fn);
     double every = has_every ? la_number(L, 2, fn, "every") : 0;

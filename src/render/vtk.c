@@ -70,20 +70,28 @@ static int appended(lr_atomic *a, const block *bl, int nb, char *err, size_t err
 
 #define MAX_ARRAYS 64
 
+/* Opens path for a file of `type` with narrays arrays; 0, or -1 with err. */
+static int vtk_open(lr_atomic *a, const char *path, const char *type, int narrays, char *err,
+                    size_t errlen)
+{
+    if (narrays > MAX_ARRAYS) {
+        snprintf(err, errlen, "cannot write '%s': too many fields", path);
+        return -1;
+    }
+    if (lr_atomic_open(a, path, err, errlen)) return -1;
+    header_open(a->fp, type);
+    return 0;
+}
+
 int lr_vtk_write_vtu(const char *path, size_t npts, const double *xyz,
                      const lr_vtk_cells *cells, const lr_vtk_field *pf, int npf,
                      const lr_vtk_field *cf, int ncf, char *err, size_t errlen)
 {
-    if (npf + ncf + 4 > MAX_ARRAYS) {
-        snprintf(err, errlen, "cannot write '%s': too many fields", path);
-        return -1;
-    }
     lr_atomic a;
-    if (lr_atomic_open(&a, path, err, errlen)) return -1;
+    if (vtk_open(&a, path, "UnstructuredGrid", npf + ncf + 4, err, errlen)) return -1;
     block bl[MAX_ARRAYS];
     int nb = 0;
     uint64_t off = 0;
-    header_open(a.fp, "UnstructuredGrid");
     fprintf(a.fp, "  <UnstructuredGrid>\n    <Piece NumberOfPoints=\"%zu\" "
             "NumberOfCells=\"%zu\">\n", npts, cells->n);
     fields(a.fp, "PointData", pf, npf, npts, bl, &nb, &off);
@@ -105,16 +113,11 @@ int lr_vtk_write_vtu(const char *path, size_t npts, const double *xyz,
 int lr_vtk_write_vti(const char *path, int nx, int ny, double x0, double y0, double hx,
                      double hy, const lr_vtk_field *pf, int npf, char *err, size_t errlen)
 {
-    if (npf > MAX_ARRAYS) {
-        snprintf(err, errlen, "cannot write '%s': too many fields", path);
-        return -1;
-    }
     lr_atomic a;
-    if (lr_atomic_open(&a, path, err, errlen)) return -1;
+    if (vtk_open(&a, path, "ImageData", npf, err, errlen)) return -1;
     block bl[MAX_ARRAYS];
     int nb = 0;
     uint64_t off = 0;
-    header_open(a.fp, "ImageData");
     fprintf(a.fp, "  <ImageData WholeExtent=\"0 %d 0 %d 0 0\" Origin=\"%.17g %.17g 0\" "
             "Spacing=\"%.17g %.17g 1\">\n    <Piece Extent=\"0 %d 0 %d 0 0\">\n",
             nx, ny, x0, y0, hx, hy, nx, ny);
