@@ -322,10 +322,16 @@ static int courant_exceeded(la_sim *s, char *msg, size_t len)
     double limit = lm_sim_courant_limit(s->sim);
     if (!(cn > limit * (1 + 1e-12))) return 0;
     double h = fmin(s->sim->grid.hx, s->sim->grid.hy);
-    char basis[96] = "", who[96] = "", why[200] = "";
-    if (limit != s->sim->def.courant)
-        snprintf(basis, sizeof basis, " x %g for basis = \"%s\"",
-                 lm_basis_courant_factor(s->sim->def.basis), lm_basis_name(s->sim->def.basis));
+    char basis[160] = "", who[96] = "", why[200] = "";
+    double fb = lm_basis_courant_factor(s->sim->def.basis);
+    if (fb != 1)
+        snprintf(basis, sizeof basis, " x %g for basis = \"%s\"", fb,
+                 lm_basis_name(s->sim->def.basis));
+    if (s->sim->def.scheme == LM_USL) {
+        size_t k = strlen(basis);
+        snprintf(basis + k, sizeof basis - k, " x %g for scheme = \"usl\" (USL divides each "
+                 "node's momentum by its own mass: less stable than MUSL)", LM_USL_COURANT);
+    }
     if (b >= 0) {
         const lm_body *bd = &s->sim->bodies[b];
         lm_body_label(s->sim, b, who, sizeof who);

@@ -334,8 +334,14 @@ double lm_sim_courant_body(const lm_sim *sim, double *c_max, int *body);
  * a pinned sheet under gravity with 2 to 8 points per cell (it grows
  * between 0.75 and 0.8; 0.85 with one point per cell). */
 #define LM_SEGMENT_COURANT 0.75
+/* USL divides each node's momentum by its own mass ([T] §8.1), so it is
+ * less stable than MUSL: [T] Ch. 8's bar with one point per cell at the
+ * centres first grows at dt c / h = 0.75 (MUSL: 2.15; docs/robustness.md
+ * "The 1-D bar"). The check scales `courant` by this for USL. */
+#define LM_USL_COURANT 0.7
 /* The largest Courant number the run accepts: `courant` (stated for the
- * linear basis) times the basis' factor. */
+ * linear basis and MUSL) times the basis' factor, and LM_USL_COURANT for
+ * USL. */
 double lm_sim_courant_limit(const lm_sim *sim);
 
 /* Changes the time step between steps (the clock keeps counting exactly). */
