@@ -98,8 +98,11 @@ typedef struct side_store {
  * arrows one cell long. */
 static void normals(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, lr_arrows *a)
 {
-    if (!sim->prepared)
-        lm_sim_prepare(sim);    /* tangents exist from the first step on */
+    /* tangents exist from the first step on; before it, from a prepare
+     * (which sim:membrane has already run: it cannot fail here unless a
+     * body added since cannot be prepared, which that sim:body reported) */
+    if (!sim->prepared && lm_sim_prepare(sim) != LM_OK)
+        luaL_error(L, "sim:frame: %s", sim->err);
     size_t n = 0;
     for (int b = 0; b < sim->nbodies; b++)
         if (sim->bodies[b].membrane)

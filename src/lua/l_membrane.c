@@ -110,11 +110,7 @@ int la_sim_membrane(lua_State *L)
     double h = fmin(g->hx, g->hy);
     int intervals = point_count(L, fn, &cp, h, &what);
     int n = cp.closed ? intervals : intervals + 1;
-    double ds = cp.length / intervals;
-    if (ds > h * (1 + 1e-12))
-        return luaL_error(L, "%s: %s spacing %f is larger than a cell (%f): neighbouring "
-                          "points must stay within one cell or the membrane breaks",
-                          fn, what, ds, h);
+    double ds = cp.length / intervals;   /* within a cell: the engine checks */
     /* force: how the tension reaches the grid (membrane_force.c); "point"
      * is the papers' quadrature */
     static const char *const forces[] = {"point", "segment", NULL};
@@ -159,34 +155,16 @@ int la_sim_membrane(lua_State *L)
     double *px = lua_newuserdatauv(L, 2 * (size_t)n * sizeof(double), 0);
     double *py = px + n;
     la_curve_place(&cp, n, px, py);
-    double x1 = g->x0 + g->nx * g->hx, y1 = g->y0 + g->ny * g->hy;
-    /* axisymmetric: a point is a ring about the axis r = 0; a membrane may
-     * end on the axis (a pole) but not reach across or touch it between */
-    for (int k = 0; sim->def.axisym && k < n; k++) {
-        int end = !cp.closed && (k == 0 || k == n - 1);
-        if (px[k] < 0 || (px[k] == 0 && !end))
-            return luaL_error(L, "%s: axisymmetric: %s crosses the axis r = 0 at point %d "
-                              "(%f, %f); only an end of an open membrane may lie on it", fn,
-                              what, k + 1, px[k], py[k]);
-    }
-    for (int k = 0; k < n; k++)
-        if (!(px[k] >= g->x0 && px[k] <= x1 && py[k] >= g->y0 && py[k] <= y1))
-            return luaL_error(L, "%s: %s leaves the domain: point %d at (%f, %f) is outside "
-                              "{%f, %f, %f, %f}", fn, what, k + 1, px[k], py[k],
-                              g->x0, g->y0, x1, y1);
 
     /* The script's functions run first (any may fail): every point's strain
-     * and velocity, before the engine is touched, so that creating a
-     * membrane is all or nothing. */
+     * and velocity, before the engine is touched; the engine then checks
+     * the membrane rules and creates it all or nothing. */
     double *pe = lua_newuserdatauv(L, 3 * (size_t)n * sizeof(double), 0);
     double *pux = pe + n, *puy = pe + 2 * (size_t)n;
     for (int k = 0; k < n; k++) {
         double u = cp.closed ? (double)k / n : (n > 1 ? (double)k / (n - 1) : 0);
-        double e = strain_at(L, sidx, u, k + 1);
-        if (!(e > -5 && e < 5))
-            return luaL_error(L, "%s: %s initial strain %f at point %d must lie in (-5, 5)",
-                              fn, what, e, k + 1);
         double ux = vx, uy = vy;
+        pe[k] = strain_at(L, sidx, u, k + 1);
         if (vidx) {
             lua_pushvalue(L, vidx);
             lua_pushnumber(L, u);
@@ -200,62 +178,34 @@ int la_sim_membrane(lua_State *L)
                                   "numbers", fn);
             lua_pop(L, 2);
         }
-        pe[k] = e;
         pux[k] = ux;
         puy[k] = uy;
     }
     int mi = lm_sim_add_material(sim, mat);
-    int bi = mi < 0 ? -1 : lm_sim_add_membrane(sim, mi, cp.closed);
-    if (bi < 0) return luaL_error(L, "%s: out of memory", fn);
-    for (int k = 0; k < n; k++) {
-        /* Strains are logarithmic (membrane.c): a point placed ds apart with
-         * strain e stands for ds exp(-e) of unstrained membrane: that is its
-         * mass (a slack membrane carries its extra material) and its
-         * reference length. */
-        double ds_ref = ds * exp(-pe[k]);
-        double m = (k == n - 1 && end_mass > 0) ? end_mass
-                                                : mat->rho * mat->thickness * ds_ref;
-        /* axisymmetric: per radian, times the unstrained ring radius
-         * (an initial strain stretches the ring too; axisym.c) */
-        if (sim->def.axisym && !(k == n - 1 && end_mass > 0))
-            m *= lm_axisym_ring_radius(px[k] * exp(-pe[k]), ds_ref);
-        size_t q = sim->p.n;
-        if (lm_sim_add_particle(sim, bi, px[k], py[k], pux[k], puy[k], m, mat->rho) != LM_OK ||
-            lm_sim_set_membrane_point(sim, q, ds_ref, pe[k]) != LM_OK) {
-            lua_pushfstring(L, "%s: %s", fn, sim->err);
-            lm_sim_drop_last_body(sim);
-            return lua_error(L);
-        }
+    if (mi < 0) return luaL_error(L, "%s: out of memory", fn);
+    lm_membrane_def def;
+    lm_membrane_def_default(&def);
+    def.mat = mi;
+    def.closed = cp.closed;
+    def.n = (size_t)n;
+    def.x = px;
+    def.y = py;
+    def.ds = ds;
+    def.strain = pe;
+    def.vx = pux;
+    def.vy = puy;
+    def.end_mass = end_mass;
+    def.normals = (lm_normals)method;
+    def.force = (lm_mforce)force;
+    def.name = nameidx && lua_type(L, nameidx) == LUA_TSTRING ? lua_tostring(L, nameidx) : NULL;
+    if (ot != LUA_TNIL) {
+        def.orient = (lm_orient)orient;
+        def.ox = ox;
+        def.oy = oy;
     }
+    int bi = lm_sim_create_membrane(sim, &def);
+    if (bi < 0) return luaL_error(L, "%s: %s", fn, sim->err);
     la_sim_keep(L, 1, midx);
-    lm_body *bd = &sim->bodies[bi];
-    bd->normals = (lm_normals)method;
-    if (lm_sim_set_membrane_force(sim, bi, (lm_mforce)force) != LM_OK) {
-        lua_pushfstring(L, "%s: %s", fn, sim->err);
-        lm_sim_drop_last_body(sim);
-        return lua_error(L);
-    }
-    bd = &sim->bodies[bi];
-    bd->orient = orient;
-    bd->ox = ox;
-    bd->oy = oy;
-    if (method != LM_NORMALS_CONNECTIVITY && ot == LUA_TNIL) {
-        /* away from the centroid of the points: outward for a convex
-         * membrane, and for quarter models use orient = {0, 0} */
-        double cx = 0, cy = 0;
-        for (size_t q = bd->first; q < bd->first + bd->count; q++) {
-            cx += sim->p.x[q];
-            cy += sim->p.y[q];
-        }
-        bd->orient = 1;
-        bd->ox = cx / (double)bd->count;
-        bd->oy = cy / (double)bd->count;
-    }
-    if (lm_sim_prepare(sim) != LM_OK) {
-        lua_pushfstring(L, "%s: %s", fn, sim->err);
-        lm_sim_drop_last_body(sim);
-        return lua_error(L);
-    }
     la_push_body(L, 1, bi, nameidx);
     return 1;
 }

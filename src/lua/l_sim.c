@@ -538,19 +538,14 @@ static int sim_newindex(lua_State *L)
         lua_rawgeti(L, 3, 1);
         lua_rawgeti(L, 3, 2);
         double gx = luaL_checknumber(L, -2), gy = luaL_checknumber(L, -1);
-        if (!isfinite(gx) || !isfinite(gy))
-            return luaL_error(L, "sim.gravity must be two finite numbers (got {%f, %f})", gx, gy);
-        m->def.gx = gx;
-        m->def.gy = gy;
+        if (lm_sim_set_gravity(m, gx, gy) != LM_OK) return luaL_error(L, "sim.%s", m->err);
         lua_pop(L, 2);
     } else if (strcmp(k, "pic") == 0) {
-        double v = luaL_checknumber(L, 3);
-        if (!(v >= 0 && v <= 1)) return luaL_error(L, "sim.pic must lie in [0, 1] (got %f)", v);
-        m->def.pic = v;
+        if (lm_sim_set_pic(m, luaL_checknumber(L, 3)) != LM_OK)
+            return luaL_error(L, "sim.%s", m->err);
     } else if (strcmp(k, "courant") == 0) {
-        double v = luaL_checknumber(L, 3);
-        if (!(v > 0)) return luaL_error(L, "sim.courant must be positive (got %f)", v);
-        m->def.courant = v;
+        if (lm_sim_set_courant(m, luaL_checknumber(L, 3)) != LM_OK)
+            return luaL_error(L, "sim.%s", m->err);
     } else {
         return luaL_error(L, "sim.%s cannot be changed (changeable: dt, gravity, pic, courant)", k);
     }

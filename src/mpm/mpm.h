@@ -176,6 +176,17 @@ typedef enum lm_normals {
  * interior nodes of a uniformly stretched membrane (membrane_force.c). */
 typedef enum lm_mforce { LM_MFORCE_POINT = 0, LM_MFORCE_SEGMENT = 1 } lm_mforce;
 
+/* Which way a membrane's normals point (the stress does not depend on it;
+ * drawing and the gas side do). LM_ORIENT_CENTROID is for definitions
+ * only: away from the points' centroid for the constructions without
+ * connectivity, none for connectivity. */
+typedef enum lm_orient {
+    LM_ORIENT_CENTROID = -1,
+    LM_ORIENT_NONE = 0,
+    LM_ORIENT_AWAY = 1,       /* away from (ox, oy) */
+    LM_ORIENT_NEIGHBOURS = 2  /* agree with their neighbours */
+} lm_orient;
+
 #define LM_NAME_MAX 64
 
 typedef struct lm_body {
@@ -184,7 +195,7 @@ typedef struct lm_body {
     int membrane;          /* points in curve order, tangents from neighbours */
     int closed;            /* membrane: the last point neighbours the first */
     lm_normals normals;
-    int orient;            /* normals: 0 none, 1 away from (ox, oy), 2 neighbours */
+    int orient;            /* normals' sign: lm_orient */
     double ox, oy;
     double pe_ref;         /* this body's share of sim->pe_ref */
     lm_mforce force;       /* membrane: how its stress reaches the grid */
@@ -295,6 +306,34 @@ lm_status lm_sim_drop_last_body(lm_sim *sim);
  * at radius r stands for as a ring (r, or l / 4 for a point on the axis). */
 double lm_axisym_ring_radius(double r, double l);
 
+/* A membrane as one layer of points along a curve ([M] §3), everything
+ * the engine needs to create it (as Box2D's b2BodyDef): start from
+ * lm_membrane_def_default and set what differs. The arrays are read during
+ * lm_sim_create_membrane only. */
+typedef struct lm_membrane_def {
+    int mat;                  /* from lm_sim_add_material: a membrane material */
+    int closed;               /* the last point neighbours the first */
+    size_t n;                 /* points, in curve order */
+    const double *x, *y;      /* their positions */
+    double ds;                /* the spacing along the curve, as placed */
+    const double *strain;     /* initial logarithmic strain per point (NULL: 0) */
+    const double *vx, *vy;    /* initial velocity per point (NULL: 0) */
+    double end_mass;          /* > 0: the last point's mass ([M] §4.1's heavy point) */
+    lm_normals normals;
+    lm_orient orient;
+    double ox, oy;            /* LM_ORIENT_AWAY: from this point */
+    lm_mforce force;
+    const char *name;         /* for messages; NULL or "" = unnamed */
+} lm_membrane_def;
+
+void lm_membrane_def_default(lm_membrane_def *def);
+/* Creates the membrane of def, all or nothing (membrane_create.c checks
+ * the membrane rules first: spacing within a cell, points inside the
+ * domain and off the axis, strains within (-5, 5)); returns the body's
+ * index, or -1 with sim->err set (naming the membrane) and the
+ * simulation as it was. */
+int lm_sim_create_membrane(lm_sim *sim, const lm_membrane_def *def);
+
 /* Names body b for messages (truncated to LM_NAME_MAX - 1 bytes). */
 void lm_sim_set_body_name(lm_sim *sim, int b, const char *name);
 /* Chooses how membrane body b's stress reaches the grid (before the first
@@ -346,6 +385,13 @@ double lm_sim_courant_limit(const lm_sim *sim);
 
 /* Changes the time step between steps (the clock keeps counting exactly). */
 void lm_sim_set_dt(lm_sim *sim, double dt);
+/* The settings a script may change between steps, checked here: gravity
+ * (two finite numbers), the PIC fraction (in [0, 1]), the Courant limit
+ * (positive). LM_ERR_INPUT with sim->err ("pic must lie in [0, 1] (got
+ * 2)") and the setting unchanged otherwise. */
+lm_status lm_sim_set_gravity(lm_sim *sim, double gx, double gy);
+lm_status lm_sim_set_pic(lm_sim *sim, double pic);
+lm_status lm_sim_set_courant(lm_sim *sim, double courant);
 
 /* One step of physics.md §1. On failure sim->err says why. */
 lm_status lm_sim_step(lm_sim *sim);

@@ -326,6 +326,50 @@ void lm_sim_set_body_name(lm_sim *sim, int b, const char *name)
     snprintf(sim->bodies[b].name, sizeof sim->bodies[b].name, "%s", name ? name : "");
 }
 
+const char *lm_num_text(char *buf, size_t len, double v)
+{
+    snprintf(buf, len, "%.14g", v);
+    if (isfinite(v) && !strpbrk(buf, ".eE") && strlen(buf) + 2 < len) strcat(buf, ".0");
+    return buf;
+}
+
+lm_status lm_sim_set_gravity(lm_sim *sim, double gx, double gy)
+{
+    if (!isfinite(gx) || !isfinite(gy)) {
+        char a[40], b[40];
+        snprintf(sim->err, sizeof sim->err, "gravity must be two finite numbers (got {%s, %s})",
+                 lm_num_text(a, sizeof a, gx), lm_num_text(b, sizeof b, gy));
+        return LM_ERR_INPUT;
+    }
+    sim->def.gx = gx;
+    sim->def.gy = gy;
+    return LM_OK;
+}
+
+lm_status lm_sim_set_pic(lm_sim *sim, double pic)
+{
+    if (!(pic >= 0 && pic <= 1)) {
+        char a[40];
+        snprintf(sim->err, sizeof sim->err, "pic must lie in [0, 1] (got %s)",
+                 lm_num_text(a, sizeof a, pic));
+        return LM_ERR_INPUT;
+    }
+    sim->def.pic = pic;
+    return LM_OK;
+}
+
+lm_status lm_sim_set_courant(lm_sim *sim, double courant)
+{
+    if (!(courant > 0)) {
+        char a[40];
+        snprintf(sim->err, sizeof sim->err, "courant must be positive (got %s)",
+                 lm_num_text(a, sizeof a, courant));
+        return LM_ERR_INPUT;
+    }
+    sim->def.courant = courant;
+    return LM_OK;
+}
+
 lm_status lm_sim_set_membrane_force(lm_sim *sim, int b, lm_mforce force)
 {
     if (b < 0 || b >= sim->nbodies || !sim->bodies[b].membrane ||

@@ -184,4 +184,8 @@ double lm_axisym_membrane_energy(const lm_sim *sim, size_t q);
 void lm_membrane_stress_biaxial(const lm_material *mat, double et, double eh, double *st,
                                 double *sh);
 
+/* v as Lua prints a float (%.14g, ".0" added to what looks like an
+ * integer), for messages that the bindings used to format (sim.c). */
+const char *lm_num_text(char *buf, size_t len, double v);
+
 #endif

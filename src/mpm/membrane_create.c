@@ -1,0 +1,184 @@
+/* membrane_create.c - a membrane from its definition (lm_membrane_def), all
+ * or nothing, with the membrane rules checked here rather than in a
+ * binding ([M] §3, physics.md §2; issue 19: the engine is the only writer
+ * of its state, as Box2D's b2CreateBody takes a b2BodyDef).
+ *
+ * The rules: neighbouring points at most a cell apart (physics.md §2: the
+ * grid must see the membrane between them, or gas passes through); every
+ * point inside the domain; in the axisymmetric form no point on or across
+ * the axis but an open membrane's ends (a pole); logarithmic strains within
+ * (-5, 5), so that exp(-e) stays a mass. A point placed ds apart with
+ * strain e stands for ds exp(-e) of unstrained membrane: that is its mass
+ * (a slack membrane carries its extra material) and its reference length;
+ * axisymmetric masses are per radian, times the unstrained ring radius
+ * (axisym.c). */
+#include <math.h>
+#include <stdio.h>
+
+#include "step.h"
+
+void lm_membrane_def_default(lm_membrane_def *def)
+{
+    *def = (lm_membrane_def){0};
+    def->mat = -1;
+    def->orient = LM_ORIENT_CENTROID;
+}
+
+/* v printed as Lua prints it, in a buffer that lives for the statement. */
+typedef struct num { char s[40]; } num;
+static num fmt(double v)
+{
+    num n;
+    lm_num_text(n.s, sizeof n.s, v);
+    return n;
+}
+
+/* "membrane 'skin'" or "membrane 3": the body the definition would be. */
+static const char *label(const lm_sim *sim, const lm_membrane_def *def, char *buf, size_t len)
+{
+    if (def->name && def->name[0]) snprintf(buf, len, "membrane '%s'", def->name);
+    else snprintf(buf, len, "membrane %d", sim->nbodies + 1);
+    return buf;
+}
+
+/* The rules above, before anything is added. */
+static lm_status check(lm_sim *sim, const lm_membrane_def *def)
+{
+    const lm_grid *g = &sim->grid;
+    char what[96];
+    label(sim, def, what, sizeof what);
+    if (def->mat < 0 || def->mat >= sim->nmats || sim->mats[def->mat]->kind != LM_MEMBRANE) {
+        snprintf(sim->err, sizeof sim->err, "%s: the material is not a membrane", what);
+        return LM_ERR_INPUT;
+    }
+    if (def->n < 2 || !def->x || !def->y) {
+        snprintf(sim->err, sizeof sim->err, "%s needs at least 2 points", what);
+        return LM_ERR_INPUT;
+    }
+    double h = fmin(g->hx, g->hy);
+    if (!(def->ds > 0) || def->ds > h * (1 + 1e-12)) {
+        snprintf(sim->err, sizeof sim->err,
+                 "%s spacing %s is larger than a cell (%s): neighbouring points must stay "
+                 "within one cell or the membrane breaks", what, fmt(def->ds).s, fmt(h).s);
+        return LM_ERR_INPUT;
+    }
+    double x1 = g->x0 + g->nx * g->hx, y1 = g->y0 + g->ny * g->hy;
+    for (size_t k = 0; sim->def.axisym && k < def->n; k++) {
+        int end = !def->closed && (k == 0 || k == def->n - 1);
+        if (def->x[k] < 0 || (def->x[k] == 0 && !end)) {
+            snprintf(sim->err, sizeof sim->err,
+                     "axisymmetric: %s crosses the axis r = 0 at point %zu (%s, %s); only an "
+                     "end of an open membrane may lie on it", what, k + 1, fmt(def->x[k]).s,
+                     fmt(def->y[k]).s);
+            return LM_ERR_INPUT;
+        }
+    }
+    for (size_t k = 0; k < def->n; k++) {
+        if (!(def->x[k] >= g->x0 && def->x[k] <= x1 && def->y[k] >= g->y0 && def->y[k] <= y1)) {
+            snprintf(sim->err, sizeof sim->err,
+                     "%s leaves the domain: point %zu at (%s, %s) is outside {%s, %s, %s, %s}",
+                     what, k + 1, fmt(def->x[k]).s, fmt(def->y[k]).s, fmt(g->x0).s,
+                     fmt(g->y0).s, fmt(x1).s, fmt(y1).s);
+            return LM_ERR_INPUT;
+        }
+    }
+    for (size_t k = 0; def->strain && k < def->n; k++) {
+        if (!(def->strain[k] > -5 && def->strain[k] < 5)) {
+            snprintf(sim->err, sizeof sim->err,
+                     "%s initial strain %s at point %zu must lie in (-5, 5)", what,
+                     fmt(def->strain[k]).s, k + 1);
+            return LM_ERR_INPUT;
+        }
+    }
+    for (size_t k = 0; (def->vx || def->vy) && k < def->n; k++) {
+        double ux = def->vx ? def->vx[k] : 0, uy = def->vy ? def->vy[k] : 0;
+        if (!isfinite(ux) || !isfinite(uy)) {
+            snprintf(sim->err, sizeof sim->err,
+                     "%s: the velocity of point %zu is not finite", what, k + 1);
+            return LM_ERR_INPUT;
+        }
+    }
+    if (def->end_mass < 0 || !isfinite(def->end_mass)) {
+        snprintf(sim->err, sizeof sim->err, "%s: end_mass must be positive (got %s)", what,
+                 fmt(def->end_mass).s);
+        return LM_ERR_INPUT;
+    }
+    if (def->force != LM_MFORCE_POINT && def->force != LM_MFORCE_SEGMENT) {
+        snprintf(sim->err, sizeof sim->err, "%s: unknown force form %d", what, (int)def->force);
+        return LM_ERR_INPUT;
+    }
+    if ((int)def->normals < LM_NORMALS_CONNECTIVITY || def->normals > LM_NORMALS_MASS_MATRIX) {
+        snprintf(sim->err, sizeof sim->err, "%s: unknown normals method %d", what,
+                 (int)def->normals);
+        return LM_ERR_INPUT;
+    }
+    return LM_OK;
+}
+
+/* The points, each with its mass and unstrained length. */
+static lm_status add_points(lm_sim *sim, int b, const lm_membrane_def *def)
+{
+    const lm_material *mat = sim->mats[def->mat];
+    for (size_t k = 0; k < def->n; k++) {
+        double e = def->strain ? def->strain[k] : 0;
+        double ds_ref = def->ds * exp(-e);
+        int heavy = k == def->n - 1 && def->end_mass > 0;
+        double m = heavy ? def->end_mass : mat->rho * mat->thickness * ds_ref;
+        if (sim->def.axisym && !heavy)
+            m *= lm_axisym_ring_radius(def->x[k] * exp(-e), ds_ref);
+        size_t q = sim->p.n;
+        lm_status st = lm_sim_add_particle(sim, b, def->x[k], def->y[k],
+                                           def->vx ? def->vx[k] : 0, def->vy ? def->vy[k] : 0,
+                                           m, mat->rho);
+        if (st == LM_OK) st = lm_sim_set_membrane_point(sim, q, ds_ref, e);
+        if (st != LM_OK) return st;
+    }
+    return LM_OK;
+}
+
+/* Which way the normals point: as asked, or for the constructions without
+ * connectivity away from the points' centroid (outward for a convex
+ * membrane; quarter models give the centre). */
+static void orient(lm_sim *sim, lm_body *bd, const lm_membrane_def *def)
+{
+    if (def->orient != LM_ORIENT_CENTROID) {
+        bd->orient = def->orient;
+        bd->ox = def->ox;
+        bd->oy = def->oy;
+        return;
+    }
+    bd->orient = LM_ORIENT_NONE;
+    if (def->normals == LM_NORMALS_CONNECTIVITY) return;
+    double cx = 0, cy = 0;
+    for (size_t q = bd->first; q < bd->first + bd->count; q++) {
+        cx += sim->p.x[q];
+        cy += sim->p.y[q];
+    }
+    bd->orient = LM_ORIENT_AWAY;
+    bd->ox = cx / (double)bd->count;
+    bd->oy = cy / (double)bd->count;
+}
+
+int lm_sim_create_membrane(lm_sim *sim, const lm_membrane_def *def)
+{
+    if (check(sim, def) != LM_OK) return -1;
+    int b = lm_sim_add_membrane(sim, def->mat, def->closed);
+    if (b < 0) {
+        snprintf(sim->err, sizeof sim->err, "out of memory");
+        return -1;
+    }
+    if (add_points(sim, b, def) != LM_OK) {
+        lm_sim_drop_last_body(sim);
+        return -1;
+    }
+    lm_body *bd = &sim->bodies[b];
+    bd->normals = def->normals;
+    bd->force = def->force;
+    lm_sim_set_body_name(sim, b, def->name);
+    orient(sim, bd, def);
+    if (lm_sim_prepare(sim) != LM_OK) {
+        lm_sim_drop_last_body(sim);
+        return -1;
+    }
+    return b;
+}
