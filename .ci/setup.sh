@@ -28,6 +28,8 @@ lamina_build() {   # lamina_build DIR [cmake args...]
   local dir=$1; shift
   if [ ! -f "$dir/CMakeCache.txt" ]; then
     cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo "$@" >/dev/null
+  elif [ $# -gt 0 ]; then   # an existing build dir gets the options too (e.g. LAMINA_WERROR)
+    cmake -S . -B "$dir" "$@" >/dev/null
   fi
   cmake --build "$dir" -j"$(nproc)" -- --no-print-directory >/dev/null
 }

@@ -1,5 +1,5 @@
 -- circle_membrane.lua - the gas-filled circular membrane of the normals
--- paper §8 (Figs 12-13; physics.md V6), shared by its scenarios and tests:
+-- paper §8 (Figs 12-13; docs/physics.md V6), shared by its scenarios and tests:
 -- quarter symmetry, radius 0.5, 91 membrane points, E = 1e6, nu = 0.3,
 -- rho = 0.5, t = 0.1 (plane stress), initially unstressed; gas gamma = 1.4,
 -- p0 = 1000, rho = 1, mu = 0.2, 16 ppc; 10 x 10 cells of 0.1; dt = 0.7e-4

@@ -1,5 +1,5 @@
 -- dogbone.lua - the quarter dog-bone of the membrane expansion problem
--- ([F] §4.3, Fig 10; [T] §6.2, Fig 47; physics.md V7).
+-- ([F] §4.3, Fig 10; [T] §6.2, Fig 47; docs/physics.md V7).
 --
 -- The texts keep only the labels "x = 0.5", "y = 1", "Pi = 100", the 0 and
 -- 90 degree directions and a 0.1 cell for scale. Our construction, in the
@@ -9,10 +9,10 @@
 --   * a neck: the straight x = neck (0.35) from the 0-degree axis up to
 --     where it meets the lobe, so the waist at y = 0 is narrower than the
 --     lobe (the full shape, mirrored, is two lobes joined by a neck);
---   * quarter gas area 0.447 (physics.md: 0.44-0.47 from [F]'s total mass),
+--   * quarter gas area 0.447 (docs/physics.md: 0.44-0.47 from [F]'s total mass),
 --     geometric quarter length 1.390;
 --   * the membrane is slack: it carries natural_length = 2.2 of material
---     (physics.md: ~2.2, the quarter circle of the final radius ~1.39-1.40)
+--     (docs/physics.md: ~2.2, the quarter circle of the final radius ~1.39-1.40)
 --     pressed into 1.390, i.e. an initial (logarithmic) strain of
 --     ln(1.390/2.2) = -0.459, with the one-way (wrinkle) law on ([T] Table
 --     4: "wrinkle algorithm on"). Taut, it is the quarter circle of radius

@@ -1,5 +1,5 @@
 -- riemann.lua - the exact solution of the Riemann problem for a gamma-law
--- gas: the reference for the Sod shock tube ([F] §4.1, Fig 6; physics.md
+-- gas: the reference for the Sod shock tube ([F] §4.1, Fig 6; docs/physics.md
 -- V4). Two nonlinear waves (shock or rarefaction) around a contact; the
 -- star pressure solves f_L(p) + f_R(p) + (u_R - u_L) = 0 by Newton's
 -- method; the solution is self-similar in xi = (x - x0)/t.

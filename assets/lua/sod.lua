@@ -1,5 +1,5 @@
 -- sod.lua - Sod's shock tube ([F] §4.1, Fig 6; [T] §4, Figs 11-14;
--- physics.md V4), shared by its gallery page and tests: a tube one cell
+-- docs/physics.md V4), shared by its gallery page and tests: a tube one cell
 -- tall (symmetry above and below, fixed ends); left rho = 1, p = 1, right
 -- rho = 0.125, p = 0.1, gamma = 1.4, the paper's artificial viscosity
 -- (g = sqrt(2) dx, lambda = 0.75, c1 = c2 = 1); dt = 1e-4.

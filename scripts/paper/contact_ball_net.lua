@@ -11,7 +11,7 @@
 -- checks: the time the ball leaves the net (paper about 2.8: when its
 --   velocity settles) and its speed afterwards (paper about -0.7, §5.9), the
 --   total energy's spread once it has left (the net keeps ringing)
--- assumed: the texts disagree (physics.md V10). This page follows App.
+-- assumed: the texts disagree (docs/physics.md V10). This page follows App.
 --   A.1.6, whose deck it is: a plane-stress ball of radius 1.5 (the deck's
 --   rex = 1.5; §5.9's "R = 3" would not fit the deck's 10 x 10 box with the
 --   net) at (5.625, 5), v0 = 1, and a uniaxial net (§5.9 has a plane-strain

@@ -1,5 +1,5 @@
 /* bench_engine.c - `lamina bench engine`: particle-steps per second of the
- * engine alone (design.md, "Performance targets"), on one thread or on
+ * engine alone (docs/design.md, "Performance targets"), on one thread or on
  * `--threads N` (lamina.sim{threads}; threads.h).
  *
  * Two standard problems at several sizes, built through the engine's C API

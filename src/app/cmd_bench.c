@@ -1,5 +1,5 @@
 /* cmd_bench.c - `lamina bench render`: milliseconds per frame for each
- * backend at 10^3 .. 10^6 particles (design.md, "Performance targets": a
+ * backend at 10^3 .. 10^6 particles (docs/design.md, "Performance targets": a
  * benchmark, not a timed test).
  *
  * The scene is a frame as sim:frame draws it: a 64 x 64 cell grid over the

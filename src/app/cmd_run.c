@@ -64,7 +64,7 @@ static int parse_args(int argc, char **argv, lamina_run *run, const char **repor
             }
             *report = f;
         } else if (strcmp(a, "--out-root") == 0 || strncmp(a, "--out-root=", 11) == 0) {
-            /* the folder the script's files must stay in (docs/api.md, Sandbox) */
+            /* the folder the script's files must stay in (docs/api.md, "Sandbox") */
             const char *d = a[10] == '=' ? a + 11 : (i + 1 < argc ? argv[++i] : NULL);
             if (!d || !*d || *out_root) {
                 fprintf(stderr, "lamina run: %s\n", *out_root ? "--out-root given twice"

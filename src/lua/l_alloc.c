@@ -1,6 +1,6 @@
 /* l_alloc.c - the Lua state's allocator, with a cap.
  *
- * A script is untrusted input (design.md): `local t = {} for i = 1, 1e10 do
+ * A script is untrusted input (docs/design.md): `local t = {} for i = 1, 1e10 do
  * t[i] = i end` must end in an error, not in the machine swapping. Every
  * allocation of the Lua state (tables, strings, closures, lamina's own
  * userdata) is counted against run->lua_mem_limit; past it the allocation

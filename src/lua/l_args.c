@@ -174,7 +174,7 @@ lamina_run *la_run(lua_State *L)
 
 /* Every lamina object's metatable: getmetatable() gives this string and
  * setmetatable() fails ("cannot change a protected metatable"), so a script
- * reaches neither __gc nor __index (design.md: a script is untrusted). */
+ * reaches neither __gc nor __index (docs/design.md: a script is untrusted). */
 int la_new_metatable(lua_State *L, const char *name)
 {
     int fresh = luaL_newmetatable(L, name);

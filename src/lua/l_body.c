@@ -426,7 +426,7 @@ static void push_array(lua_State *L, const double *a, size_t first, size_t n, co
     lua_setfield(L, -2, name);
 }
 
-/* A table of arrays (design.md): x, y, vx, vy, mass, rho, and the global
+/* A table of arrays (docs/design.md): x, y, vx, vy, mass, rho, and the global
  * Cauchy stress sxx, syy, sxy, szz (out of plane; axisymmetric: the hoop
  * stress sigma_thth). */
 static int body_particles(lua_State *L)
@@ -449,7 +449,7 @@ static int body_particles(lua_State *L)
     push_array(L, p->szz, a, n, "szz");
     const lm_material *mat = sim->mats[bd->mat];
     if (mat->kind == LM_GAS) {
-        /* p without the artificial viscosity q (design.md) */
+        /* p without the artificial viscosity q (docs/design.md) */
         lua_createtable(L, (int)n, 0);
         for (size_t i = 0; i < n; i++) {
             lua_pushnumber(L, (mat->gamma - 1) * p->rho[a + i] * p->e[a + i]);

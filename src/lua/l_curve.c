@@ -2,7 +2,7 @@
  * lamina.polyline and plain functions f(u) -> x, y, u in [0, 1].
  *
  * Membranes need points evenly spaced along the curve's length
- * (design.md, sim:membrane), so every curve is turned into a dense polyline
+ * (docs/design.md, "Lua API"), so every curve is turned into a dense polyline
  * here and points are placed on it by arc length. Segments, polylines and
  * arcs are exact (an arc's polyline is fine enough that the chord error is
  * below 1e-9 of its radius after placement on the true circle). */

@@ -3,7 +3,7 @@
  *
  * The binding only gathers what figure.h's lr_figure asks for; the panels'
  * keys are read in l_frame_panel.c, the drawing is src/render's. Every
- * file carries provenance (design.md, Rendering). */
+ * file carries provenance (docs/design.md, "Provenance"). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

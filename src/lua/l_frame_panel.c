@@ -1,5 +1,5 @@
 /* l_frame_panel.c - one panel of sim:frame: which simulation(s), which
- * window, what colours, which extras (docs/api.md, sim:frame).
+ * window, what colours, which extras (docs/api.md, "sim:frame").
  *
  * Only gathering happens here; src/render draws. Arrays the renderer needs
  * beyond the engine's own (values through a colour map, normal arrows) are

@@ -15,7 +15,7 @@
 
 /* l_args.c: constructor tables. Every constructor takes one table of named
  * arguments and rejects a key it does not know, by name, at the script's
- * line (design.md, Lua API). */
+ * line (docs/design.md, "Conventions"). */
 /* lua_getfield without metamethods on tables (l_args.c says why). */
 int la_getfield(lua_State *L, int idx, const char *key);
 void la_check_table(lua_State *L, int idx, const char *fn);
@@ -53,8 +53,8 @@ void la_note_image(lua_State *L, const char *path);
 /* l_alloc.c: luaL_newstate with the run's memory cap (run may be NULL) */
 lua_State *la_new_state(lamina_run *run);
 
-/* l_sandbox.c: the standard library a script gets (design.md: a script is
- * untrusted input); la_load_script loads a regular text file only. */
+/* l_sandbox.c: the standard library a script gets (docs/design.md, "A script
+ * is untrusted input"); la_load_script loads a regular text file only. */
 void la_open_sandbox(lua_State *L, const char *script);
 int la_load_script(lua_State *L, const char *path);
 

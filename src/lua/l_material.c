@@ -4,7 +4,7 @@
  * pointer to it and keep the userdata alive through their uservalue, so a
  * change made from a callback (mat.E = 2000) reaches the engine at the next
  * step. Live changes are echoed to stderr with the time and step so that a
- * run can be replayed (design.md, Conventions). */
+ * run can be replayed (docs/design.md, "Conventions"). */
 #include <stdio.h>
 #include <string.h>
 

@@ -2,7 +2,7 @@
  * points along a curve ([M] §3, [F] §3.2).
  *
  * Points are evenly spaced along the curve including both ends; the count
- * is rounded up from length / spacing (design.md). Each point stands for
+ * is rounded up from length / spacing (docs/design.md). Each point stands for
  * ds = length / intervals of membrane (ds exp(-e) unstrained, with an
  * initial logarithmic strain e) and weighs rho * thickness * ds exp(-e) per
  * unit depth; `end_mass` replaces the last point's mass (the papers' heavy

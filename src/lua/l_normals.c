@@ -1,5 +1,5 @@
 /* l_normals.c - lamina.normals{...}: normals without connectivity for a
- * static set of points (design.md's contract; the engine is normals.h).
+ * static set of points (docs/design.md's contract; the engine is normals.h).
  *
  *   lamina.normals{ points = {{x, y}, ...}, box = {x0, y0, x1, y1},
  *                   basis = "linear" | "quadratic", random_point = {x, y}

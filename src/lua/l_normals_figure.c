@@ -5,7 +5,7 @@
  * normals solid and exact normals dashed, the element outline; 3D panels
  * show the cube, points and arrows seen from azimuth / elevation.
  *
- * 3D panels are a view of their own (src/render/view3d.h): what is drawn
+ * 3D panels are a view of their own (src/render/include/view3d.h): what is drawn
  * into them is kept as a scene and drawn when the figure is written -
  * through OpenGL with a depth buffer (OSMesa or EGL: spheres, shaded cone
  * heads, hidden parts hidden) when lamina has either, otherwise as cairo's
@@ -20,7 +20,7 @@
  *   fig:normals{ result = r, points = pts, exact = exact_normals }
  *   fig:write("out/fig.png")
  *
- * Bindings only: the drawing is src/render/layers.h. */
+ * Bindings only: the drawing is src/render/include/layers.h. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

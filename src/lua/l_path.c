@@ -2,7 +2,7 @@
  *
  * Every file lamina writes for a script (frames, figures, plots and their
  * CSV, recorder CSV) is named by the script, and a script is untrusted
- * input (design.md). So every such name goes through la_check_output_path
+ * input (docs/design.md). So every such name goes through la_check_output_path
  * before anything is created: it must resolve inside the output root - the
  * working directory, or `lamina run --out-root DIR` - after "..", absolute
  * paths and symbolic links of the folders that exist are resolved; it must

@@ -1,5 +1,5 @@
 /* l_provenance.c - what every image lamina writes says about itself, and
- * the note of where the run's images went (design.md, "Provenance"). */
+ * the note of where the run's images went (docs/design.md, "Provenance"). */
 #include <stdio.h>
 #include <string.h>
 

@@ -1,5 +1,5 @@
 /* l_runlog.c - the run log: live parameter changes, so a run can be
- * replayed (design.md, Conventions; issue 7, item 5).
+ * replayed (docs/design.md, "Conventions"; issue 7, item 5).
  *
  * A change made while a simulation runs (from sim:at / sim:every callbacks)
  * or typed at the repl's prompt is echoed as one line

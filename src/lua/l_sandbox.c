@@ -1,6 +1,6 @@
 /* l_sandbox.c - what a scenario script may use of Lua's standard library.
  *
- * A script is untrusted input (design.md): people run scripts they
+ * A script is untrusted input (docs/design.md): people run scripts they
  * downloaded. So a script gets the pure libraries (base, coroutine, table,
  * string, math, utf8), a few harmless functions of io and os, and nothing
  * that reaches a file, a process or a shared library except through

@@ -311,7 +311,7 @@ int la_exit_status_of(lua_State *L, const char *msg)
     return failed ? LAMINA_EXIT_SIM : LAMINA_EXIT_USAGE;
 }
 
-/* design.md: a dt whose Courant number exceeds `courant` (times the
+/* docs/design.md: a dt whose Courant number exceeds `courant` (times the
  * basis' factor, lm_basis_courant_factor) is refused with the limit
  * printed, naming the body whose wave speed sets it. */
 static int courant_exceeded(la_sim *s, char *msg, size_t len)
@@ -563,7 +563,7 @@ static int sim_tostring(lua_State *L)
 
 /* The step count is sim.nstep and sim:step(n) the method: the count was
  * once sim.step too, which took a __call on every number to let both work
- * (design.md: the one rename of the contract). Queries have their own
+ * (docs/design.md: the one rename of the contract). Queries have their own
  * names: sim:courant_number() beside the setting sim.courant. */
 void la_open_sim(lua_State *L)
 {

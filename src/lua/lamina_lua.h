@@ -2,7 +2,7 @@
  *
  * The app creates a lamina_run (what was asked on the command line), opens a
  * sandboxed Lua state with lamina_open_state() and runs the script with
- * lamina_run_script(), which maps every outcome to design.md's exit status:
+ * lamina_run_script(), which maps every outcome to docs/design.md's exit status:
  * 0 success, 1 the simulation failed, 2 the script or command line is wrong. */
 #ifndef LAMINA_LUA_H
 #define LAMINA_LUA_H

@@ -1,5 +1,5 @@
 /* axisym.c - the axisymmetric form of the step (lamina.sim{axisymmetric =
- * true}; physics.md §1 "Axisymmetric form", [F] §2.2's remark on eq 14,
+ * true}; docs/physics.md §1 "Axisymmetric form", [F] §2.2's remark on eq 14,
  * Sulsky & Schreyer 1996 = [F] ref 12).
  *
  * Coordinates: x is the radius r, y the axial z; the left side of the
@@ -206,7 +206,7 @@ void lm_axisym_stress(lm_sim *sim, size_t q, const double L[4], double max_div, 
         break;
     case LM_MEMBRANE:
         if (segment_point(sim, q)) break;   /* from lengths (membrane_force.c) */
-        /* eps_t += t.de.t ([M] §3, physics.md §2), the hoop from r */
+        /* eps_t += t.de.t ([M] §3, docs/physics.md §2), the hoop from r */
         lm_axisym_membrane_set(sim, q, p->et[q] + p->tx[q] * p->tx[q] * dexx +
                                        2 * p->tx[q] * p->ty[q] * dexy +
                                        p->ty[q] * p->ty[q] * deyy);

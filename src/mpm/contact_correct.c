@@ -5,7 +5,7 @@
  * At a node where both bodies of a pair have mass, the pair separates iff
  * they move apart along the pair's normal n (out of a, into b):
  * (v^a - v^b) . n < 0, [T] eq 9.7, the same as [M] eq 26 "(v^I - v) . n^I
- * < 0 for both" with outward normals for two free bodies (physics.md §4,
+ * < 0 for both" with outward normals for two free bodies (docs/physics.md §4,
  * the reconstructed sign; the two-bar test, tests/physics/contact_two_bar.lua,
  * settles it: with the other sign the bars never part). A body moves in its
  * own field where all its pairs at the node separate, the papers' rule.

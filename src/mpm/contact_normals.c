@@ -1,5 +1,5 @@
 /* contact_normals.c - a body's grid normals from its colour function
- * ([M] eqs 27-28, [T] eqs 9.10-9.11, physics.md §1 and §4).
+ * ([M] eqs 27-28, [T] eqs 9.10-9.11, docs/physics.md §1 and §4).
  *
  * Every point of the body carries the colour 1. The colour is spread to
  * the cell centres with the quadratic B-spline (nine centres per point,
@@ -7,7 +7,7 @@
  * is that of the bilinear interpolant of the four cell centres around it
  * (the dual cell of which the node is the centre, [M] eq 28). The colour
  * grows into the body, so the outward normal is n = -grad chi / |grad chi|
- * (physics.md §4: [M] eq 26 prints "> 0" with the inward colour gradient,
+ * (docs/physics.md §4: [M] eq 26 prints "> 0" with the inward colour gradient,
  * the same rule as "< 0" with this outward n). A membrane's colour is a
  * ridge along it, so its normals point away from it on both sides, as
  * [T] Fig 101 shows. Where the gradient vanishes (deep inside a body) the
@@ -18,7 +18,7 @@
 #include "contact.h"
 #include "step.h"
 
-/* Quadratic B-spline beta_2 ([N] §5, physics.md §3). */
+/* Quadratic B-spline beta_2 ([N] §5, docs/physics.md §3). */
 static double beta2(double x)
 {
     x = fabs(x);

@@ -5,7 +5,7 @@
 
 #include "step.h"
 
-/* physics.md §1: kinetic sum 1/2 m v^2; strain sum V 1/2 sigma:C^-1:sigma
+/* docs/physics.md §1: kinetic sum 1/2 m v^2; strain sum V 1/2 sigma:C^-1:sigma
  * (from the stress, so it stays objective); potential -sum m g.x with the
  * initial positions as datum. */
 static lm_energy energy_of(const lm_sim *sim, size_t first, size_t last, double ref)
@@ -85,7 +85,7 @@ double lm_sim_grid_kinetic(const lm_sim *sim)
     return ke;
 }
 
-/* physics.md §1: kinetic sum 1/2 m v^2; strain sum V 1/2 sigma:C^-1:sigma
+/* docs/physics.md §1: kinetic sum 1/2 m v^2; strain sum V 1/2 sigma:C^-1:sigma
  * (from the stress, so it stays objective; membranes 1/2 V sigma_t eps_t);
  * gas internal sum m e; potential -sum m g.x with the initial positions as
  * datum. */

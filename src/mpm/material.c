@@ -5,7 +5,7 @@
 #include "mpm.h"
 #include "step.h"
 
-/* physics.md §5: the plane-strain P-wave or the plane-stress wave. */
+/* docs/physics.md §5: the plane-strain P-wave or the plane-stress wave. */
 double lm_material_wave_speed(const lm_material *mat)
 {
     double E = mat->E, nu = mat->nu, rho = mat->rho;

@@ -6,7 +6,7 @@
 /* sigma <- sigma + dt (W.sigma - sigma.W) + C : de, with L = dv/dx and
  * w = W_xy = (L_xy - L_yx)/2. Expanding the 2x2 products:
  * (W.s - s.W) = [[2w s_xy, w (s_yy - s_xx)], [., -2w s_xy]].
- * Check (physics.md §1 step 8): a counter-clockwise spin omega has
+ * Check (docs/physics.md §1 step 8): a counter-clockwise spin omega has
  * w = -omega and turns diag(s, 0) into s_xy = +s omega dt. The rotation uses
  * the stress at the start of the step; sigma_zz is unchanged by a spin
  * about z. */

@@ -13,7 +13,7 @@ double lm_gas_sound_speed(const lm_material *mat, double e)
 /* [F] eq 24 prints q = sqrt(c_max^2 g) rho lambda D [c1 + c2 |div v| / max|div v|].
  * As printed its units are not a pressure (sqrt(c^2 g) is m^1.5/s); Wilkins'
  * linear term, which it follows, is rho c l |D|. We read the lost square as
- * sqrt(c_max^2 g^2) = c_max g, and use |D| so that q >= 0 (physics.md §2,
+ * sqrt(c_max^2 g^2) = c_max g, and use |D| so that q >= 0 (docs/physics.md §2,
  * reconstructed): q = c_max g rho lambda |D| [c1 + c2 |D| / max|D|], with D
  * = div v only in compression ([F] eq 25). The Sod test checks it. */
 double lm_gas_av(const lm_material *mat, double rho, double div, double max_div,
@@ -32,7 +32,7 @@ void lm_gas_update(const lm_material *mat, double exx, double eyy, double exy,
 {
     double mu = mat->mu;
     double tr = exx + eyy;                  /* plane strain: edot_zz = 0 */
-    double p = (mat->gamma - 1) * rho * *e; /* e^k, rho^{k+1} (physics.md §2) */
+    double p = (mat->gamma - 1) * rho * *e; /* e^k, rho^{k+1} (docs/physics.md §2) */
     double iso = -(2.0 / 3.0) * mu * tr - p - q;
     *sxx = 2 * mu * exx + iso;
     *syy = 2 * mu * eyy + iso;

@@ -1,13 +1,13 @@
 /* membrane.c - membranes and strings: one layer of points carrying stress in
- * their local tangent frame ([M] §3, [F] §3.2, [T] §5.1, physics.md §2).
+ * their local tangent frame ([M] §3, [F] §3.2, [T] §5.1, docs/physics.md §2).
  *
  * The objective form: eps_t accumulates t.de.t with the current unit tangent
  * (t.D.t is the stretching rate along the membrane); sigma is rebuilt from
  * sigma_t every step and never rotated as increments ([T] §5.1's warning).
  * Accumulating t.de.t = dl/l makes eps_t the logarithmic strain of the
  * point's length: l = ds exp(eps_t) for a point of unstrained length ds.
- * Its volume is thickness * ds * exp(eps_t) (physics.md writes the
- * small-strain form thickness * ds * (1 + eps_t); the two differ only for
+ * Its volume is thickness * ds * exp(eps_t) (docs/physics.md §2; the papers
+ * write the small-strain form thickness * ds * (1 + eps_t); the two differ only for
  * large slack, such as the dog-bone's), never updated from tr(de), which
  * would include the gas's strain across the membrane. */
 #include <math.h>

@@ -1,5 +1,5 @@
 /* membrane_force.c - a membrane's tension integrated along its segments
- * (lamina's remedy for cell-crossing noise; physics.md §5b, issue 13).
+ * (lamina's remedy for cell-crossing noise; docs/physics.md §5b, issue 13).
  *
  * The papers send a membrane point's stress to the grid by point
  * quadrature, f_i = -V_p sigma_p . G_ip ([M] eq 9, [F] eq 9). With the
@@ -171,7 +171,7 @@ double lm_membrane_segment_energy(const lm_sim *sim, int b)
     return w;
 }
 
-/* physics.md §2: neighbouring membrane points must never be more than a
+/* docs/physics.md §2: neighbouring membrane points must never be more than a
  * cell or so apart, or the grid no longer sees the membrane between them
  * and gas passes through. Two cells apart is reported as a tear. */
 lm_status lm_membrane_check_torn(lm_sim *sim)

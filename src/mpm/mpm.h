@@ -1,7 +1,7 @@
 /* mpm.h - lamina's engine: the material point method in 2D.
  *
  * One lm_sim owns the background grid, the particles (structure of arrays),
- * the bodies and pointers to the materials. The step follows physics.md §1
+ * the bodies and pointers to the materials. The step follows docs/physics.md §1
  * one phase per function (step.c), so the paper can be read beside it.
  *
  * No Lua, no drawing, no file I/O here. Errors are values: functions return
@@ -78,7 +78,7 @@ typedef struct lm_material {
     lm_density density;    /* gas: how rho_p is found (density.c) */
 } lm_material;
 
-/* Fastest wave speed of the material (physics.md §5), for the Courant check. */
+/* Fastest wave speed of the material (docs/physics.md §5), for the Courant check. */
 double lm_material_wave_speed(const lm_material *mat);
 /* Checks the parameters; 0 if fine, else writes why into err. */
 int lm_material_validate(const lm_material *mat, char *err, size_t errlen);
@@ -87,7 +87,8 @@ int lm_material_validate(const lm_material *mat, char *err, size_t errlen);
 #define LM_MAX_THREADS 256
 
 /* Most particles of a simulation, however they come (seeding, gas
- * splitting): five times the performance benchmark's 10^7 (design.md). */
+ * splitting): fifty times the largest size the engine benchmark runs,
+ * 10^6 (docs/design.md, "Performance targets"). */
 #define LM_MAX_PARTICLES 50000000
 
 /* ---- grid (grid.c) ----------------------------------------------------- */
@@ -157,7 +158,7 @@ typedef struct lm_particles {
     double *r0;
 } lm_particles;
 
-/* How a membrane finds its normals (physics.md §3). */
+/* How a membrane finds its normals (docs/physics.md §3). */
 typedef enum lm_normals {
     LM_NORMALS_CONNECTIVITY = 0, /* neighbours in curve order ([F] §3.2) */
     LM_NORMALS_ISOSURFACE,       /* phi = 1 on centred elements (normals_centred.c) */
@@ -171,7 +172,7 @@ typedef enum lm_normals {
 /* How a membrane's tangential stress reaches the grid. "point" is the
  * papers' quadrature, f_i = -V_p sigma_p . G_ip at each point ([M] eq 9);
  * "segment" integrates the tension along the straight segments between
- * neighbouring points, f_i = -F t [N_i(b) - N_i(a)] (physics.md §5b),
+ * neighbouring points, f_i = -F t [N_i(b) - N_i(a)] (docs/physics.md §5b),
  * which is continuous as points cross cell edges and exactly zero at the
  * interior nodes of a uniformly stretched membrane (membrane_force.c). */
 typedef enum lm_mforce { LM_MFORCE_POINT = 0, LM_MFORCE_SEGMENT = 1 } lm_mforce;
@@ -293,7 +294,7 @@ const char *lm_basis_name(lm_basis b);
 double lm_basis_courant_factor(lm_basis b);
 
 /* Starts a membrane body: its points, added in curve order, keep that
- * order, so connectivity normals (physics.md §3) can use neighbours. */
+ * order, so connectivity normals (docs/physics.md §3) can use neighbours. */
 int lm_sim_add_membrane(lm_sim *sim, int mat, int closed);
 /* Sets a membrane point's reference length ds and initial tangential
  * strain; mass stays as given (the heavy end point has its own). */
@@ -393,7 +394,7 @@ lm_status lm_sim_set_gravity(lm_sim *sim, double gx, double gy);
 lm_status lm_sim_set_pic(lm_sim *sim, double pic);
 lm_status lm_sim_set_courant(lm_sim *sim, double courant);
 
-/* One step of physics.md §1. On failure sim->err says why. */
+/* One step of docs/physics.md §1. On failure sim->err says why. */
 lm_status lm_sim_step(lm_sim *sim);
 
 /* ---- checkpoints (checkpoint.c) ------------------------------------------

@@ -24,7 +24,7 @@
  * (one-cell elements centred near each point; what simulations use).
  *
  * The 7-point case of the hybrid rule: 7 points + 1 random point are 8 rows
- * for 9 quadratic unknowns (physics.md §3). lamina keeps the paper's
+ * for 9 quadratic unknowns (docs/physics.md §3). lamina keeps the paper's
  * threshold and solves that system by the minimum-norm QR solution (the
  * QR solver's complete orthogonal decomposition); with phi2 set, the
  * phi = 2 point makes it square. */

@@ -10,7 +10,7 @@
  *    equations, lm_normals_grid(LM_NB_LINEAR, LM_NS_NORMAL).
  * [T] §7.3 (cubic) is not reproduced: its equations are lost in the text we
  * have. The OCR also lost eqs 7.2-7.12; the forms below are those the
- * surrounding text describes (physics.md §3) with chi_p = 1 for every
+ * surrounding text describes (docs/physics.md §3) with chi_p = 1 for every
  * membrane point. Signs do not matter: every normal is normalised and the
  * orientation is a separate pass. */
 #include <math.h>

@@ -4,7 +4,7 @@
  *
  * Why: the bilinear hat's gradient jumps where a particle crosses a cell
  * edge, so the force a particle sends to a node jumps too (the cell-
- * crossing noise of [T] A.2, physics.md §5b). The quadratic B-spline
+ * crossing noise of [T] A.2, docs/physics.md §5b). The quadratic B-spline
  *     beta(xi) = 3/4 - xi^2             |xi| <= 1/2
  *              = 1/2 (3/2 - |xi|)^2     1/2 <= |xi| <= 3/2
  * (xi = (x - x_i) / h) has a continuous gradient: the force changes

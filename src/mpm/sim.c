@@ -187,7 +187,7 @@ int lm_sim_add_membrane(lm_sim *sim, int mat, int closed)
 }
 
 /* ds is the point's unstrained length. The point's volume is
- * thickness * ds * exp(eps_t) (membrane.c, physics.md §2), kept
+ * thickness * ds * exp(eps_t) (membrane.c, docs/physics.md §2), kept
  * as rho = m / V so that the force loop treats every particle alike; the
  * initial stress follows the law from the initial strain. */
 lm_status lm_sim_set_membrane_point(lm_sim *sim, size_t q, double ds, double et)
@@ -283,7 +283,7 @@ double lm_sim_courant_limit(const lm_sim *sim)
     return sim->def.courant * lm_basis_courant_factor(sim->def.basis) * usl;
 }
 
-/* physics.md §5: dt_c = h / c_max; the number is dt / dt_c. A gas's
+/* docs/physics.md §5: dt_c = h / c_max; the number is dt / dt_c. A gas's
  * speed is its particles' sound speed plus their speed, at this moment.
  * A membrane whose tension acts along its segments is stable only to
  * dt c / h = LM_SEGMENT_COURANT (measured, docs/robustness.md: its strain

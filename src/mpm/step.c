@@ -1,4 +1,4 @@
-/* step.c - one explicit MPM step, physics.md §1, one phase per function.
+/* step.c - one explicit MPM step, docs/physics.md §1, one phase per function.
  *
  * References: [F] = York, Sulsky & Schreyer 2000 (eqs 5-16), [M] = the 1999
  * membrane paper (eqs 10-13), [N] §7 (the USL summary).
@@ -528,7 +528,7 @@ lm_status lm_sim_prepare(lm_sim *sim)
     return st;
 }
 
-/* Step 9 of physics.md §1 for the next step: empty fields on the same
+/* Step 9 of docs/physics.md §1 for the next step: empty fields on the same
  * grid. Only what is summed into needs zeroes; step 4 and 5 overwrite the
  * velocities and accelerations whole. */
 void lm_step_clear(lm_sim *sim)

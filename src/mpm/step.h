@@ -1,4 +1,4 @@
-/* step.h - the phases of one MPM step (physics.md §1), exposed so that the
+/* step.h - the phases of one MPM step (docs/physics.md §1), exposed so that the
  * unit tests can check each one alone. lm_sim_step() calls them in order. */
 #ifndef LAMINA_STEP_H
 #define LAMINA_STEP_H
@@ -98,7 +98,7 @@ void lm_elastic_update(const lm_material *mat, double dexx, double deyy,
 double lm_elastic_energy_density(const lm_material *mat, double sxx,
                                  double syy, double sxy, double szz);
 
-/* membrane.c: [M] §3, [T] §5.1, physics.md §2 "Membrane". */
+/* membrane.c: [M] §3, [T] §5.1, docs/physics.md §2 "Membrane". */
 /* Unit tangents of every membrane point, by the body's normals method:
  * from its curve neighbours (connectivity, [F] §3.2: x_{p+1} - x_{p-1},
  * one-sided at open ends), or the normal of a construction without
@@ -121,7 +121,7 @@ double lm_membrane_energy(const lm_material *mat, double V, double et);
  * current tangents (before the first step, once bodies are complete). */
 lm_status lm_membrane_prepare(lm_sim *sim);
 
-/* membrane_force.c: the tension integrated along segments (physics.md
+/* membrane_force.c: the tension integrated along segments (docs/physics.md
  * §5b) for membranes with force = LM_MFORCE_SEGMENT; the tear check for
  * every membrane. */
 void lm_membrane_segment_prepare(lm_sim *sim);   /* L0 from x and eps_t */

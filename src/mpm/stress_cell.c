@@ -20,7 +20,7 @@
  * uniform stress over cells of equal volume leaves the interior nodes
  * without force (the four cells round a node send equal and opposite
  * shares). Membrane points with segment forces keep their own forces,
- * spread with N_ip as in step.c (physics.md §5b).
+ * spread with N_ip as in step.c (docs/physics.md §5b).
  *
  * One thread: the cell sums are cheap beside the step, and one thread
  * keeps the state the same for every thread count. */

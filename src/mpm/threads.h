@@ -1,7 +1,7 @@
 /* threads.h - the step's loops over particles on sim->def.threads threads
  * (OpenMP when built with it; otherwise everything runs on one).
  *
- * Determinism (design.md): a loop that writes only its own particle is the
+ * Determinism (docs/design.md, "Engine"): a loop that writes only its own particle is the
  * same on any number of threads. A scatter to the grid gives each thread a
  * fixed, contiguous range of particles and its own copy of the nodal
  * fields; the copies are added in thread order. So the state depends on the

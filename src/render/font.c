@@ -1,5 +1,5 @@
-/* font.c - the one face lamina draws text with (design.md: "one bundled
- * font, hinting off, so images match across machines").
+/* font.c - the one face lamina draws text with (docs/design.md, "Rendering":
+ * one bundled face, hinting off, so that images match across machines).
  *
  * The face is assets/fonts/DejaVuSans.ttf, loaded from its file through
  * cairo's FreeType backend rather than looked up by family name, so a

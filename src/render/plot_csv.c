@@ -1,8 +1,8 @@
 /* plot_csv.c - a plot's data as CSV, written atomically.
  *
- * The CSV is the plot's ground truth (design.md, Rendering: "data also
- * written as CSV"): every point, not the decimated polyline that was drawn,
- * with numbers that read back to the same doubles. */
+ * The CSV is the plot's ground truth (docs/design.md, "Rendering": the
+ * data are written as CSV too): every point, not the decimated polyline
+ * that was drawn, with numbers that read back to the same doubles. */
 #include "plot.h"
 
 #include "atomic_file.h"

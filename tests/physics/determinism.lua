@@ -1,5 +1,5 @@
 -- Determinism: the same script and build give a bit-identical particle state
--- (design.md, Engine). Two identical two-disk simulations are stepped side by
+-- (docs/design.md, "Engine"). Two identical two-disk simulations are stepped side by
 -- side and their state hashes compared; a third with one particle velocity
 -- different must hash differently (the hash does see the state).
 local steps = lamina.param("steps", 300)

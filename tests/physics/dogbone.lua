@@ -1,5 +1,5 @@
 -- V7 dog-bone membrane expansion ([F] §4.3, Tables III-IV; [T] §6.2,
--- Table 5; physics.md V7), reduced: cells 0.4 / 0.2 / 0.1 to t = 2.5
+-- Table 5; docs/physics.md V7), reduced: cells 0.4 / 0.2 / 0.1 to t = 2.5
 -- (the gallery adds 0.05 and runs to t = 4). The construction of the shape
 -- (not given numerically in the papers) is in assets/lua/dogbone.lua;
 -- scripts/paper/gas_dogbone.lua says why.

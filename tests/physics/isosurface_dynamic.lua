@@ -1,5 +1,5 @@
 -- Normals without connectivity in a dynamic run (issue 4, item 6; [N] §8,
--- Figs 12-13; physics.md V6): the gas-filled circular membrane of V6 run
+-- Figs 12-13; docs/physics.md V6): the gas-filled circular membrane of V6 run
 -- with connectivity normals, with the isosurface construction lamina uses
 -- in runs (normals = "isosurface": one-cell elements centred near each
 -- point, quadratic, curvature rows, random point clear of the membrane;

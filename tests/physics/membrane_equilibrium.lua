@@ -4,7 +4,7 @@
 -- spacings of 0.25 / 0.4 / 0.5 / 1.0 cell and at 0, 30 and 45 degrees to
 -- the grid, with the tension integrated along the segments
 -- (sim:membrane{force = "segment"}). The exact answer is "nothing moves":
--- any change is discrete non-equilibrium (physics.md §5b). Also: the
+-- any change is discrete non-equilibrium (docs/physics.md §5b). Also: the
 -- reaction at each pin is the tension T t along the membrane, and the same
 -- membrane ending on fixed walls (no pins) holds too.
 -- The papers' point quadrature (force = "point") fails this test at most

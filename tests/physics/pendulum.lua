@@ -1,4 +1,4 @@
--- V3 pendulum ([M] §3.1.2, Figs 8-12; [T] §5.7; physics.md V3), reduced:
+-- V3 pendulum ([M] §3.1.2, Figs 8-12; [T] §5.7; docs/physics.md V3), reduced:
 -- cells 0.2 / 0.1 / 0.05 (the gallery adds 0.025). L = 0.73, end mass 3.3,
 -- g = 20, theta0 = 19.8 deg, E = 1e6, nu = 0, one-way law on.
 -- The papers disagree on rho and thickness (same mass per length, EA 10x

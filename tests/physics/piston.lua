@@ -1,4 +1,4 @@
--- V5 piston-container ([F] §4.2, Figs 7-9, Table I; physics.md V5): a fluid
+-- V5 piston-container ([F] §4.2, Figs 7-9, Table I; docs/physics.md V5): a fluid
 -- column of length L = 20 (p = -beta div U, rho = 1e-4, beta = 1.58e6,
 -- c = sqrt(beta/rho)) closed by a piston of mass m, held by a spring of
 -- constant K = 100; A = 1. The spring is a uniaxial membrane that also

@@ -1,4 +1,4 @@
--- V4 Sod shock tube ([F] §4.1, Fig 6; physics.md V4): 200 x 1 cells of
+-- V4 Sod shock tube ([F] §4.1, Fig 6; docs/physics.md V4): 200 x 1 cells of
 -- 0.005, 3 points per cell in a row (ppc = {3, 1}); left rho = 1, p = 1;
 -- right rho = 0.125, p = 0.1; gamma = 1.4; the paper's artificial viscosity
 -- (g = sqrt(2) dx, lambda = 0.75, c1 = c2 = 1); t = 0.143 (assets/lua/sod.lua).

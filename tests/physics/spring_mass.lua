@@ -1,4 +1,4 @@
--- V1 spring-mass ([M] §3.1.1, Figs 5-6; physics.md V1): a string of 10
+-- V1 spring-mass ([M] §3.1.1, Figs 5-6; docs/physics.md V1): a string of 10
 -- points from y = 1.99 to 1.69 (L = 0.3), A = 0.1, E = 1e6, rho = 0.1,
 -- nu = 0, the last point a heavy mass 3.33 (10 000x the others), g = -250,
 -- cell 0.1, dt_c = h / sqrt(E/rho) = 3.16e-5.

@@ -1,4 +1,4 @@
--- V2 string with slack, one-way law ([M] §3.2, Figs 14-16; physics.md V2):
+-- V2 string with slack, one-way law ([M] §3.2, Figs 14-16; docs/physics.md V2):
 -- V1's string and mass with E = 0 in compression and 0.02 of slack.
 -- [M]: "for t < 0.013 the mass is in free fall ... until about t = 0.023
 -- the string acts as a spring in tension ... at about t = 0.0375 the mass

@@ -6,7 +6,7 @@
 -- basis (partition of unity, sum G = 0), so any stress here would be a
 -- transfer error, not physics. (USL is left out: with the linear basis
 -- this block fails at step 463, a particle inverted, at a Courant number of
--- 0.4 - measured; physics.md §1 calls USL the less stable scheme.) Then the
+-- 0.4 - measured; docs/physics.md §1 calls USL the less stable scheme.) Then the
 -- same block sliding along a symmetry and a free wall.
 local E, rho, nu = 1e5, 1000, 0.3
 local v0 = {2.0, 0.3}

@@ -3,7 +3,7 @@
 -- +-(0.1, 0.1), E = 1000, nu = 0.3, rho = 1000, cell 0.05, ppc 4, MUSL.
 -- Checks:
 --  * linear momentum stays at its initial value (zero) to round-off: the
---    only nodes skipped are zero-mass ones (physics.md §1), so
+--    only nodes skipped are zero-mass ones (docs/physics.md §1), so
 --    sum_i f_i^int = 0 exactly up to rounding;
 --  * the disks bounce: each ends moving away from the other along the
 --    diagonal with most of its speed;

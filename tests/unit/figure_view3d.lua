@@ -1,4 +1,4 @@
--- figure_view3d.lua - lamina.figure's 3D panels (src/render/view3d.h):
+-- figure_view3d.lua - lamina.figure's 3D panels (src/render/include/view3d.h):
 -- drawn through OSMesa when this lamina has it, else EGL, through cairo
 -- when asked (backend = "cairo", or `lamina run --backend cairo`) or when
 -- it has neither; EGL when asked (backend = "egl", or "gl" where it starts);

@@ -1,7 +1,7 @@
 /* test_freefall.c - a block in free fall follows the explicit update's
  * discrete trajectory to round-off: with p_i^L = p_i + dt m_i g and a
  * uniform velocity field, x^n = x^0 + g dt^2 n(n+1)/2 = 1/2 g t^2 + 1/2 g dt t
- * (physics.md §1 steps 3-4), and v^n = g t exactly. No stress arises. */
+ * (docs/physics.md §1 steps 3-4), and v^n = g t exactly. No stress arises. */
 #include <math.h>
 
 #include "check.h"

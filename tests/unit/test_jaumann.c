@@ -1,4 +1,4 @@
-/* test_jaumann.c - the objective stress rate ([F] eq 19, physics.md §1
+/* test_jaumann.c - the objective stress rate ([F] eq 19, docs/physics.md §1
  * step 8): a counter-clockwise rigid spin omega turns diag(s, 0) into
  * sigma_xy = +s omega dt; spinning a stress a quarter turn in many small
  * steps rotates it (diag(s, 0) -> diag(0, s)) and keeps its invariants. */

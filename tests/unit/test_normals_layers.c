@@ -1,5 +1,5 @@
 /* test_normals_layers.c - the drawing layers of the normals figures
- * (src/render/layers.h): marching squares, the 2D and 3D views, and what
+ * (src/render/include/layers.h): marching squares, the 2D and 3D views, and what
  * lands on the canvas (a contour where phi crosses the level, arrows,
  * circles, the cube's hidden edges). */
 #include <math.h>

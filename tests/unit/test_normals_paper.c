@@ -1,5 +1,5 @@
 /* test_normals_paper.c - the normals paper's static cases N1-N5
- * (physics.md §6) on the engine: [N] Tables I-III, Figs 3-5, 7, 9-11.
+ * (docs/physics.md §6) on the engine: [N] Tables I-III, Figs 3-5, 7, 9-11.
  *
  * Where the paper leaves the placement of its points out, the placements
  * are those of scripts/paper/normals_fig*.lua (each says why). Criteria:

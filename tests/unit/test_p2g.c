@@ -1,6 +1,6 @@
 /* test_p2g.c - particle-to-grid transfers conserve mass and momentum, the
  * internal forces sum to zero (sum_i G_ip = 0), and a whole step conserves
- * linear momentum to round-off when no boundary is touched (physics.md §1);
+ * linear momentum to round-off when no boundary is touched (docs/physics.md §1);
  * for every scheme and every basis. */
 #include <math.h>
 

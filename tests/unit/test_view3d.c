@@ -1,4 +1,4 @@
-/* test_view3d.c - 3D views (src/render/view3d.h): the scene drawn through
+/* test_view3d.c - 3D views (src/render/include/view3d.h): the scene drawn through
  * cairo is what the layers draw; through OSMesa it is OpenGL with a depth
  * buffer - a sphere in front hides a line drawn after it, a later layer
  * wins a depth tie, the drawing stays in the view's clip rectangle, the

@@ -1,4 +1,4 @@
-/* figure.h - a frame as a figure (design.md, "Rendering"): a list of
+/* figure.h - a frame as a figure (docs/design.md, "Rendering"): a list of
  * panels, each a world window with a stack of layers - grid, filled
  * contours, particles (by body or by a scalar through a colour map),
  * curves, arrows - optionally mirrored (quarter-symmetric results shown
