@@ -1,9 +1,9 @@
 /* membrane_create.c - a membrane from its definition (lm_membrane_def), all
  * or nothing, with the membrane rules checked here rather than in a
- * binding ([M] §3, physics.md §2; issue 19: the engine is the only writer
+ * binding ([M] §3, docs/physics.md §2; issue 19: the engine is the only writer
  * of its state, as Box2D's b2CreateBody takes a b2BodyDef).
  *
- * The rules: neighbouring points at most a cell apart (physics.md §2: the
+ * The rules: neighbouring points at most a cell apart (docs/physics.md §2: the
  * grid must see the membrane between them, or gas passes through); every
  * point inside the domain; in the axisymmetric form no point on or across
  * the axis but an open membrane's ends (a pole); logarithmic strains within
