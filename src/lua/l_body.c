@@ -180,13 +180,6 @@ int la_sim_body(lua_State *L)
     if (mat->kind == LM_MEMBRANE)
         return luaL_error(L, "%s: a membrane material goes into sim:membrane{...}", fn);
     int midx = lua_gettop(L);
-    /* The cell-based gas densities and splitting count area, not r dA. */
-    if (sim->def.axisym && mat->kind == LM_GAS && mat->density != LM_DENSITY_CONTINUITY)
-        return luaL_error(L, "%s: axisymmetric: a gas's density must come from the continuity "
-                          "equation (density = \"continuity\"); the cell densities are plane", fn);
-    if (sim->def.axisym && mat->kind == LM_GAS && mat->split > 0)
-        return luaL_error(L, "%s: axisymmetric: gas splitting (split = %f) is plane only", fn,
-                          mat->split);
 
     la_getfield(L, 2, "region");
     int ridx = lua_gettop(L);
@@ -224,9 +217,13 @@ int la_sim_body(lua_State *L)
                           npx * npy, m, LA_MAX_TRIALS);
     }
 
+    /* the engine checks what a body of this material may be (the
+     * axisymmetric gas's rules, sim.c) */
+    la_sim_keep(L, 1, midx);   /* first: the engine holds the material from here */
     int mi = lm_sim_add_material(sim, mat);
-    int bi = mi < 0 ? -1 : lm_sim_add_body(sim, mi);
-    if (bi < 0) return luaL_error(L, "%s: out of memory", fn);
+    if (mi < 0) return luaL_error(L, "%s: out of memory", fn);
+    int bi = lm_sim_add_body(sim, mi);
+    if (bi < 0) return luaL_error(L, "%s: %s", fn, sim->err);
 
     /* All or nothing: the seeding calls the script's region and velocity
      * functions, and any of them (or the engine) may fail part-way; the
@@ -247,8 +244,6 @@ int la_sim_body(lua_State *L)
         return luaL_error(L, "%s: the region holds no particles at ppc = %d "
                           "(is it inside the domain, and larger than a cell?)", fn, npx * npy);
     }
-    la_sim_keep(L, 1, midx);
-
     la_getfield(L, 2, "name");
     la_push_body(L, 1, bi, lua_gettop(L));
     return 1;

@@ -181,6 +181,7 @@ int la_sim_membrane(lua_State *L)
         pux[k] = ux;
         puy[k] = uy;
     }
+    la_sim_keep(L, 1, midx);   /* first: the engine holds the material from here */
     int mi = lm_sim_add_material(sim, mat);
     if (mi < 0) return luaL_error(L, "%s: out of memory", fn);
     lm_membrane_def def;
@@ -205,7 +206,6 @@ int la_sim_membrane(lua_State *L)
     }
     int bi = lm_sim_create_membrane(sim, &def);
     if (bi < 0) return luaL_error(L, "%s: %s", fn, sim->err);
-    la_sim_keep(L, 1, midx);
     la_push_body(L, 1, bi, nameidx);
     return 1;
 }

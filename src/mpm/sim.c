@@ -157,13 +157,41 @@ int lm_sim_add_material(lm_sim *sim, lm_material *mat)
     return sim->nmats++;
 }
 
+/* The axisymmetric form counts a gas's mass per radian, r dA: the cell
+ * densities ([T] eqs 4.5-4.6) and splitting count plane area, so they are
+ * refused there (axisym.c). */
+static int body_rules(lm_sim *sim, const lm_material *m)
+{
+    if (!sim->def.axisym || m->kind != LM_GAS) return 0;
+    if (m->density != LM_DENSITY_CONTINUITY) {
+        snprintf(sim->err, sizeof sim->err,
+                 "axisymmetric: a gas's density must come from the continuity equation "
+                 "(density = \"continuity\"); the cell densities are plane");
+        return -1;
+    }
+    if (m->split > 0) {
+        char a[40];
+        snprintf(sim->err, sizeof sim->err, "axisymmetric: gas splitting (split = %s) is plane only",
+                 lm_num_text(a, sizeof a, m->split));
+        return -1;
+    }
+    return 0;
+}
+
 int lm_sim_add_body(lm_sim *sim, int mat)
 {
-    if (mat < 0 || mat >= sim->nmats) return -1;
+    if (mat < 0 || mat >= sim->nmats) {
+        snprintf(sim->err, sizeof sim->err, "material %d was not added", mat + 1);
+        return -1;
+    }
+    if (body_rules(sim, sim->mats[mat])) return -1;
     if (sim->nbodies == sim->capbodies) {
         int cap = sim->capbodies ? 2 * sim->capbodies : 4;
         lm_body *q = realloc(sim->bodies, cap * sizeof *q);
-        if (!q) return -1;
+        if (!q) {
+            snprintf(sim->err, sizeof sim->err, "out of memory");
+            return -1;
+        }
         sim->bodies = q;
         sim->capbodies = cap;
     }
