@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """engine_writes.py - only the engine writes its state (ctest unit.engine_writes).
 
-Issue 19 item 1 and docs/design.md, "Layers": the engine (src/mpm) is the one
+Issue 19 item 1 and docs/design.md, "Engine": the engine (src/mpm) is the one
 writer of a simulation's state. The other layers (src/lua, src/app,
 src/render) read it, and change it only through the engine's functions:
 definitions (lm_membrane_def, lm_sim_def) and setters (lm_sim_set_dt,
