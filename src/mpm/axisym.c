@@ -63,12 +63,6 @@ double lm_axisym_ring_radius(double r, double l)
     return r > 0 ? r : 0.25 * l;
 }
 
-/* Is q a membrane point whose tension acts along segments? */
-static int segment_point(const lm_sim *sim, size_t q)
-{
-    const lm_body *bd = &sim->bodies[sim->p.body[q]];
-    return bd->membrane && bd->force == LM_MFORCE_SEGMENT;
-}
 
 /* ---- membranes: a point is a ring ------------------------------------- */
 
@@ -188,42 +182,46 @@ static void gas(const lm_material *mat, double exx, double eyy, double exy, doub
     *e += work / rho;
 }
 
-void lm_axisym_stress(lm_sim *sim, size_t q, const double L[4], double max_div, double c_max,
-                      double h)
+/* Step 8 in the axisymmetric form: the plane updates with the hoop rate
+ * v_r / r as a third normal strain rate (docs/physics.md, "Axisymmetric
+ * form"); a membrane point's hoop strain follows its radius. */
+void lm_axisym_elastic_update_at(lm_sim *sim, size_t q, const lm_rate *r)
+{
+    lm_particles *p = &sim->p;
+    double deh = r->dt * r->hoop;
+    p->rho[q] /= 1 + r->dexx + r->deyy + deh;
+    elastic(sim->mats[p->mat[q]], r->dexx, r->deyy, r->dexy, deh, r->w, r->dt, &p->sxx[q],
+            &p->syy[q], &p->sxy[q], &p->szz[q]);
+}
+
+void lm_axisym_membrane_update_at(lm_sim *sim, size_t q, const lm_rate *r)
+{
+    lm_particles *p = &sim->p;
+    /* eps_t += t.de.t ([M] §3, docs/physics.md §2), the hoop from r */
+    lm_axisym_membrane_set(sim, q, p->et[q] + p->tx[q] * p->tx[q] * r->dexx +
+                                   2 * p->tx[q] * p->ty[q] * r->dexy +
+                                   p->ty[q] * p->ty[q] * r->deyy);
+}
+
+void lm_axisym_gas_update_at(lm_sim *sim, size_t q, const lm_rate *r)
 {
     lm_particles *p = &sim->p;
     const lm_material *mat = sim->mats[p->mat[q]];
-    double dt = sim->def.dt;
-    double Dh = lm_axisym_hoop_rate(sim, q);
-    double dexx = dt * L[0], deyy = dt * L[3], deh = dt * Dh;
-    double dexy = 0.5 * dt * (L[1] + L[2]);
-    double w = 0.5 * (L[1] - L[2]);
-    switch (mat->kind) {
-    case LM_ELASTIC:
-        p->rho[q] /= 1 + dexx + deyy + deh;
-        elastic(mat, dexx, deyy, dexy, deh, w, dt, &p->sxx[q], &p->syy[q], &p->sxy[q],
-                &p->szz[q]);
-        break;
-    case LM_MEMBRANE:
-        if (segment_point(sim, q)) break;   /* from lengths (membrane_force.c) */
-        /* eps_t += t.de.t ([M] §3, docs/physics.md §2), the hoop from r */
-        lm_axisym_membrane_set(sim, q, p->et[q] + p->tx[q] * p->tx[q] * dexx +
-                                       2 * p->tx[q] * p->ty[q] * dexy +
-                                       p->ty[q] * p->ty[q] * deyy);
-        break;
-    case LM_GAS: {
-        double div = L[0] + L[3] + Dh;
-        p->rho[q] /= 1 + dexx + deyy + deh;   /* continuity only (l_body.c) */
-        p->q[q] = lm_gas_av(mat, p->rho[q], div, max_div, c_max, h);
-        gas(mat, L[0], L[3], 0.5 * (L[1] + L[2]), Dh, dt, p->rho[q], p->q[q], &p->e[q],
-            &p->sxx[q], &p->syy[q], &p->sxy[q], &p->szz[q]);
-        break;
-    }
-    case LM_LINEAR_FLUID:
-        p->rho[q] /= 1 + dexx + deyy + deh;
-        p->ev[q] += dexx + deyy + deh;
-        p->sxx[q] = p->syy[q] = p->szz[q] = mat->beta * p->ev[q];
-        p->sxy[q] = 0;
-        break;
-    }
+    const double *L = r->L;
+    double deh = r->dt * r->hoop;
+    double div = L[0] + L[3] + r->hoop;
+    p->rho[q] /= 1 + r->dexx + r->deyy + deh;   /* continuity only (sim.c) */
+    p->q[q] = lm_gas_av(mat, p->rho[q], div, r->max_div, r->c_max, r->h);
+    gas(mat, L[0], L[3], 0.5 * (L[1] + L[2]), r->hoop, r->dt, p->rho[q], p->q[q], &p->e[q],
+        &p->sxx[q], &p->syy[q], &p->sxy[q], &p->szz[q]);
+}
+
+void lm_axisym_linear_fluid_update_at(lm_sim *sim, size_t q, const lm_rate *r)
+{
+    lm_particles *p = &sim->p;
+    double deh = r->dt * r->hoop;
+    p->rho[q] /= 1 + r->dexx + r->deyy + deh;
+    p->ev[q] += r->dexx + r->deyy + deh;
+    p->sxx[q] = p->syy[q] = p->szz[q] = sim->mats[p->mat[q]]->beta * p->ev[q];
+    p->sxy[q] = 0;
 }

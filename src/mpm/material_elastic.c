@@ -36,6 +36,15 @@ void lm_elastic_update(const lm_material *mat, double dexx, double deyy,
     *szz += czz;
 }
 
+/* Step 8 at particle q: rho / (1 + tr de) ([F] eq 16), then the stress. */
+void lm_elastic_update_at(lm_sim *sim, size_t q, const lm_rate *r)
+{
+    lm_particles *p = &sim->p;
+    p->rho[q] /= 1 + r->dexx + r->deyy;
+    lm_elastic_update(sim->mats[p->mat[q]], r->dexx, r->deyy, r->dexy, r->w, r->dt, &p->sxx[q],
+                      &p->syy[q], &p->sxy[q], &p->szz[q]);
+}
+
 /* 1/2 sigma : C^-1 : sigma from the full 3D compliance; in plane strain the
  * stored sigma_zz makes this equal to the 2D form, in plane stress it is 0. */
 double lm_elastic_energy_density(const lm_material *mat, double sxx,

@@ -43,6 +43,28 @@ void lm_gas_update(const lm_material *mat, double exx, double eyy, double exy,
     *e += work / rho;
 }
 
+/* Step 8 at a gas point: rho / (1 + tr de) unless the density comes from
+ * the cells (density.c), the artificial viscosity from the step's maxima,
+ * then the stress and e. */
+void lm_gas_update_at(lm_sim *sim, size_t q, const lm_rate *r)
+{
+    lm_particles *p = &sim->p;
+    const lm_material *mat = sim->mats[p->mat[q]];
+    const double *L = r->L;
+    if (mat->density == LM_DENSITY_CONTINUITY) p->rho[q] /= 1 + r->dexx + r->deyy;
+    p->q[q] = lm_gas_av(mat, p->rho[q], L[0] + L[3], r->max_div, r->c_max, r->h);
+    lm_gas_update(mat, L[0], L[3], 0.5 * (L[1] + L[2]), r->dt, p->rho[q], p->q[q], &p->e[q],
+                  &p->sxx[q], &p->syy[q], &p->sxy[q], &p->szz[q]);
+}
+
+void lm_linear_fluid_update_at(lm_sim *sim, size_t q, const lm_rate *r)
+{
+    lm_particles *p = &sim->p;
+    p->rho[q] /= 1 + r->dexx + r->deyy;
+    lm_linear_fluid_update(sim->mats[p->mat[q]], r->dexx, r->deyy, &p->ev[q], &p->sxx[q],
+                           &p->syy[q], &p->sxy[q], &p->szz[q]);
+}
+
 void lm_linear_fluid_update(const lm_material *mat, double dexx, double deyy, double *ev,
                             double *sxx, double *syy, double *sxy, double *szz)
 {

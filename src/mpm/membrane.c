@@ -255,6 +255,16 @@ void lm_membrane_update(const lm_material *mat, double dexx, double deyy, double
                            tx, ty, m, ds, et, rho, sxx, syy, sxy, szz);
 }
 
+/* Step 8 at a membrane point whose stress is its own (point quadrature):
+ * eps_t += t.de.t along the tangent at x^{k+1}. */
+void lm_membrane_update_at(lm_sim *sim, size_t q, const lm_rate *r)
+{
+    lm_particles *p = &sim->p;
+    lm_membrane_update(sim->mats[p->mat[q]], r->dexx, r->deyy, r->dexy, p->tx[q], p->ty[q],
+                       p->m[q], p->ds[q], &p->et[q], &p->rho[q], &p->sxx[q], &p->syy[q],
+                       &p->sxy[q], &p->szz[q]);
+}
+
 double lm_membrane_energy(const lm_material *mat, double V, double et)
 {
     return 0.5 * V * lm_membrane_stress(mat, et) * et;

@@ -353,18 +353,17 @@ static inline void velocity_gradient(const lm_grid *g, const lm_particles *p, si
     else velocity_gradient_w(g, p, q, L, 3);
 }
 
-/* The artificial viscosity of [F] eq 24 needs, before any gas point is
- * updated, the largest |div v| and the largest sound speed over the gas of
- * the step. Returns 0 when no gas uses it. */
-static int gas_maxima(lm_sim *sim, double *max_div, double *c_max)
+/* Phase 6c: the artificial viscosity of [F] eq 24 needs, before any gas
+ * point is updated, the largest |div v| and the largest sound speed over
+ * the gas of the step (0 when no gas uses it). */
+void lm_step_gas_maxima(lm_sim *sim, double *max_div, double *c_max)
 {
     const lm_particles *p = &sim->p;
-    int any = 0;
     double md = 0, cm = 0;
     long n = (long)p->n;
     /* maxima do not depend on the order they are taken in */
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) \
-    reduction(max : md, cm) reduction(| : any)
+    reduction(max : md, cm)
     for (long q = 0; q < n; q++) {
         const lm_material *mat = sim->mats[p->mat[q]];
         if (mat->kind != LM_GAS || !mat->av) continue;
@@ -376,70 +375,66 @@ static int gas_maxima(lm_sim *sim, double *max_div, double *c_max)
         double c = lm_gas_sound_speed(mat, p->e[q]);
         if (div > md) md = div;
         if (c > cm) cm = c;
-        any = 1;
     }
     *max_div = md;
     *c_max = cm;
-    return any;
 }
 
-/* Steps 6-8: L = sum_i v_i (x) G_ip; strain increment (dt/2)(L + L^T) and
- * spin (1/2)(L - L^T); density rho/(1 + tr de) ([F] eq 16), or for a gas
- * that asks, from the cells ([T] eqs 4.5-4.6, density.c); stress by the
- * particle's constitutive law. */
-lm_status lm_step_stress(lm_sim *sim)
+/* Step 7 at particle q: L = sum_i v_i (x) G_ip, the strain increment
+ * (dt/2)(L + L^T) and the spin (1/2)(L - L^T). */
+static void rate_at(const lm_sim *sim, size_t q, lm_rate *r)
+{
+    velocity_gradient(&sim->grid, &sim->p, q, r->L);
+    if (sim->contact) lm_contact_gradient(sim, q, r->L);   /* contact.h */
+    const double *L = r->L, dt = sim->def.dt;
+    r->dexx = dt * L[0];
+    r->deyy = dt * L[3];
+    r->dexy = 0.5 * dt * (L[1] + L[2]);
+    r->w = 0.5 * (L[1] - L[2]);
+    r->hoop = sim->def.axisym ? lm_axisym_hoop_rate(sim, q) : 0;
+}
+
+/* Step 8 by the particle's material and the form: one signature
+ * (lm_update_fn, step.h). */
+static inline void update_at(lm_sim *sim, size_t q, const lm_rate *r)
+{
+    int axi = sim->def.axisym;
+    switch (sim->mats[sim->p.mat[q]]->kind) {
+    case LM_ELASTIC:
+        (axi ? lm_axisym_elastic_update_at : lm_elastic_update_at)(sim, q, r);
+        break;
+    case LM_MEMBRANE:
+        (axi ? lm_axisym_membrane_update_at : lm_membrane_update_at)(sim, q, r);
+        break;
+    case LM_GAS:
+        (axi ? lm_axisym_gas_update_at : lm_gas_update_at)(sim, q, r);
+        break;
+    case LM_LINEAR_FLUID:
+        (axi ? lm_axisym_linear_fluid_update_at : lm_linear_fluid_update_at)(sim, q, r);
+        break;
+    }
+}
+
+/* Steps 7-8 ([F] eqs 14-23): each particle's rate from the grid velocity
+ * and its material's update; density rho / (1 + tr de) ([F] eq 16) or, for
+ * a gas that asks, from the cells (phase 6b). A membrane with segment
+ * forces takes its strain from its lengths after this (membrane_force.c). */
+void lm_step_stress(lm_sim *sim, double max_div, double c_max)
 {
     const lm_grid *g = &sim->grid;
-    lm_particles *p = &sim->p;
-    double dt = sim->def.dt;
     double h = fmin(g->hx, g->hy);
-    lm_status st = lm_membrane_tangents(sim);   /* the current tangent, at x^{k+1} */
-    if (st != LM_OK) return st;
-    st = lm_gas_cell_density(sim);   /* at x^{k+1}, for the gases that ask */
-    if (st != LM_OK) return st;
-    double max_div = 0, c_max = 0;
-    gas_maxima(sim, &max_div, &c_max);
-    long n = (long)p->n;
+    long n = (long)sim->p.n;
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static)
     for (long q = 0; q < n; q++) {
-        double L[4];
-        velocity_gradient(g, p, (size_t)q, L);
-        if (sim->contact) lm_contact_gradient(sim, (size_t)q, L);   /* contact.h */
-        if (sim->def.axisym) {   /* the hoop terms (axisym.c) */
-            lm_axisym_stress(sim, (size_t)q, L, max_div, c_max, h);
-            continue;
-        }
-        double dexx = dt * L[0], deyy = dt * L[3];
-        double dexy = 0.5 * dt * (L[1] + L[2]);
-        double w = 0.5 * (L[1] - L[2]);
-        const lm_material *mat = sim->mats[p->mat[q]];
-        switch (mat->kind) {
-        case LM_ELASTIC:
-            p->rho[q] /= 1 + dexx + deyy;
-            lm_elastic_update(mat, dexx, deyy, dexy, w, dt, &p->sxx[q],
-                              &p->syy[q], &p->sxy[q], &p->szz[q]);
-            break;
-        case LM_MEMBRANE:
-            if (segment_point(sim, (size_t)q)) break;   /* from lengths, below */
-            lm_membrane_update(mat, dexx, deyy, dexy, p->tx[q], p->ty[q], p->m[q],
-                               p->ds[q], &p->et[q], &p->rho[q], &p->sxx[q],
-                               &p->syy[q], &p->sxy[q], &p->szz[q]);
-            break;
-        case LM_GAS:
-            if (mat->density == LM_DENSITY_CONTINUITY) p->rho[q] /= 1 + dexx + deyy;
-            p->q[q] = lm_gas_av(mat, p->rho[q], L[0] + L[3], max_div, c_max, h);
-            lm_gas_update(mat, L[0], L[3], 0.5 * (L[1] + L[2]), dt, p->rho[q], p->q[q],
-                          &p->e[q], &p->sxx[q], &p->syy[q], &p->sxy[q], &p->szz[q]);
-            break;
-        case LM_LINEAR_FLUID:
-            p->rho[q] /= 1 + dexx + deyy;
-            lm_linear_fluid_update(mat, dexx, deyy, &p->ev[q], &p->sxx[q], &p->syy[q],
-                                   &p->sxy[q], &p->szz[q]);
-            break;
-        }
+        if (segment_point(sim, (size_t)q)) continue;   /* from lengths */
+        lm_rate r;
+        rate_at(sim, (size_t)q, &r);
+        r.dt = sim->def.dt;
+        r.max_div = max_div;
+        r.c_max = c_max;
+        r.h = h;
+        update_at(sim, (size_t)q, &r);
     }
-    lm_membrane_segment_strains(sim);
-    return LM_OK;
 }
 
 /* Names the particle by its index within its body and the body by its
@@ -540,40 +535,57 @@ void lm_step_clear(lm_sim *sim)
         g->m[i] = g->px[i] = g->py[i] = g->fx[i] = g->fy[i] = 0;
 }
 
+/* The clock, from the step count so that long runs do not accumulate dt's
+ * rounding error; advanced in one place, once per step, whatever the step
+ * found (the positions are at t^{k+1} from step 4 on). */
+static void advance_clock(lm_sim *sim)
+{
+    sim->step++;
+    sim->t = sim->t_base + (double)(sim->step - sim->step_base) * sim->def.dt;
+}
+
+/* Phases 6-8 at x^{k+1}: what the stresses need, then the stresses. */
+static lm_status stress_phases(lm_sim *sim)
+{
+    lm_status st = lm_membrane_tangents(sim);   /* 6a: tangents, normals */
+    if (st != LM_OK) return st;
+    st = lm_gas_cell_density(sim);              /* 6b: for the gases that ask */
+    if (st != LM_OK) return st;
+    double max_div, c_max;
+    lm_step_gas_maxima(sim, &max_div, &c_max);  /* 6c: [F] eq 24's maxima */
+    lm_step_stress(sim, max_div, c_max);        /* 7-8 */
+    lm_membrane_segment_strains(sim);           /* 8 for segment membranes */
+    return LM_OK;
+}
+
+/* One step: the phases of docs/physics.md §1 in order. */
 lm_status lm_sim_step(lm_sim *sim)
 {
-    if (sim->p.n == 0) {
-        sim->step++;
-        sim->t = sim->t_base + (double)(sim->step - sim->step_base) * sim->def.dt;
+    if (sim->p.n == 0) {   /* nothing to move: the clock only */
+        advance_clock(sim);
         return LM_OK;
     }
-    if (!sim->prepared) {
-        lm_status st = lm_sim_prepare(sim);
-        if (st != LM_OK) return st;
-    }
-    lm_status st = lm_threads_reserve(sim);
+    lm_status st = sim->prepared ? LM_OK : lm_sim_prepare(sim);
+    if (st == LM_OK) st = lm_threads_reserve(sim);
     if (st != LM_OK) return st;
-    lm_step_clear(sim);
-    lm_step_shape(sim);
-    lm_step_p2g(sim);
-    lm_step_forces(sim);
-    if (sim->contact) {   /* the paired bodies' own fields (contact.h) */
+    lm_step_clear(sim);                         /* 0: the grid's sums */
+    lm_step_shape(sim);                         /* 0: N_ip, G_ip at x^k */
+    lm_step_p2g(sim);                           /* 1: m_i, p_i */
+    lm_step_forces(sim);                        /* 2: f_i */
+    if (sim->contact) {                         /* the paired bodies' own fields */
         st = lm_contact_sums(sim);
         if (st != LM_OK) return st;
     }
-    lm_step_grid_update(sim);
+    lm_step_grid_update(sim);                   /* 3: p_i^L, boundary conditions */
     if (sim->contact) lm_contact_correct(sim);
-    lm_step_g2p(sim);
+    lm_step_g2p(sim);                           /* 4: v_p, x_p */
     if (sim->contact) lm_contact_g2p(sim);
-    lm_step_strain_velocity(sim);
+    lm_step_strain_velocity(sim);               /* 5: v_i for the strain */
     if (sim->contact) lm_contact_strain_velocity(sim);
-    st = lm_step_stress(sim);
-    sim->step++;
+    st = stress_phases(sim);                    /* 6-8 */
+    advance_clock(sim);
     if (st != LM_OK) return st;
-    /* t from the step count, so that long runs do not accumulate dt's
-     * rounding error. */
-    sim->t = sim->t_base + (double)(sim->step - sim->step_base) * sim->def.dt;
-    st = lm_step_check(sim);
+    st = lm_step_check(sim);                    /* blow-up, tears */
     if (st != LM_OK) return st;
-    return lm_step_split(sim);
+    return lm_step_split(sim);                  /* gas splitting, if asked */
 }

@@ -67,8 +67,10 @@ void lm_step_forces(lm_sim *sim);           /* 2. f_i^int + f_i^ext */
 void lm_step_grid_update(lm_sim *sim);      /* 3. p_i^L, boundary conditions */
 void lm_step_g2p(lm_sim *sim);              /* 4. v_p, x_p */
 void lm_step_strain_velocity(lm_sim *sim);  /* 5. MUSL re-map or USL */
-lm_status lm_step_stress(lm_sim *sim);      /* 6-8. strain, density, stress */
-lm_status lm_gas_cell_density(lm_sim *sim); /* [T] eqs 4.5-4.6 (density.c) */
+/* 6a. membrane tangents and normals at x^{k+1}: lm_membrane_tangents */
+lm_status lm_gas_cell_density(lm_sim *sim); /* 6b. [T] eqs 4.5-4.6 (density.c) */
+void lm_step_gas_maxima(lm_sim *sim, double *max_div, double *c_max); /* 6c. [F] eq 24 */
+void lm_step_stress(lm_sim *sim, double max_div, double c_max);     /* 7-8. rate, update */
 lm_status lm_step_check(lm_sim *sim);       /* NaN, inversion, domain */
 lm_status lm_step_split(lm_sim *sim);       /* thinned gas points into four */
 
@@ -89,6 +91,33 @@ void lm_grid_fold(const lm_grid *g, int nf, double *const *f, const lm_comp *com
 /* Before a gather: sets each ghost node of a fixed or symmetry side to the
  * image of its mirror node. */
 void lm_grid_fill(const lm_grid *g, int nf, double *const *f, const lm_comp *comp);
+
+/* What a material's update reads at a particle (steps 6-7): the velocity
+ * gradient L = sum_i v_i (x) G_ip ({xx, xy, yx, yy}), the strain increment
+ * de = (dt/2)(L + L^T) and spin w = (L_xy - L_yx)/2, the hoop rate v_r / r
+ * (axisymmetric form; 0 in the plane), dt, and the step's artificial-
+ * viscosity maxima over the gas ([F] eq 24; lm_step_gas_maxima) with the
+ * cell size they scale by. */
+typedef struct lm_rate {
+    double L[4];
+    double dexx, deyy, dexy, w;
+    double hoop;
+    double dt;
+    double max_div, c_max, h;
+} lm_rate;
+
+/* Every material's update of particle q from its rate (step 8) has this
+ * signature; lm_step_stress picks it by the material's kind and the form
+ * (plane, or axisymmetric: axisym.c). */
+typedef void lm_update_fn(lm_sim *sim, size_t q, const lm_rate *r);
+lm_update_fn lm_elastic_update_at;        /* material_elastic.c */
+lm_update_fn lm_membrane_update_at;       /* membrane.c */
+lm_update_fn lm_gas_update_at;            /* material_gas.c */
+lm_update_fn lm_linear_fluid_update_at;   /* material_gas.c */
+lm_update_fn lm_axisym_elastic_update_at; /* axisym.c: the same with the hoop terms */
+lm_update_fn lm_axisym_membrane_update_at;
+lm_update_fn lm_axisym_gas_update_at;
+lm_update_fn lm_axisym_linear_fluid_update_at;
 
 /* Objective stress update of an elastic solid, [F] eq 19 (Jaumann rate). */
 void lm_elastic_update(const lm_material *mat, double dexx, double deyy,
@@ -163,9 +192,6 @@ void lm_linear_fluid_update(const lm_material *mat, double dexx, double deyy, do
 double lm_axisym_hoop_rate(const lm_sim *sim, size_t q);
 /* Step 2's hoop term f_ri -= V_p sigma_thth N_ip / r_p, added to g->fx. */
 void lm_axisym_forces(lm_sim *sim);
-/* Steps 6-8 for particle q, L its in-plane velocity gradient. */
-void lm_axisym_stress(lm_sim *sim, size_t q, const double L[4], double max_div, double c_max,
-                      double h);
 /* A membrane point's hoop strain ln(r / r0) (eps_t on the axis). */
 double lm_axisym_membrane_hoop(const lm_particles *p, size_t q);
 /* Sets eps_t of membrane point q, its stresses and volume (per radian). */
