@@ -1,7 +1,9 @@
 -- title: Airbag struck by a probe, axisymmetric (WORK IN PROGRESS: coarse mesh, no pre-run yet)
 -- source: York, Sulsky & Schreyer 2000 §4.4, Figs 14-18, Tables V-VI; dissertation §6.3 and
 --   its input deck, Box 10 (A.4.8)
--- look: a cross-section mirrored about the axis (dashed): the bag (membrane
+-- look: a cross-section mirrored about the axis (dashed), and at 40 ms the
+--   same revolved in 3D (bag3d_t0.040.png: the bag's far half as meridians
+--   and rings, the gas and probe in the cut plane): the bag (membrane
 --   points) sits on the support, the cylindrical probe above it moves down at
 --   3.9 m/s, depresses the top of the bag, which bulges out at the sides; the
 --   probe slows, stops and rebounds. The gas should stay inside the bag:
@@ -37,6 +39,7 @@
 -- visual: t_end=0.004
 -- thumb: shape_t0.040.png
 local out = lamina.param("out", "out/airbag_impact")
+local revolve = require("revolve")
 local t_end = lamina.param("t_end", 0.1)
 local basis = lamina.param("basis", "bspline2")
 
@@ -98,6 +101,11 @@ for _, tf in ipairs{0, 0.02, 0.04, 0.06, 0.1} do
     s:frame{ file = string.format("%s/shape_t%.3f.png", out, tf), width = 640, height = 520,
              mirror = "x", window = {-0.4, -0.01, 0.4, 0.5}, scalebar = true, units = "m",
              title = string.format("t = %.0f ms (gas, bag, probe)", 1e3 * tf) }
+    if tf == 0.04 then   -- the same moment revolved about the axis (assets/lua/revolve.lua)
+      revolve.frame(s, { file = out .. "/bag3d_t0.040.png", bodies = {gas, bag, probe},
+                         width = 640, height = 560, meridians = 32,
+                         title = "t = 40 ms revolved: the bag's far half, the cut plane's gas and probe" })
+    end
   end)
 end
 sim:run{ t_end = t_end }
