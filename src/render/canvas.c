@@ -12,12 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
-
-static void set_err(char *err, size_t errlen, const char *msg)
-{
-    if (err && errlen > 0)
-        snprintf(err, errlen, "%s", msg);
-}
+#include "util.h"
 
 /* ---- backends ---------------------------------------------------------- */
 
@@ -67,7 +62,7 @@ int lr_backend_check(lr_backend b, char *err, size_t errlen)
 #ifdef LAMINA_HAVE_OSMESA
         return 0;
 #else
-        set_err(err, errlen, "this lamina was built without OSMesa (install "
+        lu_err(err, errlen, "this lamina was built without OSMesa (install "
                 "libosmesa6-dev and rebuild, or use the egl or cairo backend)");
         return -1;
 #endif
@@ -75,13 +70,13 @@ int lr_backend_check(lr_backend b, char *err, size_t errlen)
 #ifdef LAMINA_HAVE_EGL
         return lr_canvas_egl_probe(err, errlen);
 #else
-        set_err(err, errlen, "this lamina was built without EGL (install "
+        lu_err(err, errlen, "this lamina was built without EGL (install "
                 "libegl-dev, libegl-mesa0 and libgl-dev and rebuild, or use the "
                 "osmesa or cairo backend)");
         return -1;
 #endif
     }
-    set_err(err, errlen, "unknown backend");
+    lu_err(err, errlen, "unknown backend");
     return -1;
 }
 
@@ -236,7 +231,7 @@ unsigned char *lr_canvas_read_rgba(lr_canvas *c)
 int lr_canvas_finish(lr_canvas *c, char *err, size_t errlen)
 {
     if (!c || !c->ops->finish) {
-        set_err(err, errlen, "cannot finish: not a vector canvas");
+        lu_err(err, errlen, "cannot finish: not a vector canvas");
         return -1;
     }
     return c->ops->finish(c, err, errlen);

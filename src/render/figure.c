@@ -13,6 +13,7 @@
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include "util.h"
 
 const lr_rgba LR_FIG_BACKGROUND = { 1.0, 1.0, 1.0, 1.0 };
 const lr_rgba LR_FIG_GRID = { 0.85, 0.85, 0.85, 1.0 };
@@ -21,16 +22,6 @@ const lr_rgba LR_FIG_TEXT = { 0.2, 0.2, 0.2, 1.0 };
 
 #define MARGIN 0.04         /* of the image's smaller side */
 #define TEXT_BAND 1.5       /* height of a text line, in font sizes */
-
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-{
-    if (!err || errlen == 0)
-        return;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-}
 
 static int has_text(const char *s) { return s && *s; }
 
@@ -393,21 +384,21 @@ int lr_figure_draw(const lr_figure *f, lr_canvas *c, char *err, size_t errlen)
 {
     const char *problem = f ? figure_problem(f) : "no figure";
     if (problem) {
-        set_err(err, errlen, "%s", problem);
+        lu_err(err, errlen, "%s", problem);
         return -1;
     }
     if (!c || lr_canvas_width(c) != f->width || lr_canvas_height(c) != f->height) {
-        set_err(err, errlen, "the canvas is not the figure's size");
+        lu_err(err, errlen, "the canvas is not the figure's size");
         return -1;
     }
     layout L;
     L.box = calloc(f->npanels, sizeof *L.box);
     if (!L.box) {
-        set_err(err, errlen, "out of memory");
+        lu_err(err, errlen, "out of memory");
         return -1;
     }
     if (fit(f, &L) != 0) {
-        set_err(err, errlen, "image %dx%d is too small for the frame", f->width,
+        lu_err(err, errlen, "image %dx%d is too small for the frame", f->width,
                 f->height);
         free(L.box);
         return -1;
@@ -425,7 +416,7 @@ int lr_figure_draw(const lr_figure *f, lr_canvas *c, char *err, size_t errlen)
                        LR_ALIGN_CENTER, f->title);
     free(L.box);
     if (rc != 0)
-        set_err(err, errlen, "drawing failed (out of memory)");
+        lu_err(err, errlen, "drawing failed (out of memory)");
     return rc;
 }
 
@@ -435,20 +426,20 @@ unsigned char *lr_figure_render(const lr_figure *f, char *err, size_t errlen)
 {
     const char *problem = f ? figure_problem(f) : "no figure";
     if (problem) {
-        set_err(err, errlen, "%s", problem);
+        lu_err(err, errlen, "%s", problem);
         return NULL;
     }
     char why[256] = "";
     lr_canvas *c = lr_canvas_new(f->backend, f->width, f->height, why, sizeof why);
     if (!c) {
-        set_err(err, errlen, "%s", why);
+        lu_err(err, errlen, "%s", why);
         return NULL;
     }
     unsigned char *rgba = NULL;
     if (lr_figure_draw(f, c, err, errlen) == 0) {
         rgba = lr_canvas_read_rgba(c);
         if (!rgba)
-            set_err(err, errlen, "drawing failed (out of memory)");
+            lu_err(err, errlen, "drawing failed (out of memory)");
     }
     lr_canvas_free(c);
     return rgba;
@@ -458,7 +449,7 @@ static int write_vector(const lr_figure *f, const char *path, lr_format fmt,
                         char *err, size_t errlen)
 {
     if (f->backend != LR_BACKEND_CAIRO) {
-        set_err(err, errlen, "cannot write '%s': %s output is drawn by cairo, "
+        lu_err(err, errlen, "cannot write '%s': %s output is drawn by cairo, "
                 "not by the %s backend (use backend = \"cairo\" or a .png name)",
                 path, fmt == LR_FORMAT_SVG ? "SVG" : "PDF", lr_backend_name(f->backend));
         return -1;
@@ -466,7 +457,7 @@ static int write_vector(const lr_figure *f, const char *path, lr_format fmt,
     char why[512] = "";
     const char *problem = figure_problem(f);
     if (problem) {
-        set_err(err, errlen, "cannot write '%s': %s", path, problem);
+        lu_err(err, errlen, "cannot write '%s': %s", path, problem);
         return -1;
     }
     lr_canvas *c = lr_canvas_vector_new(path, fmt, f->width, f->height, f->text,
@@ -475,7 +466,7 @@ static int write_vector(const lr_figure *f, const char *path, lr_format fmt,
         return -1;
     if (lr_figure_draw(f, c, why, sizeof why) != 0) {
         lr_canvas_free(c);      /* removes the temporary */
-        set_err(err, errlen, "cannot write '%s': %s", path, why);
+        lu_err(err, errlen, "cannot write '%s': %s", path, why);
         return -1;
     }
     int rc = lr_canvas_finish(c, err, errlen);
@@ -486,7 +477,7 @@ static int write_vector(const lr_figure *f, const char *path, lr_format fmt,
 int lr_figure_write(const lr_figure *f, const char *path, char *err, size_t errlen)
 {
     if (!f || !path || !*path) {
-        set_err(err, errlen, "cannot write frame: %s", f ? "empty path" : "no frame");
+        lu_err(err, errlen, "cannot write frame: %s", f ? "empty path" : "no frame");
         return -1;
     }
     lr_format fmt = lr_format_of(path);
@@ -495,7 +486,7 @@ int lr_figure_write(const lr_figure *f, const char *path, char *err, size_t errl
     char why[512] = "";
     unsigned char *rgba = lr_figure_render(f, why, sizeof why);
     if (!rgba) {
-        set_err(err, errlen, "cannot write '%s': %s", path, why);
+        lu_err(err, errlen, "cannot write '%s': %s", path, why);
         return -1;
     }
     int rc = lr_png_write(path, f->width, f->height, rgba, f->text, f->ntext,

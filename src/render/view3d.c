@@ -9,12 +9,7 @@
 #include <string.h>
 
 #include "view3d_internal.h"
-
-static void set_err(char *err, size_t errlen, const char *msg)
-{
-    if (err && errlen > 0)
-        snprintf(err, errlen, "%s", msg);
-}
+#include "util.h"
 
 lr_scene3d *lr_scene3d_new(void)
 {
@@ -315,11 +310,11 @@ int lr_scene3d_draw(lr_canvas *c, const lr_view *v, const lr_scene3d *s, char *e
                     size_t errlen)
 {
     if (!c || !v || !s) {
-        set_err(err, errlen, "3D view: no canvas, view or scene");
+        lu_err(err, errlen, "3D view: no canvas, view or scene");
         return -1;
     }
     if (!v->is3d) {
-        set_err(err, errlen, "3D view: the view is not a 3D one (lr_view_3d)");
+        lu_err(err, errlen, "3D view: the view is not a 3D one (lr_view_3d)");
         return -1;
     }
     lr_backend b = lr_canvas_backend(c);
@@ -335,7 +330,7 @@ int lr_scene3d_draw(lr_canvas *c, const lr_view *v, const lr_scene3d *s, char *e
             draw_text(c, v, &s->items[i]);
     return 0;
 #else
-    set_err(err, errlen, "3D view: this lamina was built without OpenGL (OSMesa or EGL)");
+    lu_err(err, errlen, "3D view: this lamina was built without OpenGL (OSMesa or EGL)");
     return -1;
 #endif
 }
