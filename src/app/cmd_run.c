@@ -10,21 +10,21 @@
 #include "lamina_lua.h"
 #include "mpm.h"
 #include "render.h"
+#include "util.h"
 
 /* FNV-1a of the script's bytes: the provenance stamped into every PNG. */
 static int hash_file(const char *path, char out[17])
 {
     FILE *f = fopen(path, "rb");
     if (!f) return -1;
-    uint64_t h = 14695981039346656037ull;
-    int c;
-    while ((c = getc(f)) != EOF) {
-        h ^= (unsigned char)c;
-        h *= 1099511628211ull;
-    }
+    uint64_t h = LU_FNV_SEED;
+    unsigned char buf[65536];
+    size_t n;
+    while ((n = fread(buf, 1, sizeof buf, f)) > 0)
+        h = lu_fnv1a(h, buf, n);
     int bad = ferror(f);
     fclose(f);
-    snprintf(out, 17, "%016llx", (unsigned long long)h);
+    lu_hash_hex(h, out);
     return bad ? -1 : 0;
 }
 

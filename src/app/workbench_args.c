@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "workbench.h"
+#include "util.h"
 
 int wb_option(const char *cmd, int argc, char **argv, int *i, const char *name,
               const char **val)
@@ -120,12 +121,11 @@ void wb_file_sig_read(const char *path, wb_file_sig *sig)
         fclose(f);
         return;
     }
-    uint64_t h = 14695981039346656037ull;
-    int c;
-    while ((c = getc(f)) != EOF) {
-        h ^= (unsigned char)c;
-        h *= 1099511628211ull;
-    }
+    uint64_t h = LU_FNV_SEED;
+    unsigned char buf[65536];
+    size_t n;
+    while ((n = fread(buf, 1, sizeof buf, f)) > 0)
+        h = lu_fnv1a(h, buf, n);
     sig->ok = !ferror(f);
     fclose(f);
     sig->size = (long long)st.st_size;

@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "step.h"
+#include "util.h"
 
 /* physics.md §1: kinetic sum 1/2 m v^2; strain sum V 1/2 sigma:C^-1:sigma
  * (from the stress, so it stays objective); potential -sum m g.x with the
@@ -157,25 +158,15 @@ void lm_sim_momentum(const lm_sim *sim, double *px, double *py)
     *py = sy;
 }
 
-static uint64_t fnv1a(uint64_t h, const void *data, size_t n)
-{
-    const unsigned char *c = data;
-    for (size_t k = 0; k < n; k++) {
-        h ^= c[k];
-        h *= 1099511628211ull;
-    }
-    return h;
-}
-
 uint64_t lm_sim_hash(const lm_sim *sim)
 {
     const lm_particles *p = &sim->p;
-    uint64_t h = 14695981039346656037ull;
+    uint64_t h = LU_FNV_SEED;
     const double *f[] = {p->x, p->y, p->vx, p->vy, p->rho,
                          p->sxx, p->syy, p->sxy, p->szz, p->et, p->e, p->ev};
     for (size_t k = 0; k < sizeof f / sizeof f[0]; k++)
-        if (p->n) h = fnv1a(h, f[k], p->n * sizeof(double));
-    h = fnv1a(h, &sim->step, sizeof sim->step);
+        if (p->n) h = lu_fnv1a(h, f[k], p->n * sizeof(double));
+    h = lu_fnv1a(h, &sim->step, sizeof sim->step);
     return h;
 }
 

@@ -1,5 +1,5 @@
 /* fuzz_json.c - libFuzzer target: lamina's two JSON readers on arbitrary
- * bytes: the gallery's (gj_parse: report.json, meta.json) and the sweep's
+ * bytes: the gallery's (lu_json_parse: report.json, meta.json) and the sweep's
  * (sw_report_read: the values of report.json). */
 #include <stdint.h>
 #include <stdlib.h>
@@ -16,11 +16,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     memcpy(text, data, size);
     text[size] = '\0';
     char err[256];
-    gj *v = gj_parse(text, err, sizeof err);
+    lu_json *v = lu_json_parse(text, err, sizeof err);
     if (v) {
-        const gj *vals = gj_get(v, "values");
+        const lu_json *vals = lu_json_get(v, "values");
         (void)vals;
-        gj_free(v);
+        lu_json_free(v);
     }
     free(text);
 
