@@ -51,12 +51,21 @@ static int reserve(lr_scene3d *s, size_t more)
     return 0;
 }
 
-static s3_item *push(lr_scene3d *s, s3_kind kind)
+/* An item of this layer (room reserved): its kind, points a and b (NULL:
+ * none), line width and colour; the other fields zero. */
+static s3_item *push(lr_scene3d *s, s3_kind kind, const double a[3], const double b[3],
+                     double width, lr_rgba colour)
 {
     s3_item *it = &s->items[s->n++];
     memset(it, 0, sizeof *it);
     it->kind = kind;
     it->layer = s->layers;
+    if (a)
+        memcpy(it->a, a, sizeof it->a);
+    if (b)
+        memcpy(it->b, b, sizeof it->b);
+    it->width = width;
+    it->colour = colour;
     return it;
 }
 
@@ -81,11 +90,7 @@ static int points(lr_scene3d *s, s3_kind kind, size_t n, const double *const p[3
         at(p, i, q);
         if (!finite3(q))
             continue;
-        s3_item *it = push(s, kind);
-        memcpy(it->a, q, sizeof q);
-        it->size = radius_px;
-        it->width = width;
-        it->colour = colour;
+        push(s, kind, q, NULL, width, colour)->size = radius_px;
     }
     s->layers++;
     return 0;
@@ -108,13 +113,8 @@ int lr_scene3d_asterisk(lr_scene3d *s, const double p[3], double size_px,
 {
     if (!s || reserve(s, 1) != 0)
         return -1;
-    if (finite3(p)) {
-        s3_item *it = push(s, S3_ASTERISK);
-        memcpy(it->a, p, sizeof it->a);
-        it->size = size_px;
-        it->width = width;
-        it->colour = colour;
-    }
+    if (finite3(p))
+        push(s, S3_ASTERISK, p, NULL, width, colour)->size = size_px;
     s->layers++;
     return 0;
 }
@@ -132,14 +132,10 @@ int lr_scene3d_arrows(lr_scene3d *s, size_t n, const double *const p[3],
         if (!finite3(a) || !finite3(u) || (u[0] == 0 && u[1] == 0 && u[2] == 0) ||
             !isfinite(length))
             continue;
-        s3_item *it = push(s, S3_ARROW);
-        memcpy(it->a, a, sizeof a);
-        memcpy(it->b, u, sizeof u);
+        s3_item *it = push(s, S3_ARROW, a, u, width, colour);
         it->length = length;
-        it->width = width;
         it->head = head_px;
         it->dash = dash;
-        it->colour = colour;
     }
     s->layers++;
     return 0;
@@ -180,12 +176,10 @@ int lr_scene3d_polyline(lr_scene3d *s, size_t n, const double *const p[3],
         if (s->npts - start >= 2) {
             if (reserve(s, 1) != 0)
                 return -1;
-            s3_item *it = push(s, S3_POLYLINE);
+            s3_item *it = push(s, S3_POLYLINE, NULL, NULL, width, colour);
             it->first = start;
             it->count = s->npts - start;
-            it->width = width;
             it->dash = dash;
-            it->colour = colour;
         }
         start = s->npts;
     }
@@ -198,14 +192,8 @@ int lr_scene3d_line(lr_scene3d *s, const double a[3], const double b[3],
 {
     if (!s || reserve(s, 1) != 0)
         return -1;
-    if (finite3(a) && finite3(b)) {
-        s3_item *it = push(s, S3_LINE);
-        memcpy(it->a, a, sizeof it->a);
-        memcpy(it->b, b, sizeof it->b);
-        it->width = width;
-        it->dash = dash;
-        it->colour = colour;
-    }
+    if (finite3(a) && finite3(b))
+        push(s, S3_LINE, a, b, width, colour)->dash = dash;
     s->layers++;
     return 0;
 }
@@ -215,13 +203,8 @@ int lr_scene3d_box(lr_scene3d *s, const double lo[3], const double hi[3],
 {
     if (!s || reserve(s, 1) != 0)
         return -1;
-    if (finite3(lo) && finite3(hi)) {
-        s3_item *it = push(s, S3_BOX);
-        memcpy(it->a, lo, sizeof it->a);
-        memcpy(it->b, hi, sizeof it->b);
-        it->width = width;
-        it->colour = colour;
-    }
+    if (finite3(lo) && finite3(hi))
+        push(s, S3_BOX, lo, hi, width, colour);
     s->layers++;
     return 0;
 }
@@ -236,12 +219,10 @@ int lr_scene3d_text(lr_scene3d *s, const double p[3], double dx, double dy,
     char *copy = strdup(text);
     if (!copy)
         return -1;
-    s3_item *it = push(s, S3_TEXT);
-    memcpy(it->a, p, sizeof it->a);
+    s3_item *it = push(s, S3_TEXT, p, NULL, 0.0, colour);
     it->dx = dx;
     it->dy = dy;
     it->size = size;
-    it->colour = colour;
     it->align = align;
     it->text = copy;
     s->layers++;
