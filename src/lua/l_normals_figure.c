@@ -947,12 +947,10 @@ void la_open_figure(lua_State *L)
                                        {"arrows", l_arrows},     {"polyline", l_polyline},
                                        {"text", l_text},         {"normals", l_normals},
                                        {"write", l_write},       {NULL, NULL}};
+    static const luaL_Reg meta[] = {{"__gc", l_gc}, {"__tostring", l_tostring}, {NULL, NULL}};
     la_new_metatable(L, LA_FIGURE);
     luaL_newlib(L, methods);
     lua_setfield(L, -2, "__index");
-    lua_pushcfunction(L, l_gc);
-    lua_setfield(L, -2, "__gc");
-    lua_pushcfunction(L, l_tostring);
-    lua_setfield(L, -2, "__tostring");
+    luaL_setfuncs(L, meta, 0);
     lua_pop(L, 1);
 }

@@ -38,6 +38,18 @@ void lm_nfit_opts_default(lm_nfit_opts *o)
     o->seed = 1;
 }
 
+void lm_nfit_opts_of(lm_nfit_opts *fo, const lm_nopts *o, uint64_t key)
+{
+    lm_nfit_opts_default(fo);
+    fo->solver = o->solver;
+    fo->phi2 = o->phi2;
+    fo->cond_limit = o->cond_limit;
+    fo->smooth = o->smooth;
+    fo->clearance = o->clearance;
+    fo->skip_cond = o->skip_cond;
+    fo->seed = lm_nrng_mix(o->seed, key);
+}
+
 /* "(x, y)" or "(x, y, z)" */
 static const char *fmt_point(char *buf, size_t len, int dim, const double p[3])
 {
