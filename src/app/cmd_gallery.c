@@ -42,11 +42,9 @@ static int usage_error(const char *fmt, const char *arg)
 /* "--name value" or "--name=value" */
 static int take(int argc, char **argv, int *i, const char *name, const char **out)
 {
-    const char *a = argv[*i];
-    size_t n = strlen(name);
-    if (strncmp(a, name, n) != 0 || (a[n] != '\0' && a[n] != '='))
+    const char *v;
+    if (!lu_opt_value(argc, argv, i, name, &v))
         return 0;
-    const char *v = a[n] == '=' ? a + n + 1 : (*i + 1 < argc ? argv[++*i] : NULL);
     if (!v || !*v)
         return usage_error("%s needs a value", name);
     *out = v;
