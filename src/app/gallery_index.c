@@ -66,13 +66,11 @@ void g_markdown_cell(FILE *f, const char *s)
 void g_html(FILE *f, const char *s)
 {
     for (; s && *s; s++) {
-        switch (*s) {
-        case '&': fputs("&amp;", f); break;
-        case '<': fputs("&lt;", f); break;
-        case '>': fputs("&gt;", f); break;
-        case '"': fputs("&quot;", f); break;
-        default: fputc(*s, f);
-        }
+        const char *e = lu_xml_entity(*s);
+        if (e)
+            fputs(e, f);
+        else
+            fputc(*s, f);
     }
 }
 

@@ -33,18 +33,13 @@ static lr_backend gl_choice(void)
 
 int lr_backend_parse(const char *name, lr_backend *b, char *err, size_t errlen)
 {
-    for (int i = 0; i < LR_BACKEND_COUNT; i++)
-        if (name && strcmp(name, backend_names[i]) == 0) {
-            *b = (lr_backend)i;
-            return 0;
-        }
-    if (name && strcmp(name, "gl") == 0) {
-        *b = gl_choice();
+    int i = lu_name_index(name, backend_names, LR_BACKEND_COUNT);
+    if (i >= 0 || (name && strcmp(name, "gl") == 0)) {
+        *b = i >= 0 ? (lr_backend)i : gl_choice();
         return 0;
     }
-    if (err && errlen > 0)
-        snprintf(err, errlen, "unknown backend '%s' (known: cairo, osmesa, egl, gl)",
-                 name ? name : "");
+    lu_err(err, errlen, "unknown backend '%s' (known: cairo, osmesa, egl, gl)",
+           name ? name : "");
     return -1;
 }
 
@@ -84,23 +79,28 @@ int lr_backend_check(lr_backend b, char *err, size_t errlen)
 void lr_canvas_gl_release(void) {}
 #endif
 
+/* A backend this lamina was built without: NULL, and why in err. */
+#if !defined(LAMINA_HAVE_OSMESA) || !defined(LAMINA_HAVE_EGL)
+static lr_canvas *not_built(lr_backend b, char *err, size_t errlen)
+{
+    lr_backend_check(b, err, errlen);
+    return NULL;
+}
+#endif
+
 #ifndef LAMINA_HAVE_OSMESA
 lr_canvas *lr_canvas_osmesa_new(int width, int height, char *err, size_t errlen)
 {
-    (void)width;
-    (void)height;
-    lr_backend_check(LR_BACKEND_OSMESA, err, errlen);
-    return NULL;
+    (void)width, (void)height;
+    return not_built(LR_BACKEND_OSMESA, err, errlen);
 }
 #endif
 
 #ifndef LAMINA_HAVE_EGL
 lr_canvas *lr_canvas_egl_new(int width, int height, char *err, size_t errlen)
 {
-    (void)width;
-    (void)height;
-    lr_backend_check(LR_BACKEND_EGL, err, errlen);
-    return NULL;
+    (void)width, (void)height;
+    return not_built(LR_BACKEND_EGL, err, errlen);
 }
 #endif
 

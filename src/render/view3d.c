@@ -35,20 +35,7 @@ size_t lr_scene3d_count(const lr_scene3d *s)
 /* Room for `more` items; -1 on OOM. */
 static int reserve(lr_scene3d *s, size_t more)
 {
-    if (s->n + more <= s->cap)
-        return 0;
-    size_t cap = s->cap ? s->cap : 64;
-    while (cap < s->n + more) {
-        if (cap > ((size_t)-1) / 2 / sizeof(s3_item))
-            return -1;
-        cap *= 2;
-    }
-    s3_item *q = realloc(s->items, cap * sizeof *q);
-    if (!q)
-        return -1;
-    s->items = q;
-    s->cap = cap;
-    return 0;
+    return lu_reserve(&s->items, &s->cap, s->n + more, sizeof *s->items, 64);
 }
 
 /* An item of this layer (room reserved): its kind, points a and b (NULL:
@@ -146,18 +133,9 @@ int lr_scene3d_polyline(lr_scene3d *s, size_t n, const double *const p[3],
 {
     if (!s || reserve(s, 1) != 0)
         return -1;
-    if (n > ((size_t)-1) / 8 / sizeof(double) - s->npts)
+    if (n > ((size_t)-1) / 8 / sizeof(double) - s->npts ||
+        lu_reserve(&s->pts, &s->cappts, s->npts + n, 3 * sizeof *s->pts, 256) != 0)
         return -1;
-    if (s->npts + n > s->cappts) {
-        size_t cap = s->cappts ? s->cappts : 256;
-        while (cap < s->npts + n)
-            cap *= 2;
-        double *q = realloc(s->pts, 3 * cap * sizeof *q);
-        if (!q)
-            return -1;
-        s->pts = q;
-        s->cappts = cap;
-    }
     /* a non-finite point breaks the line in two, as it would break the
      * layer's segments */
     size_t start = s->npts;

@@ -50,6 +50,21 @@ const lu_json *lu_json_get(const lu_json *obj, const char *key);  /* first membe
 const char *lu_json_string(const lu_json *obj, const char *key);  /* NULL unless a string */
 double lu_json_number(const lu_json *obj, const char *key, double def);
 
+/* ---- lu_text.c: names and escapes -------------------------------------- */
+
+/* The index of name among names[0..n-1], or -1 (also for a NULL name). */
+int lu_name_index(const char *name, const char *const names[], int n);
+/* The XML/HTML entity that stands for c in text and attribute values
+ * ("&amp;", "&lt;", "&gt;", "&quot;"), or NULL when c stands for itself. */
+const char *lu_xml_entity(char c);
+
+/* ---- lu_grow.c: growing arrays ------------------------------------------ */
+
+/* Room for need elements of elem bytes in the array *(T **)array of
+ * capacity *cap, which doubles from first: 0, or -1 when out of memory or
+ * too large (the array and *cap unchanged). */
+int lu_reserve(void *array, size_t *cap, size_t need, size_t elem, size_t first);
+
 /* ---- lu_opt.c: option values of a command line --------------------------- */
 
 /* Whether argv[*i] is the option name, as "--name=value" or "--name value":
