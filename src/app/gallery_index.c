@@ -127,6 +127,19 @@ static const lu_json *values_of(const lu_json *meta)
     return v && v->type == LU_JSON_ARRAY ? v : NULL;
 }
 
+/* A figure's values, one line each, through put (Markdown or HTML). */
+static void put_values(FILE *f, const lu_json *meta, void (*put)(FILE *, const char *))
+{
+    const lu_json *vals = values_of(meta);
+    for (size_t k = 0; vals && k < vals->n; k++) {
+        char *line = value_line(&vals->kids[k]);
+        if (k)
+            fputs("<br>", f);
+        put(f, line);
+        free(line);
+    }
+}
+
 static char *run_time(const lu_json *meta)
 {
     if (!meta)
@@ -261,14 +274,7 @@ static void index_markdown(FILE *f, const g_options *o, const row *rows, size_t 
         fprintf(f, "](%s/%s) | ", s->stem, G_PAGE);
         g_markdown_cell(f, s->h.source ? s->h.source : "");
         fputs(" | ", f);
-        const lu_json *vals = values_of(rows[i].meta);
-        for (size_t k = 0; vals && k < vals->n; k++) {
-            char *line = value_line(&vals->kids[k]);
-            if (k)
-                fputs("<br>", f);
-            g_markdown_cell(f, line);
-            free(line);
-        }
+        put_values(f, rows[i].meta, g_markdown_cell);
         char *rt = run_time(rows[i].meta);
         fprintf(f, " | %s |\n", rt);
         free(rt);
@@ -315,14 +321,7 @@ static void index_html(FILE *f, const g_options *o, const row *rows, size_t n)
         fputs("</a></td><td>", f);
         g_html(f, s->h.source);
         fputs("</td><td class=\"num\">", f);
-        const lu_json *vals = values_of(rows[i].meta);
-        for (size_t k = 0; vals && k < vals->n; k++) {
-            char *line = value_line(&vals->kids[k]);
-            if (k)
-                fputs("<br>", f);
-            g_html(f, line);
-            free(line);
-        }
+        put_values(f, rows[i].meta, g_html);
         char *rt = run_time(rows[i].meta);
         fputs("</td><td class=\"num\">", f);
         g_html(f, rt);

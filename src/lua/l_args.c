@@ -175,6 +175,18 @@ lamina_run *la_run(lua_State *L)
 /* Every lamina object's metatable: getmetatable() gives this string and
  * setmetatable() fails ("cannot change a protected metatable"), so a script
  * reaches neither __gc nor __index (design.md: a script is untrusted). */
+int la_call_pair(lua_State *L, int idx, double arg, double *a, double *b)
+{
+    lua_pushvalue(L, idx);
+    lua_pushnumber(L, arg);
+    lua_call(L, 1, 2);
+    int oka, okb;
+    *a = lua_tonumberx(L, -2, &oka);
+    *b = lua_tonumberx(L, -1, &okb);
+    lua_pop(L, 2);
+    return oka && okb && isfinite(*a) && isfinite(*b);
+}
+
 int la_new_metatable(lua_State *L, const char *name)
 {
     int fresh = luaL_newmetatable(L, name);

@@ -22,6 +22,9 @@ void la_check_table(lua_State *L, int idx, const char *fn);
 void la_check_keys(lua_State *L, int idx, const char *fn, const char *const keys[]);
 int la_has(lua_State *L, int idx, const char *key);
 double la_number(lua_State *L, int idx, const char *fn, const char *key);
+/* Calls the function at idx with arg: 1 with its two results in *a, *b
+ * when both are finite numbers, else 0 (the caller names the fault). */
+int la_call_pair(lua_State *L, int idx, double arg, double *a, double *b);
 double la_opt_number(lua_State *L, int idx, const char *fn, const char *key, double def);
 const char *la_opt_string(lua_State *L, int idx, const char *fn, const char *key,
                           const char *def);

@@ -82,15 +82,8 @@ static size_t *read_points(lua_State *L, const lm_sim *sim, int b, size_t *n)
 /* velocity: {vx, vy} or a function(t) -> vx, vy; the two numbers. */
 static void call_velocity(lua_State *L, int f, double t, double *vx, double *vy)
 {
-    lua_pushvalue(L, f);
-    lua_pushnumber(L, t);
-    lua_call(L, 1, 2);
-    int ok1, ok2;
-    *vx = lua_tonumberx(L, -2, &ok1);
-    *vy = lua_tonumberx(L, -1, &ok2);
-    if (!ok1 || !ok2 || !isfinite(*vx) || !isfinite(*vy))
+    if (!la_call_pair(L, f, t, vx, vy))
         luaL_error(L, "body:pin: the velocity function must return two finite numbers");
-    lua_pop(L, 2);
 }
 
 int la_body_pin(lua_State *L)

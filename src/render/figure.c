@@ -228,33 +228,32 @@ static int mirror_copies(const lr_panel *p, fig_mirror m[4])
 
 /* A grid copy: the reflected grid is a grid again; the sides lying on an
  * axis are not walls. */
+/* One mirrored axis of a grid copy, lo..hi along it, the mirror at ax:
+ * the copy's origin when flipped, and the walls (skip_lo, skip_hi before
+ * the flip) that lie on the mirror. */
+static void mirror_axis(double ax, double lo, double hi, int flip, int skip_lo,
+                        int skip_hi, double *origin, int *skip)
+{
+    double t = 1e-9 * (hi - lo);
+    if (flip)
+        *origin = 2.0 * ax - hi;
+    if (fabs(ax - lo) <= t)
+        *skip |= flip ? skip_hi : skip_lo;
+    if (fabs(ax - hi) <= t)
+        *skip |= flip ? skip_lo : skip_hi;
+}
+
 static void draw_grid_copy(lr_canvas *c, const fig_view *v, const lr_grid *g,
                            const lr_panel *p, const fig_mirror *m)
 {
     lr_grid r = *g;
     int skip = 0;
-    double gx1 = g->x0 + g->nx * g->hx, gy1 = g->y0 + g->ny * g->hy;
-    double tx = 1e-9 * (gx1 - g->x0), ty = 1e-9 * (gy1 - g->y0);
-    if (p->mirror_x) {
-        int at_left = fabs(p->mirror_ax - g->x0) <= tx;
-        int at_right = fabs(p->mirror_ax - gx1) <= tx;
-        if (m->fx)
-            r.x0 = 2.0 * p->mirror_ax - gx1;
-        if (at_left)
-            skip |= m->fx ? FIG_SKIP_RIGHT : FIG_SKIP_LEFT;
-        if (at_right)
-            skip |= m->fx ? FIG_SKIP_LEFT : FIG_SKIP_RIGHT;
-    }
-    if (p->mirror_y) {
-        int at_bottom = fabs(p->mirror_ay - g->y0) <= ty;
-        int at_top = fabs(p->mirror_ay - gy1) <= ty;
-        if (m->fy)
-            r.y0 = 2.0 * p->mirror_ay - gy1;
-        if (at_bottom)
-            skip |= m->fy ? FIG_SKIP_TOP : FIG_SKIP_BOTTOM;
-        if (at_top)
-            skip |= m->fy ? FIG_SKIP_BOTTOM : FIG_SKIP_TOP;
-    }
+    if (p->mirror_x)
+        mirror_axis(p->mirror_ax, g->x0, g->x0 + g->nx * g->hx, m->fx, FIG_SKIP_LEFT,
+                    FIG_SKIP_RIGHT, &r.x0, &skip);
+    if (p->mirror_y)
+        mirror_axis(p->mirror_ay, g->y0, g->y0 + g->ny * g->hy, m->fy, FIG_SKIP_BOTTOM,
+                    FIG_SKIP_TOP, &r.y0, &skip);
     fig_draw_grid(c, v, &r, skip);
 }
 
