@@ -194,3 +194,13 @@ int la_new_metatable(lua_State *L, const char *name)
     lua_setfield(L, -2, "__metatable");
     return fresh;
 }
+
+void la_new_class(lua_State *L, const char *name, const luaL_Reg *meta,
+                  const luaL_Reg *methods)
+{
+    la_new_metatable(L, name);
+    luaL_setfuncs(L, meta, 0);
+    lua_newtable(L);
+    luaL_setfuncs(L, methods, 0);
+    lua_setfield(L, -2, "__index");
+}

@@ -40,6 +40,10 @@ void la_point_at(lua_State *L, int list, int i, const char *fn, double *x, doubl
 lamina_run *la_run(lua_State *L);
 /* luaL_newmetatable with __metatable set: every userdata type uses it. */
 int la_new_metatable(lua_State *L, const char *name);
+/* A class: la_new_metatable(name) with the metamethods meta and a method
+ * table methods as its __index; the metatable is left on the stack. */
+void la_new_class(lua_State *L, const char *name, const luaL_Reg *meta,
+                  const luaL_Reg *methods);
 
 /* l_provenance.c: the tEXt chunks of every image (Software, lamina:script,
  * lamina:script-hash, lamina:set); la_provenance pushes one string that must

@@ -948,9 +948,6 @@ void la_open_figure(lua_State *L)
                                        {"text", l_text},         {"normals", l_normals},
                                        {"write", l_write},       {NULL, NULL}};
     static const luaL_Reg meta[] = {{"__gc", l_gc}, {"__tostring", l_tostring}, {NULL, NULL}};
-    la_new_metatable(L, LA_FIGURE);
-    luaL_newlib(L, methods);
-    lua_setfield(L, -2, "__index");
-    luaL_setfuncs(L, meta, 0);
+    la_new_class(L, LA_FIGURE, meta, methods);
     lua_pop(L, 1);
 }

@@ -172,10 +172,7 @@ void la_open_pin(lua_State *L)
     static const luaL_Reg meta[] = {{"__len", pin_len}, {"__tostring", pin_tostring},
                                     {NULL, NULL}};
     static const luaL_Reg methods[] = {{"reaction", pin_reaction}, {NULL, NULL}};
-    luaL_newmetatable(L, LA_PIN);
-    luaL_setfuncs(L, meta, 0);
-    luaL_newlib(L, methods);
-    lua_setfield(L, -2, "__index");
+    la_new_class(L, LA_PIN, meta, methods);
     lua_pushliteral(L, "lamina.pin");
     lua_setfield(L, -2, "__metatable");
     lua_pop(L, 1);
