@@ -110,9 +110,8 @@ lr_canvas *lr_canvas_new(lr_backend b, int width, int height, char *err, size_t 
         return NULL;
     if (width < 1 || height < 1 || width > LR_CANVAS_MAX_SIZE ||
         height > LR_CANVAS_MAX_SIZE) {
-        if (err && errlen > 0)
-            snprintf(err, errlen, "cannot create canvas: invalid size %dx%d "
-                     "(1..%d each)", width, height, LR_CANVAS_MAX_SIZE);
+        lu_err(err, errlen, "cannot create canvas: invalid size %dx%d "
+               "(1..%d each)", width, height, LR_CANVAS_MAX_SIZE);
         return NULL;
     }
     switch (b) {
