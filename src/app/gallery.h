@@ -2,7 +2,7 @@
  *
  *   cmd_gallery.c     the command line; the default mode (render stale figures)
  *   gallery_fs.c      files: read, atomic write, mkdir -p, list, remove, copy
- *   gallery_json.c    a small JSON reader and writer (meta.json, report.json)
+ *   gallery_json.c    reading (lu_json_parse) and writing meta.json, report.json
  *   gallery_script.c  finding the scripts, their header comment, their hash
  *   gallery_run.c     one script as a `lamina run` subprocess, timed
  *   gallery_thumb.c   box-filtered thumbnails

@@ -1,6 +1,7 @@
-/* fuzz_json.c - libFuzzer target: lamina's two JSON readers on arbitrary
- * bytes: the gallery's (lu_json_parse: report.json, meta.json) and the sweep's
- * (sw_report_read: the values of report.json). */
+/* fuzz_json.c - libFuzzer target: lamina's JSON reader on arbitrary bytes,
+ * directly (lu_json_parse, src/util: the gallery's report.json and
+ * meta.json) and through the sweep (sw_report_read: the values of
+ * report.json, read from a file). */
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
