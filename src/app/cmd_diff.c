@@ -11,6 +11,7 @@
 
 #include "app.h"
 #include "diff.h"
+#include "util.h"
 
 static const char usage_line[] =
     "usage: lamina diff EXPECTED.png ACTUAL.png [--out DIFF.png] [--threshold T]\n"
@@ -19,19 +20,12 @@ static const char usage_line[] =
 /* "--name value" or "--name=value": the value, or NULL when a was not --name. */
 static const char *option_value(int argc, char **argv, int *i, const char *name, int *missing)
 {
-    const char *a = argv[*i];
-    size_t n = strlen(name);
-    if (strncmp(a, name, n) != 0)
+    const char *v;
+    if (!lu_opt_value(argc, argv, i, name, &v))
         return NULL;
-    if (a[n] == '=')
-        return a + n + 1;
-    if (a[n] != '\0')
-        return NULL;
-    if (*i + 1 >= argc) {
+    if (!v)
         *missing = 1;
-        return NULL;
-    }
-    return argv[++*i];
+    return v;
 }
 
 static int parse_number(const char *opt, const char *s, double lo, double hi, double *out)

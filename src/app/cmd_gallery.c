@@ -42,11 +42,9 @@ static int usage_error(const char *fmt, const char *arg)
 /* "--name value" or "--name=value" */
 static int take(int argc, char **argv, int *i, const char *name, const char **out)
 {
-    const char *a = argv[*i];
-    size_t n = strlen(name);
-    if (strncmp(a, name, n) != 0 || (a[n] != '\0' && a[n] != '='))
+    const char *v;
+    if (!lu_opt_value(argc, argv, i, name, &v))
         return 0;
-    const char *v = a[n] == '=' ? a + n + 1 : (*i + 1 < argc ? argv[++*i] : NULL);
     if (!v || !*v)
         return usage_error("%s needs a value", name);
     *out = v;
@@ -132,7 +130,7 @@ static void put_opt_string(FILE *f, const char *key, const char *v)
  * a figure up to date. */
 static int write_meta(const char *path, const g_script *s, const g_run_result *r,
                       const char *key, int has_thumb, const g_strs *images,
-                      const g_strs *data, const gj *report, char *err, size_t errlen)
+                      const g_strs *data, const lu_json *report, char *err, size_t errlen)
 {
     g_text t;
     g_text_open(&t);
@@ -148,9 +146,9 @@ static int write_meta(const char *path, const g_script *s, const g_run_result *r
     put_opt_string(f, "thumb", has_thumb ? G_THUMB : NULL);
     put_strs(f, "images", images);
     put_strs(f, "data", data);
-    const gj *values = gj_get(report, "values");
+    const lu_json *values = lu_json_get(report, "values");
     fputs("  \"values\": ", f);
-    if (values && values->type == GJ_ARRAY)
+    if (values && values->type == LU_JSON_ARRAY)
         gj_put(f, values, 2);
     else
         fputs("[]", f);
@@ -165,24 +163,24 @@ static int up_to_date(const g_options *o, const g_script *s)
 {
     char *dir = g_fmt("%s/%s", o->gallery, s->stem);
     char *path = g_fmt("%s/%s", dir, G_META);
-    gj *meta = gj_read(path, NULL, 0);
-    int ok = meta && gj_string(meta, "hash") && !strcmp(gj_string(meta, "hash"), s->hash) &&
-             gj_number(meta, "status", -1) == 0;
+    lu_json *meta = gj_read(path, NULL, 0);
+    int ok = meta && lu_json_string(meta, "hash") && !strcmp(lu_json_string(meta, "hash"), s->hash) &&
+             lu_json_number(meta, "status", -1) == 0;
     char *page = g_fmt("%s/%s", dir, G_PAGE);
     ok = ok && g_exists(page);
     free(page);
-    const gj *imgs = gj_get(meta, "images");
+    const lu_json *imgs = lu_json_get(meta, "images");
     for (size_t i = 0; ok && imgs && i < imgs->n; i++) {
         char *p = g_fmt("%s/%s", dir, imgs->kids[i].text ? imgs->kids[i].text : "");
         ok = g_exists(p);
         free(p);
     }
-    if (ok && gj_string(meta, "thumb")) {
+    if (ok && lu_json_string(meta, "thumb")) {
         char *p = g_fmt("%s/%s", dir, G_THUMB);
         ok = g_exists(p);
         free(p);
     }
-    gj_free(meta);
+    lu_json_free(meta);
     free(path);
     free(dir);
     return ok;
@@ -198,7 +196,7 @@ static int render(const g_options *o, const g_script *s)
     char *meta = g_fmt("%s/%s", dir, G_META);
     char *thumb = g_fmt("%s/%s", dir, G_THUMB);
     g_strs images = { 0 }, data = { 0 };
-    gj *rep = NULL;
+    lu_json *rep = NULL;
     g_run_result r = { 0 };
     int rc = -1;
     /* a fresh folder: a frame the script no longer writes must not linger */
@@ -221,14 +219,14 @@ static int render(const g_options *o, const g_script *s)
     }
     if (write_meta(meta, s, &r, key, key != NULL, &images, &data, rep, err, sizeof err))
         goto done;
-    gj *m = gj_read(meta, err, sizeof err);
+    lu_json *m = gj_read(meta, err, sizeof err);
     if (!m)
         goto done;
     int p = g_write_page(o, s, m, err, sizeof err);
-    gj_free(m);
+    lu_json_free(m);
     if (p != 0)
         goto done;
-    const gj *vals = gj_get(rep, "values");
+    const lu_json *vals = lu_json_get(rep, "values");
     if (r.status == 0) {
         if (!o->quiet)
             printf("gallery: %s: %.1f s, %zu image%s, %zu value%s%s\n", s->stem, r.seconds,
@@ -248,7 +246,7 @@ static int render(const g_options *o, const g_script *s)
 done:
     if (rc < 0)
         fprintf(stderr, "lamina gallery: %s: %s\n", s->stem, err);
-    gj_free(rep);
+    lu_json_free(rep);
     g_strs_free(&images);
     g_strs_free(&data);
     free(thumb);

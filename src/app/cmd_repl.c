@@ -26,16 +26,7 @@ static int parse_args(int argc, char **argv, lamina_run *run)
         if (got < 0) return -1;
         if (got) {
             if (wb_add_set("repl", run, v)) return -1;
-        } else if (strcmp(a, "--quiet") == 0 || strcmp(a, "-q") == 0) {
-            run->quiet = 1;
-        } else if (a[0] == '-' && a[1]) {
-            fprintf(stderr, "lamina repl: unknown option '%s'\n%s\n", a, usage_line);
-            return -1;
-        } else if (!run->script) {
-            run->script = a;
-        } else {
-            fprintf(stderr, "lamina repl: more than one script given ('%s', '%s')\n",
-                    run->script, a);
+        } else if (wb_word("repl", a, &run->quiet, &run->script, usage_line)) {
             return -1;
         }
     }

@@ -10,71 +10,43 @@
 #include "lamina_lua.h"
 #include "mpm.h"
 #include "render.h"
+#include "util.h"
+#include "workbench.h"
 
 /* FNV-1a of the script's bytes: the provenance stamped into every PNG. */
 static int hash_file(const char *path, char out[17])
 {
-    FILE *f = fopen(path, "rb");
-    if (!f) return -1;
-    uint64_t h = 14695981039346656037ull;
-    int c;
-    while ((c = getc(f)) != EOF) {
-        h ^= (unsigned char)c;
-        h *= 1099511628211ull;
+    wb_file_sig sig;
+    wb_file_sig_read(path, &sig);
+    lu_hash_hex(sig.hash, out);
+    return sig.ok ? 0 : -1;
+}
+
+/* A FILE or DIR option given once: 0, or -1 with the message. */
+static int once(const char *opt, const char *v, const char *needs, const char **slot)
+{
+    if (!v || !*v || *slot) {
+        fprintf(stderr, "lamina run: %s %s\n", opt, *slot ? "given twice" : needs);
+        return -1;
     }
-    int bad = ferror(f);
-    fclose(f);
-    snprintf(out, 17, "%016llx", (unsigned long long)h);
-    return bad ? -1 : 0;
+    *slot = v;
+    return 0;
 }
 
 static int parse_args(int argc, char **argv, lamina_run *run, const char **report,
                       const char **out_root)
 {
     for (int i = 0; i < argc; i++) {
-        const char *a = argv[i];
-        if (strcmp(a, "--set") == 0 || strncmp(a, "--set=", 6) == 0) {
-            const char *kv = a[5] == '=' ? a + 6 : (i + 1 < argc ? argv[++i] : NULL);
-            const char *eq = kv ? strchr(kv, '=') : NULL;
-            if (!eq || eq == kv) {
-                fprintf(stderr, "lamina run: --set needs name=value (got '%s')\n",
-                        kv ? kv : "");
-                return -1;
-            }
-            lamina_set *s = &run->sets[run->nsets++];
-            size_t n = (size_t)(eq - kv);
-            char *name = malloc(n + 1);
-            if (!name) return -1;
-            memcpy(name, kv, n);
-            name[n] = 0;
-            s->name = name;
-            s->value = eq + 1;
-            s->used = 0;
-            for (int k = 0; k < run->nsets - 1; k++)
-                if (strcmp(run->sets[k].name, name) == 0) {
-                    fprintf(stderr, "lamina run: --set %s given twice\n", name);
-                    return -1;
-                }
-        } else if (strcmp(a, "--report") == 0 || strncmp(a, "--report=", 9) == 0) {
-            const char *f = a[8] == '=' ? a + 9 : (i + 1 < argc ? argv[++i] : NULL);
-            if (!f || !*f || *report) {
-                fprintf(stderr, "lamina run: %s\n", *report ? "--report given twice"
-                                                            : "--report needs a FILE");
-                return -1;
-            }
-            *report = f;
-        } else if (strcmp(a, "--out-root") == 0 || strncmp(a, "--out-root=", 11) == 0) {
+        const char *a = argv[i], *v;
+        if (lu_opt_value(argc, argv, &i, "--set", &v)) {
+            if (wb_add_set("run", run, v ? v : "")) return -1;
+        } else if (lu_opt_value(argc, argv, &i, "--report", &v)) {
+            if (once("--report", v, "needs a FILE", report)) return -1;
+        } else if (lu_opt_value(argc, argv, &i, "--out-root", &v)) {
             /* the folder the script's files must stay in (docs/api.md, "Sandbox") */
-            const char *d = a[10] == '=' ? a + 11 : (i + 1 < argc ? argv[++i] : NULL);
-            if (!d || !*d || *out_root) {
-                fprintf(stderr, "lamina run: %s\n", *out_root ? "--out-root given twice"
-                                                              : "--out-root needs a DIR");
-                return -1;
-            }
-            *out_root = d;
-        } else if (strcmp(a, "--lua-mem") == 0 || strncmp(a, "--lua-mem=", 10) == 0) {
+            if (once("--out-root", v, "needs a DIR", out_root)) return -1;
+        } else if (lu_opt_value(argc, argv, &i, "--lua-mem", &v)) {
             /* the cap on the script's Lua memory (l_alloc.c), MB */
-            const char *v = a[9] == '=' ? a + 10 : (i + 1 < argc ? argv[++i] : NULL);
             char *end = NULL;
             double mb = v ? strtod(v, &end) : 0;
             if (!v || !*v || *end || !(mb >= 1 && mb <= 1048576)) {
@@ -83,24 +55,22 @@ static int parse_args(int argc, char **argv, lamina_run *run, const char **repor
                 return -1;
             }
             run->lua_mem_limit = (size_t)(mb * 1048576.0);
-        } else if (strcmp(a, "--backend") == 0 || strncmp(a, "--backend=", 10) == 0) {
+        } else if (lu_opt_value(argc, argv, &i, "--backend", &v)) {
             /* sim:frame's default renderer for this run (docs/rendering.md) */
-            const char *b = a[9] == '=' ? a + 10 : (i + 1 < argc ? argv[++i] : NULL);
             lr_backend which;
             char why[512];
-            if (!b || !*b) {
+            if (!v || !*v) {
                 fprintf(stderr, "lamina run: --backend needs a NAME (cairo, osmesa, egl or gl)\n");
                 return -1;
             }
-            if (lr_backend_parse(b, &which, why, sizeof why) != 0 ||
+            if (lr_backend_parse(v, &which, why, sizeof why) != 0 ||
                 lr_backend_check(which, why, sizeof why) != 0) {
-                fprintf(stderr, "lamina run: --backend %s: %s\n", b, why);
+                fprintf(stderr, "lamina run: --backend %s: %s\n", v, why);
                 return -1;
             }
-            run->backend = b;
-        } else if (strcmp(a, "--threads") == 0 || strncmp(a, "--threads=", 10) == 0) {
+            run->backend = v;
+        } else if (lu_opt_value(argc, argv, &i, "--threads", &v)) {
             /* lamina.sim's default thread count for this run (docs/api.md) */
-            const char *v = a[9] == '=' ? a + 10 : (i + 1 < argc ? argv[++i] : NULL);
             char *end = NULL;
             long n = v ? strtol(v, &end, 10) : 0;
             if (!v || !*v || *end || n < 1 || n > LM_MAX_THREADS) {
@@ -109,25 +79,10 @@ static int parse_args(int argc, char **argv, lamina_run *run, const char **repor
                 return -1;
             }
             setenv("LAMINA_THREADS", v, 1);
-        } else if (strcmp(a, "--restart") == 0 || strncmp(a, "--restart=", 10) == 0) {
+        } else if (lu_opt_value(argc, argv, &i, "--restart", &v)) {
             /* continue from a checkpoint (sim:checkpoint, docs/api.md) */
-            const char *f = a[9] == '=' ? a + 10 : (i + 1 < argc ? argv[++i] : NULL);
-            if (!f || !*f || run->restart) {
-                fprintf(stderr, "lamina run: %s\n", run->restart ? "--restart given twice"
-                                                                 : "--restart needs a FILE");
-                return -1;
-            }
-            run->restart = f;
-        } else if (strcmp(a, "--quiet") == 0 || strcmp(a, "-q") == 0) {
-            run->quiet = 1;
-        } else if (a[0] == '-' && a[1]) {
-            fprintf(stderr, "lamina run: unknown option '%s' (try 'lamina help')\n", a);
-            return -1;
-        } else if (!run->script) {
-            run->script = a;
-        } else {
-            fprintf(stderr, "lamina run: more than one script given ('%s', '%s')\n",
-                    run->script, a);
+            if (once("--restart", v, "needs a FILE", &run->restart)) return -1;
+        } else if (wb_word("run", a, &run->quiet, &run->script, NULL)) {
             return -1;
         }
     }
@@ -155,12 +110,6 @@ static int init_report(lua_State *L, const char *path)
     return rc == LUA_OK ? 0 : -1;
 }
 
-static void free_sets(lamina_run *run)
-{
-    for (int i = 0; i < run->nsets; i++) free((char *)run->sets[i].name);
-    free(run->sets);
-}
-
 int cmd_run(int argc, char **argv)
 {
     lamina_run run;
@@ -169,36 +118,36 @@ int cmd_run(int argc, char **argv)
     if (!run.sets) return LAMINA_EXIT_USAGE;
     const char *report = NULL, *out_root = NULL;
     if (parse_args(argc, argv, &run, &report, &out_root)) {
-        free_sets(&run);
+        wb_free_sets(&run);
         return LAMINA_EXIT_USAGE;
     }
     char why[1100];
     if (lamina_check_script_file(run.script, why, sizeof why) != 0) {   /* before reading it */
         fprintf(stderr, "lamina run: %s\n", why);
-        free_sets(&run);
+        wb_free_sets(&run);
         return LAMINA_EXIT_USAGE;
     }
     if (hash_file(run.script, run.script_hash)) {
         perror(run.script);
         fprintf(stderr, "lamina run: cannot read script '%s'\n", run.script);
-        free_sets(&run);
+        wb_free_sets(&run);
         return LAMINA_EXIT_USAGE;
     }
     lua_State *L = lamina_open_state(&run);
     if (!L) {
         fprintf(stderr, "lamina run: cannot create a Lua state (out of memory)\n");
-        free_sets(&run);
+        wb_free_sets(&run);
         return LAMINA_EXIT_USAGE;
     }
     if (out_root && lamina_set_output_root(L, out_root, why, sizeof why) != 0) {
         fprintf(stderr, "lamina run: %s\n", why);
         lua_close(L);
-        free_sets(&run);
+        wb_free_sets(&run);
         return LAMINA_EXIT_USAGE;
     }
     if (report && init_report(L, report)) {
         lua_close(L);
-        free_sets(&run);
+        wb_free_sets(&run);
         lr_shutdown();
         return LAMINA_EXIT_USAGE;
     }
@@ -213,7 +162,7 @@ int cmd_run(int argc, char **argv)
     if (run.frames && !run.quiet)
         fprintf(stderr, "lamina: %ld frame%s written to %s\n", run.frames,
                 run.frames == 1 ? "" : "s", run.frame_dir);
-    free_sets(&run);
+    wb_free_sets(&run);
     lr_shutdown();
     return rc;
 }

@@ -98,6 +98,8 @@ static void free_opts(sweep_opts *o)
 
 static int parse_args(int argc, char **argv, sweep_opts *o)
 {
+    static const char *const names[] = { "--out", "--collect", "--job", "--slurm" };
+    const char **const slots[] = { &o->out, &o->collect, &o->job, &o->slurm };
     int job_mode = 0;
     for (int i = 0; i < argc; i++)
         if (strcmp(argv[i], "--job") == 0 || strncmp(argv[i], "--job=", 6) == 0) job_mode = 1;
@@ -109,18 +111,8 @@ static int parse_args(int argc, char **argv, sweep_opts *o)
         } else if ((got = wb_option("sweep", argc, argv, &i, "--jobs", &v))) {
             if (got < 0 || wb_count("sweep", "--jobs", v, 1, 4096, &o->jobs)) return -1;
             o->has_jobs = 1;
-        } else if ((got = wb_option("sweep", argc, argv, &i, "--out", &v))) {
+        } else if ((got = wb_options("sweep", argc, argv, &i, 4, names, slots))) {
             if (got < 0) return -1;
-            o->out = v;
-        } else if ((got = wb_option("sweep", argc, argv, &i, "--collect", &v))) {
-            if (got < 0) return -1;
-            o->collect = v;
-        } else if ((got = wb_option("sweep", argc, argv, &i, "--job", &v))) {
-            if (got < 0) return -1;
-            o->job = v;
-        } else if ((got = wb_option("sweep", argc, argv, &i, "--slurm", &v))) {
-            if (got < 0) return -1;
-            o->slurm = v;
         } else if (strcmp(a, "--emit-jobs") == 0) {
             o->emit = 1;
         } else if (strcmp(a, "--quiet") == 0 || strcmp(a, "-q") == 0) {

@@ -61,16 +61,7 @@ static int parse_args(int argc, char **argv, watch_opts *o)
             o->log = v;
         } else if (strcmp(a, "--once") == 0) {
             o->max_runs = 1;
-        } else if (strcmp(a, "--quiet") == 0 || strcmp(a, "-q") == 0) {
-            o->proto.quiet = 1;
-        } else if (a[0] == '-' && a[1]) {
-            fprintf(stderr, "lamina watch: unknown option '%s'\n%s\n", a, usage_line);
-            return -1;
-        } else if (!o->proto.script) {
-            o->proto.script = a;
-        } else {
-            fprintf(stderr, "lamina watch: more than one script given ('%s', '%s')\n",
-                    o->proto.script, a);
+        } else if (wb_word("watch", a, &o->proto.quiet, &o->proto.script, usage_line)) {
             return -1;
         }
     }

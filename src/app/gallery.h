@@ -2,7 +2,7 @@
  *
  *   cmd_gallery.c     the command line; the default mode (render stale figures)
  *   gallery_fs.c      files: read, atomic write, mkdir -p, list, remove, copy
- *   gallery_json.c    a small JSON reader and writer (meta.json, report.json)
+ *   gallery_json.c    reading (lu_json_parse) and writing meta.json, report.json
  *   gallery_script.c  finding the scripts, their header comment, their hash
  *   gallery_run.c     one script as a `lamina run` subprocess, timed
  *   gallery_thumb.c   box-filtered thumbnails
@@ -19,6 +19,8 @@
 
 #include <stddef.h>
 #include <stdio.h>
+
+#include "util.h"
 
 #define G_THUMB_WIDTH 256            /* thumbnails and baselines: at most this wide */
 #define G_THUMB "thumb.png"          /* per figure: the index's thumbnail */
@@ -85,27 +87,11 @@ void g_text_close(g_text *t);
 
 /* ---- gallery_json.c -------------------------------------------------- */
 
-typedef enum gj_type { GJ_NULL, GJ_BOOL, GJ_NUMBER, GJ_STRING, GJ_ARRAY, GJ_OBJECT } gj_type;
-
-typedef struct gj {
-    gj_type type;
-    int boolean;
-    double number;
-    char *text;             /* GJ_STRING: the string; GJ_NUMBER: as written */
-    char *key;              /* member name, inside an object */
-    struct gj *kids;        /* GJ_ARRAY / GJ_OBJECT */
-    size_t n;
-} gj;
-
-gj *gj_parse(const char *text, char *err, size_t errlen);
-gj *gj_read(const char *path, char *err, size_t errlen);
-void gj_free(gj *v);
-const gj *gj_get(const gj *obj, const char *key);
-const char *gj_string(const gj *obj, const char *key);     /* NULL unless a string */
-double gj_number(const gj *obj, const char *key, double def);
+/* The tree is lu_json (src/util/util.h: lu_json_parse, lu_json_get, ...). */
+lu_json *gj_read(const char *path, char *err, size_t errlen);
 void gj_put_string(FILE *f, const char *s);
 /* Writes v as JSON (objects one member per line at `indent`). */
-void gj_put(FILE *f, const gj *v, int indent);
+void gj_put(FILE *f, const lu_json *v, int indent);
 
 /* ---- gallery_script.c ------------------------------------------------ */
 
@@ -174,7 +160,7 @@ int g_outputs(const char *dir, g_strs *images, g_strs *data, char *err, size_t e
 const char *g_key_image(const g_script *s, const g_strs *images);
 void g_markdown_cell(FILE *f, const char *s);
 void g_html(FILE *f, const char *s);
-int g_write_page(const g_options *o, const g_script *s, const gj *meta, char *err,
+int g_write_page(const g_options *o, const g_script *s, const lu_json *meta, char *err,
                  size_t errlen);
 int g_write_index(const g_options *o, const g_scripts *all, char *err, size_t errlen);
 

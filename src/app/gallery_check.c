@@ -40,16 +40,16 @@ static void check_figure(const g_options *o, const g_script *s, g_strs *p)
     if (!g_exists(page))
         problem(p, g_fmt("%s: missing its page", page));
     char err[512];
-    gj *m = g_exists(meta) ? gj_read(meta, err, sizeof err) : NULL;
+    lu_json *m = g_exists(meta) ? gj_read(meta, err, sizeof err) : NULL;
     if (!g_exists(meta))
         problem(p, g_fmt("%s: missing (the record of the last run)", meta));
     else if (!m)
         problem(p, g_fmt("%s", err));
-    if (m && gj_number(m, "status", -1) != 0)
+    if (m && lu_json_number(m, "status", -1) != 0)
         problem(p, g_fmt("%s: the last run failed (exit status %g; see %s/%s)", s->stem,
-                         gj_number(m, "status", -1), dir, G_LOG));
-    else if (m && (!gj_string(m, "script_hash") ||
-                   strcmp(gj_string(m, "script_hash"), s->script_hash) != 0))
+                         lu_json_number(m, "status", -1), dir, G_LOG));
+    else if (m && (!lu_json_string(m, "script_hash") ||
+                   strcmp(lu_json_string(m, "script_hash"), s->script_hash) != 0))
         problem(p, g_fmt("%s: changed since its figure was made (run: lamina gallery "
                          "--only %s)", s->path, s->stem));
     if (!g_exists(thumb)) {
@@ -63,7 +63,7 @@ static void check_figure(const g_options *o, const g_script *s, g_strs *p)
         else
             free(px);
     }
-    gj_free(m);
+    lu_json_free(m);
     free(page);
     free(thumb);
     free(meta);

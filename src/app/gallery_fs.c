@@ -16,16 +16,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
-
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-{
-    if (!err || !errlen)
-        return;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-}
+#include "util.h"
 
 static void out_of_memory(void)
 {
@@ -118,7 +109,7 @@ int g_read_file(const char *path, char **text, size_t *len, char *err, size_t er
      * /dev/zero was read for ever (issue 18) */
     char why[1024];
     if (lr_read_file(path, LR_READ_MAX, text, len, why, sizeof why) != 0) {
-        set_err(err, errlen, "%s", why);
+        lu_err(err, errlen, "%s", why);
         return -1;
     }
     return 0;
@@ -134,10 +125,10 @@ int g_mkdirs(const char *dir, char *err, size_t errlen)
             continue;
         *q = '\0';
         if (mkdir(p, 0777) != 0 && errno != EEXIST) {
-            set_err(err, errlen, "cannot create folder '%s': %s", p, strerror(errno));
+            lu_err(err, errlen, "cannot create folder '%s': %s", p, strerror(errno));
             rc = -1;
         } else if (!g_is_dir(p)) {
-            set_err(err, errlen, "cannot create folder '%s': a file is in the way", p);
+            lu_err(err, errlen, "cannot create folder '%s': a file is in the way", p);
             rc = -1;
         }
         if (end)
@@ -170,19 +161,19 @@ static int remove_tree(const char *path, char *err, size_t errlen)
 {
     struct stat st;
     if (lstat(path, &st) != 0)
-        return errno == ENOENT ? 0 : (set_err(err, errlen, "cannot remove '%s': %s", path,
+        return errno == ENOENT ? 0 : (lu_err(err, errlen, "cannot remove '%s': %s", path,
                                               strerror(errno)), -1);
     if (S_ISDIR(st.st_mode)) {
         if (g_clear_dir(path, err, errlen) != 0)
             return -1;
         if (rmdir(path) != 0) {
-            set_err(err, errlen, "cannot remove '%s': %s", path, strerror(errno));
+            lu_err(err, errlen, "cannot remove '%s': %s", path, strerror(errno));
             return -1;
         }
         return 0;
     }
     if (unlink(path) != 0) {
-        set_err(err, errlen, "cannot remove '%s': %s", path, strerror(errno));
+        lu_err(err, errlen, "cannot remove '%s': %s", path, strerror(errno));
         return -1;
     }
     return 0;
@@ -195,7 +186,7 @@ static int entries(const char *dir, g_strs *out, char *err, size_t errlen)
     if (!d) {
         if (errno == ENOENT)
             return 0;
-        set_err(err, errlen, "cannot read folder '%s': %s", dir, strerror(errno));
+        lu_err(err, errlen, "cannot read folder '%s': %s", dir, strerror(errno));
         return -1;
     }
     struct dirent *e;

@@ -66,51 +66,49 @@ void g_markdown_cell(FILE *f, const char *s)
 void g_html(FILE *f, const char *s)
 {
     for (; s && *s; s++) {
-        switch (*s) {
-        case '&': fputs("&amp;", f); break;
-        case '<': fputs("&lt;", f); break;
-        case '>': fputs("&gt;", f); break;
-        case '"': fputs("&quot;", f); break;
-        default: fputc(*s, f);
-        }
+        const char *e = lu_xml_entity(*s);
+        if (e)
+            fputs(e, f);
+        else
+            fputc(*s, f);
     }
 }
 
 /* ---- reported values --------------------------------------------------- */
 
 /* A value for a table: integers as written, other numbers to 4 digits. */
-static char *show(const gj *v)
+static char *show(const lu_json *v)
 {
     if (!v)
         return NULL;
     switch (v->type) {
-    case GJ_NUMBER:
+    case LU_JSON_NUMBER:
         if (!strpbrk(v->text, ".eE"))
             return g_strdup(v->text);
         return g_fmt("%.4g", v->number);
-    case GJ_STRING: return g_strdup(v->text);
-    case GJ_BOOL: return g_strdup(v->boolean ? "true" : "false");
+    case LU_JSON_STRING: return g_strdup(v->text);
+    case LU_JSON_BOOL: return g_strdup(v->boolean ? "true" : "false");
     default: return g_strdup("null");
     }
 }
 
 /* "✓" within tolerance of the paper, "✗" outside, "" when not comparable. */
-static const char *mark(const gj *e)
+static const char *mark(const lu_json *e)
 {
-    const gj *v = gj_get(e, "value"), *p = gj_get(e, "paper"), *t = gj_get(e, "tol");
-    if (!v || !p || !t || v->type != GJ_NUMBER || p->type != GJ_NUMBER ||
-        t->type != GJ_NUMBER)
+    const lu_json *v = lu_json_get(e, "value"), *p = lu_json_get(e, "paper"), *t = lu_json_get(e, "tol");
+    if (!v || !p || !t || v->type != LU_JSON_NUMBER || p->type != LU_JSON_NUMBER ||
+        t->type != LU_JSON_NUMBER)
         return "";
     return fabs(v->number - p->number) <= t->number ? " ✓" : " ✗";
 }
 
 /* "name: 0.27 % (paper 0.3 ± 0.05 %) ✓" */
-static char *value_line(const gj *e)
+static char *value_line(const lu_json *e)
 {
-    const char *unit = gj_string(e, "unit");
-    char *v = show(gj_get(e, "value")), *p = show(gj_get(e, "paper")),
-         *t = show(gj_get(e, "tol"));
-    const char *name = gj_string(e, "name");
+    const char *unit = lu_json_string(e, "unit");
+    char *v = show(lu_json_get(e, "value")), *p = show(lu_json_get(e, "paper")),
+         *t = show(lu_json_get(e, "tol"));
+    const char *name = lu_json_string(e, "name");
     char *paper = p ? g_fmt(" (paper %s%s%s%s%s)", p, t ? " ± " : "", t ? t : "",
                             unit ? " " : "", unit ? unit : "")
                     : g_strdup("");
@@ -123,20 +121,33 @@ static char *value_line(const gj *e)
     return line;
 }
 
-static const gj *values_of(const gj *meta)
+static const lu_json *values_of(const lu_json *meta)
 {
-    const gj *v = gj_get(meta, "values");
-    return v && v->type == GJ_ARRAY ? v : NULL;
+    const lu_json *v = lu_json_get(meta, "values");
+    return v && v->type == LU_JSON_ARRAY ? v : NULL;
 }
 
-static char *run_time(const gj *meta)
+/* A figure's values, one line each, through put (Markdown or HTML). */
+static void put_values(FILE *f, const lu_json *meta, void (*put)(FILE *, const char *))
+{
+    const lu_json *vals = values_of(meta);
+    for (size_t k = 0; vals && k < vals->n; k++) {
+        char *line = value_line(&vals->kids[k]);
+        if (k)
+            fputs("<br>", f);
+        put(f, line);
+        free(line);
+    }
+}
+
+static char *run_time(const lu_json *meta)
 {
     if (!meta)
         return g_strdup("not rendered yet");
-    double status = gj_number(meta, "status", -1);
+    double status = lu_json_number(meta, "status", -1);
     if (status != 0)
         return g_fmt("failed (exit %g)", status);
-    double s = gj_number(meta, "seconds", 0);
+    double s = lu_json_number(meta, "seconds", 0);
     return s < 60 ? g_fmt("%.1f s", s) : g_fmt("%.0f min %.0f s", floor(s / 60),
                                                fmod(s, 60));
 }
@@ -149,7 +160,7 @@ static void page_field(FILE *f, const char *heading, const char *text)
         fprintf(f, "\n## %s\n\n%s\n", heading, text);
 }
 
-int g_write_page(const g_options *o, const g_script *s, const gj *meta, char *err,
+int g_write_page(const g_options *o, const g_script *s, const lu_json *meta, char *err,
                  size_t errlen)
 {
     char *dir = g_fmt("%s/%s", o->gallery, s->stem);
@@ -165,7 +176,7 @@ int g_write_page(const g_options *o, const g_script *s, const gj *meta, char *er
     if (s->h.source)
         fprintf(f, "**Source:** %s\n\n", s->h.source);
     fprintf(f, "**Script:** [`%s.lua`](%s) · lamina %s · run time %s\n\n", s->stem,
-            rel ? rel : s->path, gj_string(meta, "version") ? gj_string(meta, "version")
+            rel ? rel : s->path, lu_json_string(meta, "version") ? lu_json_string(meta, "version")
                                                               : LAMINA_VERSION, rt);
     char *thumb = g_fmt("%s/%s", dir, G_THUMB);
     if (g_exists(thumb))
@@ -175,16 +186,16 @@ int g_write_page(const g_options *o, const g_script *s, const gj *meta, char *er
     page_field(f, "What was assumed", s->h.assumed);
     page_field(f, "Numbers it checks", s->h.checks);
 
-    const gj *vals = values_of(meta);
+    const lu_json *vals = values_of(meta);
     if (vals && vals->n) {
         fputs("\n## Measured\n\n| Quantity | Measured | Paper | Tolerance | Unit | |\n"
               "| --- | --- | --- | --- | --- | --- |\n", f);
         for (size_t i = 0; i < vals->n; i++) {
-            const gj *e = &vals->kids[i];
-            char *v = show(gj_get(e, "value")), *p = show(gj_get(e, "paper")),
-                 *tol = show(gj_get(e, "tol"));
+            const lu_json *e = &vals->kids[i];
+            char *v = show(lu_json_get(e, "value")), *p = show(lu_json_get(e, "paper")),
+                 *tol = show(lu_json_get(e, "tol"));
             fputs("| ", f);
-            g_markdown_cell(f, gj_string(e, "name"));
+            g_markdown_cell(f, lu_json_string(e, "name"));
             fputs(" | ", f);
             g_markdown_cell(f, v);
             fputs(" | ", f);
@@ -192,7 +203,7 @@ int g_write_page(const g_options *o, const g_script *s, const gj *meta, char *er
             fputs(" | ", f);
             g_markdown_cell(f, tol ? tol : "");
             fputs(" | ", f);
-            g_markdown_cell(f, gj_string(e, "unit"));
+            g_markdown_cell(f, lu_json_string(e, "unit"));
             fprintf(f, " |%s |\n", mark(e));
             free(v);
             free(p);
@@ -200,24 +211,24 @@ int g_write_page(const g_options *o, const g_script *s, const gj *meta, char *er
         }
     }
 
-    const gj *imgs = gj_get(meta, "images"), *data = gj_get(meta, "data");
-    if (imgs && imgs->type == GJ_ARRAY && imgs->n) {
+    const lu_json *imgs = lu_json_get(meta, "images"), *data = lu_json_get(meta, "data");
+    if (imgs && imgs->type == LU_JSON_ARRAY && imgs->n) {
         fputs("\n## Images\n\nFull size, as the script wrote them. They are not committed "
               "(`gallery/.gitignore`): run `lamina gallery` to see them here.\n", f);
         for (size_t i = 0; i < imgs->n; i++)
-            if (imgs->kids[i].type == GJ_STRING)
+            if (imgs->kids[i].type == LU_JSON_STRING)
                 fprintf(f, "\n### %s\n\n![%s](%s)\n", imgs->kids[i].text,
                         imgs->kids[i].text, imgs->kids[i].text);
     }
-    if (data && data->type == GJ_ARRAY && data->n) {
+    if (data && data->type == LU_JSON_ARRAY && data->n) {
         fputs("\n## Data\n\n", f);
         for (size_t i = 0; i < data->n; i++)
-            if (data->kids[i].type == GJ_STRING)
+            if (data->kids[i].type == LU_JSON_STRING)
                 fprintf(f, "- [%s](%s)\n", data->kids[i].text, data->kids[i].text);
     }
-    if (meta && gj_number(meta, "status", -1) != 0)
+    if (meta && lu_json_number(meta, "status", -1) != 0)
         fprintf(f, "\n## The last run failed\n\nExit status %g; its output is in "
-                   "[`%s`](%s).\n", gj_number(meta, "status", -1), G_LOG, G_LOG);
+                   "[`%s`](%s).\n", lu_json_number(meta, "status", -1), G_LOG, G_LOG);
     g_text_close(&t);
     int rc = g_write_file(path, t.buf, t.len, err, errlen);
     free(t.buf);
@@ -232,7 +243,7 @@ int g_write_page(const g_options *o, const g_script *s, const gj *meta, char *er
 
 typedef struct row {
     const g_script *s;
-    gj *meta;
+    lu_json *meta;
     int has_thumb;
 } row;
 
@@ -263,14 +274,7 @@ static void index_markdown(FILE *f, const g_options *o, const row *rows, size_t 
         fprintf(f, "](%s/%s) | ", s->stem, G_PAGE);
         g_markdown_cell(f, s->h.source ? s->h.source : "");
         fputs(" | ", f);
-        const gj *vals = values_of(rows[i].meta);
-        for (size_t k = 0; vals && k < vals->n; k++) {
-            char *line = value_line(&vals->kids[k]);
-            if (k)
-                fputs("<br>", f);
-            g_markdown_cell(f, line);
-            free(line);
-        }
+        put_values(f, rows[i].meta, g_markdown_cell);
         char *rt = run_time(rows[i].meta);
         fprintf(f, " | %s |\n", rt);
         free(rt);
@@ -317,14 +321,7 @@ static void index_html(FILE *f, const g_options *o, const row *rows, size_t n)
         fputs("</a></td><td>", f);
         g_html(f, s->h.source);
         fputs("</td><td class=\"num\">", f);
-        const gj *vals = values_of(rows[i].meta);
-        for (size_t k = 0; vals && k < vals->n; k++) {
-            char *line = value_line(&vals->kids[k]);
-            if (k)
-                fputs("<br>", f);
-            g_html(f, line);
-            free(line);
-        }
+        put_values(f, rows[i].meta, g_html);
         char *rt = run_time(rows[i].meta);
         fputs("</td><td class=\"num\">", f);
         g_html(f, rt);
@@ -364,7 +361,7 @@ int g_write_index(const g_options *o, const g_scripts *all, char *err, size_t er
     free(md.buf);
     free(html.buf);
     for (size_t i = 0; i < all->n; i++)
-        gj_free(rows[i].meta);
+        lu_json_free(rows[i].meta);
     free(rows);
     return rc;
 }

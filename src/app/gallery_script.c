@@ -13,6 +13,7 @@
  * twice continues too; an empty comment line ends a field; the header ends
  * at the first line that is not a comment. */
 #include "gallery.h"
+#include "util.h"
 
 #include <ctype.h>
 #include <fnmatch.h>
@@ -82,15 +83,6 @@ static void parse_header(const char *text, g_header *h)
     }
 }
 
-static void fnv(uint64_t *h, const void *data, size_t n)
-{
-    const unsigned char *p = data;
-    for (size_t i = 0; i < n; i++) {
-        *h ^= p[i];
-        *h *= 1099511628211ull;
-    }
-}
-
 static int load(g_script *s, char *err, size_t errlen)
 {
     char *text;
@@ -99,12 +91,11 @@ static int load(g_script *s, char *err, size_t errlen)
         return -1;
     parse_header(text, &s->h);
     /* the same FNV-1a as `lamina run` stamps into every PNG */
-    uint64_t h = 14695981039346656037ull;
-    fnv(&h, text, len);
-    snprintf(s->script_hash, sizeof s->script_hash, "%016llx", (unsigned long long)h);
+    uint64_t h = lu_fnv1a(LU_FNV_SEED, text, len);
+    lu_hash_hex(h, s->script_hash);
     static const char version[] = "\nlamina " LAMINA_VERSION;
-    fnv(&h, version, sizeof version - 1);
-    snprintf(s->hash, sizeof s->hash, "%016llx", (unsigned long long)h);
+    h = lu_fnv1a(h, version, sizeof version - 1);
+    lu_hash_hex(h, s->hash);
     free(text);
     return 0;
 }

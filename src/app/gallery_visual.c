@@ -43,15 +43,15 @@ static int passes(const outcome *c)
 /* The reported `state_hash` value, if any. */
 static void reported_hash(const char *report, outcome *c)
 {
-    gj *r = gj_read(report, NULL, 0);
-    const gj *vals = gj_get(r, "values");
-    for (size_t i = 0; vals && vals->type == GJ_ARRAY && i < vals->n; i++) {
-        const char *name = gj_string(&vals->kids[i], "name");
-        const char *v = gj_string(&vals->kids[i], "value");
+    lu_json *r = gj_read(report, NULL, 0);
+    const lu_json *vals = lu_json_get(r, "values");
+    for (size_t i = 0; vals && vals->type == LU_JSON_ARRAY && i < vals->n; i++) {
+        const char *name = lu_json_string(&vals->kids[i], "name");
+        const char *v = lu_json_string(&vals->kids[i], "value");
         if (name && v && !strcmp(name, "state_hash"))
             snprintf(c->state_hash, sizeof c->state_hash, "%s", v);
     }
-    gj_free(r);
+    lu_json_free(r);
 }
 
 static void baseline_hash(const char *path, outcome *c)

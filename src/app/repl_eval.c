@@ -39,25 +39,11 @@ int repl_compile(lua_State *L, const char *code)
     return REPL_ERROR;
 }
 
-static int msghandler(lua_State *L)
-{
-    const char *msg = lua_tostring(L, 1);
-    if (msg == NULL) {
-        if (luaL_callmeta(L, 1, "__tostring") && lua_type(L, -1) == LUA_TSTRING)
-            return 1;
-        msg = lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
-    }
-    const lamina_run *run = lua_touserdata(L, lua_upvalueindex(1));
-    if (run && run->stopped) return 1;   /* Ctrl-C: the message says where */
-    luaL_traceback(L, L, msg, 1);
-    return 1;
-}
-
 int repl_call(lua_State *L, lamina_run *run)
 {
     int fn = lua_gettop(L);
     lua_pushlightuserdata(L, run);
-    lua_pushcclosure(L, msghandler, 1);
+    lua_pushcclosure(L, lamina_msghandler, 1);   /* Ctrl-C: the message says where */
     lua_insert(L, fn);
     run->stopped = LAMINA_STOP_NONE;
     run->at_prompt = 1;

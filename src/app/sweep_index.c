@@ -9,20 +9,11 @@
 #include <string.h>
 
 #include "sweep.h"
-
-static uint64_t hash(const char *s)
-{
-    uint64_t h = 14695981039346656037ull;
-    for (; *s; s++) {
-        h ^= (unsigned char)*s;
-        h *= 1099511628211ull;
-    }
-    return h;
-}
+#include "util.h"
 
 static size_t slot_of(const sw_index *ix, const char *key)
 {
-    size_t mask = ix->cap - 1, i = (size_t)hash(key) & mask;
+    size_t mask = ix->cap - 1, i = (size_t)lu_fnv1a_str(key) & mask;
     while (ix->key[i] && strcmp(ix->key[i], key) != 0) i = (i + 1) & mask;
     return i;
 }

@@ -11,6 +11,16 @@
  * the value is missing. */
 int wb_option(const char *cmd, int argc, char **argv, int *i, const char *name,
               const char **val);
+/* argv[*i] as one of n options whose values are kept as given (names[k]
+ * into *slots[k]): as wb_option. */
+int wb_options(const char *cmd, int argc, char **argv, int *i, int n,
+               const char *const names[], const char **const slots[]);
+/* A word of a command line that is no option's value: --quiet or -q (when
+ * quiet is not NULL), an unknown option, or the script (one at most). 0,
+ * or -1 with a message ending in usage, or in "(try 'lamina help')" when
+ * usage is NULL. */
+int wb_word(const char *cmd, const char *a, int *quiet, const char **script,
+            const char *usage);
 /* Adds --set name=value to run->sets (room for argc entries was allocated);
  * -1 with a message on a malformed or repeated name. */
 int wb_add_set(const char *cmd, lamina_run *run, const char *kv);

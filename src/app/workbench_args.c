@@ -8,23 +8,50 @@
 #include <unistd.h>
 
 #include "workbench.h"
+#include "util.h"
 
 int wb_option(const char *cmd, int argc, char **argv, int *i, const char *name,
               const char **val)
 {
-    const char *a = argv[*i];
-    size_t n = strlen(name);
-    if (strncmp(a, name, n) != 0 || (a[n] != '=' && a[n] != '\0')) return 0;
-    if (a[n] == '=') {
-        *val = a + n + 1;
-        return 1;
-    }
-    if (*i + 1 >= argc) {
+    const char *v;
+    if (!lu_opt_value(argc, argv, i, name, &v)) return 0;
+    if (!v) {
         fprintf(stderr, "lamina %s: %s needs a value (try 'lamina help')\n", cmd, name);
         return -1;
     }
-    *val = argv[++*i];
+    *val = v;
     return 1;
+}
+
+int wb_options(const char *cmd, int argc, char **argv, int *i, int n,
+               const char *const names[], const char **const slots[])
+{
+    for (int k = 0; k < n; k++) {
+        int got = wb_option(cmd, argc, argv, i, names[k], slots[k]);
+        if (got) return got;
+    }
+    return 0;
+}
+
+int wb_word(const char *cmd, const char *a, int *quiet, const char **script,
+            const char *usage)
+{
+    if (quiet && (strcmp(a, "--quiet") == 0 || strcmp(a, "-q") == 0)) {
+        *quiet = 1;
+    } else if (a[0] == '-' && a[1]) {
+        if (usage)
+            fprintf(stderr, "lamina %s: unknown option '%s'\n%s\n", cmd, a, usage);
+        else
+            fprintf(stderr, "lamina %s: unknown option '%s' (try 'lamina help')\n", cmd, a);
+        return -1;
+    } else if (*script) {
+        fprintf(stderr, "lamina %s: more than one script given ('%s', '%s')\n", cmd, *script,
+                a);
+        return -1;
+    } else {
+        *script = a;
+    }
+    return 0;
 }
 
 int wb_add_set(const char *cmd, lamina_run *run, const char *kv)
@@ -120,12 +147,11 @@ void wb_file_sig_read(const char *path, wb_file_sig *sig)
         fclose(f);
         return;
     }
-    uint64_t h = 14695981039346656037ull;
-    int c;
-    while ((c = getc(f)) != EOF) {
-        h ^= (unsigned char)c;
-        h *= 1099511628211ull;
-    }
+    uint64_t h = LU_FNV_SEED;
+    unsigned char buf[65536];
+    size_t n;
+    while ((n = fread(buf, 1, sizeof buf, f)) > 0)
+        h = lu_fnv1a(h, buf, n);
     sig->ok = !ferror(f);
     fclose(f);
     sig->size = (long long)st.st_size;

@@ -175,10 +175,32 @@ lamina_run *la_run(lua_State *L)
 /* Every lamina object's metatable: getmetatable() gives this string and
  * setmetatable() fails ("cannot change a protected metatable"), so a script
  * reaches neither __gc nor __index (docs/design.md: a script is untrusted). */
+int la_call_pair(lua_State *L, int idx, double arg, double *a, double *b)
+{
+    lua_pushvalue(L, idx);
+    lua_pushnumber(L, arg);
+    lua_call(L, 1, 2);
+    int oka, okb;
+    *a = lua_tonumberx(L, -2, &oka);
+    *b = lua_tonumberx(L, -1, &okb);
+    lua_pop(L, 2);
+    return oka && okb && isfinite(*a) && isfinite(*b);
+}
+
 int la_new_metatable(lua_State *L, const char *name)
 {
     int fresh = luaL_newmetatable(L, name);
     lua_pushliteral(L, "locked");
     lua_setfield(L, -2, "__metatable");
     return fresh;
+}
+
+void la_new_class(lua_State *L, const char *name, const luaL_Reg *meta,
+                  const luaL_Reg *methods)
+{
+    la_new_metatable(L, name);
+    luaL_setfuncs(L, meta, 0);
+    lua_newtable(L);
+    luaL_setfuncs(L, methods, 0);
+    lua_setfield(L, -2, "__index");
 }

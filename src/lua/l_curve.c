@@ -79,15 +79,8 @@ static int l_polyline(lua_State *L)
 
 static void eval_function(lua_State *L, int fidx, double u, double *x, double *y)
 {
-    lua_pushvalue(L, fidx);
-    lua_pushnumber(L, u);
-    lua_call(L, 1, 2);
-    int okx, oky;
-    *x = lua_tonumberx(L, -2, &okx);
-    *y = lua_tonumberx(L, -1, &oky);
-    if (!okx || !oky || !isfinite(*x) || !isfinite(*y))
+    if (!la_call_pair(L, fidx, u, x, y))
         luaL_error(L, "curve function returned no point at u = %f (need two numbers)", u);
-    lua_pop(L, 2);
 }
 
 /* n points at equal arc length along a polyline of m vertices (xy). */

@@ -265,15 +265,23 @@ static lm_sim *sim_at(lua_State *L, const la_frame_ctx *ctx, int idx, const char
     return s->sim;
 }
 
+/* Pushes key's value (get); 1 when it is of type `type`, 0 when nil, else
+ * an error: '<key>' must be <must>. */
+static int typed(lua_State *L, const la_frame_ctx *ctx, int fidx, int pidx, const char *key,
+                 int type, const char *must)
+{
+    int t = get(L, fidx, pidx, key);
+    if (t != type && t != LUA_TNIL)
+        luaL_error(L, "%s: '%s' must be %s (got %s)", ctx->fn, key, must,
+                   luaL_typename(L, -1));
+    return t == type;
+}
+
 static int boolean(lua_State *L, const la_frame_ctx *ctx, int fidx, int pidx,
                    const char *key, int def)
 {
-    int t = get(L, fidx, pidx, key), v = def;
-    if (t == LUA_TBOOLEAN)
-        v = lua_toboolean(L, -1);
-    else if (t != LUA_TNIL)
-        luaL_error(L, "%s: '%s' must be true or false (got %s)", ctx->fn, key,
-                   luaL_typename(L, -1));
+    int v = typed(L, ctx, fidx, pidx, key, LUA_TBOOLEAN, "true or false")
+                ? lua_toboolean(L, -1) : def;
     lua_pop(L, 1);
     return v;
 }
@@ -282,13 +290,8 @@ static int boolean(lua_State *L, const la_frame_ctx *ctx, int fidx, int pidx,
 static const char *string(lua_State *L, const la_frame_ctx *ctx, int fidx, int pidx,
                           const char *key)
 {
-    int t = get(L, fidx, pidx, key);
-    const char *s = NULL;
-    if (t == LUA_TSTRING)
-        s = lua_tostring(L, -1);
-    else if (t != LUA_TNIL)
-        luaL_error(L, "%s: '%s' must be a string (got %s)", ctx->fn, key,
-                   luaL_typename(L, -1));
+    const char *s = typed(L, ctx, fidx, pidx, key, LUA_TSTRING, "a string")
+                        ? lua_tostring(L, -1) : NULL;
     lua_pop(L, 1);
     return s;
 }

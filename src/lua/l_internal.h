@@ -22,6 +22,9 @@ void la_check_table(lua_State *L, int idx, const char *fn);
 void la_check_keys(lua_State *L, int idx, const char *fn, const char *const keys[]);
 int la_has(lua_State *L, int idx, const char *key);
 double la_number(lua_State *L, int idx, const char *fn, const char *key);
+/* Calls the function at idx with arg: 1 with its two results in *a, *b
+ * when both are finite numbers, else 0 (the caller names the fault). */
+int la_call_pair(lua_State *L, int idx, double arg, double *a, double *b);
 double la_opt_number(lua_State *L, int idx, const char *fn, const char *key, double def);
 const char *la_opt_string(lua_State *L, int idx, const char *fn, const char *key,
                           const char *def);
@@ -37,6 +40,10 @@ void la_point_at(lua_State *L, int list, int i, const char *fn, double *x, doubl
 lamina_run *la_run(lua_State *L);
 /* luaL_newmetatable with __metatable set: every userdata type uses it. */
 int la_new_metatable(lua_State *L, const char *name);
+/* A class: la_new_metatable(name) with the metamethods meta and a method
+ * table methods as its __index; the metatable is left on the stack. */
+void la_new_class(lua_State *L, const char *name, const luaL_Reg *meta,
+                  const luaL_Reg *methods);
 
 /* l_provenance.c: the tEXt chunks of every image (Software, lamina:script,
  * lamina:script-hash, lamina:set); la_provenance pushes one string that must

@@ -27,6 +27,18 @@ static lm_material *push_material(lua_State *L)
     return m;
 }
 
+/* A material constructor's start: its options (argument 1) checked
+ * against keys, the material pushed with its kind and density rho. */
+static lm_material *new_material(lua_State *L, const char *fn, const char *const keys[],
+                                 lm_kind kind)
+{
+    la_check_keys(L, 1, fn, keys);
+    lm_material *m = push_material(L);
+    m->kind = kind;
+    m->rho = la_number(L, 1, fn, "rho");
+    return m;
+}
+
 static void validate(lua_State *L, const char *fn, const lm_material *m)
 {
     char err[256];
@@ -38,10 +50,7 @@ int la_elastic(lua_State *L)
 {
     static const char *const keys[] = {"rho", "E", "nu", "plane", NULL};
     const char *fn = "lamina.elastic";
-    la_check_keys(L, 1, fn, keys);
-    lm_material *m = push_material(L);
-    m->kind = LM_ELASTIC;
-    m->rho = la_number(L, 1, fn, "rho");
+    lm_material *m = new_material(L, fn, keys, LM_ELASTIC);
     m->E = la_number(L, 1, fn, "E");
     m->nu = la_opt_number(L, 1, fn, "nu", 0.3);
     m->plane = (lm_plane)la_option(L, fn, "plane",
@@ -56,10 +65,7 @@ int la_membrane_material(lua_State *L)
 {
     static const char *const keys[] = {"rho", "E", "nu", "thickness", "law", "one_way", NULL};
     const char *fn = "lamina.membrane";
-    la_check_keys(L, 1, fn, keys);
-    lm_material *m = push_material(L);
-    m->kind = LM_MEMBRANE;
-    m->rho = la_number(L, 1, fn, "rho");
+    lm_material *m = new_material(L, fn, keys, LM_MEMBRANE);
     m->E = la_number(L, 1, fn, "E");
     m->nu = la_opt_number(L, 1, fn, "nu", 0);
     m->thickness = la_number(L, 1, fn, "thickness");
@@ -82,10 +88,7 @@ int la_gas(lua_State *L)
                                        "density", NULL};
     static const char *const avkeys[] = {"c1", "c2", "lambda", "g", NULL};
     const char *fn = "lamina.gas";
-    la_check_keys(L, 1, fn, keys);
-    lm_material *m = push_material(L);
-    m->kind = LM_GAS;
-    m->rho = la_number(L, 1, fn, "rho");
+    lm_material *m = new_material(L, fn, keys, LM_GAS);
     m->gamma = la_opt_number(L, 1, fn, "gamma", 1.4);
     m->mu = la_opt_number(L, 1, fn, "mu", 0);
     m->split = la_opt_number(L, 1, fn, "split", 0);
@@ -134,10 +137,7 @@ int la_linear_fluid(lua_State *L)
 {
     static const char *const keys[] = {"rho", "beta", NULL};
     const char *fn = "lamina.linear_fluid";
-    la_check_keys(L, 1, fn, keys);
-    lm_material *m = push_material(L);
-    m->kind = LM_LINEAR_FLUID;
-    m->rho = la_number(L, 1, fn, "rho");
+    lm_material *m = new_material(L, fn, keys, LM_LINEAR_FLUID);
     m->beta = la_number(L, 1, fn, "beta");
     validate(L, fn, m);
     return 1;

@@ -100,7 +100,7 @@ lua_State *lamina_open_state(lamina_run *run)
     return L;
 }
 
-static int msghandler(lua_State *L)
+int lamina_msghandler(lua_State *L)
 {
     const char *msg = lua_tostring(L, 1);
     if (msg == NULL) {
@@ -108,6 +108,8 @@ static int msghandler(lua_State *L)
             return 1;
         msg = lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
     }
+    const lamina_run *run = lua_touserdata(L, lua_upvalueindex(1));
+    if (run && run->stopped) return 1;
     luaL_traceback(L, L, msg, 1);
     return 1;
 }
@@ -127,7 +129,7 @@ static int check_sets(const lamina_run *run)
 
 int lamina_run_script(lua_State *L, lamina_run *run)
 {
-    lua_pushcfunction(L, msghandler);
+    lua_pushcfunction(L, lamina_msghandler);
     int base = lua_gettop(L);
     if (la_load_script(L, run->script) != LUA_OK) {
         fprintf(stderr, "lamina: %s\n", lua_tostring(L, -1));

@@ -102,6 +102,16 @@ static la_panel *current(lua_State *L, la_figure *f, const char *fn)
     return p;
 }
 
+/* A drawing method's start: the figure (argument 1), its options
+ * (argument 2) checked against keys, and the current panel. */
+static la_panel *drawing(lua_State *L, const char *fn, const char *const keys[],
+                         la_figure **f)
+{
+    *f = check_fig(L);
+    la_check_keys(L, 2, fn, keys);
+    return current(L, *f, fn);
+}
+
 static lr_rgba read_colour(lua_State *L, int idx, const char *fn, const char *key,
                            lr_rgba def)
 {
@@ -443,9 +453,8 @@ static int l_grid(lua_State *L)
 {
     static const char *const keys[] = {"box", "cells", "colour", "width", NULL};
     const char *fn = "figure:grid";
-    la_figure *f = check_fig(L);
-    la_check_keys(L, 2, fn, keys);
-    la_panel *p = current(L, f, fn);
+    la_figure *f;
+    la_panel *p = drawing(L, fn, keys, &f);
     double lo[3], hi[3], nx, ny;
     if (read_box(L, 2, fn, "box", lo, hi) != 2)
         return luaL_error(L, "%s: 'box' = {x0, y0, x1, y1} is required", fn);
@@ -543,9 +552,8 @@ static int l_contours(lua_State *L)
 {
     static const char *const keys[] = {"phi", "levels", "bold", "box", "samples", NULL};
     const char *fn = "figure:contours";
-    la_figure *f = check_fig(L);
-    la_check_keys(L, 2, fn, keys);
-    la_panel *p = current(L, f, fn);
+    la_figure *f;
+    la_panel *p = drawing(L, fn, keys, &f);
     if (p->view.is3d)
         return luaL_error(L, "%s: contours are drawn in 2D panels only", fn);
     la_getfield(L, 2, "phi");
@@ -587,9 +595,8 @@ static int l_points(lua_State *L)
                                        NULL};
     static const char *const styles[] = {"circle", "asterisk", "dot", NULL};
     const char *fn = "figure:points";
-    la_figure *f = check_fig(L);
-    la_check_keys(L, 2, fn, keys);
-    la_panel *p = current(L, f, fn);
+    la_figure *f;
+    la_panel *p = drawing(L, fn, keys, &f);
     double *q[3];
     size_t n = read_list(L, 2, fn, "points", p->dim, q);
     int style = la_option(L, fn, "style", la_opt_string(L, 2, fn, "style", "circle"),
@@ -655,9 +662,8 @@ static int l_arrows(lua_State *L)
                                        "width", NULL};
     static const char *const styles[] = {"solid", "dashed", NULL};
     const char *fn = "figure:arrows";
-    la_figure *f = check_fig(L);
-    la_check_keys(L, 2, fn, keys);
-    la_panel *p = current(L, f, fn);
+    la_figure *f;
+    la_panel *p = drawing(L, fn, keys, &f);
     int dashed = la_option(L, fn, "style", la_opt_string(L, 2, fn, "style", "solid"),
                            styles);
     double len = la_opt_number(L, 2, fn, "length", 0.15 * panel_size(p));
@@ -672,9 +678,8 @@ static int l_polyline(lua_State *L)
 {
     static const char *const keys[] = {"points", "colour", "width", "dashed", NULL};
     const char *fn = "figure:polyline";
-    la_figure *f = check_fig(L);
-    la_check_keys(L, 2, fn, keys);
-    la_panel *p = current(L, f, fn);
+    la_figure *f;
+    la_panel *p = drawing(L, fn, keys, &f);
     double *q[3];
     size_t n = read_list(L, 2, fn, "points", p->dim, q);
     la_getfield(L, 2, "dashed");
@@ -697,9 +702,8 @@ static int l_text(lua_State *L)
     static const char *const keys[] = {"text", "at", "size", "colour", "align", NULL};
     static const char *const aligns[] = {"left", "center", "right", NULL};
     const char *fn = "figure:text";
-    la_figure *f = check_fig(L);
-    la_check_keys(L, 2, fn, keys);
-    la_panel *p = current(L, f, fn);
+    la_figure *f;
+    la_panel *p = drawing(L, fn, keys, &f);
     const char *t = la_opt_string(L, 2, fn, "text", NULL);
     if (!t)
         return luaL_error(L, "%s: 'text' is required", fn);
@@ -783,9 +787,8 @@ static int l_normals(lua_State *L)
     static const char *const keys[] = {"result", "points", "exact", "length", "levels",
                                        "samples", NULL};
     const char *fn = "figure:normals";
-    la_figure *f = check_fig(L);
-    la_check_keys(L, 2, fn, keys);
-    la_panel *p = current(L, f, fn);
+    la_figure *f;
+    la_panel *p = drawing(L, fn, keys, &f);
     if (la_getfield(L, 2, "result") != LUA_TTABLE)
         return luaL_error(L, "%s: 'result' must be what lamina.normals returned", fn);
     int res = lua_gettop(L);
@@ -947,12 +950,7 @@ void la_open_figure(lua_State *L)
                                        {"arrows", l_arrows},     {"polyline", l_polyline},
                                        {"text", l_text},         {"normals", l_normals},
                                        {"write", l_write},       {NULL, NULL}};
-    la_new_metatable(L, LA_FIGURE);
-    luaL_newlib(L, methods);
-    lua_setfield(L, -2, "__index");
-    lua_pushcfunction(L, l_gc);
-    lua_setfield(L, -2, "__gc");
-    lua_pushcfunction(L, l_tostring);
-    lua_setfield(L, -2, "__tostring");
+    static const luaL_Reg meta[] = {{"__gc", l_gc}, {"__tostring", l_tostring}, {NULL, NULL}};
+    la_new_class(L, LA_FIGURE, meta, methods);
     lua_pop(L, 1);
 }

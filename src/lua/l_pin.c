@@ -82,15 +82,8 @@ static size_t *read_points(lua_State *L, const lm_sim *sim, int b, size_t *n)
 /* velocity: {vx, vy} or a function(t) -> vx, vy; the two numbers. */
 static void call_velocity(lua_State *L, int f, double t, double *vx, double *vy)
 {
-    lua_pushvalue(L, f);
-    lua_pushnumber(L, t);
-    lua_call(L, 1, 2);
-    int ok1, ok2;
-    *vx = lua_tonumberx(L, -2, &ok1);
-    *vy = lua_tonumberx(L, -1, &ok2);
-    if (!ok1 || !ok2 || !isfinite(*vx) || !isfinite(*vy))
+    if (!la_call_pair(L, f, t, vx, vy))
         luaL_error(L, "body:pin: the velocity function must return two finite numbers");
-    lua_pop(L, 2);
 }
 
 int la_body_pin(lua_State *L)
@@ -179,10 +172,7 @@ void la_open_pin(lua_State *L)
     static const luaL_Reg meta[] = {{"__len", pin_len}, {"__tostring", pin_tostring},
                                     {NULL, NULL}};
     static const luaL_Reg methods[] = {{"reaction", pin_reaction}, {NULL, NULL}};
-    luaL_newmetatable(L, LA_PIN);
-    luaL_setfuncs(L, meta, 0);
-    luaL_newlib(L, methods);
-    lua_setfield(L, -2, "__index");
+    la_new_class(L, LA_PIN, meta, methods);
     lua_pushliteral(L, "lamina.pin");
     lua_setfield(L, -2, "__metatable");
     lua_pop(L, 1);

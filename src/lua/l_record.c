@@ -489,10 +489,7 @@ void la_open_record(lua_State *L)
                                        {"mean", rec_mean},
                                        {"write", rec_write},
                                        {NULL, NULL}};
-    la_new_metatable(L, LA_RECORD);
-    luaL_setfuncs(L, meta, 0);
-    luaL_newlib(L, methods);
-    lua_setfield(L, -2, "__index");
+    la_new_class(L, LA_RECORD, meta, methods);
     lua_pop(L, 1);
 }
 

@@ -114,9 +114,6 @@ void la_open_region(lua_State *L)
                                     {"__tostring", region_tostring},
                                     {NULL, NULL}};
     static const luaL_Reg methods[] = {{"contains", region_contains}, {NULL, NULL}};
-    la_new_metatable(L, LA_REGION);
-    luaL_setfuncs(L, meta, 0);
-    luaL_newlib(L, methods);
-    lua_setfield(L, -2, "__index");
+    la_new_class(L, LA_REGION, meta, methods);
     lua_pop(L, 1);
 }

@@ -129,6 +129,14 @@ static void add_scalar_text(lua_State *L, luaL_Buffer *b, int idx)
     }
 }
 
+/* " unit" when the value at idx is one. */
+static void add_unit(lua_State *L, luaL_Buffer *b, int idx)
+{
+    if (lua_isnil(L, idx)) return;
+    luaL_addchar(b, ' ');
+    luaL_addstring(b, lua_tostring(L, idx));
+}
+
 /* "report: name = value unit  (paper x unit, tol t)" on stdout. The
  * fields are pushed first: a luaL_Buffer must stay on top of the stack
  * while it is in use. */
@@ -148,17 +156,11 @@ static void print_entry(lua_State *L, int e)
     luaL_addstring(&b, lua_tostring(L, name));
     luaL_addstring(&b, " = ");
     add_scalar_text(L, &b, value);
-    if (!lua_isnil(L, unit)) {
-        luaL_addchar(&b, ' ');
-        luaL_addstring(&b, lua_tostring(L, unit));
-    }
+    add_unit(L, &b, unit);
     if (!lua_isnil(L, paper)) {
         luaL_addstring(&b, "  (paper ");
         add_scalar_text(L, &b, paper);
-        if (!lua_isnil(L, unit)) {
-            luaL_addchar(&b, ' ');
-            luaL_addstring(&b, lua_tostring(L, unit));
-        }
+        add_unit(L, &b, unit);
         if (!lua_isnil(L, tol)) {
             luaL_addstring(&b, ", tol ");
             add_scalar_text(L, &b, tol);

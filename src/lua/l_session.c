@@ -12,20 +12,6 @@
 /* The registry table l_report.c keeps: an array of {name =, value =, ...}. */
 #define REPORT_KEY "lamina.report"
 
-static int msghandler(lua_State *L)
-{
-    const char *msg = lua_tostring(L, 1);
-    if (msg == NULL) {
-        if (luaL_callmeta(L, 1, "__tostring") && lua_type(L, -1) == LUA_TSTRING)
-            return 1;
-        msg = lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
-    }
-    lamina_run *run = la_run(L);
-    if (run && run->stopped) return 1;   /* a stop: no traceback */
-    luaL_traceback(L, L, msg, 1);
-    return 1;
-}
-
 static void first_line(const char *text, char *msg, size_t len)
 {
     if (!len) return;
@@ -40,7 +26,8 @@ int lamina_run_watched(lua_State *L, lamina_run *run, char *msg, size_t len)
     first_line("", msg, len);
     run->stopped = LAMINA_STOP_NONE;
     run->stop_why = NULL;
-    lua_pushcfunction(L, msghandler);
+    lua_pushlightuserdata(L, la_run(L));   /* a stop: no traceback */
+    lua_pushcclosure(L, lamina_msghandler, 1);
     int base = lua_gettop(L);
     if (la_load_script(L, run->script) != LUA_OK) {
         fprintf(stderr, "lamina: %s\n", lua_tostring(L, -1));

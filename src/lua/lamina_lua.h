@@ -71,6 +71,11 @@ int lamina_check_script_file(const char *path, char *err, size_t len);
 /* Loads and runs run->script in L; prints errors with file:line and a
  * traceback to stderr; returns the exit status. */
 int lamina_run_script(lua_State *L, lamina_run *run);
+/* The message handler of every protected call of a script (run, watch,
+ * repl): the message with a traceback; the message alone when upvalue 1 is
+ * a lamina_run that was stopped (Ctrl-C, a watch's stop: it says where).
+ * Push it as a C closure with the run as a light userdata, or bare. */
+int lamina_msghandler(lua_State *L);
 
 /* ---- the workbench: lamina repl / watch / sweep (docs/workbench.md) ---- */
 

@@ -294,17 +294,7 @@ static void pin_field(const lm_sim *sim, lm_contact_field *f)
     int held = 0;
     for (int k = 0; k < sim->npins && !held; k++) held = sim->pins[k].body == f->body;
     if (!held) return;
-    size_t nn = lm_grid_nodes(&sim->grid);
-    double dt = sim->def.dt;
-    for (size_t i = 0; i < nn; i++) {
-        if (!(sim->pin_w[i] > 0) || f->m[i] <= 0) continue;
-        double px = f->m[i] * sim->pin_vx[i] / sim->pin_w[i];
-        double py = f->m[i] * sim->pin_vy[i] / sim->pin_w[i];
-        f->fx[i] += (px - f->px[i]) / dt;
-        f->fy[i] += (py - f->py[i]) / dt;
-        f->px[i] = px;
-        f->py[i] = py;
-    }
+    lm_pin_hold(sim, f->m, f->px, f->py, f->fx, f->fy);
 }
 
 void lm_contact_correct(lm_sim *sim)

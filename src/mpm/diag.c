@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "step.h"
+#include "util.h"
 
 /* docs/physics.md §1: kinetic sum 1/2 m v^2; strain sum V 1/2 sigma:C^-1:sigma
  * (from the stress, so it stays objective); potential -sum m g.x with the
@@ -157,25 +158,15 @@ void lm_sim_momentum(const lm_sim *sim, double *px, double *py)
     *py = sy;
 }
 
-static uint64_t fnv1a(uint64_t h, const void *data, size_t n)
-{
-    const unsigned char *c = data;
-    for (size_t k = 0; k < n; k++) {
-        h ^= c[k];
-        h *= 1099511628211ull;
-    }
-    return h;
-}
-
 uint64_t lm_sim_hash(const lm_sim *sim)
 {
     const lm_particles *p = &sim->p;
-    uint64_t h = 14695981039346656037ull;
+    uint64_t h = LU_FNV_SEED;
     const double *f[] = {p->x, p->y, p->vx, p->vy, p->rho,
                          p->sxx, p->syy, p->sxy, p->szz, p->et, p->e, p->ev};
     for (size_t k = 0; k < sizeof f / sizeof f[0]; k++)
-        if (p->n) h = fnv1a(h, f[k], p->n * sizeof(double));
-    h = fnv1a(h, &sim->step, sizeof sim->step);
+        if (p->n) h = lu_fnv1a(h, f[k], p->n * sizeof(double));
+    h = lu_fnv1a(h, &sim->step, sizeof sim->step);
     return h;
 }
 
@@ -221,34 +212,37 @@ static void polygon_vertex(const lm_sim *sim, const lm_body *m, size_t k, double
     *y = k < m->count ? sim->p.y[m->first + k] : cy;
 }
 
-double lm_membrane_enclosed_area(const lm_sim *sim, int body, double cx, double cy)
+/* The polygon's sums by Green's theorem: *a = sum (x_j y_k - x_k y_j)
+ * (twice the signed area) and *v = sum (x_j + x_k)(x_j y_k - x_k y_j)
+ * (six times the first moment int x dA). */
+static void polygon_sums(const lm_sim *sim, int body, double cx, double cy, double *a,
+                         double *v)
 {
     const lm_body *m = &sim->bodies[body];
     size_t nv = polygon_size(m);
-    double a = 0;
+    *a = *v = 0;
     for (size_t k = 0, j = nv - 1; k < nv; j = k++) {
         double xk, yk, xj, yj;
         polygon_vertex(sim, m, k, cx, cy, &xk, &yk);
         polygon_vertex(sim, m, j, cx, cy, &xj, &yj);
-        a += xj * yk - xk * yj;
+        *a += xj * yk - xk * yj;
+        *v += (xj + xk) * (xj * yk - xk * yj);
     }
+}
+
+double lm_membrane_enclosed_area(const lm_sim *sim, int body, double cx, double cy)
+{
+    double a, v;
+    polygon_sums(sim, body, cx, cy, &a, &v);
     return 0.5 * fabs(a);
 }
 
 double lm_membrane_enclosed_volume(const lm_sim *sim, int body, double cx, double cy)
 {
     if (!sim->def.axisym) return lm_membrane_enclosed_area(sim, body, cx, cy);
-    /* per radian: the polygon's first moment int x dA, by Green's theorem
-     * (1/6) sum (x_j + x_k)(x_j y_k - x_k y_j) */
-    const lm_body *m = &sim->bodies[body];
-    size_t nv = polygon_size(m);
-    double v = 0;
-    for (size_t k = 0, j = nv - 1; k < nv; j = k++) {
-        double xk, yk, xj, yj;
-        polygon_vertex(sim, m, k, cx, cy, &xk, &yk);
-        polygon_vertex(sim, m, j, cx, cy, &xj, &yj);
-        v += (xj + xk) * (xj * yk - xk * yj);
-    }
+    /* per radian: the polygon's first moment int x dA */
+    double a, v;
+    polygon_sums(sim, body, cx, cy, &a, &v);
     return fabs(v) / 6;
 }
 

@@ -4,6 +4,7 @@
 
 #include "mpm.h"
 #include "step.h"
+#include "util.h"
 
 /* docs/physics.md §5: the plane-strain P-wave or the plane-stress wave. */
 double lm_material_wave_speed(const lm_material *mat)
@@ -25,60 +26,51 @@ double lm_material_wave_speed(const lm_material *mat)
     return 0;
 }
 
+/* 0 when ok, else -1 with "what (got v)" in err. */
+static int check(int ok, double v, const char *what, char *err, size_t errlen)
+{
+    if (ok) return 0;
+    lu_err(err, errlen, "%s (got %g)", what, v);
+    return -1;
+}
+
 int lm_material_validate(const lm_material *mat, char *err, size_t errlen)
 {
-    if (!(mat->rho > 0) || !isfinite(mat->rho)) {
-        snprintf(err, errlen, "rho must be positive and finite (got %g)", mat->rho);
+    if (check(mat->rho > 0 && isfinite(mat->rho), mat->rho, "rho must be positive and finite",
+              err, errlen))
         return -1;
-    }
     switch (mat->kind) {
     case LM_ELASTIC:
-        if (!(mat->E > 0) || !isfinite(mat->E)) {
-            snprintf(err, errlen, "E must be positive and finite (got %g)", mat->E);
+        if (check(mat->E > 0 && isfinite(mat->E), mat->E, "E must be positive and finite", err,
+                  errlen) ||
+            check(mat->nu > -1 && mat->nu < 0.5, mat->nu, "nu must lie in (-1, 0.5)", err,
+                  errlen))
             return -1;
-        }
-        if (!(mat->nu > -1) || !(mat->nu < 0.5)) {
-            snprintf(err, errlen, "nu must lie in (-1, 0.5) (got %g)", mat->nu);
-            return -1;
-        }
         break;
     case LM_MEMBRANE:
-        if (!(mat->E >= 0) || !isfinite(mat->E)) {
-            snprintf(err, errlen, "E must be non-negative and finite (got %g)", mat->E);
+        if (check(mat->E >= 0 && isfinite(mat->E), mat->E, "E must be non-negative and finite",
+                  err, errlen) ||
+            check(mat->nu > -1 && mat->nu < 1, mat->nu, "nu must lie in (-1, 1)", err, errlen) ||
+            check(mat->thickness > 0 && isfinite(mat->thickness), mat->thickness,
+                  "thickness must be positive", err, errlen))
             return -1;
-        }
-        if (!(mat->nu > -1) || !(mat->nu < 1)) {
-            snprintf(err, errlen, "nu must lie in (-1, 1) (got %g)", mat->nu);
-            return -1;
-        }
-        if (!(mat->thickness > 0) || !isfinite(mat->thickness)) {
-            snprintf(err, errlen, "thickness must be positive (got %g)", mat->thickness);
-            return -1;
-        }
         break;
     case LM_GAS:
-        if (!(mat->gamma > 1) || !isfinite(mat->gamma)) {
-            snprintf(err, errlen, "gamma must be greater than 1 (got %g)", mat->gamma);
+        if (check(mat->gamma > 1 && isfinite(mat->gamma), mat->gamma,
+                  "gamma must be greater than 1", err, errlen) ||
+            check(mat->e0 >= 0 && isfinite(mat->e0), mat->e0,
+                  "the internal energy e must be >= 0", err, errlen) ||
+            check(mat->mu >= 0 && isfinite(mat->mu), mat->mu, "mu must be >= 0", err, errlen))
             return -1;
-        }
-        if (!(mat->e0 >= 0) || !isfinite(mat->e0)) {
-            snprintf(err, errlen, "the internal energy e must be >= 0 (got %g)", mat->e0);
-            return -1;
-        }
-        if (!(mat->mu >= 0) || !isfinite(mat->mu)) {
-            snprintf(err, errlen, "mu must be >= 0 (got %g)", mat->mu);
-            return -1;
-        }
         if (mat->av && !(mat->av_lambda > 0 && mat->av_c1 >= 0 && mat->av_c2 >= 0)) {
-            snprintf(err, errlen, "artificial viscosity needs lambda > 0, c1 >= 0, c2 >= 0");
+            lu_err(err, errlen, "artificial viscosity needs lambda > 0, c1 >= 0, c2 >= 0");
             return -1;
         }
         break;
     case LM_LINEAR_FLUID:
-        if (!(mat->beta > 0) || !isfinite(mat->beta)) {
-            snprintf(err, errlen, "beta must be positive (got %g)", mat->beta);
+        if (check(mat->beta > 0 && isfinite(mat->beta), mat->beta, "beta must be positive", err,
+                  errlen))
             return -1;
-        }
         break;
     }
     return 0;

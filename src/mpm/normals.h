@@ -261,6 +261,11 @@ typedef struct lm_nopts {
     int skip_cond;              /* for every fit: cond(T) not computed */
 } lm_nopts;
 
+/* An element's fit options: the defaults, then the grid's solver, phi2,
+ * cond_limit, smooth, clearance and skip_cond, and its seed mixed with key
+ * (one random stream per element). */
+void lm_nfit_opts_of(lm_nfit_opts *fo, const lm_nopts *o, uint64_t key);
+
 void lm_nopts_default(lm_nopts *o);
 
 /* The robust construction for dynamic runs (docs/normals.md, "Centred

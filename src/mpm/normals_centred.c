@@ -178,15 +178,8 @@ lm_nerr lm_normals_centred(const lm_ngrid *g, const lm_nbins *b, size_t n,
                 break;
         }
         lm_nfit_opts fo;
-        lm_nfit_opts_default(&fo);
+        lm_nfit_opts_of(&fo, o, SITE_STREAM | (uint64_t)sp[a0].key);
         fo.basis = !linear && unique >= quad_min ? LM_NB_QUADRATIC : LM_NB_LINEAR;
-        fo.solver = o->solver;
-        fo.phi2 = o->phi2;
-        fo.cond_limit = o->cond_limit;
-        fo.smooth = o->smooth;
-        fo.clearance = o->clearance;
-        fo.skip_cond = o->skip_cond;
-        fo.seed = lm_nrng_mix(o->seed, SITE_STREAM | (uint64_t)sp[a0].key);
         e = lm_nfit_element(&box, x, sel, k, &fo, &el.fit, err, errlen);
         if (e == LM_NERR_TOO_FEW && whole)
             snprintf(err, errlen, "only %d distinct membrane point%s in the whole grid: "

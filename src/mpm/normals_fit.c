@@ -19,6 +19,7 @@
 #include <string.h>
 
 #include "normals.h"
+#include "util.h"
 
 /* A random point closer than this (relative to the element) to a membrane
  * point would make the system inconsistent: it is drawn again. */
@@ -36,6 +37,18 @@ void lm_nfit_opts_default(lm_nfit_opts *o)
     o->basis = LM_NB_LINEAR;
     o->solver = LM_NS_QR;
     o->seed = 1;
+}
+
+void lm_nfit_opts_of(lm_nfit_opts *fo, const lm_nopts *o, uint64_t key)
+{
+    lm_nfit_opts_default(fo);
+    fo->solver = o->solver;
+    fo->phi2 = o->phi2;
+    fo->cond_limit = o->cond_limit;
+    fo->smooth = o->smooth;
+    fo->clearance = o->clearance;
+    fo->skip_cond = o->skip_cond;
+    fo->seed = lm_nrng_mix(o->seed, key);
 }
 
 /* "(x, y)" or "(x, y, z)" */
@@ -66,15 +79,13 @@ static int same_point(const lm_nbox *b, const double p[3], const double q[3],
 static lm_nerr check_box(const lm_nbox *b, char *err, size_t errlen)
 {
     if (!b || (b->dim != 2 && b->dim != 3)) {
-        if (err && errlen)
-            snprintf(err, errlen, "the element must be 2D or 3D");
+        lu_err(err, errlen, "the element must be 2D or 3D");
         return LM_NERR_INPUT;
     }
     for (int a = 0; a < b->dim; a++)
         if (!isfinite(b->lo[a]) || !isfinite(b->hi[a]) || !(b->hi[a] > b->lo[a])) {
-            if (err && errlen)
-                snprintf(err, errlen, "the element is empty or not finite "
-                         "(axis %d: [%g, %g])", a, b->lo[a], b->hi[a]);
+            lu_err(err, errlen, "the element is empty or not finite "
+                   "(axis %d: [%g, %g])", a, b->lo[a], b->hi[a]);
             return LM_NERR_INPUT;
         }
     return LM_NERR_NONE;
@@ -91,9 +102,8 @@ static lm_nerr check_points(const lm_nbox *b, const double *const x[3],
         char buf[96];
         for (int a = 0; a < b->dim; a++) {
             if (!isfinite(p[a])) {
-                if (err && errlen)
-                    snprintf(err, errlen, "point %zu %s is not finite", q + 1,
-                             fmt_point(buf, sizeof buf, b->dim, p));
+                lu_err(err, errlen, "point %zu %s is not finite", q + 1,
+                       fmt_point(buf, sizeof buf, b->dim, p));
                 return LM_NERR_NOT_FINITE;
             }
         }
@@ -226,14 +236,12 @@ lm_nerr lm_nfit_element(const lm_nbox *box, const double *const x[3],
     if (e)
         return e;
     if (o->basis != LM_NB_LINEAR && o->basis != LM_NB_QUADRATIC) {
-        if (err && errlen)
-            snprintf(err, errlen, "an element is fitted with the linear or the "
-                     "quadratic basis");
+        lu_err(err, errlen, "an element is fitted with the linear or the "
+               "quadratic basis");
         return LM_NERR_INPUT;
     }
     if (k == 0) {
-        if (err && errlen)
-            snprintf(err, errlen, "no membrane points in the element");
+        lu_err(err, errlen, "no membrane points in the element");
         return LM_NERR_TOO_FEW;
     }
     if ((e = check_points(box, x, idx, k, err, errlen)))
@@ -248,10 +256,9 @@ lm_nerr lm_nfit_element(const lm_nbox *box, const double *const x[3],
     fit->nunique = lm_npoints_unique(box, x, idx, k);
     int need = o->min_points > 0 ? o->min_points : box->dim;
     if (fit->nunique < need) {
-        if (err && errlen)
-            snprintf(err, errlen, "only %d distinct membrane point%s in the element: "
-                     "at least %d are needed for a normal in %dD", fit->nunique,
-                     fit->nunique == 1 ? "" : "s", need, box->dim);
+        lu_err(err, errlen, "only %d distinct membrane point%s in the element: "
+               "at least %d are needed for a normal in %dD", fit->nunique,
+               fit->nunique == 1 ? "" : "s", need, box->dim);
         return LM_NERR_TOO_FEW;
     }
     if (fit->nunique < fit->npoints)
@@ -265,8 +272,7 @@ lm_nerr lm_nfit_element(const lm_nbox *box, const double *const x[3],
     if (!S || !rhs) {
         free(S);
         free(rhs);
-        if (err && errlen)
-            snprintf(err, errlen, "out of memory (%d x %d system)", fit->rows, fit->n);
+        lu_err(err, errlen, "out of memory (%d x %d system)", fit->rows, fit->n);
         return LM_NERR_MEMORY;
     }
     lm_nrng rng;
@@ -289,15 +295,13 @@ lm_nerr lm_nfit_element(const lm_nbox *box, const double *const x[3],
     free(S);
     free(rhs);
     if (e == LM_NERR_SINGULAR) {
-        if (err && errlen)
-            snprintf(err, errlen, "the normal equations are singular (a zero pivot): "
-                     "%d points, %d unknowns; use the QR solver", (int)k, fit->n);
+        lu_err(err, errlen, "the normal equations are singular (a zero pivot): "
+               "%d points, %d unknowns; use the QR solver", (int)k, fit->n);
         return e;
     }
     if (e) {
-        if (err && errlen)
-            snprintf(err, errlen, "out of memory solving a %d x %d system", fit->rows,
-                     fit->n);
+        lu_err(err, errlen, "out of memory solving a %d x %d system", fit->rows,
+               fit->n);
         return e;
     }
     if (fit->draws > 1)

@@ -310,14 +310,7 @@ static lm_nerr solve_cell(const lm_ngrid *g, const lm_nbins *b, const double *co
     int unique = lm_npoints_unique(&box, x, b->order + k0, k);
 
     lm_nfit_opts fo;
-    lm_nfit_opts_default(&fo);
-    fo.solver = o->solver;
-    fo.phi2 = o->phi2;
-    fo.cond_limit = o->cond_limit;
-    fo.smooth = o->smooth;
-    fo.clearance = o->clearance;
-    fo.skip_cond = o->skip_cond;
-    fo.seed = lm_nrng_mix(o->seed, (uint64_t)id);
+    lm_nfit_opts_of(&fo, o, (uint64_t)id);
     if (o->basis == LM_NB_HYBRID)
         fo.basis = unique >= quad_min ? LM_NB_QUADRATIC : LM_NB_LINEAR;
     else

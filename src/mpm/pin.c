@@ -125,15 +125,22 @@ void lm_pin_grid(lm_sim *sim)
             }
         }
     }
-    size_t nn = lm_grid_nodes(g);
+    lm_pin_hold(sim, g->m, g->px, g->py, g->fx, g->fy);
+}
+
+void lm_pin_hold(const lm_sim *sim, const double *m, double *px, double *py, double *fx,
+                 double *fy)
+{
+    size_t nn = lm_grid_nodes(&sim->grid);
+    double dt = sim->def.dt;
     for (size_t i = 0; i < nn; i++) {
-        if (!(sim->pin_w[i] > 0)) continue;
-        double px = g->m[i] * sim->pin_vx[i] / sim->pin_w[i];
-        double py = g->m[i] * sim->pin_vy[i] / sim->pin_w[i];
-        g->fx[i] += (px - g->px[i]) / dt;
-        g->fy[i] += (py - g->py[i]) / dt;
-        g->px[i] = px;
-        g->py[i] = py;
+        if (!(sim->pin_w[i] > 0) || m[i] <= 0) continue;
+        double hx = m[i] * sim->pin_vx[i] / sim->pin_w[i];
+        double hy = m[i] * sim->pin_vy[i] / sim->pin_w[i];
+        fx[i] += (hx - px[i]) / dt;
+        fy[i] += (hy - py[i]) / dt;
+        px[i] = hx;
+        py[i] = hy;
     }
 }
 

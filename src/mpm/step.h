@@ -169,6 +169,11 @@ void lm_stress_cell_forces(lm_sim *sim);
 void lm_pin_p2g(lm_sim *sim);        /* step 1: the held nodes' weights */
 void lm_pin_grid(lm_sim *sim);       /* step 3: p^L and f at held nodes */
 void lm_pin_particles(lm_sim *sim);  /* after step 4: v_p = v_pin */
+/* A field's p^L = m v_pin at the nodes the pins hold (pin_w > 0, m > 0;
+ * a held node of the shared grid always has mass), and the force f that
+ * makes it so: lm_pin_grid's and each pinned body's own field's. */
+void lm_pin_hold(const lm_sim *sim, const double *m, double *px, double *py, double *fx,
+                 double *fy);
 void lm_pin_velocity(lm_sim *sim);   /* step 5: the strain velocity */
 
 /* material_gas.c: [F] §3.3 eqs 21-25, [F] eq 26. */

@@ -20,6 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <zlib.h>
+#include "util.h"
 
 #define ZLEVEL 9            /* animations are written once, watched often */
 #define CHUNK_MAX (1u << 24) /* image data split into chunks of this size */
@@ -35,16 +36,6 @@ struct lr_apng {
     int failed;
     char why[256];
 };
-
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-{
-    if (!err || errlen == 0)
-        return;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-}
 
 /* ---- chunks ------------------------------------------------------------- */
 
@@ -206,11 +197,11 @@ lr_apng *lr_apng_open(const char *path, int w, int h, unsigned nframes, double f
                       char *err, size_t errlen)
 {
     if (w < 1 || h < 1 || w > LR_CANVAS_MAX_SIZE || h > LR_CANVAS_MAX_SIZE) {
-        set_err(err, errlen, "cannot write '%s': invalid frame size %dx%d", path, w, h);
+        lu_err(err, errlen, "cannot write '%s': invalid frame size %dx%d", path, w, h);
         return NULL;
     }
     if (nframes < 1 || !(fps >= 0.02 && fps <= 1000)) {
-        set_err(err, errlen, "cannot write '%s': %s", path, nframes < 1 ?
+        lu_err(err, errlen, "cannot write '%s': %s", path, nframes < 1 ?
                 "no frames" : "fps must be in [0.02, 1000]");
         return NULL;
     }
@@ -226,7 +217,7 @@ lr_apng *lr_apng_open(const char *path, int w, int h, unsigned nframes, double f
             free(a->rows);
         }
         free(a);
-        set_err(err, errlen, "cannot write '%s': out of memory", path);
+        lu_err(err, errlen, "cannot write '%s': out of memory", path);
         return NULL;
     }
     a->w = w;
@@ -305,7 +296,7 @@ static int changed_box(const lr_apng *a, const unsigned char *img, int *x0, int 
 int lr_apng_add(lr_apng *a, const unsigned char *rgba, char *err, size_t errlen)
 {
     if (a->added >= a->nframes) {
-        set_err(err, errlen, "cannot write '%s': more frames than announced (%u)",
+        lu_err(err, errlen, "cannot write '%s': more frames than announced (%u)",
                 a->out.path, a->nframes);
         return -1;
     }
@@ -320,7 +311,7 @@ int lr_apng_add(lr_apng *a, const unsigned char *rgba, char *err, size_t errlen)
     memcpy(a->prev, rgba, 4 * (size_t)a->w * (size_t)a->h);
     a->added++;
     if (a->failed) {
-        set_err(err, errlen, "cannot write '%s': %s", a->out.path, a->why);
+        lu_err(err, errlen, "cannot write '%s': %s", a->out.path, a->why);
         return -1;
     }
     return 0;

@@ -8,16 +8,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
-
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-{
-    if (!err || errlen == 0)
-        return;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-}
+#include "util.h"
 
 /* Makes sure dir exists as a directory, creating it if missing; *made is
  * set when this call created it. */
@@ -27,7 +18,7 @@ static int ensure_dir(const char *dir, const char *path, int *made, char *err, s
     *made = 0;
     if (stat(dir, &st) != 0) {
         if (errno != ENOENT) {
-            set_err(err, errlen, "cannot write '%s': '%s': %s", path, dir,
+            lu_err(err, errlen, "cannot write '%s': '%s': %s", path, dir,
                     strerror(errno));
             return -1;
         }
@@ -37,13 +28,13 @@ static int ensure_dir(const char *dir, const char *path, int *made, char *err, s
         }
         /* another process may have created it in between */
         if (errno != EEXIST || stat(dir, &st) != 0) {
-            set_err(err, errlen, "cannot write '%s': cannot create directory "
+            lu_err(err, errlen, "cannot write '%s': cannot create directory "
                     "'%s': %s", path, dir, strerror(errno));
             return -1;
         }
     }
     if (!S_ISDIR(st.st_mode)) {
-        set_err(err, errlen, "cannot write '%s': '%s' is not a directory",
+        lu_err(err, errlen, "cannot write '%s': '%s' is not a directory",
                 path, dir);
         return -1;
     }
@@ -77,7 +68,7 @@ static int make_parents(lr_atomic *a, const char *path, char *err, size_t errlen
     size_t len = (size_t)(slash - path);
     char *dir = malloc(len + 1);
     if (!dir) {
-        set_err(err, errlen, "cannot write '%s': out of memory", path);
+        lu_err(err, errlen, "cannot write '%s': out of memory", path);
         return -1;
     }
     memcpy(dir, path, len);
@@ -110,7 +101,7 @@ static int check_target(const char *path, char *err, size_t errlen)
 {
     struct stat st;
     if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
-        set_err(err, errlen, "cannot write '%s': it exists and is not a "
+        lu_err(err, errlen, "cannot write '%s': it exists and is not a "
                 "regular file", path);
         return -1;
     }
@@ -132,7 +123,7 @@ int lr_atomic_open(lr_atomic *a, const char *path, char *err, size_t errlen)
 {
     memset(a, 0, sizeof *a);
     if (!path || !*path) {
-        set_err(err, errlen, "cannot write: empty path");
+        lu_err(err, errlen, "cannot write: empty path");
         return -1;
     }
     if (check_target(path, err, errlen) != 0 || make_parents(a, path, err, errlen) != 0)
@@ -143,13 +134,13 @@ int lr_atomic_open(lr_atomic *a, const char *path, char *err, size_t errlen)
      * atomic; the owner in the name lets a later run remove it */
     a->tmp = lr_temp_template(path);
     if (!a->tmp) {
-        set_err(err, errlen, "cannot write '%s': out of memory", path);
+        lu_err(err, errlen, "cannot write '%s': out of memory", path);
         remove_made(a);
         return -1;
     }
     int fd = mkstemp(a->tmp);
     if (fd < 0) {
-        set_err(err, errlen, "cannot write '%s': cannot create temporary "
+        lu_err(err, errlen, "cannot write '%s': cannot create temporary "
                 "file: %s", path, strerror(errno));
         free(a->tmp);
         a->tmp = NULL;
@@ -160,7 +151,7 @@ int lr_atomic_open(lr_atomic *a, const char *path, char *err, size_t errlen)
         int e = errno;
         close(fd);
         unlink(a->tmp);
-        set_err(err, errlen, "cannot write '%s': %s", path, strerror(e));
+        lu_err(err, errlen, "cannot write '%s': %s", path, strerror(e));
         free(a->tmp);
         a->tmp = NULL;
         remove_made(a);
@@ -175,10 +166,10 @@ int lr_atomic_abort(lr_atomic *a, const char *why, char *err, size_t errlen)
         fclose(a->fp);
     a->fp = NULL;
     if (a->tmp && unlink(a->tmp) != 0)
-        set_err(err, errlen, "cannot write '%s': %s (and cannot remove "
+        lu_err(err, errlen, "cannot write '%s': %s (and cannot remove "
                 "temporary '%s': %s)", a->path, why, a->tmp, strerror(errno));
     else
-        set_err(err, errlen, "cannot write '%s': %s", a->path, why);
+        lu_err(err, errlen, "cannot write '%s': %s", a->path, why);
     free(a->tmp);
     a->tmp = NULL;
     remove_made(a);

@@ -12,12 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
-
-static void set_err(char *err, size_t errlen, const char *msg)
-{
-    if (err && errlen > 0)
-        snprintf(err, errlen, "%s", msg);
-}
+#include "util.h"
 
 /* ---- backends ---------------------------------------------------------- */
 
@@ -38,18 +33,13 @@ static lr_backend gl_choice(void)
 
 int lr_backend_parse(const char *name, lr_backend *b, char *err, size_t errlen)
 {
-    for (int i = 0; i < LR_BACKEND_COUNT; i++)
-        if (name && strcmp(name, backend_names[i]) == 0) {
-            *b = (lr_backend)i;
-            return 0;
-        }
-    if (name && strcmp(name, "gl") == 0) {
-        *b = gl_choice();
+    int i = lu_name_index(name, backend_names, LR_BACKEND_COUNT);
+    if (i >= 0 || (name && strcmp(name, "gl") == 0)) {
+        *b = i >= 0 ? (lr_backend)i : gl_choice();
         return 0;
     }
-    if (err && errlen > 0)
-        snprintf(err, errlen, "unknown backend '%s' (known: cairo, osmesa, egl, gl)",
-                 name ? name : "");
+    lu_err(err, errlen, "unknown backend '%s' (known: cairo, osmesa, egl, gl)",
+           name ? name : "");
     return -1;
 }
 
@@ -67,7 +57,7 @@ int lr_backend_check(lr_backend b, char *err, size_t errlen)
 #ifdef LAMINA_HAVE_OSMESA
         return 0;
 #else
-        set_err(err, errlen, "this lamina was built without OSMesa (install "
+        lu_err(err, errlen, "this lamina was built without OSMesa (install "
                 "libosmesa6-dev and rebuild, or use the egl or cairo backend)");
         return -1;
 #endif
@@ -75,13 +65,13 @@ int lr_backend_check(lr_backend b, char *err, size_t errlen)
 #ifdef LAMINA_HAVE_EGL
         return lr_canvas_egl_probe(err, errlen);
 #else
-        set_err(err, errlen, "this lamina was built without EGL (install "
+        lu_err(err, errlen, "this lamina was built without EGL (install "
                 "libegl-dev, libegl-mesa0 and libgl-dev and rebuild, or use the "
                 "osmesa or cairo backend)");
         return -1;
 #endif
     }
-    set_err(err, errlen, "unknown backend");
+    lu_err(err, errlen, "unknown backend");
     return -1;
 }
 
@@ -89,23 +79,28 @@ int lr_backend_check(lr_backend b, char *err, size_t errlen)
 void lr_canvas_gl_release(void) {}
 #endif
 
+/* A backend this lamina was built without: NULL, and why in err. */
+#if !defined(LAMINA_HAVE_OSMESA) || !defined(LAMINA_HAVE_EGL)
+static lr_canvas *not_built(lr_backend b, char *err, size_t errlen)
+{
+    lr_backend_check(b, err, errlen);
+    return NULL;
+}
+#endif
+
 #ifndef LAMINA_HAVE_OSMESA
 lr_canvas *lr_canvas_osmesa_new(int width, int height, char *err, size_t errlen)
 {
-    (void)width;
-    (void)height;
-    lr_backend_check(LR_BACKEND_OSMESA, err, errlen);
-    return NULL;
+    (void)width, (void)height;
+    return not_built(LR_BACKEND_OSMESA, err, errlen);
 }
 #endif
 
 #ifndef LAMINA_HAVE_EGL
 lr_canvas *lr_canvas_egl_new(int width, int height, char *err, size_t errlen)
 {
-    (void)width;
-    (void)height;
-    lr_backend_check(LR_BACKEND_EGL, err, errlen);
-    return NULL;
+    (void)width, (void)height;
+    return not_built(LR_BACKEND_EGL, err, errlen);
 }
 #endif
 
@@ -115,9 +110,8 @@ lr_canvas *lr_canvas_new(lr_backend b, int width, int height, char *err, size_t 
         return NULL;
     if (width < 1 || height < 1 || width > LR_CANVAS_MAX_SIZE ||
         height > LR_CANVAS_MAX_SIZE) {
-        if (err && errlen > 0)
-            snprintf(err, errlen, "cannot create canvas: invalid size %dx%d "
-                     "(1..%d each)", width, height, LR_CANVAS_MAX_SIZE);
+        lu_err(err, errlen, "cannot create canvas: invalid size %dx%d "
+               "(1..%d each)", width, height, LR_CANVAS_MAX_SIZE);
         return NULL;
     }
     switch (b) {
@@ -236,7 +230,7 @@ unsigned char *lr_canvas_read_rgba(lr_canvas *c)
 int lr_canvas_finish(lr_canvas *c, char *err, size_t errlen)
 {
     if (!c || !c->ops->finish) {
-        set_err(err, errlen, "cannot finish: not a vector canvas");
+        lu_err(err, errlen, "cannot finish: not a vector canvas");
         return -1;
     }
     return c->ops->finish(c, err, errlen);

@@ -19,6 +19,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "util.h"
 
 typedef struct cc_canvas {
     lr_canvas base;
@@ -58,12 +59,6 @@ static cc_canvas *as_cairo(lr_canvas *c) { return (cc_canvas *)c; }
 /* M_PI is not in strict C11 */
 #define TWO_PI 6.283185307179586476925286766559
 
-static void set_err(char *err, size_t errlen, const char *msg, const char *why)
-{
-    if (err && errlen > 0)
-        snprintf(err, errlen, "%s: %s", msg, why);
-}
-
 static cc_canvas *canvas_alloc(int width, int height)
 {
     cc_canvas *c = calloc(1, sizeof *c);
@@ -99,7 +94,7 @@ lr_canvas *lr_canvas_cairo_new(int width, int height, char *err, size_t errlen)
         char why[64];
         snprintf(why, sizeof why, "invalid size %dx%d (1..32767 each)", width,
                  height);
-        set_err(err, errlen, "cannot create canvas", why);
+        lu_err(err, errlen, "%s: %s", "cannot create canvas", why);
         return NULL;
     }
     /* the size is named: "out of memory" alone does not say that a 16384
@@ -108,13 +103,13 @@ lr_canvas *lr_canvas_cairo_new(int width, int height, char *err, size_t errlen)
     snprintf(what, sizeof what, "cannot create a %d x %d canvas", width, height);
     cc_canvas *c = canvas_alloc(width, height);
     if (!c) {
-        set_err(err, errlen, what, "out of memory");
+        lu_err(err, errlen, "%s: %s", what, "out of memory");
         return NULL;
     }
     c->surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height);
     cairo_status_t st = canvas_start(c);
     if (st != CAIRO_STATUS_SUCCESS) {
-        set_err(err, errlen, what, cairo_status_to_string(st));
+        lu_err(err, errlen, "%s: %s", what, cairo_status_to_string(st));
         lr_canvas_free(&c->base);
         return NULL;
     }
@@ -181,7 +176,7 @@ lr_canvas *lr_canvas_vector_new(const char *path, lr_format format, int width,
                                 char *err, size_t errlen)
 {
     if (format != LR_FORMAT_SVG && format != LR_FORMAT_PDF) {
-        set_err(err, errlen, "cannot create a vector canvas", "not SVG or PDF");
+        lu_err(err, errlen, "%s: %s", "cannot create a vector canvas", "not SVG or PDF");
         return NULL;
     }
     if (width <= 0 || height <= 0 || width > LR_CANVAS_MAX_SIZE ||
@@ -189,12 +184,12 @@ lr_canvas *lr_canvas_vector_new(const char *path, lr_format format, int width,
         char why[64];
         snprintf(why, sizeof why, "invalid size %dx%d (1..%d each)", width,
                  height, LR_CANVAS_MAX_SIZE);
-        set_err(err, errlen, "cannot create canvas", why);
+        lu_err(err, errlen, "%s: %s", "cannot create canvas", why);
         return NULL;
     }
     cc_canvas *c = canvas_alloc(width, height);
     if (!c) {
-        set_err(err, errlen, "cannot create canvas", "out of memory");
+        lu_err(err, errlen, "%s: %s", "cannot create canvas", "out of memory");
         return NULL;
     }
     c->vector = 1;
@@ -230,7 +225,7 @@ static int cc_finish(lr_canvas *base, char *err, size_t errlen)
 {
     cc_canvas *c = as_cairo(base);
     if (!c->vector || !c->out_open) {
-        set_err(err, errlen, "cannot finish", "not an open vector canvas");
+        lu_err(err, errlen, "%s: %s", "cannot finish", "not an open vector canvas");
         return -1;
     }
     cairo_status_t st = cairo_status(c->cr);

@@ -12,6 +12,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "util.h"
 
 /* How far discs may hang over the edge and still be drawn: the largest
  * sprite's half. */
@@ -42,12 +43,6 @@ void gl_use(gl_canvas *c)
     c->plat->use(c);
     current = c;
     current_plat = c->plat;
-}
-
-static void set_err(char *err, size_t errlen, const char *msg)
-{
-    if (err && errlen > 0)
-        snprintf(err, errlen, "cannot create canvas: %s", msg);
 }
 
 static void engine_destroy(const gl_platform *p, gl_engine *e)
@@ -135,7 +130,7 @@ static int engine_start(gl_canvas *c, int *fresh, char *err, size_t errlen)
     }
     char why[512] = "";
     if (c->plat->create(&c->gl, why, sizeof why) != 0) {
-        set_err(err, errlen, why);
+        lu_err(err, errlen, "cannot create canvas: %s", why);
         return -1;
     }
     return 0;
@@ -149,12 +144,12 @@ lr_canvas *gl_canvas_new(const gl_platform *p, int width, int height, char *err,
         char why[96];
         snprintf(why, sizeof why, "invalid size %dx%d (1..%d each)", width,
                  height, LR_CANVAS_MAX_SIZE);
-        set_err(err, errlen, why);
+        lu_err(err, errlen, "cannot create canvas: %s", why);
         return NULL;
     }
     gl_canvas *c = calloc(1, sizeof *c);
     if (!c) {
-        set_err(err, errlen, "out of memory");
+        lu_err(err, errlen, "cannot create canvas: %s", "out of memory");
         return NULL;
     }
     c->base.ops = p->backend == LR_BACKEND_EGL ? &egl_ops : &osmesa_ops;
@@ -171,7 +166,7 @@ lr_canvas *gl_canvas_new(const gl_platform *p, int width, int height, char *err,
         release_current();
     char why[512] = "";
     if (p->target_new(c, why, sizeof why) != 0) {
-        set_err(err, errlen, why);
+        lu_err(err, errlen, "cannot create canvas: %s", why);
         current = NULL;
         current_plat = p;
         /* a size it cannot draw: the context is fine, and kept once its
@@ -182,7 +177,7 @@ lr_canvas *gl_canvas_new(const gl_platform *p, int width, int height, char *err,
     current = c;
     current_plat = p;
     if (fresh && gl_programs_init(&c->gl, why, sizeof why) != 0) {
-        set_err(err, errlen, why);
+        lu_err(err, errlen, "cannot create canvas: %s", why);
         destroy(c, 0, 1);
         return NULL;
     }
@@ -199,7 +194,7 @@ lr_canvas *gl_canvas_new(const gl_platform *p, int width, int height, char *err,
     gl_programs_viewport(c);
     initial_state(c);
     if (glGetError() != GL_NO_ERROR) {
-        set_err(err, errlen, "OpenGL reported an error while setting up");
+        lu_err(err, errlen, "cannot create canvas: %s", "OpenGL reported an error while setting up");
         destroy(c, 0, 1);
         return NULL;
     }

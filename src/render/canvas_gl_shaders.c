@@ -158,21 +158,36 @@ static const char *const text_fs =
 /* Attribute locations, fixed before linking so the batches need no lookup. */
 enum { A_POS = 0, A_E = 1, A_M = 2, A_COL = 3, A_UV = 1 };
 
+/* obj when it compiled (a shader) or linked (a program); else 0, with
+ * OpenGL's log in err and obj deleted. */
+static GLuint built(GLuint obj, int program, char *err, size_t errlen)
+{
+    GLint ok = 0;
+    char log[512] = "";
+    if (program)
+        glGetProgramiv(obj, GL_LINK_STATUS, &ok);
+    else
+        glGetShaderiv(obj, GL_COMPILE_STATUS, &ok);
+    if (ok)
+        return obj;
+    if (program) {
+        glGetProgramInfoLog(obj, sizeof log, NULL, log);
+        glDeleteProgram(obj);
+    } else {
+        glGetShaderInfoLog(obj, sizeof log, NULL, log);
+        glDeleteShader(obj);
+    }
+    snprintf(err, errlen, "OpenGL: a shader %s: %s",
+             program ? "program does not link" : "does not compile", log);
+    return 0;
+}
+
 static GLuint compile(GLenum type, const char *src, char *err, size_t errlen)
 {
     GLuint s = glCreateShader(type);
     glShaderSource(s, 1, &src, NULL);
     glCompileShader(s);
-    GLint ok = 0;
-    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        char log[512] = "";
-        glGetShaderInfoLog(s, sizeof log, NULL, log);
-        snprintf(err, errlen, "OpenGL: a shader does not compile: %s", log);
-        glDeleteShader(s);
-        return 0;
-    }
-    return s;
+    return built(s, 0, err, errlen);
 }
 
 GLuint gl_link(const char *vs, const char *fs, const char *const *attribs,
@@ -192,16 +207,7 @@ GLuint gl_link(const char *vs, const char *fs, const char *const *attribs,
     glLinkProgram(p);
     glDeleteShader(v);      /* flagged; freed with the program */
     glDeleteShader(f);
-    GLint ok = 0;
-    glGetProgramiv(p, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        char log[512] = "";
-        glGetProgramInfoLog(p, sizeof log, NULL, log);
-        snprintf(err, errlen, "OpenGL: a shader program does not link: %s", log);
-        glDeleteProgram(p);
-        return 0;
-    }
-    return p;
+    return built(p, 1, err, errlen);
 }
 
 int gl_programs_init(gl_engine *e, char *err, size_t errlen)

@@ -16,6 +16,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "util.h"
 
 /* The distance below, for black against white: the scale the threshold
  * (0..1, squared) is measured against. */
@@ -30,16 +31,6 @@ void lr_diff_defaults(lr_diff_opts *o)
     o->hard_limit = 64;
     o->max_pixels = 16;
     o->max_window = 8;
-}
-
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-{
-    if (!err || errlen == 0)
-        return;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
 }
 
 typedef struct image {
@@ -220,11 +211,11 @@ int lr_diff(const unsigned char *expected, const unsigned char *actual, int w, i
         opts = &defaults;
     }
     if (!expected || !actual || !res) {
-        set_err(err, errlen, "diff: missing image");
+        lu_err(err, errlen, "diff: missing image");
         return -1;
     }
     if (w <= 0 || h <= 0 || (size_t)w > SIZE_MAX / 4 / (size_t)h) {
-        set_err(err, errlen, "diff: invalid size %dx%d", w, h);
+        lu_err(err, errlen, "diff: invalid size %dx%d", w, h);
         return -1;
     }
     memset(res, 0, sizeof *res);
@@ -239,7 +230,7 @@ int lr_diff(const unsigned char *expected, const unsigned char *actual, int w, i
     }
     unsigned char *mask = calloc(n, 1);
     if (!mask) {
-        set_err(err, errlen, "diff: out of memory for %dx%d", w, h);
+        lu_err(err, errlen, "diff: out of memory for %dx%d", w, h);
         return -1;
     }
     image e = { expected, w, h }, a = { actual, w, h };
@@ -273,7 +264,7 @@ int lr_diff(const unsigned char *expected, const unsigned char *actual, int w, i
     int rc = worst_window(mask, w, h, res);
     free(mask);
     if (rc != 0) {
-        set_err(err, errlen, "diff: out of memory for %dx%d", w, h);
+        lu_err(err, errlen, "diff: out of memory for %dx%d", w, h);
         return -1;
     }
     res->same = res->hard == 0 && res->differing <= opts->max_pixels &&
@@ -290,14 +281,14 @@ int lr_diff_files(const char *expected, const char *actual, const lr_diff_opts *
     if (rc == 0)
         rc = lr_png_read(actual, &wa, &ha, &pa, err, errlen);
     if (rc == 0 && (we != wa || he != ha)) {
-        set_err(err, errlen, "size mismatch: %dx%d vs %dx%d ('%s' vs '%s')", we, he, wa,
+        lu_err(err, errlen, "size mismatch: %dx%d vs %dx%d ('%s' vs '%s')", we, he, wa,
                 ha, expected, actual);
         rc = -1;
     }
     if (rc == 0 && diff_path) {
         pd = malloc(4 * (size_t)we * (size_t)he);
         if (!pd) {
-            set_err(err, errlen, "diff: out of memory for %dx%d", we, he);
+            lu_err(err, errlen, "diff: out of memory for %dx%d", we, he);
             rc = -1;
         }
     }

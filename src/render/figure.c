@@ -13,6 +13,7 @@
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include "util.h"
 
 const lr_rgba LR_FIG_BACKGROUND = { 1.0, 1.0, 1.0, 1.0 };
 const lr_rgba LR_FIG_GRID = { 0.85, 0.85, 0.85, 1.0 };
@@ -21,16 +22,6 @@ const lr_rgba LR_FIG_TEXT = { 0.2, 0.2, 0.2, 1.0 };
 
 #define MARGIN 0.04         /* of the image's smaller side */
 #define TEXT_BAND 1.5       /* height of a text line, in font sizes */
-
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-{
-    if (!err || errlen == 0)
-        return;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-}
 
 static int has_text(const char *s) { return s && *s; }
 
@@ -237,33 +228,32 @@ static int mirror_copies(const lr_panel *p, fig_mirror m[4])
 
 /* A grid copy: the reflected grid is a grid again; the sides lying on an
  * axis are not walls. */
+/* One mirrored axis of a grid copy, lo..hi along it, the mirror at ax:
+ * the copy's origin when flipped, and the walls (skip_lo, skip_hi before
+ * the flip) that lie on the mirror. */
+static void mirror_axis(double ax, double lo, double hi, int flip, int skip_lo,
+                        int skip_hi, double *origin, int *skip)
+{
+    double t = 1e-9 * (hi - lo);
+    if (flip)
+        *origin = 2.0 * ax - hi;
+    if (fabs(ax - lo) <= t)
+        *skip |= flip ? skip_hi : skip_lo;
+    if (fabs(ax - hi) <= t)
+        *skip |= flip ? skip_lo : skip_hi;
+}
+
 static void draw_grid_copy(lr_canvas *c, const fig_view *v, const lr_grid *g,
                            const lr_panel *p, const fig_mirror *m)
 {
     lr_grid r = *g;
     int skip = 0;
-    double gx1 = g->x0 + g->nx * g->hx, gy1 = g->y0 + g->ny * g->hy;
-    double tx = 1e-9 * (gx1 - g->x0), ty = 1e-9 * (gy1 - g->y0);
-    if (p->mirror_x) {
-        int at_left = fabs(p->mirror_ax - g->x0) <= tx;
-        int at_right = fabs(p->mirror_ax - gx1) <= tx;
-        if (m->fx)
-            r.x0 = 2.0 * p->mirror_ax - gx1;
-        if (at_left)
-            skip |= m->fx ? FIG_SKIP_RIGHT : FIG_SKIP_LEFT;
-        if (at_right)
-            skip |= m->fx ? FIG_SKIP_LEFT : FIG_SKIP_RIGHT;
-    }
-    if (p->mirror_y) {
-        int at_bottom = fabs(p->mirror_ay - g->y0) <= ty;
-        int at_top = fabs(p->mirror_ay - gy1) <= ty;
-        if (m->fy)
-            r.y0 = 2.0 * p->mirror_ay - gy1;
-        if (at_bottom)
-            skip |= m->fy ? FIG_SKIP_TOP : FIG_SKIP_BOTTOM;
-        if (at_top)
-            skip |= m->fy ? FIG_SKIP_BOTTOM : FIG_SKIP_TOP;
-    }
+    if (p->mirror_x)
+        mirror_axis(p->mirror_ax, g->x0, g->x0 + g->nx * g->hx, m->fx, FIG_SKIP_LEFT,
+                    FIG_SKIP_RIGHT, &r.x0, &skip);
+    if (p->mirror_y)
+        mirror_axis(p->mirror_ay, g->y0, g->y0 + g->ny * g->hy, m->fy, FIG_SKIP_BOTTOM,
+                    FIG_SKIP_TOP, &r.y0, &skip);
     fig_draw_grid(c, v, &r, skip);
 }
 
@@ -393,21 +383,21 @@ int lr_figure_draw(const lr_figure *f, lr_canvas *c, char *err, size_t errlen)
 {
     const char *problem = f ? figure_problem(f) : "no figure";
     if (problem) {
-        set_err(err, errlen, "%s", problem);
+        lu_err(err, errlen, "%s", problem);
         return -1;
     }
     if (!c || lr_canvas_width(c) != f->width || lr_canvas_height(c) != f->height) {
-        set_err(err, errlen, "the canvas is not the figure's size");
+        lu_err(err, errlen, "the canvas is not the figure's size");
         return -1;
     }
     layout L;
     L.box = calloc(f->npanels, sizeof *L.box);
     if (!L.box) {
-        set_err(err, errlen, "out of memory");
+        lu_err(err, errlen, "out of memory");
         return -1;
     }
     if (fit(f, &L) != 0) {
-        set_err(err, errlen, "image %dx%d is too small for the frame", f->width,
+        lu_err(err, errlen, "image %dx%d is too small for the frame", f->width,
                 f->height);
         free(L.box);
         return -1;
@@ -425,7 +415,7 @@ int lr_figure_draw(const lr_figure *f, lr_canvas *c, char *err, size_t errlen)
                        LR_ALIGN_CENTER, f->title);
     free(L.box);
     if (rc != 0)
-        set_err(err, errlen, "drawing failed (out of memory)");
+        lu_err(err, errlen, "drawing failed (out of memory)");
     return rc;
 }
 
@@ -435,20 +425,20 @@ unsigned char *lr_figure_render(const lr_figure *f, char *err, size_t errlen)
 {
     const char *problem = f ? figure_problem(f) : "no figure";
     if (problem) {
-        set_err(err, errlen, "%s", problem);
+        lu_err(err, errlen, "%s", problem);
         return NULL;
     }
     char why[256] = "";
     lr_canvas *c = lr_canvas_new(f->backend, f->width, f->height, why, sizeof why);
     if (!c) {
-        set_err(err, errlen, "%s", why);
+        lu_err(err, errlen, "%s", why);
         return NULL;
     }
     unsigned char *rgba = NULL;
     if (lr_figure_draw(f, c, err, errlen) == 0) {
         rgba = lr_canvas_read_rgba(c);
         if (!rgba)
-            set_err(err, errlen, "drawing failed (out of memory)");
+            lu_err(err, errlen, "drawing failed (out of memory)");
     }
     lr_canvas_free(c);
     return rgba;
@@ -458,7 +448,7 @@ static int write_vector(const lr_figure *f, const char *path, lr_format fmt,
                         char *err, size_t errlen)
 {
     if (f->backend != LR_BACKEND_CAIRO) {
-        set_err(err, errlen, "cannot write '%s': %s output is drawn by cairo, "
+        lu_err(err, errlen, "cannot write '%s': %s output is drawn by cairo, "
                 "not by the %s backend (use backend = \"cairo\" or a .png name)",
                 path, fmt == LR_FORMAT_SVG ? "SVG" : "PDF", lr_backend_name(f->backend));
         return -1;
@@ -466,7 +456,7 @@ static int write_vector(const lr_figure *f, const char *path, lr_format fmt,
     char why[512] = "";
     const char *problem = figure_problem(f);
     if (problem) {
-        set_err(err, errlen, "cannot write '%s': %s", path, problem);
+        lu_err(err, errlen, "cannot write '%s': %s", path, problem);
         return -1;
     }
     lr_canvas *c = lr_canvas_vector_new(path, fmt, f->width, f->height, f->text,
@@ -475,7 +465,7 @@ static int write_vector(const lr_figure *f, const char *path, lr_format fmt,
         return -1;
     if (lr_figure_draw(f, c, why, sizeof why) != 0) {
         lr_canvas_free(c);      /* removes the temporary */
-        set_err(err, errlen, "cannot write '%s': %s", path, why);
+        lu_err(err, errlen, "cannot write '%s': %s", path, why);
         return -1;
     }
     int rc = lr_canvas_finish(c, err, errlen);
@@ -486,7 +476,7 @@ static int write_vector(const lr_figure *f, const char *path, lr_format fmt,
 int lr_figure_write(const lr_figure *f, const char *path, char *err, size_t errlen)
 {
     if (!f || !path || !*path) {
-        set_err(err, errlen, "cannot write frame: %s", f ? "empty path" : "no frame");
+        lu_err(err, errlen, "cannot write frame: %s", f ? "empty path" : "no frame");
         return -1;
     }
     lr_format fmt = lr_format_of(path);
@@ -495,7 +485,7 @@ int lr_figure_write(const lr_figure *f, const char *path, char *err, size_t errl
     char why[512] = "";
     unsigned char *rgba = lr_figure_render(f, why, sizeof why);
     if (!rgba) {
-        set_err(err, errlen, "cannot write '%s': %s", path, why);
+        lu_err(err, errlen, "cannot write '%s': %s", path, why);
         return -1;
     }
     int rc = lr_png_write(path, f->width, f->height, rgba, f->text, f->ntext,

@@ -12,6 +12,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include "util.h"
 
 #define NSAMPLES 11
 
@@ -33,14 +34,12 @@ static const char *const names[] = { "viridis", "rdbu" };
 
 int lr_cmap_parse(const char *name, lr_cmap *m, char *err, size_t errlen)
 {
-    for (int i = 0; i < 2; i++)
-        if (name && strcmp(name, names[i]) == 0) {
-            *m = (lr_cmap)i;
-            return 0;
-        }
-    if (err && errlen > 0)
-        snprintf(err, errlen, "unknown colour map '%s' (known: viridis, rdbu)",
-                 name ? name : "");
+    int i = lu_name_index(name, names, 2);
+    if (i >= 0) {
+        *m = (lr_cmap)i;
+        return 0;
+    }
+    lu_err(err, errlen, "unknown colour map '%s' (known: viridis, rdbu)", name ? name : "");
     return -1;
 }
 

@@ -13,6 +13,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include "util.h"
 
 /* Corners counter-clockwise (x right, y up) from (i, j); edge k joins
  * corner k to corner k+1. */
@@ -28,15 +29,9 @@ typedef struct rings {
 
 static void add_point(rings *r, double x, double y)
 {
-    if (r->nxy + 2 > r->capxy) {
-        size_t cap = r->capxy ? 2 * r->capxy : 1024;
-        double *p = realloc(r->xy, cap * sizeof *p);
-        if (!p) {
-            r->failed = 1;
-            return;
-        }
-        r->xy = p;
-        r->capxy = cap;
+    if (lu_reserve(&r->xy, &r->capxy, r->nxy + 2, sizeof *r->xy, 1024) != 0) {
+        r->failed = 1;
+        return;
     }
     r->xy[r->nxy++] = x;
     r->xy[r->nxy++] = y;
@@ -46,15 +41,9 @@ static void end_ring(rings *r, size_t npoints)
 {
     if (r->failed)
         return;
-    if (r->nrings == r->caprings) {
-        size_t cap = r->caprings ? 2 * r->caprings : 256;
-        size_t *p = realloc(r->counts, cap * sizeof *p);
-        if (!p) {
-            r->failed = 1;
-            return;
-        }
-        r->counts = p;
-        r->caprings = cap;
+    if (lu_reserve(&r->counts, &r->caprings, r->nrings + 1, sizeof *r->counts, 256) != 0) {
+        r->failed = 1;
+        return;
     }
     r->counts[r->nrings++] = npoints;
 }

@@ -35,32 +35,13 @@ int lr_frame_write(const lr_frame *f, const char *path, char *err, size_t errlen
 {
     if (!f)
         return lr_figure_write(NULL, path, err, errlen);
-    lr_points pts;
-    memset(&pts, 0, sizeof pts);
-    pts.n = f->n;
-    pts.x = f->x;
-    pts.y = f->y;
-    pts.group = f->group;
-    pts.radius = f->radius;
-    lr_panel panel;
-    memset(&panel, 0, sizeof panel);
-    panel.wx0 = f->wx0;
-    panel.wy0 = f->wy0;
-    panel.wx1 = f->wx1;
-    panel.wy1 = f->wy1;
-    panel.side[0].grid = f->grid;
-    panel.side[0].points = &pts;
-    panel.side[0].npoints = 1;
-    lr_figure fig;
-    memset(&fig, 0, sizeof fig);
-    fig.width = f->width;
-    fig.height = f->height;
-    fig.backend = f->backend;
-    fig.panels = &panel;
-    fig.npanels = 1;
-    fig.title = f->title;
-    fig.label = f->label;
-    fig.text = f->text;
-    fig.ntext = f->ntext;
+    /* one panel of one points layer; what is not named is zero */
+    lr_points pts = { .n = f->n, .x = f->x, .y = f->y, .group = f->group,
+                      .radius = f->radius };
+    lr_panel panel = { .wx0 = f->wx0, .wy0 = f->wy0, .wx1 = f->wx1, .wy1 = f->wy1,
+                       .side[0] = { .grid = f->grid, .points = &pts, .npoints = 1 } };
+    lr_figure fig = { .width = f->width, .height = f->height, .backend = f->backend,
+                      .panels = &panel, .npanels = 1, .title = f->title, .label = f->label,
+                      .text = f->text, .ntext = f->ntext };
     return lr_figure_write(&fig, path, err, errlen);
 }

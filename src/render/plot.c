@@ -25,6 +25,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "util.h"
 
 static const lr_rgba WHITE = { 1.0, 1.0, 1.0, 1.0 };
 static const lr_rgba TEXT = { 0.13, 0.13, 0.13, 1.0 };
@@ -43,16 +44,6 @@ static const lr_rgba LEGEND_EDGE = { 0.78, 0.78, 0.78, 1.0 };
 #define MARKER_BATCH 256
 #define FAR_PX 1e300         /* beyond this a mapped point is unusable */
 #define MIN_AREA_PX 20.0     /* smallest plot area worth drawing */
-
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-{
-    if (!err || errlen == 0)
-        return;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-}
 
 static int has_text(const char *s) { return s && *s; }
 
@@ -945,17 +936,17 @@ int lr_plot_write(const lr_plot *p, const char *path, const lr_text_chunk *text,
                   size_t ntext, char *err, size_t errlen)
 {
     if (!p || !path || !*path) {
-        set_err(err, errlen, "cannot write plot: %s", p ? "empty path" : "no plot");
+        lu_err(err, errlen, "cannot write plot: %s", p ? "empty path" : "no plot");
         return -1;
     }
     char why[512] = "";
     if (plot_problem(p, path, why, sizeof why) != 0) {
-        set_err(err, errlen, "cannot write '%s': %s", path, why);
+        lu_err(err, errlen, "cannot write '%s': %s", path, why);
         return -1;
     }
     layout *L = calloc(1, sizeof *L);   /* tick tables: a few kB */
     if (!L) {
-        set_err(err, errlen, "cannot write '%s': out of memory", path);
+        lu_err(err, errlen, "cannot write '%s': out of memory", path);
         return -1;
     }
     if (p->fixed_x) {
@@ -987,7 +978,7 @@ int lr_plot_write(const lr_plot *p, const char *path, const lr_text_chunk *text,
     }
     free(L);
     if (!rgba) {
-        set_err(err, errlen, "cannot write '%s': %s", path, why);
+        lu_err(err, errlen, "cannot write '%s': %s", path, why);
         return -1;
     }
     int rc = lr_png_write(path, p->width, p->height, rgba, text, ntext, err, errlen);

@@ -12,16 +12,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-{
-    if (!err || errlen == 0)
-        return;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-}
+#include "util.h"
 
 
 /* One header field, quoted (RFC 4180) when it holds a separator, a quote,
@@ -104,16 +95,16 @@ static void put_table(FILE *fp, const lr_plot *p)
 int lr_plot_write_csv(const lr_plot *p, const char *path, char *err, size_t errlen)
 {
     if (!path || !*path) {
-        set_err(err, errlen, "cannot write CSV: empty path");
+        lu_err(err, errlen, "cannot write CSV: empty path");
         return -1;
     }
     if (!p || (p->nseries > 0 && !p->series)) {
-        set_err(err, errlen, "cannot write '%s': no data", path);
+        lu_err(err, errlen, "cannot write '%s': no data", path);
         return -1;
     }
     for (size_t k = 0; k < p->nseries; k++)
         if (p->series[k].n > 0 && (!p->series[k].x || !p->series[k].y)) {
-            set_err(err, errlen, "cannot write '%s': series %zu has no arrays",
+            lu_err(err, errlen, "cannot write '%s': series %zu has no arrays",
                     path, k + 1);
             return -1;
         }

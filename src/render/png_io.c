@@ -22,6 +22,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "util.h"
 
 /* zlib level: fixed so that output bytes do not depend on libpng defaults */
 #define PNG_LEVEL 6
@@ -33,16 +34,6 @@ typedef struct png_io {
     int truncated;          /* read hit end of file */
     char msg[200];          /* libpng's error message */
 } png_io;
-
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-{
-    if (!err || errlen == 0)
-        return;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-}
 
 /* The reason for a failure inside libpng, in words. */
 static const char *io_reason(const png_io *io)
@@ -107,18 +98,18 @@ static int check_text(const lr_text_chunk *text, size_t ntext, const char *path,
                       char *err, size_t errlen)
 {
     if (ntext > 0 && !text) {
-        set_err(err, errlen, "cannot write '%s': text chunks missing", path);
+        lu_err(err, errlen, "cannot write '%s': text chunks missing", path);
         return -1;
     }
     if (ntext > INT_MAX) {
-        set_err(err, errlen, "cannot write '%s': too many text chunks", path);
+        lu_err(err, errlen, "cannot write '%s': too many text chunks", path);
         return -1;
     }
     for (size_t i = 0; i < ntext; i++) {
         /* PNG keywords are 1-79 bytes (ISO 8859-1; libpng checks the rest) */
         size_t n = text[i].key ? strlen(text[i].key) : 0;
         if (n < 1 || n > 79) {
-            set_err(err, errlen, "cannot write '%s': text chunk %zu: keyword "
+            lu_err(err, errlen, "cannot write '%s': text chunk %zu: keyword "
                     "must be 1 to 79 characters", path, i + 1);
             return -1;
         }
@@ -181,17 +172,17 @@ static int check_image(const char *path, int width, int height,
                        const unsigned char *rgba, char *err, size_t errlen)
 {
     if (!path || !*path) {
-        set_err(err, errlen, "cannot write PNG: empty path");
+        lu_err(err, errlen, "cannot write PNG: empty path");
         return -1;
     }
     /* rows are addressed with size_t and libpng stores 31-bit sizes */
     if (width <= 0 || height <= 0 || (size_t)width > PNG_UINT_31_MAX / 4) {
-        set_err(err, errlen, "cannot write '%s': invalid size %dx%d", path,
+        lu_err(err, errlen, "cannot write '%s': invalid size %dx%d", path,
                 width, height);
         return -1;
     }
     if (!rgba) {
-        set_err(err, errlen, "cannot write '%s': no pixels", path);
+        lu_err(err, errlen, "cannot write '%s': no pixels", path);
         return -1;
     }
     return 0;
@@ -206,7 +197,7 @@ int lr_png_write(const char *path, int width, int height,
         return -1;
     png_text *pt = make_png_text(text, ntext);
     if (!pt) {
-        set_err(err, errlen, "cannot write '%s': out of memory", path);
+        lu_err(err, errlen, "cannot write '%s': out of memory", path);
         return -1;
     }
     lr_atomic out;
@@ -333,14 +324,14 @@ int lr_png_read(const char *path, int *width, int *height,
                 unsigned char **rgba, char *err, size_t errlen)
 {
     if (!path || !width || !height || !rgba) {
-        set_err(err, errlen, "cannot read PNG: missing argument");
+        lu_err(err, errlen, "cannot read PNG: missing argument");
         return -1;
     }
     *rgba = NULL;
     png_io io = { 0 };
     io.fp = fopen(path, "rb");
     if (!io.fp) {
-        set_err(err, errlen, "cannot read '%s': %s", path, strerror(errno));
+        lu_err(err, errlen, "cannot read '%s': %s", path, strerror(errno));
         return -1;
     }
     unsigned char sig[8];
@@ -363,6 +354,6 @@ int lr_png_read(const char *path, int *width, int *height,
         rc = -1;
     }
     if (rc != 0)
-        set_err(err, errlen, "cannot read '%s': %s", path, io_reason(&io));
+        lu_err(err, errlen, "cannot read '%s': %s", path, io_reason(&io));
     return rc;
 }

@@ -9,12 +9,7 @@
 #include <string.h>
 
 #include "view3d_internal.h"
-
-static void set_err(char *err, size_t errlen, const char *msg)
-{
-    if (err && errlen > 0)
-        snprintf(err, errlen, "%s", msg);
-}
+#include "util.h"
 
 lr_scene3d *lr_scene3d_new(void)
 {
@@ -40,28 +35,24 @@ size_t lr_scene3d_count(const lr_scene3d *s)
 /* Room for `more` items; -1 on OOM. */
 static int reserve(lr_scene3d *s, size_t more)
 {
-    if (s->n + more <= s->cap)
-        return 0;
-    size_t cap = s->cap ? s->cap : 64;
-    while (cap < s->n + more) {
-        if (cap > ((size_t)-1) / 2 / sizeof(s3_item))
-            return -1;
-        cap *= 2;
-    }
-    s3_item *q = realloc(s->items, cap * sizeof *q);
-    if (!q)
-        return -1;
-    s->items = q;
-    s->cap = cap;
-    return 0;
+    return lu_reserve(&s->items, &s->cap, s->n + more, sizeof *s->items, 64);
 }
 
-static s3_item *push(lr_scene3d *s, s3_kind kind)
+/* An item of this layer (room reserved): its kind, points a and b (NULL:
+ * none), line width and colour; the other fields zero. */
+static s3_item *push(lr_scene3d *s, s3_kind kind, const double a[3], const double b[3],
+                     double width, lr_rgba colour)
 {
     s3_item *it = &s->items[s->n++];
     memset(it, 0, sizeof *it);
     it->kind = kind;
     it->layer = s->layers;
+    if (a)
+        memcpy(it->a, a, sizeof it->a);
+    if (b)
+        memcpy(it->b, b, sizeof it->b);
+    it->width = width;
+    it->colour = colour;
     return it;
 }
 
@@ -86,11 +77,7 @@ static int points(lr_scene3d *s, s3_kind kind, size_t n, const double *const p[3
         at(p, i, q);
         if (!finite3(q))
             continue;
-        s3_item *it = push(s, kind);
-        memcpy(it->a, q, sizeof q);
-        it->size = radius_px;
-        it->width = width;
-        it->colour = colour;
+        push(s, kind, q, NULL, width, colour)->size = radius_px;
     }
     s->layers++;
     return 0;
@@ -113,13 +100,8 @@ int lr_scene3d_asterisk(lr_scene3d *s, const double p[3], double size_px,
 {
     if (!s || reserve(s, 1) != 0)
         return -1;
-    if (finite3(p)) {
-        s3_item *it = push(s, S3_ASTERISK);
-        memcpy(it->a, p, sizeof it->a);
-        it->size = size_px;
-        it->width = width;
-        it->colour = colour;
-    }
+    if (finite3(p))
+        push(s, S3_ASTERISK, p, NULL, width, colour)->size = size_px;
     s->layers++;
     return 0;
 }
@@ -137,14 +119,10 @@ int lr_scene3d_arrows(lr_scene3d *s, size_t n, const double *const p[3],
         if (!finite3(a) || !finite3(u) || (u[0] == 0 && u[1] == 0 && u[2] == 0) ||
             !isfinite(length))
             continue;
-        s3_item *it = push(s, S3_ARROW);
-        memcpy(it->a, a, sizeof a);
-        memcpy(it->b, u, sizeof u);
+        s3_item *it = push(s, S3_ARROW, a, u, width, colour);
         it->length = length;
-        it->width = width;
         it->head = head_px;
         it->dash = dash;
-        it->colour = colour;
     }
     s->layers++;
     return 0;
@@ -155,18 +133,9 @@ int lr_scene3d_polyline(lr_scene3d *s, size_t n, const double *const p[3],
 {
     if (!s || reserve(s, 1) != 0)
         return -1;
-    if (n > ((size_t)-1) / 8 / sizeof(double) - s->npts)
+    if (n > ((size_t)-1) / 8 / sizeof(double) - s->npts ||
+        lu_reserve(&s->pts, &s->cappts, s->npts + n, 3 * sizeof *s->pts, 256) != 0)
         return -1;
-    if (s->npts + n > s->cappts) {
-        size_t cap = s->cappts ? s->cappts : 256;
-        while (cap < s->npts + n)
-            cap *= 2;
-        double *q = realloc(s->pts, 3 * cap * sizeof *q);
-        if (!q)
-            return -1;
-        s->pts = q;
-        s->cappts = cap;
-    }
     /* a non-finite point breaks the line in two, as it would break the
      * layer's segments */
     size_t start = s->npts;
@@ -185,12 +154,10 @@ int lr_scene3d_polyline(lr_scene3d *s, size_t n, const double *const p[3],
         if (s->npts - start >= 2) {
             if (reserve(s, 1) != 0)
                 return -1;
-            s3_item *it = push(s, S3_POLYLINE);
+            s3_item *it = push(s, S3_POLYLINE, NULL, NULL, width, colour);
             it->first = start;
             it->count = s->npts - start;
-            it->width = width;
             it->dash = dash;
-            it->colour = colour;
         }
         start = s->npts;
     }
@@ -203,14 +170,8 @@ int lr_scene3d_line(lr_scene3d *s, const double a[3], const double b[3],
 {
     if (!s || reserve(s, 1) != 0)
         return -1;
-    if (finite3(a) && finite3(b)) {
-        s3_item *it = push(s, S3_LINE);
-        memcpy(it->a, a, sizeof it->a);
-        memcpy(it->b, b, sizeof it->b);
-        it->width = width;
-        it->dash = dash;
-        it->colour = colour;
-    }
+    if (finite3(a) && finite3(b))
+        push(s, S3_LINE, a, b, width, colour)->dash = dash;
     s->layers++;
     return 0;
 }
@@ -220,13 +181,8 @@ int lr_scene3d_box(lr_scene3d *s, const double lo[3], const double hi[3],
 {
     if (!s || reserve(s, 1) != 0)
         return -1;
-    if (finite3(lo) && finite3(hi)) {
-        s3_item *it = push(s, S3_BOX);
-        memcpy(it->a, lo, sizeof it->a);
-        memcpy(it->b, hi, sizeof it->b);
-        it->width = width;
-        it->colour = colour;
-    }
+    if (finite3(lo) && finite3(hi))
+        push(s, S3_BOX, lo, hi, width, colour);
     s->layers++;
     return 0;
 }
@@ -241,12 +197,10 @@ int lr_scene3d_text(lr_scene3d *s, const double p[3], double dx, double dy,
     char *copy = strdup(text);
     if (!copy)
         return -1;
-    s3_item *it = push(s, S3_TEXT);
-    memcpy(it->a, p, sizeof it->a);
+    s3_item *it = push(s, S3_TEXT, p, NULL, 0.0, colour);
     it->dx = dx;
     it->dy = dy;
     it->size = size;
-    it->colour = colour;
     it->align = align;
     it->text = copy;
     s->layers++;
@@ -315,11 +269,11 @@ int lr_scene3d_draw(lr_canvas *c, const lr_view *v, const lr_scene3d *s, char *e
                     size_t errlen)
 {
     if (!c || !v || !s) {
-        set_err(err, errlen, "3D view: no canvas, view or scene");
+        lu_err(err, errlen, "3D view: no canvas, view or scene");
         return -1;
     }
     if (!v->is3d) {
-        set_err(err, errlen, "3D view: the view is not a 3D one (lr_view_3d)");
+        lu_err(err, errlen, "3D view: the view is not a 3D one (lr_view_3d)");
         return -1;
     }
     lr_backend b = lr_canvas_backend(c);
@@ -335,7 +289,7 @@ int lr_scene3d_draw(lr_canvas *c, const lr_view *v, const lr_scene3d *s, char *e
             draw_text(c, v, &s->items[i]);
     return 0;
 #else
-    set_err(err, errlen, "3D view: this lamina was built without OpenGL (OSMesa or EGL)");
+    lu_err(err, errlen, "3D view: this lamina was built without OpenGL (OSMesa or EGL)");
     return -1;
 #endif
 }

@@ -12,6 +12,7 @@
 
 #include "atomic_file.h"
 #include "vtk.h"
+#include "util.h"
 
 /* One array of the appended block. */
 typedef struct block {
@@ -130,13 +131,11 @@ int lr_vtk_write_vti(const char *path, int nx, int ny, double x0, double y0, dou
 static void xml_attr(FILE *fp, const char *s)
 {
     for (; *s; s++) {
-        switch (*s) {
-        case '&': fputs("&amp;", fp); break;
-        case '<': fputs("&lt;", fp); break;
-        case '>': fputs("&gt;", fp); break;
-        case '"': fputs("&quot;", fp); break;
-        default: fputc(*s, fp);
-        }
+        const char *e = lu_xml_entity(*s);
+        if (e)
+            fputs(e, fp);
+        else
+            fputc(*s, fp);
     }
 }
 

@@ -1,6 +1,7 @@
-/* fuzz_json.c - libFuzzer target: lamina's two JSON readers on arbitrary
- * bytes: the gallery's (gj_parse: report.json, meta.json) and the sweep's
- * (sw_report_read: the values of report.json). */
+/* fuzz_json.c - libFuzzer target: lamina's JSON reader on arbitrary bytes,
+ * directly (lu_json_parse, src/util: the gallery's report.json and
+ * meta.json) and through the sweep (sw_report_read: the values of
+ * report.json, read from a file). */
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -16,11 +17,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     memcpy(text, data, size);
     text[size] = '\0';
     char err[256];
-    gj *v = gj_parse(text, err, sizeof err);
+    lu_json *v = lu_json_parse(text, err, sizeof err);
     if (v) {
-        const gj *vals = gj_get(v, "values");
+        const lu_json *vals = lu_json_get(v, "values");
         (void)vals;
-        gj_free(v);
+        lu_json_free(v);
     }
     free(text);
 

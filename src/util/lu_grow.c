@@ -1,0 +1,26 @@
+/* lu_grow.c - growing arrays (util.h). */
+#include "util.h"
+
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+int lu_reserve(void *array, size_t *cap, size_t need, size_t elem, size_t first)
+{
+    if (need <= *cap)
+        return 0;
+    size_t c = *cap ? *cap : first;
+    while (c < need) {
+        if (c > SIZE_MAX / 2 / elem)
+            return -1;
+        c *= 2;
+    }
+    void *p;
+    memcpy(&p, array, sizeof p);    /* the caller's T *, whatever T */
+    p = realloc(p, c * elem);
+    if (!p)
+        return -1;
+    memcpy(array, &p, sizeof p);
+    *cap = c;
+    return 0;
+}

@@ -1,0 +1,75 @@
+/* util.h - the helpers every layer shares: error formatting, hashing,
+ * JSON reading and option values. Pure: no I/O, no Lua, no drawing, so the
+ * engine (src/mpm) may use it as freely as the layers above it. */
+#ifndef LAMINA_UTIL_H
+#define LAMINA_UTIL_H
+
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+
+/* ---- lu_err.c: error messages into a caller's buffer --------------------- */
+
+/* printf into err[errlen]; nothing when err is NULL or errlen is 0. */
+void lu_err(char *err, size_t errlen, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+void lu_verr(char *err, size_t errlen, const char *fmt, va_list ap)
+    __attribute__((format(printf, 3, 0)));
+
+/* ---- lu_hash.c: FNV-1a (64 bit) ------------------------------------------ */
+
+#define LU_FNV_SEED 14695981039346656037ull
+
+/* h continued over n bytes of data (start from LU_FNV_SEED). */
+uint64_t lu_fnv1a(uint64_t h, const void *data, size_t n);
+/* of a NUL-terminated string, from the seed */
+uint64_t lu_fnv1a_str(const char *s);
+/* h as 16 lower-case hex digits, the form stamped into PNGs */
+void lu_hash_hex(uint64_t h, char out[17]);
+
+/* ---- lu_json.c: a strict JSON reader into a small tree ------------------- */
+
+typedef enum lu_json_type {
+    LU_JSON_NULL, LU_JSON_BOOL, LU_JSON_NUMBER, LU_JSON_STRING, LU_JSON_ARRAY, LU_JSON_OBJECT
+} lu_json_type;
+
+typedef struct lu_json {
+    lu_json_type type;
+    int boolean;
+    double number;
+    char *text;             /* STRING: the string (UTF-8); NUMBER: as written */
+    char *key;              /* member name, inside an object */
+    struct lu_json *kids;   /* ARRAY / OBJECT */
+    size_t n;
+} lu_json;
+
+/* The value of text, or NULL with "line L, column C: what" in err. */
+lu_json *lu_json_parse(const char *text, char *err, size_t errlen);
+void lu_json_free(lu_json *v);
+const lu_json *lu_json_get(const lu_json *obj, const char *key);  /* first member named key */
+const char *lu_json_string(const lu_json *obj, const char *key);  /* NULL unless a string */
+double lu_json_number(const lu_json *obj, const char *key, double def);
+
+/* ---- lu_text.c: names and escapes -------------------------------------- */
+
+/* The index of name among names[0..n-1], or -1 (also for a NULL name). */
+int lu_name_index(const char *name, const char *const names[], int n);
+/* The XML/HTML entity that stands for c in text and attribute values
+ * ("&amp;", "&lt;", "&gt;", "&quot;"), or NULL when c stands for itself. */
+const char *lu_xml_entity(char c);
+
+/* ---- lu_grow.c: growing arrays ------------------------------------------ */
+
+/* Room for need elements of elem bytes in the array *(T **)array of
+ * capacity *cap, which doubles from first: 0, or -1 when out of memory or
+ * too large (the array and *cap unchanged). */
+int lu_reserve(void *array, size_t *cap, size_t need, size_t elem, size_t first);
+
+/* ---- lu_opt.c: option values of a command line --------------------------- */
+
+/* Whether argv[*i] is the option name, as "--name=value" or "--name value":
+ * 0 if not; else 1, with *value the value, or NULL when "--name" is the
+ * last word (*i moves past a separate value). */
+int lu_opt_value(int argc, char **argv, int *i, const char *name, const char **value);
+
+#endif
