@@ -95,6 +95,15 @@ const char *la_opt_string(lua_State *L, int idx, const char *fn, const char *key
     return s;
 }
 
+int la_opt_velocity(lua_State *L, int idx, const char *fn, double *vx, double *vy)
+{
+    int vt = la_getfield(L, idx, "velocity");
+    if (vt == LUA_TFUNCTION) return lua_gettop(L);
+    lua_pop(L, 1);
+    if (vt != LUA_TNIL) la_pair(L, idx, fn, "velocity", vx, vy);
+    return 0;
+}
+
 void la_pair(lua_State *L, int idx, const char *fn, const char *key, double *a, double *b)
 {
     la_getfield(L, idx, key);

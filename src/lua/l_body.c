@@ -192,13 +192,7 @@ int la_sim_body(lua_State *L)
     read_ppc(L, fn, &npx, &npy);
     int clipped = read_fill(L, fn);
     double vx0 = 0, vy0 = 0;
-    int vidx = 0;
-    int vt = la_getfield(L, 2, "velocity");
-    if (vt == LUA_TFUNCTION) vidx = lua_gettop(L);
-    else {
-        lua_pop(L, 1);
-        if (vt != LUA_TNIL) la_pair(L, 2, fn, "velocity", &vx0, &vy0);
-    }
+    int vidx = la_opt_velocity(L, 2, fn, &vx0, &vy0);
 
     const lm_grid *g = &sim->grid;
     lm_seed_range range = region
@@ -271,27 +265,20 @@ int la_check_body(lua_State *L, int idx, lm_sim **sim)
     return check_body(L, idx, sim)->index;
 }
 
-static int body_com(lua_State *L)
+/* body:com() and body:velocity(): a pair of the engine's body sums. */
+static int body_pair(lua_State *L, void (*of)(const lm_sim *, int, double *, double *))
 {
     lm_sim *sim;
     la_body *b = check_body(L, 1, &sim);
     double x, y;
-    lm_body_com(sim, b->index, &x, &y);
+    of(sim, b->index, &x, &y);
     lua_pushnumber(L, x);
     lua_pushnumber(L, y);
     return 2;
 }
 
-static int body_velocity(lua_State *L)
-{
-    lm_sim *sim;
-    la_body *b = check_body(L, 1, &sim);
-    double vx, vy;
-    lm_body_velocity(sim, b->index, &vx, &vy);
-    lua_pushnumber(L, vx);
-    lua_pushnumber(L, vy);
-    return 2;
-}
+static int body_com(lua_State *L) { return body_pair(L, lm_body_com); }
+static int body_velocity(lua_State *L) { return body_pair(L, lm_body_velocity); }
 
 static int body_mass(lua_State *L)
 {

@@ -30,6 +30,9 @@ const char *la_opt_string(lua_State *L, int idx, const char *fn, const char *key
                           const char *def);
 /* A {a, b} pair of numbers at key. */
 void la_pair(lua_State *L, int idx, const char *fn, const char *key, double *a, double *b);
+/* t.velocity of the table at idx: a function (left on the stack; its
+ * index is returned) or {vx, vy} into *vx, *vy (0: none given, or a pair). */
+int la_opt_velocity(lua_State *L, int idx, const char *fn, double *vx, double *vy);
 /* The option's index in names[] or a named error. */
 int la_option(lua_State *L, const char *fn, const char *key, const char *value,
               const char *const names[]);

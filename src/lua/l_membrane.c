@@ -139,13 +139,7 @@ int la_sim_membrane(lua_State *L)
     if (la_has(L, 2, "end_mass") && !(end_mass > 0))
         return luaL_error(L, "%s: end_mass must be positive (got %f)", fn, end_mass);
     double vx = 0, vy = 0;
-    int vidx = 0;
-    int vt = la_getfield(L, 2, "velocity");
-    if (vt == LUA_TFUNCTION) vidx = lua_gettop(L);
-    else {
-        lua_pop(L, 1);
-        if (vt != LUA_TNIL) la_pair(L, 2, fn, "velocity", &vx, &vy);
-    }
+    int vidx = la_opt_velocity(L, 2, fn, &vx, &vy);
     int sidx = 0;
     int st = la_getfield(L, 2, "initial_strain");
     if (st == LUA_TNUMBER || st == LUA_TFUNCTION) sidx = lua_gettop(L);

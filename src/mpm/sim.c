@@ -374,26 +374,24 @@ lm_status lm_sim_set_gravity(lm_sim *sim, double gx, double gy)
     return LM_OK;
 }
 
+/* "pic must lie in [0, 1] (got 2.0)": a setting refused by its rule. */
+static lm_status refuse_setting(lm_sim *sim, const char *rule, double v)
+{
+    char a[40];
+    snprintf(sim->err, sizeof sim->err, "%s (got %s)", rule, lm_num_text(a, sizeof a, v));
+    return LM_ERR_INPUT;
+}
+
 lm_status lm_sim_set_pic(lm_sim *sim, double pic)
 {
-    if (!(pic >= 0 && pic <= 1)) {
-        char a[40];
-        snprintf(sim->err, sizeof sim->err, "pic must lie in [0, 1] (got %s)",
-                 lm_num_text(a, sizeof a, pic));
-        return LM_ERR_INPUT;
-    }
+    if (!(pic >= 0 && pic <= 1)) return refuse_setting(sim, "pic must lie in [0, 1]", pic);
     sim->def.pic = pic;
     return LM_OK;
 }
 
 lm_status lm_sim_set_courant(lm_sim *sim, double courant)
 {
-    if (!(courant > 0)) {
-        char a[40];
-        snprintf(sim->err, sizeof sim->err, "courant must be positive (got %s)",
-                 lm_num_text(a, sizeof a, courant));
-        return LM_ERR_INPUT;
-    }
+    if (!(courant > 0)) return refuse_setting(sim, "courant must be positive", courant);
     sim->def.courant = courant;
     return LM_OK;
 }
