@@ -98,7 +98,7 @@ for k = 1, meshes do print(string.format("cell %g: v_right - v_left = %.4f", 0.2
 local report = {
   left = { vl, paper = 0.3, tol = 0.1 },
   right = { vr, paper = 1.7, tol = 0.1 },
-  momentum_sum = { vl + vr, paper = 2, tol = 1e-12 },
+  momentum_sum = { vl + vr, ref = 2, tol = 1e-12 },
   energy_rise = { 100 * rise, paper = 3, unit = "%" },
   state_hash = rel.sim:hash(),
 }

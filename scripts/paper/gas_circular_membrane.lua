@@ -53,7 +53,7 @@ local pm, hm = rec:mean("p", t0, t_end), rec:mean("hoop", t0, t_end)
 local rm, r90m = rec:mean("r0", t0, t_end), rec:mean("r90", t0, t_end)
 local theory = pm * 0.5 * (rm + r90m) / 0.1
 lamina.report{
-  hoop_stress = { hm, paper = theory, tol = 0.05 * theory, unit = "(p r / t)" },
+  hoop_stress = { hm, ref = theory, tol = 0.05 * theory, unit = "(p r / t)" },
   pressure = pm,
   radius_0 = rm, radius_90 = r90m,
   gas_outside = escaped,

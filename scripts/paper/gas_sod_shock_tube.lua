@@ -40,9 +40,9 @@ end
 
 local r = sod.measure(f, sim.t)
 lamina.report{
-  shock_position = { r.shock or -1, paper = r.x_shock, tol = 2 * dx },
-  plateau_pressure = { r.p_plateau or -1, paper = exact.p_star, tol = 0.05 * exact.p_star },
-  plateau_density = { r.rho_plateau or -1, paper = exact.rho_star_right,
+  shock_position = { r.shock or -1, ref = r.x_shock, tol = 2 * dx },
+  plateau_pressure = { r.p_plateau or -1, ref = exact.p_star, tol = 0.05 * exact.p_star },
+  plateau_density = { r.rho_plateau or -1, ref = exact.rho_star_right,
                       tol = 0.05 * exact.rho_star_right },
   state_hash = sim:hash(),
 }

@@ -60,7 +60,7 @@ for _, r in ipairs{ {0.2, 20}, {0.1, 40}, {0.05, 80}, {0.025, 320} } do
                       h, n, err, amp, amp_fem))
   series[#series + 1] = { x = ts, y = th, label = string.format("MPM cell %.3f", h) }
   report[string.format("rms_err_cell_%.3f", h)] = { err, unit = "deg" }
-  report.amplitude_finest = { amp, paper = amp_fem, unit = "deg", tol = 0.1 * amp_fem }
+  report.amplitude_finest = { amp, ref = amp_fem, unit = "deg", tol = 0.1 * amp_fem }
   report.error_falls = (prev_err == nil) and true or (report.error_falls and err < prev_err)
   prev_err = err
   hash = sim:hash()

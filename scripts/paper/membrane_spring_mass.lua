@@ -83,8 +83,8 @@ print(string.format("period %.6f (analytic %.6f), mean deflection %.6f (analytic
   .. "energy drift at 1.6 dt_c %.4f %% of max KE, 1.7 dt_c %s", period, T, mean, d_static,
   100 * drift, ok17 and "ran" or "blew up"))
 lamina.report{
-  period = { period, paper = T, unit = "s", tol = 0.02 * T },
-  deflection = { mean, paper = d_static, tol = 0.05 * d_static },
+  period = { period, ref = T, unit = "s", tol = 0.02 * T },
+  deflection = { mean, ref = d_static, tol = 0.05 * d_static },
   drift_16 = { 100 * drift, unit = "% of max KE" },
   unstable_17 = not ok17,
   state_hash = sim10:hash(),

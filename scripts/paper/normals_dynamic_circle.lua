@@ -61,7 +61,7 @@ lamina.plot{ file = out .. "/fig13_pressure.png", csv = true, width = 640, heigh
 table.sort(worst)
 table.sort(worst_c)
 lamina.report{
-  pressure_difference = { 100 * dev, unit = "% (largest)", paper = 0, tol = 5 },
+  pressure_difference = { 100 * dev, unit = "% (largest)", ref = 0, tol = 5 },
   normal_error_median = { worst[math.ceil(0.5 * #worst)], unit = "deg" },
   normal_error_max = { worst[#worst], unit = "deg", tol = 2 },
   normal_error_vs_connectivity_max = { worst_c[#worst_c], unit = "deg" },

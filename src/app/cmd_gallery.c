@@ -186,6 +186,22 @@ static int up_to_date(const g_options *o, const g_script *s)
     return ok;
 }
 
+/* An up-to-date figure's page, written again from its meta.json and the
+ * script's header: a page is a function of the two, so a change of how
+ * pages are written (or of a header's text) reaches every page without
+ * running the scripts again. 0, or -1 with the error printed. */
+static int refresh_page(const g_options *o, const g_script *s)
+{
+    char err[1024];
+    char *path = g_fmt("%s/%s/%s", o->gallery, s->stem, G_META);
+    lu_json *m = gj_read(path, err, sizeof err);
+    int rc = m ? g_write_page(o, s, m, err, sizeof err) : -1;
+    if (rc != 0) fprintf(stderr, "lamina gallery: %s: %s\n", s->stem, err);
+    lu_json_free(m);
+    free(path);
+    return rc;
+}
+
 /* 0 rendered, 1 the run failed, -1 the gallery could not be written. */
 static int render(const g_options *o, const g_script *s)
 {
@@ -289,6 +305,7 @@ static int render_all(const g_options *o)
             fresh++;
             if (!o->quiet)
                 printf("gallery: %s: up to date\n", s->stem);
+            broken = refresh_page(o, s) != 0;
             continue;
         }
         int rc = render(o, s);

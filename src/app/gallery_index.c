@@ -92,25 +92,36 @@ static char *show(const lu_json *v)
     }
 }
 
-/* "✓" within tolerance of the paper, "✗" outside, "" when not comparable. */
+/* What the value is compared with: the paper's number, else lamina's own
+ * reference (an exact solution, our FEM; issue 16 item 2). */
+static const lu_json *target(const lu_json *e)
+{
+    const lu_json *p = lu_json_get(e, "paper");
+    return p ? p : lu_json_get(e, "ref");
+}
+
+/* "✓" within tolerance of the paper (or of our reference when the paper
+ * gives none), "✗" outside, "" when not comparable. */
 static const char *mark(const lu_json *e)
 {
-    const lu_json *v = lu_json_get(e, "value"), *p = lu_json_get(e, "paper"), *t = lu_json_get(e, "tol");
+    const lu_json *v = lu_json_get(e, "value"), *p = target(e), *t = lu_json_get(e, "tol");
     if (!v || !p || !t || v->type != LU_JSON_NUMBER || p->type != LU_JSON_NUMBER ||
         t->type != LU_JSON_NUMBER)
         return "";
     return fabs(v->number - p->number) <= t->number ? " ✓" : " ✗";
 }
 
-/* "name: 0.27 % (paper 0.3 ± 0.05 %) ✓" */
+/* "name: 0.27 % (paper 0.3 ± 0.05 %) ✓", or "(ours 0.3 ± 0.05 %)" for a
+ * reference of lamina's own */
 static char *value_line(const lu_json *e)
 {
     const char *unit = lu_json_string(e, "unit");
-    char *v = show(lu_json_get(e, "value")), *p = show(lu_json_get(e, "paper")),
+    int is_paper = lu_json_get(e, "paper") != NULL;
+    char *v = show(lu_json_get(e, "value")), *p = show(target(e)),
          *t = show(lu_json_get(e, "tol"));
     const char *name = lu_json_string(e, "name");
-    char *paper = p ? g_fmt(" (paper %s%s%s%s%s)", p, t ? " ± " : "", t ? t : "",
-                            unit ? " " : "", unit ? unit : "")
+    char *paper = p ? g_fmt(" (%s %s%s%s%s%s)", is_paper ? "paper" : "ours", p,
+                            t ? " ± " : "", t ? t : "", unit ? " " : "", unit ? unit : "")
                     : g_strdup("");
     char *line = g_fmt("%s: %s%s%s%s%s", name ? name : "?", v ? v : "?", unit ? " " : "",
                        unit ? unit : "", paper, mark(e));
@@ -188,12 +199,15 @@ int g_write_page(const g_options *o, const g_script *s, const lu_json *meta, cha
 
     const lu_json *vals = values_of(meta);
     if (vals && vals->n) {
-        fputs("\n## Measured\n\n| Quantity | Measured | Paper | Tolerance | Unit | |\n"
-              "| --- | --- | --- | --- | --- | --- |\n", f);
+        fputs("\n## Measured\n\n\"Paper\" is a number the paper prints; \"Ours\" a "
+              "reference lamina computes itself (an exact solution, our FEM, p r / t of the "
+              "same run). The tolerance applies to the paper's number, else to ours.\n\n"
+              "| Quantity | Measured | Paper | Ours | Tolerance | Unit | |\n"
+              "| --- | --- | --- | --- | --- | --- | --- |\n", f);
         for (size_t i = 0; i < vals->n; i++) {
             const lu_json *e = &vals->kids[i];
             char *v = show(lu_json_get(e, "value")), *p = show(lu_json_get(e, "paper")),
-                 *tol = show(lu_json_get(e, "tol"));
+                 *ref = show(lu_json_get(e, "ref")), *tol = show(lu_json_get(e, "tol"));
             fputs("| ", f);
             g_markdown_cell(f, lu_json_string(e, "name"));
             fputs(" | ", f);
@@ -201,12 +215,15 @@ int g_write_page(const g_options *o, const g_script *s, const lu_json *meta, cha
             fputs(" | ", f);
             g_markdown_cell(f, p ? p : "");
             fputs(" | ", f);
+            g_markdown_cell(f, ref ? ref : "");
+            fputs(" | ", f);
             g_markdown_cell(f, tol ? tol : "");
             fputs(" | ", f);
             g_markdown_cell(f, lu_json_string(e, "unit"));
             fprintf(f, " |%s |\n", mark(e));
             free(v);
             free(p);
+            free(ref);
             free(tol);
         }
     }
@@ -260,7 +277,7 @@ static void index_markdown(FILE *f, const g_options *o, const row *rows, size_t 
         fprintf(f, "No figures yet: `%s/` has no scripts.\n", o->scripts);
         return;
     }
-    fputs("| Figure | Title | Source | Measured vs paper | Run time |\n"
+    fputs("| Figure | Title | Source | Measured vs paper (or ours) | Run time |\n"
           "| --- | --- | --- | --- | --- |\n", f);
     for (size_t i = 0; i < n; i++) {
         const g_script *s = rows[i].s;
@@ -304,7 +321,7 @@ static void index_html(FILE *f, const g_options *o, const row *rows, size_t n)
         return;
     }
     fputs("<table>\n<tr><th>Figure</th><th>Title</th><th>Source</th>"
-          "<th>Measured vs paper</th><th>Run time</th></tr>\n", f);
+          "<th>Measured vs paper (or ours)</th><th>Run time</th></tr>\n", f);
     for (size_t i = 0; i < n; i++) {
         const g_script *s = rows[i].s;
         fputs("<tr><td>", f);

@@ -49,12 +49,17 @@ static void check_name(lua_State *L, const char *name)
             luaL_error(L, "%s: name '%s' contains a control character", FN, name);
 }
 
-/* Pushes the entry {name=, value=[, paper=, unit=, tol=]} for the value at
- * idx: a scalar, or {value, paper = x, unit = "...", tol = t}. */
+/* Pushes the entry {name=, value=[, paper=, ref=, unit=, tol=]} for the
+ * value at idx: a scalar, or {value, paper = x, ref = y, unit = "...", tol =
+ * t}. `paper` is a number the paper prints (its table or figure named in the
+ * script); `ref` a reference lamina computes itself - an exact solution,
+ * our FEM, p r / t of the same run (issue 16 item 2: never shown as the
+ * paper's). `tol` is the agreement asked for: with the paper's value when
+ * there is one, else with the reference. */
 static void push_entry(lua_State *L, const char *name, int idx)
 {
     idx = lua_absindex(L, idx);
-    lua_createtable(L, 0, 5);
+    lua_createtable(L, 0, 6);
     lua_pushstring(L, name);
     lua_setfield(L, -2, "name");
     if (lua_type(L, idx) != LUA_TTABLE) {
@@ -69,11 +74,12 @@ static void push_entry(lua_State *L, const char *name, int idx)
         int ok = lua_isinteger(L, -1) && lua_tointeger(L, -1) == 1;
         if (lua_type(L, -1) == LUA_TSTRING) {
             const char *k = lua_tostring(L, -1);
-            ok = !strcmp(k, "paper") || !strcmp(k, "unit") || !strcmp(k, "tol");
+            ok = !strcmp(k, "paper") || !strcmp(k, "ref") || !strcmp(k, "unit") ||
+                 !strcmp(k, "tol");
         }
         if (!ok)
             luaL_error(L, "%s: '%s': unknown key '%s' (known: the value first, then "
-                       "paper, unit, tol)", FN, name, luaL_tolstring(L, -1, NULL));
+                       "paper, ref, unit, tol)", FN, name, luaL_tolstring(L, -1, NULL));
     }
     if (lua_rawgeti(L, idx, 1) == LUA_TNIL)
         luaL_error(L, "%s: '%s': the value is missing (write {value, paper = ...})", FN,
@@ -83,6 +89,9 @@ static void push_entry(lua_State *L, const char *name, int idx)
     if (la_getfield(L, idx, "paper") != LUA_TNIL)
         check_scalar(L, -1, name, ".paper");
     lua_setfield(L, -2, "paper");
+    if (la_getfield(L, idx, "ref") != LUA_TNIL)
+        check_scalar(L, -1, name, ".ref");
+    lua_setfield(L, -2, "ref");
     int t = la_getfield(L, idx, "unit");
     if (t != LUA_TNIL && t != LUA_TSTRING)
         luaL_error(L, "%s: '%s'.unit must be a string (got %s)", FN, name,
@@ -137,7 +146,8 @@ static void add_unit(lua_State *L, luaL_Buffer *b, int idx)
     luaL_addstring(b, lua_tostring(L, idx));
 }
 
-/* "report: name = value unit  (paper x unit, tol t)" on stdout. The
+/* "report: name = value unit  (paper x unit, tol t)", or "(ours x unit,
+ * tol t)" for a reference of lamina's own, on stdout. The
  * fields are pushed first: a luaL_Buffer must stay on top of the stack
  * while it is in use. */
 static void print_entry(lua_State *L, int e)
@@ -147,9 +157,11 @@ static void print_entry(lua_State *L, int e)
     la_getfield(L, e, "value");
     la_getfield(L, e, "unit");
     la_getfield(L, e, "paper");
+    la_getfield(L, e, "ref");
     la_getfield(L, e, "tol");
     int top = lua_gettop(L);
-    int name = top - 4, value = top - 3, unit = top - 2, paper = top - 1, tol = top;
+    int name = top - 5, value = top - 4, unit = top - 3, paper = top - 2, ref = top - 1,
+        tol = top;
     luaL_Buffer b;
     luaL_buffinit(L, &b);
     luaL_addstring(&b, "report: ");
@@ -157,11 +169,13 @@ static void print_entry(lua_State *L, int e)
     luaL_addstring(&b, " = ");
     add_scalar_text(L, &b, value);
     add_unit(L, &b, unit);
-    if (!lua_isnil(L, paper)) {
-        luaL_addstring(&b, "  (paper ");
-        add_scalar_text(L, &b, paper);
+    for (int k = 0; k < 2; k++) {   /* the paper's value, then ours */
+        int at = k == 0 ? paper : ref;
+        if (lua_isnil(L, at)) continue;
+        luaL_addstring(&b, k == 0 ? "  (paper " : "  (ours ");
+        add_scalar_text(L, &b, at);
         add_unit(L, &b, unit);
-        if (!lua_isnil(L, tol)) {
+        if (!lua_isnil(L, tol) && (k == 0 || lua_isnil(L, paper))) {
             luaL_addstring(&b, ", tol ");
             add_scalar_text(L, &b, tol);
         }
@@ -169,7 +183,7 @@ static void print_entry(lua_State *L, int e)
     }
     luaL_pushresult(&b);
     printf("%s\n", lua_tostring(L, -1));
-    lua_settop(L, top - 5);
+    lua_settop(L, top - 6);
 }
 
 /* ---- JSON ------------------------------------------------------------- */
@@ -214,15 +228,16 @@ static void add_json_value(lua_State *L, luaL_Buffer *b, int idx)
  * is gathered first. */
 static void push_json(lua_State *L, int report)
 {
-    static const char *const fields[] = { "name", "value", "paper", "unit", "tol" };
+    static const char *const fields[] = { "name", "value", "paper", "ref", "unit", "tol" };
+    enum { NF = sizeof fields / sizeof *fields };
     lamina_run *run = la_run(L);
     lua_Integer n = (lua_Integer)lua_rawlen(L, report);
     int base = lua_gettop(L);
-    luaL_checkstack(L, (int)(5 * n) + 4, "report too large");
+    luaL_checkstack(L, (int)(NF * n) + 4, "report too large");
     for (lua_Integer i = 1; i <= n; i++) {
         lua_rawgeti(L, report, i);
         int e = lua_gettop(L);
-        for (int f = 0; f < 5; f++)
+        for (int f = 0; f < NF; f++)
             la_getfield(L, e, fields[f]);
         lua_remove(L, e);
     }
@@ -234,9 +249,9 @@ static void push_json(lua_State *L, int report)
     add_json_string(&b, run ? run->script_hash : "");
     luaL_addstring(&b, ",\n  \"values\": [");
     for (lua_Integer i = 0; i < n; i++) {
-        int at = base + 1 + 5 * (int)i;
+        int at = base + 1 + NF * (int)i;
         luaL_addstring(&b, i ? ",\n    {" : "\n    {");
-        for (int f = 0; f < 5; f++) {
+        for (int f = 0; f < NF; f++) {
             if (lua_isnil(L, at + f))
                 continue;
             if (f)
