@@ -1,5 +1,6 @@
 -- title: A cylinder of gas expanding into vacuum (quarter model)
--- source: York's dissertation §4.2, Figs 15 and 16 (the MPM panel);
+-- source: York's dissertation §4.2, Figs 15 and 16 (the MPM panel), and
+--   the MPM curves of Figs 17-18 (pressure, specific internal energy);
 --   input deck A.4.2, Box 2
 -- look: Fig 15: a quarter cylinder of gas (radius 0.376, rho = 1, p = 100)
 --   in the corner of a 20 x 20 grid, symmetry on the left and bottom,
@@ -7,11 +8,15 @@
 --   by under a cell (0.376 to 0.41) and its rings spread apart; no
 --   scattering or bunching of points (which [T] sees in explicit FLIP, not
 --   in MPM); the core, inside the rarefaction's head, still at p = 100.
---   Colour is the points' pressure, one range (0-100) for both frames. The
---   radial plot: the pressure falls over two cells and stays near 50 at
+--   Colour is the points' pressure, one range (0-100) for both frames.
+--   [T]'s Figs 17-18 set MPM against implicit FLIP, which lamina does not
+--   have: here the MPM points against the planar rarefaction (ours). The
+--   pressure falls over two cells and stays near 50 at
 --   the rim, where the planar rarefaction (ours) falls to 28 at r = 0.376
 --   and thins out to the escape front at 0.67: the grid cannot resolve the
---   thin fan ahead of the rim with points of a ninth of a cell
+--   thin fan ahead of the rim with points of a ninth of a cell. The energy
+--   follows the same isentrope (e = 250 (p/100)^(2/7)), e about 205 at
+--   the rim
 -- checks: the physics ([T] gives no numbers for this figure): the
 --   rarefaction's head runs into the gas at rest at its sound speed
 --   c = sqrt(1.4 p / rho) = 11.83, so at t = 0.005 it stands at
@@ -34,7 +39,7 @@
 --   bottom (wl = wb = 6), free right and top (vacuum; the gas does not
 --   reach them by t = 0.005). Continuity density, linear basis, MUSL
 -- visual: t_end=0.002
--- thumb: fig16_points_t0.005.png
+-- thumb: fig16_points.png
 local out = lamina.param("out", "out/gas_expansion_vacuum")
 local t_end = lamina.param("t_end", 0.005)
 
@@ -56,13 +61,13 @@ frame("fig15_setup", "Fig 15: gas (p = 100) in vacuum, quarter model")
 local E0 = sim:energy().total
 local m0 = gas:mass()
 sim:run{ t_end = t_end }
-frame(string.format("fig16_points_t%.3f", sim.t), string.format("Fig 16: MPM points at t = %.3f", sim.t))
+frame("fig16_points", string.format("Fig 16: MPM points at t = %.3f", sim.t))
 
 local q = gas:particles()
-local rs, ps, rmax = {}, {}, 0
+local rs, ps, es, rmax = {}, {}, {}, 0
 for i = 1, q.n do
   local r = math.sqrt((q.x[i] - 0.5)^2 + (q.y[i] - 0.5)^2)
-  rs[i], ps[i] = r, q.p[i]
+  rs[i], ps[i], es[i] = r, q.p[i], q.e[i]
   rmax = math.max(rmax, r)
 end
 -- The pressure against radius in bins of a third of a cell (mean over the
@@ -87,12 +92,13 @@ local head_exact = R0 - c0 * sim.t
 local front_exact = R0 + 2 * c0 * sim.t / (gamma - 1)
 -- the planar centred rarefaction into vacuum (ours; the cylinder's 1/r term
 -- left out, fair while c t / R0 is small: here 0.16)
-local fx, fy = {}, {}
+local fx, fy, fe = {}, {}, {}
 for i = 0, 300 do
   local r = 0.75 * i / 300
   local xi = (r - R0) / sim.t
   local c = math.max(0, math.min(c0, 2 / (gamma + 1) * c0 - (gamma - 1) / (gamma + 1) * xi))
   fx[#fx + 1], fy[#fy + 1] = r, p0 * (c / c0)^(2 * gamma / (gamma - 1))
+  fe[#fe + 1] = e0 * (c / c0)^2       -- isentropic: e = c^2 / (gamma (gamma - 1))
 end
 local se, n = 0, 0
 for i = 1, #bx do
@@ -102,12 +108,17 @@ for i = 1, #bx do
     se, n = se + (by[i] - p0 * (c / c0)^(2 * gamma / (gamma - 1)))^2, n + 1
   end
 end
-lamina.plot{ file = out .. "/pressure_radius.png", csv = true, width = 560, height = 320,
-             title = string.format("pressure against radius, t = %.3f", sim.t), xlabel = "r",
+lamina.plot{ file = out .. "/fig17_pressure_radius.png", csv = true, width = 560, height = 320,
+             title = string.format("Fig 17: pressure against radius, t = %.3f", sim.t), xlabel = "r",
              ylabel = "p", legend = "top right", xrange = {0, 0.75}, yrange = {0, 110},
              series = { { x = rs, y = ps, label = "MPM points", markers = true, color = 5 },
                         { x = bx, y = by, label = "MPM, mean over h/3 bins", color = 1 },
                         { x = fx, y = fy, label = "planar rarefaction (ours)", dashed = true, color = 8 } } }
+lamina.plot{ file = out .. "/fig18_energy_radius.png", csv = true, width = 560, height = 320,
+             title = string.format("Fig 18: specific internal energy against radius, t = %.3f", sim.t),
+             xlabel = "r", ylabel = "e", legend = "bottom left", xrange = {0, 0.75}, yrange = {0, 275},
+             series = { { x = rs, y = es, label = "MPM points", markers = true, color = 5 },
+                        { x = fx, y = fe, label = "planar rarefaction (ours)", dashed = true, color = 8 } } }
 
 local E = sim:energy().total
 lamina.report{
