@@ -122,7 +122,7 @@ lamina.plot{ file = out .. "/fig18_energy_radius.png", csv = true, width = 560, 
 
 local E = sim:energy().total
 lamina.report{
-  rarefaction_head = { head or -1, unit = "" },
+  rarefaction_head = head or -1,
   rarefaction_head_verdict = string.format("%s: %.4f against R0 - c t = %.4f (physics: sound speed %.2f), limit one cell %.2f%s",
     head and math.abs(head - head_exact) <= h and "pass" or "FAIL", head or -1, head_exact, c0, h,
     head and math.abs(head - head_exact) <= h and ""
