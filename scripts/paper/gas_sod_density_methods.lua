@@ -49,7 +49,7 @@ do
             region = lamina.rect{ x0 = 0.5, y0 = 0, x1 = 0.53, y1 = dx } }
   sim:frame{ file = out .. "/fig12_initial_points.png", width = 640, height = 190,
              title = "Fig 12: initial points, 3 x 3 per cell of 0.01, x = 0.47 to 0.53",
-             label = "blue: rho = 1, p = 1 (x < 0.5)    orange: rho = 0.125, p = 0.1 (x > 0.5)" }
+             label = "blue: rho = 1, p = 1 (x < 0.5)    vermilion: rho = 0.125, p = 0.1 (x > 0.5)" }
 end
 
 local xe, re = {}, {}
