@@ -8,15 +8,20 @@ local M = {}
 
 -- o: dx (default 0.005, [F]; [T] 0.01), ppc (default {3, 1}), density
 -- (default "continuity"; lamina.gas{density}), basis (lamina.sim{basis},
--- default "linear"). Returns sim, left, right.
+-- default "linear"), av (lamina.gas{av}: default true, [F]'s viscosity; a
+-- table {c1, c2, lambda, g} for [T]'s Box 1, false for none). Returns sim,
+-- left, right.
 function M.setup(o)
   o = o or {}
   local dx, ppc = o.dx or 0.005, o.ppc or {3, 1}
   local sim = lamina.sim{ domain = {0, 0, 1, dx}, cell = dx, dt = 1e-4, basis = o.basis or "linear",
                           boundary = { left = "fixed", right = "fixed",
                                        bottom = "symmetry", top = "symmetry" } }
-  local hi = lamina.gas{ rho = 1, p = 1, gamma = 1.4, av = true, density = o.density }
-  local lo = lamina.gas{ rho = 0.125, p = 0.1, gamma = 1.4, av = true, density = o.density }
+  local av = o.av
+  if av == nil then av = true end
+  if av == false then av = nil end
+  local hi = lamina.gas{ rho = 1, p = 1, gamma = 1.4, av = av, density = o.density }
+  local lo = lamina.gas{ rho = 0.125, p = 0.1, gamma = 1.4, av = av, density = o.density }
   local L = sim:body{ material = hi, ppc = ppc, name = "left",
                       region = lamina.rect{ x0 = 0, y0 = 0, x1 = 0.5, y1 = dx } }
   local R = sim:body{ material = lo, ppc = ppc, name = "right",

@@ -38,18 +38,18 @@ static int get(lua_State *L, int fidx, int pidx, const char *key)
 
 typedef enum field {
     F_BODY, F_SPEED, F_VX, F_VY, F_PRESSURE, F_SXX, F_SYY, F_SXY, F_RHO, F_MASS,
-    F_STRAIN
+    F_STRAIN, F_TENSION
 } field;
 
 static const char *const field_names[] = { "body", "speed", "vx", "vy", "pressure",
                                            "sxx", "syy", "sxy", "rho", "mass",
-                                           "strain", NULL };
+                                           "strain", "tension", NULL };
 
 /* Signed quantities get the diverging map by default (zero in the middle). */
 static int signed_field(field f)
 {
     return f == F_VX || f == F_VY || f == F_PRESSURE || f == F_SXX || f == F_SYY ||
-           f == F_SXY || f == F_STRAIN;
+           f == F_SXY || f == F_STRAIN || f == F_TENSION;
 }
 
 static double field_value(const lm_particles *p, size_t i, field f)
@@ -65,6 +65,9 @@ static double field_value(const lm_particles *p, size_t i, field f)
     case F_RHO: return p->rho[i];
     case F_MASS: return p->m[i];
     case F_STRAIN: return p->et[i];
+    case F_TENSION:     /* t . sigma . t: a membrane's tangential stress (0 off membranes) */
+        return p->tx[i] * p->tx[i] * p->sxx[i] + 2.0 * p->tx[i] * p->ty[i] * p->sxy[i] +
+               p->ty[i] * p->ty[i] * p->syy[i];
     default: return 0.0;
     }
 }
@@ -138,10 +141,15 @@ static int cmp_double(const void *a, const void *b)
 }
 
 /* Filled pressure contours from the gas pressure interpolated to the grid
- * ([T] Fig 56): nlevels bands spanning the field's own range, coloured by
- * viridis, drawn under the particles; nodes without gas are not filled. */
+ * ([T] Fig 56), drawn under the particles; nodes without gas are not
+ * filled. When the contours own the panel's colour (colour = "body"), the
+ * bands span the panel's range if it has one, else the 5th-95th percentile
+ * of the nodal values, which then becomes the panel's range (so the other
+ * half of a split panel and the colour bar use the same), in the panel's
+ * colour map; otherwise (the particles show a field) their own percentile
+ * range, in viridis, without a bar. */
 static void pressure_contours(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int nlevels,
-                              lr_field *fd)
+                              lr_field *fd, lr_panel *p, int own)
 {
     const lm_grid *g = &sim->grid;
     size_t nn = (size_t)(g->nx + 1) * (size_t)(g->ny + 1);
@@ -158,14 +166,25 @@ static void pressure_contours(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int 
     double lo = sorted[(size_t)(0.05 * (double)(m - 1))];
     double hi = sorted[(size_t)(0.95 * (double)(m - 1))];
     if (!(hi > lo)) hi = lo + fmax(1e-12, fabs(lo) * 1e-6);
+    lr_cmap cmap = LR_CMAP_VIRIDIS;
+    if (own) {
+        if (p->vmax > p->vmin) {
+            lo = p->vmin;
+            hi = p->vmax;
+        } else {
+            p->vmin = lo;
+            p->vmax = hi;
+        }
+        cmap = p->cmap;
+    }
     for (size_t i = 0; i < nn; i++)
         if (!isfinite(f[i])) f[i] = -HUGE_VAL;   /* below every level: not filled */
     double *levels = la_frame_scratch(L, ctx, (size_t)nlevels * sizeof *levels);
     lr_rgba *colours = la_frame_scratch(L, ctx, (size_t)nlevels * sizeof *colours);
     for (int k = 0; k < nlevels; k++) {
         /* the first band covers every node the gas touches */
-        levels[k] = k == 0 ? sorted[0] : lo + (hi - lo) * k / nlevels;
-        colours[k] = lr_cmap_colour(LR_CMAP_VIRIDIS, (double)k / (nlevels > 1 ? nlevels - 1 : 1));
+        levels[k] = k == 0 ? fmin(sorted[0], lo) : lo + (hi - lo) * k / nlevels;
+        colours[k] = lr_cmap_colour(cmap, (double)k / (nlevels > 1 ? nlevels - 1 : 1));
         colours[k].a = 0.85;
     }
     fd->f = f;
@@ -183,11 +202,11 @@ static void pressure_contours(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int 
 /* which: 0 every particle, 1 membranes only, 2 none */
 static void fill_side(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int grid,
                       field f, int with_normals, int contour_levels, int which,
-                      int with_phi, int with_contact, lr_layers *l)
+                      int with_phi, int with_contact, lr_panel *p, lr_layers *l)
 {
     side_store *st = la_frame_scratch(L, ctx, sizeof *st);
     if (contour_levels > 0) {
-        pressure_contours(L, ctx, sim, contour_levels, &st->field);
+        pressure_contours(L, ctx, sim, contour_levels, &st->field, p, f == F_BODY);
         if (st->field.f) {
             l->fields = &st->field;
             l->nfields = 1;
@@ -207,6 +226,8 @@ static void fill_side(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int grid,
     pts->y = sim->p.y;
     pts->group = sim->p.body;
     pts->radius = particle_radius(sim);
+    if (f == F_TENSION && !sim->prepared && lm_sim_prepare(sim) != LM_OK)
+        luaL_error(L, "sim:frame: %s", sim->err);   /* tangents before the first step */
     if (f != F_BODY) {
         double *v = la_frame_scratch(L, ctx, (sim->p.n ? sim->p.n : 1) * sizeof *v);
         for (size_t i = 0; i < sim->p.n; i++)
@@ -364,9 +385,10 @@ static void mirror(lua_State *L, const la_frame_ctx *ctx, int fidx, int pidx,
     lua_pop(L, 1);
 }
 
-/* colour, colourmap, range, colourbar */
+/* colour, colourmap, range, colourbar; contours: the pressure contours may
+ * own the colour (and the bar) when the particles show none */
 static field colours(lua_State *L, const la_frame_ctx *ctx, int fidx, int pidx,
-                     lr_panel *p)
+                     lr_panel *p, int contours)
 {
     const char *name = string(L, ctx, fidx, pidx, "colour");
     field f = name ? (field)la_option(L, ctx->fn, "colour", name, field_names) : F_BODY;
@@ -385,11 +407,11 @@ static field colours(lua_State *L, const la_frame_ctx *ctx, int fidx, int pidx,
         p->vmax = r[1];
     }
     lua_pop(L, 1);
-    p->colourbar = boolean(L, ctx, fidx, pidx, "colourbar", f != F_BODY);
-    if (p->colourbar && f == F_BODY)
+    p->colourbar = boolean(L, ctx, fidx, pidx, "colourbar", f != F_BODY || contours);
+    if (p->colourbar && f == F_BODY && !contours)
         luaL_error(L, "%s: a colour bar needs colour = a field (e.g. \"speed\"), "
                    "not \"body\"", ctx->fn);
-    p->colourbar_label = field_names[f];
+    p->colourbar_label = f == F_BODY ? "pressure" : field_names[f];
     return f;
 }
 
@@ -452,7 +474,11 @@ void la_frame_panel(lua_State *L, la_frame_ctx *ctx, int fidx, int pidx, int sid
         p->title = string(L, ctx, 0, pidx, "title");
     mirror(L, ctx, fidx, pidx, sim, p);
     window(L, ctx, fidx, pidx, sim, p);
-    field f = colours(L, ctx, fidx, pidx, p);
+    /* contours = "pressure": the gas pressure's filled contours */
+    const char *contours = string(L, ctx, fidx, pidx, "contours");
+    if (contours && strcmp(contours, "pressure") != 0)
+        luaL_error(L, "%s: contours = \"%s\" is not one of \"pressure\"", ctx->fn, contours);
+    field f = colours(L, ctx, fidx, pidx, p, contours != NULL);
     scalebar(L, ctx, fidx, pidx, p);
     lm_sim *other = split(L, ctx, fidx, pidx, p);
     /* grid: any Lua truth value, as sim:frame always took it */
@@ -472,10 +498,6 @@ void la_frame_panel(lua_State *L, la_frame_ctx *ctx, int fidx, int pidx, int sid
             luaL_error(L, "%s: 'split_at' needs 'split' (the other simulation)", ctx->fn);
     }
     lua_pop(L, 1);
-    /* contours = "pressure": the gas pressure's filled contours */
-    const char *contours = string(L, ctx, fidx, pidx, "contours");
-    if (contours && strcmp(contours, "pressure") != 0)
-        luaL_error(L, "%s: contours = \"%s\" is not one of \"pressure\"", ctx->fn, contours);
     int nlevels = 0;
     if (contours) {
         nlevels = 10;
@@ -496,9 +518,9 @@ void la_frame_panel(lua_State *L, la_frame_ctx *ctx, int fidx, int pidx, int sid
     else if (pt != LUA_TNIL)
         luaL_error(L, "%s: 'particles' must be true, false or \"membranes\"", ctx->fn);
     lua_pop(L, 1);
-    fill_side(L, ctx, sim, grid, f, with_normals, nlevels, which, with_phi, with_contact,
+    fill_side(L, ctx, sim, grid, f, with_normals, nlevels, which, with_phi, with_contact, p,
               &p->side[0]);
     if (other)
         fill_side(L, ctx, other, grid, f, with_normals, nlevels, which, with_phi, with_contact,
-                  &p->side[1]);
+                  p, &p->side[1]);
 }
