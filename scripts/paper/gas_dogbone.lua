@@ -102,7 +102,7 @@ for _, h in ipairs{0.4, 0.2, 0.1, 0.05} do
   report["pressure_" .. tag] = { p, paper = paper_T[h][3], unit = "([T] Table 5; [F] " .. paper_F[h][2] .. ")" }
   report["pressure_particles_" .. tag] = { pp, unit = "(mean over the particles)" }
   report["hoop_vs_prt_" .. tag] = { 100 * (hoop - prt) / prt, unit = "% ([F] Table IV: 2-5 %)",
-                                    paper = h < 0.15 and 0 or nil, tol = h < 0.15 and 5 or nil }
+                                    ref = h < 0.15 and 0 or nil, tol = h < 0.15 and 5 or nil }
   report["hoop_vs_particles_prt_" .. tag] = { 100 * (hoop - pprt) / pprt, unit = "% (particle mean p)" }
   report["r0_r90_" .. tag] = { 100 * math.abs(r0 - r90) / r0, unit = "% apart" }
   report["energy_loss_" .. tag] = { 100 * loss, unit = "% (visible; [F]: 1.5 % at cell 0.4, falling)" }

@@ -78,7 +78,7 @@ static int parse_args(int argc, char **argv, lamina_run *run, const char **repor
                         LM_MAX_THREADS);
                 return -1;
             }
-            setenv("LAMINA_THREADS", v, 1);
+            run->threads = (int)n;
         } else if (lu_opt_value(argc, argv, &i, "--restart", &v)) {
             /* continue from a checkpoint (sim:checkpoint, docs/api.md) */
             if (once("--restart", v, "needs a FILE", &run->restart)) return -1;
@@ -96,10 +96,9 @@ static int parse_args(int argc, char **argv, lamina_run *run, const char **repor
 /* --report FILE: lamina.report (l_report.c) rewrites FILE at every call.
  * An empty report is written first, so that an unwritable path fails
  * before the simulation instead of after it. */
-static int init_report(lua_State *L, const char *path)
+static int init_report(lua_State *L, lamina_run *run, const char *path)
 {
-    lua_pushstring(L, path);
-    lua_setfield(L, LUA_REGISTRYINDEX, "lamina.report.file");
+    run->report_file = path;
     lua_getglobal(L, "lamina");
     lua_getfield(L, -1, "report");
     lua_newtable(L);
@@ -145,7 +144,7 @@ int cmd_run(int argc, char **argv)
         wb_free_sets(&run);
         return LAMINA_EXIT_USAGE;
     }
-    if (report && init_report(L, report)) {
+    if (report && init_report(L, &run, report)) {
         lua_close(L);
         wb_free_sets(&run);
         lr_shutdown();

@@ -199,7 +199,7 @@ int la_sim_frame(lua_State *L);
 int la_plot(lua_State *L);
 
 /* l_report.c: lamina.report{name = value, ...} (contract); writes the
- * registry's "lamina.report.file" (set by `lamina run --report FILE`). */
+ * file of `lamina run --report FILE` (lamina_run.report_file). */
 int la_report(lua_State *L);
 
 /* l_normals.c: sets lamina.normals and lamina.figure in the table on top */

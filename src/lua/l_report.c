@@ -18,7 +18,6 @@
 #include "l_internal.h"
 
 #define REPORT_KEY "lamina.report"          /* registry: array of entries */
-#define REPORT_FILE_KEY "lamina.report.file" /* registry: --report FILE */
 
 static const char FN[] = "lamina.report";
 
@@ -268,20 +267,19 @@ static void push_json(lua_State *L, int report)
     lua_settop(L, base + 1);
 }
 
+/* --report FILE, from the run's configuration (lamina_run.report_file). */
 static void write_report(lua_State *L, int report)
 {
-    if (la_getfield(L, LUA_REGISTRYINDEX, REPORT_FILE_KEY) != LUA_TSTRING) {
-        lua_pop(L, 1);
-        return;
-    }
-    const char *path = lua_tostring(L, -1);
+    const lamina_run *run = la_run(L);
+    const char *path = run ? run->report_file : NULL;
+    if (!path) return;
     push_json(L, report);
     size_t len;
     const char *text = lua_tolstring(L, -1, &len);
     char err[1024];
     if (lr_write_file(path, text, len, err, sizeof err) != 0)
         luaL_error(L, "%s: %s", FN, err);
-    lua_pop(L, 2);
+    lua_pop(L, 1);
 }
 
 /* ---- lamina.report ---------------------------------------------------- */

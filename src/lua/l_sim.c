@@ -126,10 +126,15 @@ int la_sim_new(lua_State *L)
         luaL_error(L, "%s: seed must be a whole number >= 0 (got %f)", fn, seed);
     d.seed = (uint64_t)seed;
     if (!(d.pic >= 0 && d.pic <= 1)) luaL_error(L, "%s: pic must lie in [0, 1] (got %f)", fn, d.pic);
-    /* threads: the key, else LAMINA_THREADS (lamina run --threads), else 1;
-     * the state is bit-identical for the same count (docs/decisions.md) */
+    /* threads: the key, else lamina run --threads (the run's configuration,
+     * passed in explicitly), else the user's LAMINA_THREADS, else 1; the
+     * state is bit-identical for the same count (docs/decisions.md) */
     const char *env = getenv("LAMINA_THREADS");
-    double threads = la_opt_number(L, 1, fn, "threads", env && *env ? atof(env) : 1);
+    const lamina_run *cfg = la_run(L);
+    double threads = la_opt_number(L, 1, fn, "threads",
+                                   cfg && cfg->threads > 0 ? cfg->threads
+                                   : env && *env           ? atof(env)
+                                                           : 1);
     if (!(threads >= 1 && threads <= LM_MAX_THREADS) || threads != floor(threads))
         luaL_error(L, "%s: threads must be a whole number from 1 to %d (got %f)", fn,
                    LM_MAX_THREADS, threads);

@@ -47,6 +47,9 @@ typedef struct lamina_run {
     const char *backend;        /* --backend NAME: sim:frame's default
                                    ("cairo", "osmesa", "egl", "gl"); NULL: cairo */
     const char *restart;        /* --restart FILE: a checkpoint to continue */
+    int threads;                /* --threads N: lamina.sim's default thread
+                                   count (0: LAMINA_THREADS, else 1) */
+    const char *report_file;    /* --report FILE: lamina.report rewrites it */
     int restored;               /* it has been loaded */
     int nsims;                  /* lamina.sim calls so far */
     /* the Lua state's memory (l_alloc.c): a cap, bytes (0: the default,
