@@ -63,19 +63,33 @@ typedef enum scatter_kind {
     SCATTER_MOMENTUM         /* the MUSL re-map of m_p v_p (step 5) */
 } scatter_kind;
 
+/* Where a thread's sum at node j goes (threads.h): to its copy c when
+ * another thread touches j too (lo <= j <= lo + span), else to the field f
+ * itself. split is a constant: 0 on the plain path. */
+static LM_FORCE_INLINE double *at(double *f, double *c, long j, long lo, unsigned long span,
+                                  const int split)
+{
+    return split && (unsigned long)(j - lo) <= span ? c + j : f + j;
+}
+
 /* The loops of each sum for a stencil W nodes wide (the kind is chosen
  * outside them: a switch per corner costs a fifth of the step). The
  * particle's values are read into locals once: the nodal sums are doubles
  * too, so the compiler could not otherwise keep them in registers across
  * the stores. Node (a, b) of the stencil is row b, column a (k = b W + a). */
 static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size_t a0,
-                                      size_t b0, double *const *f, const int W)
+                                      size_t b0, double *const *f, double *const *c,
+                                      const lm_thread_share *sh, const int W, const int split)
 {
     const lm_grid *g = &sim->grid;
     const lm_particles *p = &sim->p;
     const int NS = W * W;
     double *const f0 = f[0], *const f1 = f[1];
     double *const f2 = kind == SCATTER_MASS_MOMENTUM ? f[2] : NULL;
+    double *const c0 = split ? c[0] : NULL, *const c1 = split ? c[1] : NULL;
+    double *const c2 = split && kind == SCATTER_MASS_MOMENTUM ? c[2] : NULL;
+    const long lo = split ? sh->lo : 0;
+    const unsigned long span = split ? (unsigned long)(sh->hi - sh->lo) : 0;
     switch (kind) {
     case SCATTER_MASS_MOMENTUM:
         for (size_t q = a0; q < b0; q++) {
@@ -85,9 +99,9 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
                 const long row = lm_stencil_row(g, p->node[q], b);
                 for (int a = 0; a < W; a++) {
                     double w = m * N[b * W + a];
-                    f0[row + a] += w;
-                    f1[row + a] += w * vx;
-                    f2[row + a] += w * vy;
+                    *at(f0, c0, row + a, lo, span, split) += w;
+                    *at(f1, c1, row + a, lo, span, split) += w * vx;
+                    *at(f2, c2, row + a, lo, span, split) += w * vy;
                 }
             }
         }
@@ -102,8 +116,8 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
                 for (int b = 0; b < W; b++) {
                     const long row = lm_stencil_row(g, p->node[q], b);
                     for (int a = 0; a < W; a++) {
-                        f0[row + a] += N[b * W + a] * fx;
-                        f1[row + a] += N[b * W + a] * fy;
+                        *at(f0, c0, row + a, lo, span, split) += N[b * W + a] * fx;
+                        *at(f1, c1, row + a, lo, span, split) += N[b * W + a] * fy;
                     }
                 }
                 continue;
@@ -115,8 +129,8 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
                 const long row = lm_stencil_row(g, p->node[q], b);
                 for (int a = 0; a < W; a++) {
                     double gx = Gx[b * W + a], gy = Gy[b * W + a];
-                    f0[row + a] -= V * (sxx * gx + sxy * gy);
-                    f1[row + a] -= V * (sxy * gx + syy * gy);
+                    *at(f0, c0, row + a, lo, span, split) -= V * (sxx * gx + sxy * gy);
+                    *at(f1, c1, row + a, lo, span, split) -= V * (sxy * gx + syy * gy);
                 }
             }
         }
@@ -129,8 +143,8 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
                 const long row = lm_stencil_row(g, p->node[q], b);
                 for (int a = 0; a < W; a++) {
                     double w = m * N[b * W + a];
-                    f0[row + a] += w * vx;
-                    f1[row + a] += w * vy;
+                    *at(f0, c0, row + a, lo, span, split) += w * vx;
+                    *at(f1, c1, row + a, lo, span, split) += w * vy;
                 }
             }
         }
@@ -138,12 +152,20 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
     }
 }
 
+/* Particles [a, b) into the fields f, or, with copies c, into c at the
+ * nodes other threads share (sh) and f elsewhere. */
 static void scatter_range(const lm_sim *sim, scatter_kind kind, size_t a, size_t b,
-                          double *const *f)
+                          double *const *f, double *const *c, const lm_thread_share *sh)
 {
     /* (the loops above walk lm_stencil_node(g, W, node, k) row by row) */
-    if (sim->grid.sw == 2) scatter_w(sim, kind, a, b, f, 2);
-    else scatter_w(sim, kind, a, b, f, 3);
+    if (c) {
+        if (sim->grid.sw == 2) scatter_w(sim, kind, a, b, f, c, sh, 2, 1);
+        else scatter_w(sim, kind, a, b, f, c, sh, 3, 1);
+    } else if (sim->grid.sw == 2) {
+        scatter_w(sim, kind, a, b, f, NULL, sh, 2, 0);
+    } else {
+        scatter_w(sim, kind, a, b, f, NULL, sh, 3, 0);
+    }
 }
 
 /* Adds one of the sums into the nf fields `out` (zeroed by the caller),
@@ -154,14 +176,30 @@ static void scatter(lm_sim *sim, scatter_kind kind, int nf, double *const *out,
                     const lm_comp *comp)
 {
     int nt = lm_sim_threads(sim);
+    if (nt == 1) {   /* the plain loop */
+        scatter_range(sim, kind, 0, sim->p.n, out, NULL, NULL);
+        lm_grid_fold(&sim->grid, nf, out, comp);
+        return;
+    }
 #pragma omp parallel num_threads(nt)
     {
         int t = LM_THREAD_ID();
         size_t a, b;
         double *f[LM_SCATTER_FIELDS];
+        lm_thread_share sh;
         lm_thread_range(sim->p.n, t, nt, &a, &b);
-        lm_thread_fields(sim, t, a, b, nf, out, f);
-        scatter_range(sim, kind, a, b, f);
+        lm_thread_band(sim, t, a, b);
+#pragma omp barrier
+        lm_thread_fields(sim, t, nt, nf, f, &sh);
+        /* runs of particles whose stencils do or do not reach a node
+         * another thread touches (threads.h); one run on one thread */
+        for (size_t q = a; q < b;) {
+            int shared = lm_thread_shared(&sh, sim->p.node[q]);
+            size_t e = q + 1;
+            while (e < b && lm_thread_shared(&sh, sim->p.node[e]) == shared) e++;
+            scatter_range(sim, kind, q, e, out, shared ? f : NULL, &sh);
+            q = e;
+        }
     }
     lm_threads_reduce(sim, nt, nf, out);
     lm_grid_fold(&sim->grid, nf, out, comp);
