@@ -29,19 +29,19 @@ void lm_step_shape(lm_sim *sim)
     long n = (long)p->n;
     switch (sim->def.basis) {
     case LM_BASIS_LINEAR:
-#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static)
+#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
         for (long q = 0; q < n; q++)
             lm_shape_bilinear(g, p->x[q], p->y[q], &p->node[q], &p->N[4 * q],
                               &p->Gx[4 * q], &p->Gy[4 * q]);
         break;
     case LM_BASIS_GIMP:
-#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static)
+#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
         for (long q = 0; q < n; q++)
             lm_shape_gimp(g, p->x[q], p->y[q], p->lx[q], p->ly[q], &p->node[q],
                           &p->N[9 * q], &p->Gx[9 * q], &p->Gy[9 * q]);
         break;
     case LM_BASIS_BSPLINE2:
-#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static)
+#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
         for (long q = 0; q < n; q++)
             lm_shape_bspline2(g, p->x[q], p->y[q], &p->node[q], &p->N[9 * q],
                               &p->Gx[9 * q], &p->Gy[9 * q]);
@@ -181,24 +181,31 @@ static void scatter(lm_sim *sim, scatter_kind kind, int nf, double *const *out,
         lm_grid_fold(&sim->grid, nf, out, comp);
         return;
     }
-#pragma omp parallel num_threads(nt)
+    /* split as nt threads; few particles: all of them on one OS thread */
+#pragma omp parallel num_threads(nt) if (sim->p.n >= LM_PARTICLE_LOOP_MIN)
     {
-        int t = LM_THREAD_ID();
-        size_t a, b;
-        double *f[LM_SCATTER_FIELDS];
-        lm_thread_share sh;
-        lm_thread_range(sim->p.n, t, nt, &a, &b);
-        lm_thread_band(sim, t, a, b);
+        int team = LM_TEAM_SIZE();
+        for (int t = LM_THREAD_ID(); t < nt; t += team) {
+            size_t a, b;
+            lm_thread_range(sim->p.n, t, nt, &a, &b);
+            lm_thread_band(sim, t, a, b);
+        }
 #pragma omp barrier
-        lm_thread_fields(sim, t, nt, nf, f, &sh);
-        /* runs of particles whose stencils do or do not reach a node
-         * another thread touches (threads.h); one run on one thread */
-        for (size_t q = a; q < b;) {
-            int shared = lm_thread_shared(&sh, sim->p.node[q]);
-            size_t e = q + 1;
-            while (e < b && lm_thread_shared(&sh, sim->p.node[e]) == shared) e++;
-            scatter_range(sim, kind, q, e, out, shared ? f : NULL, &sh);
-            q = e;
+        for (int t = LM_THREAD_ID(); t < nt; t += team) {
+            size_t a, b;
+            double *f[LM_SCATTER_FIELDS];
+            lm_thread_share sh;
+            lm_thread_range(sim->p.n, t, nt, &a, &b);
+            lm_thread_fields(sim, t, nt, nf, f, &sh);
+            /* runs of particles whose stencils do or do not reach a node
+             * another thread touches (threads.h) */
+            for (size_t q = a; q < b;) {
+                int shared = lm_thread_shared(&sh, sim->p.node[q]);
+                size_t e = q + 1;
+                while (e < b && lm_thread_shared(&sh, sim->p.node[e]) == shared) e++;
+                scatter_range(sim, kind, q, e, out, shared ? f : NULL, &sh);
+                q = e;
+            }
         }
     }
     lm_threads_reduce(sim, nt, nf, out);
@@ -320,10 +327,10 @@ void lm_step_g2p(lm_sim *sim)
     lm_grid_fill(g, 4, fill, comp);
     long n = (long)p->n;
     if (g->sw == 2) {
-#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static)
+#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
         for (long q = 0; q < n; q++) g2p_particle(g, p, q, dt, pic, 2);
     } else {
-#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static)
+#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
         for (long q = 0; q < n; q++) g2p_particle(g, p, q, dt, pic, 3);
     }
     lm_pin_particles(sim);
@@ -401,7 +408,7 @@ void lm_step_gas_maxima(lm_sim *sim, double *max_div, double *c_max)
     long n = (long)p->n;
     /* maxima do not depend on the order they are taken in */
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) \
-    reduction(max : md, cm)
+    reduction(max : md, cm) if (n >= LM_PARTICLE_LOOP_MIN)
     for (long q = 0; q < n; q++) {
         const lm_material *mat = sim->mats[p->mat[q]];
         if (mat->kind != LM_GAS || !mat->av) continue;
@@ -462,7 +469,7 @@ void lm_step_stress(lm_sim *sim, double max_div, double c_max)
     const lm_grid *g = &sim->grid;
     double h = fmin(g->hx, g->hy);
     long n = (long)sim->p.n;
-#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static)
+#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
     for (long q = 0; q < n; q++) {
         if (segment_point(sim, (size_t)q)) continue;   /* from lengths */
         lm_rate r;
@@ -524,7 +531,7 @@ lm_status lm_step_check(lm_sim *sim)
 {
     long n = (long)sim->p.n, first = n;
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) \
-    reduction(min : first)
+    reduction(min : first) if (n >= LM_PARTICLE_LOOP_MIN)
     for (long q = 0; q < n; q++)
         if (check_one(sim, (size_t)q) && q < first) first = q;
     if (first == n) return lm_membrane_check_torn(sim);

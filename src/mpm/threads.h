@@ -15,8 +15,10 @@
 #ifdef _OPENMP
 #include <omp.h>
 #define LM_THREAD_ID() omp_get_thread_num()
+#define LM_TEAM_SIZE() omp_get_num_threads()
 #else
 #define LM_THREAD_ID() 0
+#define LM_TEAM_SIZE() 1
 #endif
 
 /* Threads the step uses (1 without OpenMP). */
@@ -33,6 +35,12 @@ static inline void lm_thread_range(size_t n, int t, int nt, size_t *a, size_t *b
 /* Loops over nodes run on threads only above this many nodes: below it the
  * fork and join cost more than the loop (the dog-bone's grid has 289). */
 #define LM_NODE_LOOP_MIN 4096
+/* Loops over particles likewise (issue 17 item 2): threads that wait
+ * passively (app/wait_policy.c) take microseconds to wake, more than half
+ * a loop over fewer particles saves. Below it the step runs on one OS
+ * thread; the scatters still split their sums as sim->def.threads threads
+ * would (lm_team_threads), so the state is the same. */
+#define LM_PARTICLE_LOOP_MIN 4096
 lm_status lm_threads_reserve(lm_sim *sim);
 
 /* The scatters write straight into the fields wherever no other thread
@@ -43,8 +51,9 @@ lm_status lm_threads_reserve(lm_sim *sim);
  * sums go to one place on each thread, in particle order, so the state is
  * bit-identical to copying whole bands, and one thread is the plain loop.
  *
- * In a parallel region of nt threads, thread t with particles [a, b):
- * lm_thread_band, then a barrier, then lm_thread_fields; a particle whose
+ * In a parallel region, for each of the nt threads t of the split (one OS
+ * thread may do several, in order) with particles [a, b): lm_thread_band;
+ * then a barrier; then lm_thread_fields; a particle whose
  * stencil reaches a shared node (lm_thread_shared) writes its shared
  * nodes to the copies and the others to the fields; after the region,
  * lm_threads_reduce. */
