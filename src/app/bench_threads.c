@@ -14,7 +14,10 @@
  * particles and more; loaded, at most 1.25x slower (a ratio of at least
  * 0.8). Each run's state hash is compared with the first run's on the same
  * thread count: they must be equal (threads.h). The load average (of the
- * minute before) is printed: the idle rows mean little on a busy machine. */
+ * minute before) is printed: the idle rows mean little on a busy machine.
+ * The last columns are the process's CPU seconds (medians): threads that
+ * wait passively add little to them, and on a busy machine they show the
+ * work the threads do where the wall clock cannot. */
 #include <signal.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -29,10 +32,10 @@
 
 #include "bench.h"
 
-static double now(void)
+static double clock_s(clockid_t id)
 {
     struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
+    clock_gettime(id, &ts);
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
@@ -55,7 +58,11 @@ static pid_t start_load(void)
     fflush(stdout);
     fflush(stderr);
     pid_t pid = fork();
-    if (pid != 0) return pid;
+    if (pid != 0) {
+        struct timespec settle = {0, 200000000};   /* let it take its core */
+        if (pid > 0) nanosleep(&settle, NULL);
+        return pid;
+    }
 #ifdef __linux__
     prctl(PR_SET_PDEATHSIG, SIGKILL);
 #endif
@@ -70,21 +77,23 @@ static void stop_load(pid_t pid)
     waitpid(pid, NULL, 0);
 }
 
-/* Seconds of `steps` steps of the case on nt threads, its hash in *hash;
- * -1 on failure. */
-static double run_once(double particles, int nt, long steps, uint64_t *hash)
+/* Seconds of `steps` steps of the case on nt threads, the process's CPU
+ * seconds in *cpu and its hash in *hash; -1 on failure. */
+static double run_once(double particles, int nt, long steps, double *cpu, uint64_t *hash)
 {
     lm_sim *sim = bench_two_disks(particles, LM_USL, nt);
     if (!sim) {
         fprintf(stderr, "lamina bench threads: could not build the case\n");
         return -1;
     }
-    double t0 = 0, secs = -1;
+    double t0 = 0, c0 = 0, secs = -1;
     if (lm_sim_step(sim) != LM_OK) goto done;   /* warm-up */
-    t0 = now();
+    t0 = clock_s(CLOCK_MONOTONIC);
+    c0 = clock_s(CLOCK_PROCESS_CPUTIME_ID);
     for (long s = 0; s < steps; s++)
         if (lm_sim_step(sim) != LM_OK) goto done;
-    secs = now() - t0;
+    secs = clock_s(CLOCK_MONOTONIC) - t0;
+    *cpu = clock_s(CLOCK_PROCESS_CPUTIME_ID) - c0;
     *hash = lm_sim_hash(sim);
 done:
     if (secs < 0) fprintf(stderr, "lamina bench threads: %s\n", sim->err);
@@ -110,7 +119,7 @@ static double median(double *v, int n)
  * failed or the hashes of one thread count differ. */
 static int row(double particles, int nt, long steps, int pairs, int loaded)
 {
-    double t1[MAX_PAIRS], tn[MAX_PAIRS], ratio[MAX_PAIRS];
+    double t1[MAX_PAIRS], tn[MAX_PAIRS], ratio[MAX_PAIRS], c1[MAX_PAIRS], cn[MAX_PAIRS];
     uint64_t h1 = 0, hn = 0;
     int same = 1;
     double load = load_average();
@@ -121,8 +130,8 @@ static int row(double particles, int nt, long steps, int pairs, int loaded)
     }
     for (int k = 0; k < pairs; k++) {
         uint64_t a = 0, b = 0;
-        t1[k] = run_once(particles, 1, steps, &a);
-        tn[k] = t1[k] < 0 ? -1 : run_once(particles, nt, steps, &b);
+        t1[k] = run_once(particles, 1, steps, &c1[k], &a);
+        tn[k] = t1[k] < 0 ? -1 : run_once(particles, nt, steps, &cn[k], &b);
         if (t1[k] < 0 || tn[k] < 0) {
             stop_load(child);
             return 1;
@@ -141,9 +150,10 @@ static int row(double particles, int nt, long steps, int pairs, int loaded)
     const char *verdict = loaded ? (met ? ">= 0.8: met" : "< 0.8: NOT met")
                           : particles < 1e5 ? "(from 1e5)"
                           : met ? ">= 1.8: met" : "< 1.8: NOT met";
-    printf("| %9.0f | %-13s | %5.2f | %7.3f | %7.3f | %6.2f | %-13s | %s |\n", particles,
-           loaded ? "1 busy loop" : "none", load, median(t1, pairs), median(tn, pairs), r,
-           verdict, same ? "yes" : "NO");
+    printf("| %9.0f | %-13s | %5.2f | %7.3f | %7.3f | %6.2f | %-14s | %s | %7.3f | %7.3f |\n",
+           particles, loaded ? "1 busy loop" : "none", load, median(t1, pairs),
+           median(tn, pairs), r, verdict, same ? "yes" : "NO", median(c1, pairs),
+           median(cn, pairs));
     fflush(stdout);
     return same ? 0 : 1;
 }
@@ -204,8 +214,8 @@ int bench_threads(int argc, char **argv)
            "%d alternating pairs; OMP_WAIT_POLICY=%s GOMP_SPINCOUNT=%s\n\n", steps, nt, pairs,
            policy ? policy : "(unset)", spin ? spin : "(unset)");
     printf("| particles | other load    | loadavg | 1 thread s | %d threads s | 1 / %d | target "
-           "       | same hashes |\n", nt, nt);
-    printf("|---:|---|---:|---:|---:|---:|---|---|\n");
+           "        | same hashes | 1 thread CPU s | %d threads CPU s |\n", nt, nt, nt);
+    printf("|---:|---|---:|---:|---:|---:|---|---|---:|---:|\n");
     int bad = 0;
     for (int k = 0; k < nsizes; k++) {
         if (which & 1) bad |= row(sizes[k], nt, steps, pairs, 0);
