@@ -406,6 +406,10 @@ void lm_step_gas_maxima(lm_sim *sim, double *max_div, double *c_max)
     const lm_particles *p = &sim->p;
     double md = 0, cm = 0;
     long n = (long)p->n;
+    /* no such gas: no pass over the particles (nor a fork, issue 17) */
+    int m = 0;
+    while (m < sim->nmats && !(sim->mats[m]->kind == LM_GAS && sim->mats[m]->av)) m++;
+    if (m == sim->nmats) n = 0;
     /* maxima do not depend on the order they are taken in */
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) \
     reduction(max : md, cm) if (n >= LM_PARTICLE_LOOP_MIN)
