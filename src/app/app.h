@@ -5,8 +5,8 @@
 #include <stdio.h>
 
 /* wait_policy.c: before anything else, `lamina` starts itself again with
- * OpenMP threads that sleep soon when they wait (issue 17 item 2); returns
- * only when it does not. */
+ * OpenMP threads that spin briefly and then sleep when they wait (issue 17
+ * item 2); returns only when it does not. */
 void app_wait_policy(char **argv);
 int cmd_run(int argc, char **argv);
 /* help.c: the commands' help, from one table. */

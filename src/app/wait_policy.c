@@ -11,13 +11,18 @@
  * libgomp reads its wait policy from the environment once, when it is
  * loaded, before main: setenv inside the program is too late, and there is
  * no call to change it. So `lamina` starts itself again, once, with
- * OMP_WAIT_POLICY=passive (the standard variable; GCC's and LLVM's runtimes
- * both read it): a waiting thread sleeps on a futex at once and yields the
- * core. Measured here (docs/performance.md, "Threads"): an empty fork and
- * join of two threads costs 5 us passive, and a step forks about 13 times,
- * so an idle machine loses next to nothing; a short spin first
- * (GOMP_SPINCOUNT=1000, 10000) was slower beside other processes and no
- * faster idle.
+ * GOMP_SPINCOUNT=3000: a waiting thread spins about 50 us (16 ns a round
+ * here) and then sleeps on a futex, yielding the core. Not passive at
+ * once: this 2-core VM halts an idle vCPU at once (haltpoll, poll time 0),
+ * and waking a sleeping thread there cost about 130 us a fork (the
+ * dog-bone's 2 threads with OMP_WAIT_POLICY=passive: 9.4 s against 2.2 s,
+ * docs/decisions.md), which a step forks about a dozen times; 50 us covers
+ * the short waits of an idle machine (serial gaps, a phase's imbalance).
+ * Beside 5-8 other busy processes, 1e5 particles, 2 threads against 1:
+ * spin 0: 0.90-2.16x as fast, 1000: 0.91-2.6x, 3000: 0.99-1.01x, 10 000:
+ * 0.38x, the default (300 000, 5 ms): 0.12-0.42x (docs/performance.md,
+ * "Threads"). KMP_BLOCKTIME=0 does the same for LLVM's runtime (passive:
+ * its spin is set in milliseconds).
  *
  * Left alone: a user's own OMP_WAIT_POLICY, GOMP_SPINCOUNT or KMP_BLOCKTIME
  * (`OMP_WAIT_POLICY=active lamina ...` gives the old behaviour), a build
@@ -34,10 +39,12 @@ void app_wait_policy(char **argv)
     if (getenv("OMP_WAIT_POLICY") || getenv("GOMP_SPINCOUNT") || getenv("KMP_BLOCKTIME") ||
         getenv("LD_PRELOAD"))
         return;
-    if (setenv("OMP_WAIT_POLICY", "passive", 1) != 0) return;
+    if (setenv("GOMP_SPINCOUNT", "3000", 1) != 0 || setenv("KMP_BLOCKTIME", "0", 1) != 0)
+        return;
     execv("/proc/self/exe", argv);
     /* no exec (no /proc): run on, with the runtime's default waiting */
-    unsetenv("OMP_WAIT_POLICY");
+    unsetenv("GOMP_SPINCOUNT");
+    unsetenv("KMP_BLOCKTIME");
 #else
     (void)argv;
 #endif
