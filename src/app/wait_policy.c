@@ -14,15 +14,16 @@
  * GOMP_SPINCOUNT=3000: a waiting thread spins about 50 us (16 ns a round
  * here) and then sleeps on a futex, yielding the core. Not passive at
  * once: this 2-core VM halts an idle vCPU at once (haltpoll, poll time 0),
- * and waking a sleeping thread there cost about 130 us a fork (the
- * dog-bone's 2 threads with OMP_WAIT_POLICY=passive: 9.4 s against 2.2 s,
- * docs/decisions.md), which a step forks about a dozen times; 50 us covers
- * the short waits of an idle machine (serial gaps, a phase's imbalance).
- * Beside 5-8 other busy processes, 1e5 particles, 2 threads against 1:
- * spin 0: 0.90-2.16x as fast, 1000: 0.91-2.6x, 3000: 0.99-1.01x, 10 000:
- * 0.38x, the default (300 000, 5 ms): 0.12-0.42x (docs/performance.md,
- * "Threads"). KMP_BLOCKTIME=0 does the same for LLVM's runtime (passive:
- * its spin is set in milliseconds).
+ * and waking a sleeping thread there cost about 0.1 ms a fork (the
+ * dog-bone's 2 threads with OMP_WAIT_POLICY=passive: 9.4 s against 2.2 s
+ * over some 6000 steps of about 11 forks, docs/decisions.md), and a step
+ * of 1e5 particles forks 11 times; 50 us covers the short waits of an
+ * idle machine (serial gaps, a phase's imbalance). 1e5 particles, 2
+ * threads against 1 beside a busy loop and 5-12 other busy processes:
+ * spin 0 (passive) 1.6-2.9x as fast, 1000: 1.1-2.6x, 3000: 1.0-1.8x,
+ * 10 000: 0.38x, libgomp's default (300 000, 5 ms): 0.37x
+ * (docs/performance.md, "Threads"). KMP_BLOCKTIME=0 does the same for
+ * LLVM's runtime (passive: its spin is set in milliseconds).
  *
  * Left alone: a user's own OMP_WAIT_POLICY, GOMP_SPINCOUNT or KMP_BLOCKTIME
  * (`OMP_WAIT_POLICY=active lamina ...` gives the old behaviour), a build

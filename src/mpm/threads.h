@@ -36,8 +36,8 @@ static inline void lm_thread_range(size_t n, int t, int nt, size_t *a, size_t *b
  * fork and join cost more than the loop (the dog-bone's grid has 289). */
 #define LM_NODE_LOOP_MIN 4096
 /* Loops over particles likewise (issue 17 item 2): a waiting thread spins
- * about 50 us and then sleeps (app/wait_policy.c), and waking it costs up
- * to about 130 us here, more than half a loop over fewer particles saves.
+ * about 50 us and then sleeps (app/wait_policy.c), and waking it costs
+ * about 0.1 ms here, more than half a loop over fewer particles saves.
  * Below it the step runs on one OS thread; the scatters still split their
  * sums as sim->def.threads threads would, so the state is the same. */
 #define LM_PARTICLE_LOOP_MIN 4096
