@@ -4,6 +4,10 @@
 
 #include <stdio.h>
 
+/* wait_policy.c: before anything else, `lamina` starts itself again with
+ * OpenMP threads that spin briefly and then sleep when they wait (issue 17
+ * item 2); returns only when it does not. */
+void app_wait_policy(char **argv);
 int cmd_run(int argc, char **argv);
 /* help.c: the commands' help, from one table. */
 void app_usage(FILE *out);

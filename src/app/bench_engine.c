@@ -25,6 +25,7 @@
 #include <time.h>
 
 #include "contact.h"
+#include "bench.h"
 #include "mpm.h"
 
 static double clock_s(clockid_t id)
@@ -58,11 +59,11 @@ static int seed_disk(lm_sim *sim, int mi, double cx, double cy, double r, int np
 static int threads = 1;
 static lm_basis basis = LM_BASIS_LINEAR;
 
-static lm_sim *make_disks(double h, lm_scheme scheme, lm_material *mat)
+static lm_sim *make_disks(double h, lm_scheme scheme, lm_material *mat, int nt)
 {
     lm_sim_def d;
     lm_sim_def_default(&d);
-    d.threads = threads;
+    d.threads = nt;
     d.basis = basis;
     d.hx = d.hy = h;
     d.scheme = scheme;
@@ -164,7 +165,7 @@ typedef struct bench_ctx { lm_material *a, *b; lm_scheme scheme; int contact; } 
 static lm_sim *build_disks(double h, void *ctx)
 {
     bench_ctx *c = ctx;
-    lm_sim *sim = make_disks(h, c->scheme, c->a);
+    lm_sim *sim = make_disks(h, c->scheme, c->a, threads);
     /* the disks as a contact-release pair (contact.h): the per-body fields
      * cost as much before the disks meet as after */
     if (sim && c->contact && lm_sim_add_contact(sim, 0, 1, LM_CONTACT_RELEASE, 0) < 0) {
@@ -178,6 +179,15 @@ static lm_sim *build_gas(double h, void *ctx)
 {
     bench_ctx *c = ctx;
     return make_gas(h, c->a, c->b);
+}
+
+static lm_material rubber = {.kind = LM_ELASTIC, .rho = 1000, .E = 1000, .nu = 0.3,
+                              .plane = LM_PLANE_STRAIN};
+
+lm_sim *bench_two_disks(double particles, lm_scheme scheme, int nt)
+{
+    /* two disks of radius 0.2, 4 ppc: about 1.005 / h^2 particles */
+    return make_disks(sqrt(1.005 / particles), scheme, &rubber, nt);
 }
 
 int bench_engine(int argc, char **argv)
@@ -229,8 +239,6 @@ int bench_engine(int argc, char **argv)
             return 2;
         }
     }
-    lm_material rubber = {.kind = LM_ELASTIC, .rho = 1000, .E = 1000, .nu = 0.3,
-                          .plane = LM_PLANE_STRAIN};
     lm_material air = {.kind = LM_GAS, .rho = 1, .gamma = 1.4, .mu = 0.2,
                        .e0 = 1000 / (0.4 * 1)};
     lm_material skin = {.kind = LM_MEMBRANE, .rho = 0.5, .E = 1e6, .nu = 0.3,

@@ -17,6 +17,7 @@
 #include <unistd.h>
 
 #include "app.h"
+#include "bench.h"
 #include "figure.h"
 #include "render.h"
 
@@ -312,7 +313,6 @@ static int bench_render(int argc, char **argv)
     return status;
 }
 
-int bench_engine(int argc, char **argv);   /* bench_engine.c */
 
 int cmd_bench(int argc, char **argv)
 {
@@ -320,10 +320,12 @@ int cmd_bench(int argc, char **argv)
         return bench_render(argc - 1, argv + 1);
     if (argc >= 1 && strcmp(argv[0], "engine") == 0)
         return bench_engine(argc - 1, argv + 1);
+    if (argc >= 1 && strcmp(argv[0], "threads") == 0)
+        return bench_threads(argc - 1, argv + 1);
     fprintf(stderr, "lamina bench: %s (usage: lamina bench render [--width W] "
             "[--height H] [--runs N] [--counts N,N,...] [--backend cairo|osmesa|egl|gl|all])\n",
             argc >= 1 ? "unknown benchmark" : "which benchmark?");
     if (argc >= 1)
-        fprintf(stderr, "lamina bench: '%s' is not a benchmark; known: render, engine\n", argv[0]);
+        fprintf(stderr, "lamina bench: '%s' is not a benchmark; known: render, engine, threads\n", argv[0]);
     return 2;
 }

@@ -62,6 +62,10 @@ static const command_help commands[] = {
      "lamina bench engine [--sizes N,...] [--work PARTICLE_STEPS] [--threads N]\n"
      "                    [--basis linear|gimp|bspline2]",
      "particle-steps per second of the step (README, \"Engine performance\")"},
+    {"bench threads",
+     "lamina bench threads [--sizes N,...] [--steps N] [--pairs N] [--threads N]\n"
+     "                     [--idle | --loaded]",
+     "1 thread against 2, idle and beside a busy loop (docs/performance.md, \"Threads\")"},
     {"help", "lamina help [COMMAND]", "this text, or one command's"},
 };
 #define NCOMMANDS (sizeof commands / sizeof commands[0])

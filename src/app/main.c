@@ -6,6 +6,7 @@
 
 int main(int argc, char **argv)
 {
+    app_wait_policy(argv);
     if (argc < 2) {
         app_usage(stderr);
         return 2;

@@ -113,6 +113,7 @@ typedef struct lm_grid {
     double *tbuf;          /* other threads' copies of scattered fields */
     size_t tcap;           /* (threads.c), and the band of nodes each */
     long tlo[LM_MAX_THREADS], thi[LM_MAX_THREADS];   /* thread's copy covers */
+    long blo[LM_MAX_THREADS], bhi[LM_MAX_THREADS];   /* and its particles touch */
 } lm_grid;
 
 /* ---- particles (particles.c) -------------------------------------------- */

@@ -29,19 +29,19 @@ void lm_step_shape(lm_sim *sim)
     long n = (long)p->n;
     switch (sim->def.basis) {
     case LM_BASIS_LINEAR:
-#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static)
+#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
         for (long q = 0; q < n; q++)
             lm_shape_bilinear(g, p->x[q], p->y[q], &p->node[q], &p->N[4 * q],
                               &p->Gx[4 * q], &p->Gy[4 * q]);
         break;
     case LM_BASIS_GIMP:
-#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static)
+#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
         for (long q = 0; q < n; q++)
             lm_shape_gimp(g, p->x[q], p->y[q], p->lx[q], p->ly[q], &p->node[q],
                           &p->N[9 * q], &p->Gx[9 * q], &p->Gy[9 * q]);
         break;
     case LM_BASIS_BSPLINE2:
-#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static)
+#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
         for (long q = 0; q < n; q++)
             lm_shape_bspline2(g, p->x[q], p->y[q], &p->node[q], &p->N[9 * q],
                               &p->Gx[9 * q], &p->Gy[9 * q]);
@@ -63,19 +63,33 @@ typedef enum scatter_kind {
     SCATTER_MOMENTUM         /* the MUSL re-map of m_p v_p (step 5) */
 } scatter_kind;
 
+/* Where a thread's sum at node j goes (threads.h): to its copy c when
+ * another thread touches j too (lo <= j <= lo + span), else to the field f
+ * itself. split is a constant: 0 on the plain path. */
+static LM_FORCE_INLINE double *at(double *f, double *c, long j, long lo, unsigned long span,
+                                  const int split)
+{
+    return split && (unsigned long)(j - lo) <= span ? c + j : f + j;
+}
+
 /* The loops of each sum for a stencil W nodes wide (the kind is chosen
  * outside them: a switch per corner costs a fifth of the step). The
  * particle's values are read into locals once: the nodal sums are doubles
  * too, so the compiler could not otherwise keep them in registers across
  * the stores. Node (a, b) of the stencil is row b, column a (k = b W + a). */
 static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size_t a0,
-                                      size_t b0, double *const *f, const int W)
+                                      size_t b0, double *const *f, double *const *c,
+                                      const lm_thread_share *sh, const int W, const int split)
 {
     const lm_grid *g = &sim->grid;
     const lm_particles *p = &sim->p;
     const int NS = W * W;
     double *const f0 = f[0], *const f1 = f[1];
     double *const f2 = kind == SCATTER_MASS_MOMENTUM ? f[2] : NULL;
+    double *const c0 = split ? c[0] : NULL, *const c1 = split ? c[1] : NULL;
+    double *const c2 = split && kind == SCATTER_MASS_MOMENTUM ? c[2] : NULL;
+    const long lo = split ? sh->lo : 0;
+    const unsigned long span = split ? (unsigned long)(sh->hi - sh->lo) : 0;
     switch (kind) {
     case SCATTER_MASS_MOMENTUM:
         for (size_t q = a0; q < b0; q++) {
@@ -85,9 +99,9 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
                 const long row = lm_stencil_row(g, p->node[q], b);
                 for (int a = 0; a < W; a++) {
                     double w = m * N[b * W + a];
-                    f0[row + a] += w;
-                    f1[row + a] += w * vx;
-                    f2[row + a] += w * vy;
+                    *at(f0, c0, row + a, lo, span, split) += w;
+                    *at(f1, c1, row + a, lo, span, split) += w * vx;
+                    *at(f2, c2, row + a, lo, span, split) += w * vy;
                 }
             }
         }
@@ -102,8 +116,8 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
                 for (int b = 0; b < W; b++) {
                     const long row = lm_stencil_row(g, p->node[q], b);
                     for (int a = 0; a < W; a++) {
-                        f0[row + a] += N[b * W + a] * fx;
-                        f1[row + a] += N[b * W + a] * fy;
+                        *at(f0, c0, row + a, lo, span, split) += N[b * W + a] * fx;
+                        *at(f1, c1, row + a, lo, span, split) += N[b * W + a] * fy;
                     }
                 }
                 continue;
@@ -115,8 +129,8 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
                 const long row = lm_stencil_row(g, p->node[q], b);
                 for (int a = 0; a < W; a++) {
                     double gx = Gx[b * W + a], gy = Gy[b * W + a];
-                    f0[row + a] -= V * (sxx * gx + sxy * gy);
-                    f1[row + a] -= V * (sxy * gx + syy * gy);
+                    *at(f0, c0, row + a, lo, span, split) -= V * (sxx * gx + sxy * gy);
+                    *at(f1, c1, row + a, lo, span, split) -= V * (sxy * gx + syy * gy);
                 }
             }
         }
@@ -129,8 +143,8 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
                 const long row = lm_stencil_row(g, p->node[q], b);
                 for (int a = 0; a < W; a++) {
                     double w = m * N[b * W + a];
-                    f0[row + a] += w * vx;
-                    f1[row + a] += w * vy;
+                    *at(f0, c0, row + a, lo, span, split) += w * vx;
+                    *at(f1, c1, row + a, lo, span, split) += w * vy;
                 }
             }
         }
@@ -138,12 +152,20 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
     }
 }
 
+/* Particles [a, b) into the fields f, or, with copies c, into c at the
+ * nodes other threads share (sh) and f elsewhere. */
 static void scatter_range(const lm_sim *sim, scatter_kind kind, size_t a, size_t b,
-                          double *const *f)
+                          double *const *f, double *const *c, const lm_thread_share *sh)
 {
     /* (the loops above walk lm_stencil_node(g, W, node, k) row by row) */
-    if (sim->grid.sw == 2) scatter_w(sim, kind, a, b, f, 2);
-    else scatter_w(sim, kind, a, b, f, 3);
+    if (c) {
+        if (sim->grid.sw == 2) scatter_w(sim, kind, a, b, f, c, sh, 2, 1);
+        else scatter_w(sim, kind, a, b, f, c, sh, 3, 1);
+    } else if (sim->grid.sw == 2) {
+        scatter_w(sim, kind, a, b, f, NULL, sh, 2, 0);
+    } else {
+        scatter_w(sim, kind, a, b, f, NULL, sh, 3, 0);
+    }
 }
 
 /* Adds one of the sums into the nf fields `out` (zeroed by the caller),
@@ -154,14 +176,37 @@ static void scatter(lm_sim *sim, scatter_kind kind, int nf, double *const *out,
                     const lm_comp *comp)
 {
     int nt = lm_sim_threads(sim);
-#pragma omp parallel num_threads(nt)
+    if (nt == 1) {   /* the plain loop */
+        scatter_range(sim, kind, 0, sim->p.n, out, NULL, NULL);
+        lm_grid_fold(&sim->grid, nf, out, comp);
+        return;
+    }
+    /* split as nt threads; few particles: all of them on one OS thread */
+#pragma omp parallel num_threads(nt) if (sim->p.n >= LM_PARTICLE_LOOP_MIN)
     {
-        int t = LM_THREAD_ID();
-        size_t a, b;
-        double *f[LM_SCATTER_FIELDS];
-        lm_thread_range(sim->p.n, t, nt, &a, &b);
-        lm_thread_fields(sim, t, a, b, nf, out, f);
-        scatter_range(sim, kind, a, b, f);
+        int team = LM_TEAM_SIZE();
+        for (int t = LM_THREAD_ID(); t < nt; t += team) {
+            size_t a, b;
+            lm_thread_range(sim->p.n, t, nt, &a, &b);
+            lm_thread_band(sim, t, a, b);
+        }
+#pragma omp barrier
+        for (int t = LM_THREAD_ID(); t < nt; t += team) {
+            size_t a, b;
+            double *f[LM_SCATTER_FIELDS];
+            lm_thread_share sh;
+            lm_thread_range(sim->p.n, t, nt, &a, &b);
+            lm_thread_fields(sim, t, nt, nf, f, &sh);
+            /* runs of particles whose stencils do or do not reach a node
+             * another thread touches (threads.h) */
+            for (size_t q = a; q < b;) {
+                int shared = lm_thread_shared(&sh, sim->p.node[q]);
+                size_t e = q + 1;
+                while (e < b && lm_thread_shared(&sh, sim->p.node[e]) == shared) e++;
+                scatter_range(sim, kind, q, e, out, shared ? f : NULL, &sh);
+                q = e;
+            }
+        }
     }
     lm_threads_reduce(sim, nt, nf, out);
     lm_grid_fold(&sim->grid, nf, out, comp);
@@ -282,10 +327,10 @@ void lm_step_g2p(lm_sim *sim)
     lm_grid_fill(g, 4, fill, comp);
     long n = (long)p->n;
     if (g->sw == 2) {
-#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static)
+#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
         for (long q = 0; q < n; q++) g2p_particle(g, p, q, dt, pic, 2);
     } else {
-#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static)
+#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
         for (long q = 0; q < n; q++) g2p_particle(g, p, q, dt, pic, 3);
     }
     lm_pin_particles(sim);
@@ -361,9 +406,13 @@ void lm_step_gas_maxima(lm_sim *sim, double *max_div, double *c_max)
     const lm_particles *p = &sim->p;
     double md = 0, cm = 0;
     long n = (long)p->n;
+    /* no such gas: no pass over the particles (nor a fork, issue 17) */
+    int m = 0;
+    while (m < sim->nmats && !(sim->mats[m]->kind == LM_GAS && sim->mats[m]->av)) m++;
+    if (m == sim->nmats) n = 0;
     /* maxima do not depend on the order they are taken in */
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) \
-    reduction(max : md, cm)
+    reduction(max : md, cm) if (n >= LM_PARTICLE_LOOP_MIN)
     for (long q = 0; q < n; q++) {
         const lm_material *mat = sim->mats[p->mat[q]];
         if (mat->kind != LM_GAS || !mat->av) continue;
@@ -424,7 +473,7 @@ void lm_step_stress(lm_sim *sim, double max_div, double c_max)
     const lm_grid *g = &sim->grid;
     double h = fmin(g->hx, g->hy);
     long n = (long)sim->p.n;
-#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static)
+#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
     for (long q = 0; q < n; q++) {
         if (segment_point(sim, (size_t)q)) continue;   /* from lengths */
         lm_rate r;
@@ -486,7 +535,7 @@ lm_status lm_step_check(lm_sim *sim)
 {
     long n = (long)sim->p.n, first = n;
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) \
-    reduction(min : first)
+    reduction(min : first) if (n >= LM_PARTICLE_LOOP_MIN)
     for (long q = 0; q < n; q++)
         if (check_one(sim, (size_t)q) && q < first) first = q;
     if (first == n) return lm_membrane_check_torn(sim);

@@ -1,5 +1,7 @@
 /* threads.c - per-thread copies of the nodal fields for the scatters of the
- * step (threads.h says why the results stay deterministic). */
+ * step, where threads meet (threads.h says why the results stay
+ * deterministic). */
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -40,27 +42,46 @@ static double *copy_of(lm_grid *g, int t, int f)
     return g->tbuf + ((size_t)(t - 1) * LM_SCATTER_FIELDS + (size_t)f) * nn;
 }
 
-void lm_thread_fields(lm_sim *sim, int t, size_t a, size_t b, int nf, double *const *out,
-                      double **mine)
+/* (the upper-right node of a stencil sw wide is ext past its first) */
+static long stencil_ext(const lm_grid *g)
+{
+    return (long)(g->sw - 1) * g->sx + (g->sw - 1);
+}
+
+void lm_thread_band(lm_sim *sim, int t, size_t a, size_t b)
 {
     lm_grid *g = &sim->grid;
-    if (t == 0) {
-        for (int f = 0; f < nf; f++) mine[f] = out[f];
-        return;
-    }
-    long lo = (long)lm_grid_nodes(g), hi = -1;
+    long lo = LONG_MAX, hi = LONG_MIN;
     for (size_t q = a; q < b; q++) {
         long i = sim->p.node[q];
         if (i < lo) lo = i;
         if (i > hi) hi = i;
     }
-    /* the upper-right node of the last particle's stencil (sw wide) */
-    hi += (long)(g->sw - 1) * g->sx + (g->sw - 1);
-    g->tlo[t] = lo;
-    g->thi[t] = hi;
-    for (int f = 0; f < nf; f++) {
+    g->blo[t] = lo;
+    g->bhi[t] = hi == LONG_MIN ? hi : hi + stencil_ext(g);
+}
+
+void lm_thread_fields(lm_sim *sim, int t, int nt, int nf, double **mine, lm_thread_share *sh)
+{
+    lm_grid *g = &sim->grid;
+    /* the hull of where my band meets the others' (none for thread 0) */
+    sh->lo = LONG_MAX;
+    sh->hi = LONG_MIN;
+    sh->ext = stencil_ext(g);
+    for (int s = 0; s < nt && t > 0; s++) {
+        if (s == t) continue;
+        long lo = g->blo[s] > g->blo[t] ? g->blo[s] : g->blo[t];
+        long hi = g->bhi[s] < g->bhi[t] ? g->bhi[s] : g->bhi[t];
+        if (lo > hi) continue;
+        if (lo < sh->lo) sh->lo = lo;
+        if (hi > sh->hi) sh->hi = hi;
+    }
+    g->tlo[t] = sh->lo;
+    g->thi[t] = sh->hi;
+    for (int f = 0; f < nf && t > 0; f++) {
         mine[f] = copy_of(g, t, f);
-        if (hi >= lo) memset(mine[f] + lo, 0, (size_t)(hi - lo + 1) * sizeof(double));
+        if (sh->hi >= sh->lo)
+            memset(mine[f] + sh->lo, 0, (size_t)(sh->hi - sh->lo + 1) * sizeof(double));
     }
 }
 
@@ -73,7 +94,8 @@ void lm_threads_reduce(lm_sim *sim, int nt, int nf, double *const *out)
         if (g->tlo[t] < lo) lo = g->tlo[t];
         if (g->thi[t] > hi) hi = g->thi[t];
     }
-#pragma omp parallel for num_threads(nt) schedule(static)
+    if (lo > hi) return;   /* no thread met another */
+#pragma omp parallel for num_threads(nt) schedule(static) if (hi - lo > LM_NODE_LOOP_MIN)
     for (long i = lo; i <= hi; i++)
         for (int t = 1; t < nt; t++)
             if (i >= g->tlo[t] && i <= g->thi[t])

@@ -3,10 +3,10 @@
  *
  * Determinism (docs/design.md, "Engine"): a loop that writes only its own particle is the
  * same on any number of threads. A scatter to the grid gives each thread a
- * fixed, contiguous range of particles and its own copy of the nodal
- * fields; the copies are added in thread order. So the state depends on the
- * thread count only, never on timing, and one thread is the plain serial
- * loop. */
+ * fixed, contiguous range of particles and, where its nodes meet another
+ * thread's, its own copy of the nodal fields; the copies are added in
+ * thread order. So the state depends on the thread count only, never on
+ * timing, and one thread is the plain serial loop. */
 #ifndef LAMINA_THREADS_H
 #define LAMINA_THREADS_H
 
@@ -15,8 +15,10 @@
 #ifdef _OPENMP
 #include <omp.h>
 #define LM_THREAD_ID() omp_get_thread_num()
+#define LM_TEAM_SIZE() omp_get_num_threads()
 #else
 #define LM_THREAD_ID() 0
+#define LM_TEAM_SIZE() 1
 #endif
 
 /* Threads the step uses (1 without OpenMP). */
@@ -33,16 +35,44 @@ static inline void lm_thread_range(size_t n, int t, int nt, size_t *a, size_t *b
 /* Loops over nodes run on threads only above this many nodes: below it the
  * fork and join cost more than the loop (the dog-bone's grid has 289). */
 #define LM_NODE_LOOP_MIN 4096
+/* Loops over particles likewise (issue 17 item 2): a waiting thread spins
+ * about 50 us and then sleeps (app/wait_policy.c), and waking it costs
+ * about 0.1 ms here, more than half a loop over fewer particles saves.
+ * Below it the step runs on one OS thread; the scatters still split their
+ * sums as sim->def.threads threads would, so the state is the same. */
+#define LM_PARTICLE_LOOP_MIN 4096
 lm_status lm_threads_reserve(lm_sim *sim);
-/* Thread t's copies of the nf fields `out` for scattering particles
- * [a, b): `out` itself for thread 0, private arrays for the others, zeroed
- * over the nodes those particles' stencils touch (2 x 2 or 3 x 3 by the
- * basis; particles are stored body by body
- * and seeded row by row, so a range touches a band of the grid, and large
- * grids cost no more than the particles' share). */
-void lm_thread_fields(lm_sim *sim, int t, size_t a, size_t b, int nf, double *const *out,
-                      double **mine);
-/* out[f][i] += the other threads' copies over their bands, in thread order. */
+
+/* The scatters write straight into the fields wherever no other thread
+ * touches the same nodes, and into thread copies only where they meet
+ * (issue 17 item 2: zeroing and adding whole bands of copies cost a tenth
+ * of a two-thread step; particles are stored body by body and seeded row
+ * by row, so neighbouring threads share a row or two of nodes). A node's
+ * sums go to one place on each thread, in particle order, so the state is
+ * bit-identical to copying whole bands, and one thread is the plain loop.
+ *
+ * In a parallel region, for each of the nt threads t of the split (one OS
+ * thread may do several, in order) with particles [a, b): lm_thread_band;
+ * then a barrier; then lm_thread_fields; a particle whose
+ * stencil reaches a shared node (lm_thread_shared) writes its shared
+ * nodes to the copies and the others to the fields; after the region,
+ * lm_threads_reduce. */
+typedef struct lm_thread_share {
+    long lo, hi;   /* the nodes other threads also touch (lo > hi: none) */
+    long ext;      /* a stencil's last node minus its first */
+} lm_thread_share;
+/* Records the nodes particles [a, b) touch (the band of thread t). */
+void lm_thread_band(lm_sim *sim, int t, size_t a, size_t b);
+/* Thread t's copies `mine` of nf scattered fields, zeroed over the nodes
+ * its band shares with the others' (*sh; none for thread 0). */
+void lm_thread_fields(lm_sim *sim, int t, int nt, int nf, double **mine, lm_thread_share *sh);
+/* Does a stencil whose first node is `node` reach a shared node? */
+static inline int lm_thread_shared(const lm_thread_share *sh, long node)
+{
+    return node + sh->ext >= sh->lo && node <= sh->hi;
+}
+/* out[f][i] += the other threads' copies where they have them, in thread
+ * order. */
 void lm_threads_reduce(lm_sim *sim, int nt, int nf, double *const *out);
 
 #endif

@@ -1,0 +1,225 @@
+/* bench_threads.c - `lamina bench threads`: one thread against two, on an
+ * idle machine and beside one other CPU-bound process (issue 17 item 2:
+ * "threads that never hurt").
+ *
+ * The case is bench engine's two elastic disks, USL, at each size (default
+ * 1e5 particles), stepped `--steps` times (default 300) after one warm-up
+ * step. A pair is one run on one thread then one on `--threads` (default
+ * 2); `--pairs` pairs (default 3) alternate so that a change in the
+ * machine's other load falls on both. The ratio of a pair is the one-thread
+ * time over the N-thread time (the speed-up); the table gives the medians.
+ * The loaded rows repeat the pairs while a child process of this one spins
+ * on a core (a busy loop, as `yes >/dev/null` would), and is killed after.
+ * The targets of issue 17: idle, 2 threads at least 1.8x faster at 1e5
+ * particles and more; loaded, at most 1.25x slower (a ratio of at least
+ * 0.8). Each run's state hash is compared with the first run's on the same
+ * thread count: they must be equal (threads.h). The load average (of the
+ * minute before) is printed: the idle rows mean little on a busy machine.
+ * The last columns are the process's CPU seconds (medians): threads that
+ * wait passively add little to them, and on a busy machine they show the
+ * work the threads do where the wall clock cannot. */
+#include <signal.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+#ifdef __linux__
+#include <sys/prctl.h>
+#endif
+
+#include "bench.h"
+
+static double clock_s(clockid_t id)
+{
+    struct timespec ts;
+    clock_gettime(id, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* The first number of /proc/loadavg, or -1. */
+static double load_average(void)
+{
+    double l = -1;
+    FILE *f = fopen("/proc/loadavg", "r");
+    if (f) {
+        if (fscanf(f, "%lf", &l) != 1) l = -1;
+        fclose(f);
+    }
+    return l;
+}
+
+/* A child that spins on a core until it is killed (or this process dies);
+ * -1 if none could be started. */
+static pid_t start_load(void)
+{
+    fflush(stdout);
+    fflush(stderr);
+    pid_t pid = fork();
+    if (pid != 0) {
+        struct timespec settle = {0, 200000000};   /* let it take its core */
+        if (pid > 0) nanosleep(&settle, NULL);
+        return pid;
+    }
+#ifdef __linux__
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+#endif
+    volatile unsigned long spin = 0;
+    for (;;) spin++;
+}
+
+static void stop_load(pid_t pid)
+{
+    if (pid <= 0) return;
+    kill(pid, SIGKILL);
+    waitpid(pid, NULL, 0);
+}
+
+/* Seconds of `steps` steps of the case on nt threads, the process's CPU
+ * seconds in *cpu and its hash in *hash; -1 on failure. */
+static double run_once(double particles, int nt, long steps, double *cpu, uint64_t *hash)
+{
+    lm_sim *sim = bench_two_disks(particles, LM_USL, nt);
+    if (!sim) {
+        fprintf(stderr, "lamina bench threads: could not build the case\n");
+        return -1;
+    }
+    double t0 = 0, c0 = 0, secs = -1;
+    if (lm_sim_step(sim) != LM_OK) goto done;   /* warm-up */
+    t0 = clock_s(CLOCK_MONOTONIC);
+    c0 = clock_s(CLOCK_PROCESS_CPUTIME_ID);
+    for (long s = 0; s < steps; s++)
+        if (lm_sim_step(sim) != LM_OK) goto done;
+    secs = clock_s(CLOCK_MONOTONIC) - t0;
+    *cpu = clock_s(CLOCK_PROCESS_CPUTIME_ID) - c0;
+    *hash = lm_sim_hash(sim);
+done:
+    if (secs < 0) fprintf(stderr, "lamina bench threads: %s\n", sim->err);
+    lm_sim_free(sim);
+    return secs;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static double median(double *v, int n)
+{
+    qsort(v, (size_t)n, sizeof *v, cmp_double);
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+#define MAX_PAIRS 15
+
+/* One row: `pairs` alternating pairs at this size; 0, or 1 if a run
+ * failed or the hashes of one thread count differ. */
+static int row(double particles, int nt, long steps, int pairs, int loaded)
+{
+    double t1[MAX_PAIRS], tn[MAX_PAIRS], ratio[MAX_PAIRS], c1[MAX_PAIRS], cn[MAX_PAIRS];
+    uint64_t h1 = 0, hn = 0;
+    int same = 1;
+    double load = load_average();
+    pid_t child = loaded ? start_load() : 0;
+    if (child < 0) {
+        fprintf(stderr, "lamina bench threads: could not start the load process\n");
+        return 1;
+    }
+    for (int k = 0; k < pairs; k++) {
+        uint64_t a = 0, b = 0;
+        t1[k] = run_once(particles, 1, steps, &c1[k], &a);
+        tn[k] = t1[k] < 0 ? -1 : run_once(particles, nt, steps, &cn[k], &b);
+        if (t1[k] < 0 || tn[k] < 0) {
+            stop_load(child);
+            return 1;
+        }
+        if (k == 0) {
+            h1 = a;
+            hn = b;
+        }
+        same &= a == h1 && b == hn;
+        ratio[k] = t1[k] / tn[k];
+    }
+    stop_load(child);
+    double r = median(ratio, pairs);
+    int met = loaded ? r >= 0.8 : r >= 1.8;
+    /* the idle target is for 1e5 particles and more */
+    const char *verdict = loaded ? (met ? ">= 0.8: met" : "< 0.8: NOT met")
+                          : particles < 1e5 ? "(from 1e5)"
+                          : met ? ">= 1.8: met" : "< 1.8: NOT met";
+    printf("| %9.0f | %-13s | %5.2f | %7.3f | %7.3f | %6.2f | %-14s | %s | %7.3f | %7.3f |\n",
+           particles, loaded ? "1 busy loop" : "none", load, median(t1, pairs),
+           median(tn, pairs), r, verdict, same ? "yes" : "NO", median(c1, pairs),
+           median(cn, pairs));
+    fflush(stdout);
+    return same ? 0 : 1;
+}
+
+int bench_threads(int argc, char **argv)
+{
+    double sizes[8] = {1e5};
+    int nsizes = 1, nt = 2, pairs = 3, which = 3;   /* 1 idle, 2 loaded */
+    long steps = 300;
+    for (int i = 0; i < argc; i++) {
+        if (strcmp(argv[i], "--steps") == 0 && i + 1 < argc) {
+            steps = atol(argv[++i]);
+            if (steps < 1 || steps > 1000000) {
+                fprintf(stderr, "lamina bench threads: --steps needs a whole number from 1 to "
+                        "1000000\n");
+                return 2;
+            }
+        } else if (strcmp(argv[i], "--pairs") == 0 && i + 1 < argc) {
+            pairs = atoi(argv[++i]);
+            if (pairs < 1 || pairs > MAX_PAIRS) {
+                fprintf(stderr, "lamina bench threads: --pairs needs a whole number from 1 to "
+                        "%d\n", MAX_PAIRS);
+                return 2;
+            }
+        } else if (strcmp(argv[i], "--threads") == 0 && i + 1 < argc) {
+            nt = atoi(argv[++i]);
+            if (nt < 2 || nt > LM_MAX_THREADS) {
+                fprintf(stderr, "lamina bench threads: --threads needs a whole number from 2 "
+                        "to %d\n", LM_MAX_THREADS);
+                return 2;
+            }
+        } else if (strcmp(argv[i], "--idle") == 0) {
+            which = 1;
+        } else if (strcmp(argv[i], "--loaded") == 0) {
+            which = 2;
+        } else if (strcmp(argv[i], "--sizes") == 0 && i + 1 < argc) {
+            nsizes = 0;
+            for (char *s = argv[++i]; *s && nsizes < 8;) {
+                char *end;
+                double v = strtod(s, &end);
+                if (end == s || !(v >= 100 && v <= 1e7)) {
+                    fprintf(stderr, "lamina bench threads: --sizes needs particle counts in "
+                            "[100, 1e7], comma separated\n");
+                    return 2;
+                }
+                sizes[nsizes++] = v;
+                s = *end == ',' ? end + 1 : end;
+            }
+        } else {
+            fprintf(stderr, "lamina bench threads: unknown option '%s' (usage: lamina bench "
+                    "threads [--sizes N,N,...] [--steps N] [--pairs N] [--threads N] "
+                    "[--idle | --loaded])\n", argv[i]);
+            return 2;
+        }
+    }
+    const char *spin = getenv("GOMP_SPINCOUNT"), *policy = getenv("OMP_WAIT_POLICY");
+    printf("lamina bench threads: two disks USL, %ld steps, 1 thread against %d, median of "
+           "%d alternating pairs; OMP_WAIT_POLICY=%s GOMP_SPINCOUNT=%s\n\n", steps, nt, pairs,
+           policy ? policy : "(unset)", spin ? spin : "(unset)");
+    printf("| particles | other load    | loadavg | 1 thread s | %d threads s | 1 / %d | target "
+           "        | same hashes | 1 thread CPU s | %d threads CPU s |\n", nt, nt, nt);
+    printf("|---:|---|---:|---:|---:|---:|---|---|---:|---:|\n");
+    int bad = 0;
+    for (int k = 0; k < nsizes; k++) {
+        if (which & 1) bad |= row(sizes[k], nt, steps, pairs, 0);
+        if (which & 2) bad |= row(sizes[k], nt, steps, pairs, 1);
+    }
+    return bad;
+}
