@@ -11,5 +11,8 @@ int bench_threads(int argc, char **argv);
 /* The two elastic disks of bench engine at about `particles` particles on
  * nt threads, or NULL. */
 lm_sim *bench_two_disks(double particles, lm_scheme scheme, int nt);
+/* --sizes N,N,...: up to max particle counts in [100, 1e7] from arg into
+ * sizes; their number, or -1 with the reason printed as `lamina bench CMD`. */
+int bench_sizes(const char *cmd, const char *arg, double *sizes, int max);
 
 #endif

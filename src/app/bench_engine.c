@@ -190,6 +190,23 @@ lm_sim *bench_two_disks(double particles, lm_scheme scheme, int nt)
     return make_disks(sqrt(1.005 / particles), scheme, &rubber, nt);
 }
 
+int bench_sizes(const char *cmd, const char *arg, double *sizes, int max)
+{
+    int n = 0;
+    for (const char *s = arg; *s && n < max;) {
+        char *end;
+        double v = strtod(s, &end);
+        if (end == s || !(v >= 100 && v <= 1e7)) {
+            fprintf(stderr, "lamina bench %s: --sizes needs particle counts in [100, 1e7], "
+                    "comma separated\n", cmd);
+            return -1;
+        }
+        sizes[n++] = v;
+        s = *end == ',' ? end + 1 : end;
+    }
+    return n;
+}
+
 int bench_engine(int argc, char **argv)
 {
     double work = 4e6;
@@ -220,18 +237,7 @@ int bench_engine(int argc, char **argv)
             }
             basis = (lm_basis)b;
         } else if (strcmp(argv[i], "--sizes") == 0 && i + 1 < argc) {
-            nsizes = 0;
-            for (char *s = argv[++i]; *s && nsizes < 8;) {
-                char *end;
-                double v = strtod(s, &end);
-                if (end == s || !(v >= 100 && v <= 1e7)) {
-                    fprintf(stderr, "lamina bench engine: --sizes needs particle counts in "
-                            "[100, 1e7], comma separated\n");
-                    return 2;
-                }
-                sizes[nsizes++] = v;
-                s = *end == ',' ? end + 1 : end;
-            }
+            if ((nsizes = bench_sizes("engine", argv[++i], sizes, 8)) < 0) return 2;
         } else {
             fprintf(stderr, "lamina bench engine: unknown option '%s' (usage: lamina bench "
                     "engine [--sizes N,N,...] [--work PARTICLE_STEPS] [--threads N] "

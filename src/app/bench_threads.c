@@ -190,18 +190,7 @@ int bench_threads(int argc, char **argv)
         } else if (strcmp(argv[i], "--loaded") == 0) {
             which = 2;
         } else if (strcmp(argv[i], "--sizes") == 0 && i + 1 < argc) {
-            nsizes = 0;
-            for (char *s = argv[++i]; *s && nsizes < 8;) {
-                char *end;
-                double v = strtod(s, &end);
-                if (end == s || !(v >= 100 && v <= 1e7)) {
-                    fprintf(stderr, "lamina bench threads: --sizes needs particle counts in "
-                            "[100, 1e7], comma separated\n");
-                    return 2;
-                }
-                sizes[nsizes++] = v;
-                s = *end == ',' ? end + 1 : end;
-            }
+            if ((nsizes = bench_sizes("threads", argv[++i], sizes, 8)) < 0) return 2;
         } else {
             fprintf(stderr, "lamina bench threads: unknown option '%s' (usage: lamina bench "
                     "threads [--sizes N,N,...] [--steps N] [--pairs N] [--threads N] "
