@@ -109,7 +109,7 @@ function M.setup(h, o)
   local gas = sim:body{ material = air, ppc = 64, region = M.contains, name = "gas" }
   local pts = M.polyline()
   local mem = sim:membrane{ material = skin, name = "membrane",
-                            count = M.counts[h] or math.floor(2 / (h / 10) + 0.5),
+                            count = o.count or M.counts[h] or math.floor(2 / (h / 10) + 0.5),
                             normals = o.normals or "connectivity", orient = {0, 0},
                             force = o.force or "point",
                             initial_strain = math.log(M.length(pts) / M.natural_length),

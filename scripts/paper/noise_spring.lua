@@ -5,7 +5,7 @@
 --   is dozens of times larger; the cell-centred stress gives exactly the
 --   same curve here (for points in a line along y the bilinear y-gradient
 --   is constant in y within a cell, so the cell-centre gradient is each
---   point's own); segment forces never gain energy but damp the swing away;
+--   point's own); segment forces hold it (growth 0.005);
 --   more points per cell, GIMP (growth 0.10) and the quadratic B-spline
 --   (0.018) hold it; the grid forces f_y at the nodes round point 6 change
 --   sign as it crosses (the bar plot, as Figs 103-104)

@@ -85,5 +85,6 @@ void lm_contact_strain_velocity(lm_sim *sim);
 /* In steps 6-8: adds particle q's share of the velocity gradient that its
  * own field differs by, sum_i dv_i (x) G_iq. */
 void lm_contact_gradient(const lm_sim *sim, size_t q, double L[4]);
+void lm_contact_velocity(const lm_sim *sim, size_t q, double *ux, double *uy);
 
 #endif

@@ -460,6 +460,22 @@ void lm_contact_strain_velocity(lm_sim *sim)
     }
 }
 
+/* The body's strain velocity at particle q less the shared field's (MUSL,
+ * after step 5), added to u: what lm_contact_gradient adds to L, for the
+ * points that move with it (segment membranes, membrane_force.c). */
+void lm_contact_velocity(const lm_sim *sim, size_t q, double *ux, double *uy)
+{
+    const lm_contact *c = sim->contact;
+    const lm_particles *p = &sim->p;
+    if (!c || c->npairs == 0 || p->pin[q]) return;
+    int k = c->of_body[p->body[q]];
+    if (k < 0 || !touches(sim, q, 1u << LM_CNODE_RELEASE | 1u << LM_CNODE_SLIDE)) return;
+    double dx, dy;
+    gather2(&sim->grid, p, q, c->f[k].dvx, c->f[k].dvy, &dx, &dy);
+    *ux += dx;
+    *uy += dy;
+}
+
 void lm_contact_gradient(const lm_sim *sim, size_t q, double L[4])
 {
     const lm_contact *c = sim->contact;

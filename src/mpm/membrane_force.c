@@ -26,6 +26,7 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "contact.h"
 #include "step.h"
 
 /* Neighbour after q in curve order, or SIZE_MAX at an open end. */
@@ -101,6 +102,75 @@ void lm_membrane_segment_forces(lm_sim *sim)
             p->fpy[q] += F * ty;
             p->fpx[r] -= F * tx;
             p->fpy[r] -= F * ty;
+        }
+    }
+}
+
+/* MUSL moves a point with the Lagrangian grid velocity v^L (step 4) but
+ * carries into the next step, through FLIP and the re-map, a velocity
+ * whose nodal increment is smoothed by the consistent-to-lumped mass ratio
+ * M_L^-1 (sum_p N_ip m_p N_jp) < 1 for the short waves. The papers' point
+ * strain follows the re-mapped velocity (step 5, [M] eqs 12-13), so its
+ * work matches the kinetic energy the particles keep; a segment's strain
+ * follows the positions, and moving them with v^L instead loses the
+ * difference every step: a free string ringing lengthwise lost 7 % of its
+ * energy in 0.1 s, a slack dog-bone 14 % as it snapped taut
+ * (docs/robustness.md). So under MUSL a segment membrane's points move with
+ * the re-mapped velocity, the one whose gradient gives the point form its
+ * strain: (fpx, fpy), spent once step 2 spread them, keep x^k until then. */
+static int musl_moves(const lm_sim *sim, int b)
+{
+    return sim->def.scheme == LM_MUSL && segment_body(sim, b);
+}
+
+void lm_membrane_segment_hold(lm_sim *sim)
+{
+    lm_particles *p = &sim->p;
+    for (int b = 0; b < sim->nbodies; b++) {
+        if (!musl_moves(sim, b)) continue;
+        const lm_body *bd = &sim->bodies[b];
+        for (size_t q = bd->first; q < bd->first + bd->count; q++) {
+            p->fpx[q] = p->x[q];
+            p->fpy[q] = p->y[q];
+        }
+    }
+}
+
+/* sum_i N_iq v_i, row by row for the 3 x 3 stencils as step 4 sums (a
+ * point on a fixed wall then stays put to the last bit). */
+static void remapped_velocity(const lm_grid *g, const lm_particles *p, size_t q, double *ux,
+                              double *uy)
+{
+    const int W = g->sw;
+    const double *N = p->N + (size_t)(W * W) * q;
+    double sx = 0, sy = 0;
+    for (int b = 0; b < W; b++) {
+        const long row = lm_stencil_row(g, p->node[q], b);
+        double rx = 0, ry = 0;
+        for (int a = 0; a < W; a++) {
+            rx += N[b * W + a] * g->vx[row + a];
+            ry += N[b * W + a] * g->vy[row + a];
+        }
+        sx += rx;
+        sy += ry;
+    }
+    *ux = sx;
+    *uy = sy;
+}
+
+void lm_membrane_segment_move(lm_sim *sim)
+{
+    lm_particles *p = &sim->p;
+    double dt = sim->def.dt;
+    for (int b = 0; b < sim->nbodies; b++) {
+        if (!musl_moves(sim, b)) continue;
+        const lm_body *bd = &sim->bodies[b];
+        for (size_t q = bd->first; q < bd->first + bd->count; q++) {
+            double ux, uy;
+            remapped_velocity(&sim->grid, p, q, &ux, &uy);
+            lm_contact_velocity(sim, q, &ux, &uy);
+            p->x[q] = p->fpx[q] + dt * ux;
+            p->y[q] = p->fpy[q] + dt * uy;
         }
     }
 }

@@ -627,10 +627,12 @@ lm_status lm_sim_step(lm_sim *sim)
     }
     lm_step_grid_update(sim);                   /* 3: p_i^L, boundary conditions */
     if (sim->contact) lm_contact_correct(sim);
+    lm_membrane_segment_hold(sim);              /* x^k of segment membranes */
     lm_step_g2p(sim);                           /* 4: v_p, x_p */
     if (sim->contact) lm_contact_g2p(sim);
     lm_step_strain_velocity(sim);               /* 5: v_i for the strain */
     if (sim->contact) lm_contact_strain_velocity(sim);
+    lm_membrane_segment_move(sim);              /* 5: their x^{k+1} (MUSL) */
     st = stress_phases(sim);                    /* 6-8 */
     advance_clock(sim);
     if (st != LM_OK) return st;

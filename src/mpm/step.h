@@ -155,6 +155,8 @@ lm_status lm_membrane_prepare(lm_sim *sim);
  * every membrane. */
 void lm_membrane_segment_prepare(lm_sim *sim);   /* L0 from x and eps_t */
 void lm_membrane_segment_forces(lm_sim *sim);    /* fpx, fpy at x^k */
+void lm_membrane_segment_hold(lm_sim *sim);      /* x^k, before step 4 (MUSL) */
+void lm_membrane_segment_move(lm_sim *sim);      /* x^{k+1}, after step 5 (MUSL) */
 void lm_membrane_segment_strains(lm_sim *sim);   /* eps_t, sigma at x^{k+1} */
 double lm_membrane_segment_energy(const lm_sim *sim, int b);
 lm_status lm_membrane_check_torn(lm_sim *sim);

@@ -8,8 +8,8 @@
 -- the papers' point counts, 80 and 320; scripts/paper/membrane_pendulum.lua),
 -- computed here beside it. The segments' points are about 3/4 of a cell
 -- apart (20 and 40 points): the segment form damps the swing more the more
--- points a cell holds (cell 0.05, no PIC: 20 points 0.235 deg, 25 0.416,
--- 30 0.646, 40 0.834, 80 1.012, 160 1.067; docs/robustness.md "The pendulum
+-- points a cell holds (cell 0.05, no PIC: 20 points 0.255 deg, 30 0.597,
+-- 40 0.826, 80 1.034, 160 1.264; docs/robustness.md "The pendulum
 -- without a PIC blend"), so it is asserted at 3/4 of a cell and the papers'
 -- 80 points are printed. With point quadrature and no PIC the string tears
 -- (printed).
