@@ -143,6 +143,9 @@ void la_pins_update(lua_State *L, int sidx, la_sim *s);
 /* l_contact.c: adds sim:contact and sim:contact_info to the method table
  * at the top of the stack. */
 void la_contact_methods(lua_State *L);
+/* l_link.c: sim:link{...} and the link handle. */
+void la_link_methods(lua_State *L);
+void la_open_link(lua_State *L);
 
 /* l_checkpoint.c: sim:checkpoint{...}; la_checkpoint_due writes one when
  * due (after the step's callbacks); la_checkpoint_restore replaces the

@@ -78,6 +78,7 @@ static int luaopen_lamina(lua_State *L)
     la_open_sim(L);
     la_open_body(L);
     la_open_pin(L);
+    la_open_link(L);
     la_open_curve(L);
     la_open_record(L);
     luaL_newlib(L, funcs);

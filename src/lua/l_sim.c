@@ -596,6 +596,7 @@ void la_open_sim(lua_State *L)
     luaL_setfuncs(L, meta, 0);
     luaL_newlib(L, methods);
     la_contact_methods(L);   /* sim:contact, sim:contact_info (l_contact.c) */
+    la_link_methods(L);      /* sim:link (l_link.c) */
     lua_setfield(L, -2, "methods");
     lua_pop(L, 1);
 }

@@ -39,6 +39,7 @@ typedef struct header {
     uint32_t magic, version, endian, nmats;
     int32_t nbodies, npins, nx, ny, basis;
     uint32_t axisym;            /* the form: plane 0, axisymmetric 1 */
+    int32_t nlinks, pad;        /* version 3 */
     uint64_t n;                 /* particles */
     double hx, hy;
 } header;
@@ -59,6 +60,12 @@ typedef struct pin_rec {
     double vx, vy, rx, ry;
 } pin_rec;
 
+/* A link's state: a script may remove it (or change nothing else) mid-run. */
+typedef struct link_rec {
+    double k, L0;
+    int32_t active, pad;
+} link_rec;
+
 static uint32_t endian_mark(void)
 {
     const uint32_t one = 1;
@@ -70,7 +77,7 @@ size_t lm_sim_state_bytes(const lm_sim *sim)
     size_t n = sim->p.n;
     return sizeof(header) + sizeof(clock_rec) + (size_t)sim->nmats * sizeof(lm_material) +
            (size_t)sim->nbodies * sizeof(body_rec) + (size_t)sim->npins * sizeof(pin_rec) +
-           n * (NDOUBLES * sizeof(double) + 3 * sizeof(int32_t));
+           (size_t)sim->nlinks * sizeof(link_rec) + n * (NDOUBLES * sizeof(double) + 3 * sizeof(int32_t));
 }
 
 static unsigned char *put(unsigned char *b, const void *v, size_t n)
@@ -84,7 +91,8 @@ void lm_sim_state_save(const lm_sim *sim, unsigned char *buf)
     lm_particles *p = (lm_particles *)&sim->p;   /* read only: the arrays' addresses */
     header h = {MAGIC, LM_CHECKPOINT_VERSION, endian_mark(), (uint32_t)sim->nmats,
                 sim->nbodies, sim->npins, sim->grid.nx, sim->grid.ny, (int32_t)sim->def.basis,
-                (uint32_t)(sim->def.axisym != 0), (uint64_t)p->n, sim->grid.hx, sim->grid.hy};
+                (uint32_t)(sim->def.axisym != 0), sim->nlinks, 0, (uint64_t)p->n, sim->grid.hx,
+                sim->grid.hy};
     unsigned char *b = put(buf, &h, sizeof h);
     clock_rec c = {sim->t, sim->t_base, sim->def.dt, sim->pe_ref, sim->def.gx, sim->def.gy,
                    sim->def.pic, sim->def.courant, sim->step, sim->step_base, sim->prepared, 0};
@@ -99,6 +107,10 @@ void lm_sim_state_save(const lm_sim *sim, unsigned char *buf)
     }
     for (int k = 0; k < sim->npins; k++) {
         pin_rec r = {sim->pins[k].vx, sim->pins[k].vy, sim->pins[k].rx, sim->pins[k].ry};
+        b = put(b, &r, sizeof r);
+    }
+    for (int k = 0; k < sim->nlinks; k++) {
+        link_rec r = {sim->links[k].k, sim->links[k].L0, sim->links[k].active, 0};
         b = put(b, &r, sizeof r);
     }
     double *a[NDOUBLES];
@@ -131,6 +143,10 @@ lm_status lm_sim_state_load(lm_sim *sim, const unsigned char *buf, size_t len)
         return refuse(sim, why);
     }
     if (h.endian != endian_mark()) return refuse(sim, "it was written on a machine of the other byte order");
+    if (h.nlinks != sim->nlinks) {
+        snprintf(why, sizeof why, "it has %d links; the script made %d", h.nlinks, sim->nlinks);
+        return refuse(sim, why);
+    }
     if ((int)h.nmats != sim->nmats || h.nbodies != sim->nbodies || h.npins != sim->npins) {
         snprintf(why, sizeof why, "it has %u materials, %d bodies and %d pins; the script made "
                  "%d, %d and %d", h.nmats, h.nbodies, h.npins, sim->nmats, sim->nbodies,
@@ -145,7 +161,7 @@ lm_status lm_sim_state_load(lm_sim *sim, const unsigned char *buf, size_t len)
     size_t n = (size_t)h.n;
     size_t need = sizeof h + sizeof(clock_rec) + (size_t)h.nmats * sizeof(lm_material) +
                   (size_t)h.nbodies * sizeof(body_rec) + (size_t)h.npins * sizeof(pin_rec) +
-                  n * (NDOUBLES * sizeof(double) + 3 * sizeof(int32_t));
+                  (size_t)h.nlinks * sizeof(link_rec) + n * (NDOUBLES * sizeof(double) + 3 * sizeof(int32_t));
     if (len != need) return refuse(sim, "its size does not match its header (truncated?)");
     const unsigned char *b = buf + sizeof h;
     clock_rec c;
@@ -205,6 +221,14 @@ lm_status lm_sim_state_load(lm_sim *sim, const unsigned char *buf, size_t len)
         sim->pins[k].vy = r.vy;
         sim->pins[k].rx = r.rx;
         sim->pins[k].ry = r.ry;
+    }
+    for (int k = 0; k < sim->nlinks; k++) {
+        link_rec r;
+        memcpy(&r, b, sizeof r);
+        b += sizeof r;
+        sim->links[k].k = r.k;
+        sim->links[k].L0 = r.L0;
+        sim->links[k].active = r.active;
     }
     lm_particles *p = &sim->p;
     p->n = n;

@@ -69,6 +69,15 @@ int lm_sim_add_contact(lm_sim *sim, int a, int b, lm_contact_law law, double mu)
                  "mu must be a finite number >= 0 (got %g)", mu);
         return -1;
     }
+    for (int k = 0; k < sim->nlinks; k++)
+        for (int e = 0; e < 2; e++)
+            if (sim->links[k].body[e] == a || sim->links[k].body[e] == b) {
+                /* the pairs' own fields would not see the link's force */
+                snprintf(sim->err, sizeof sim->err,
+                         "%s has a link: links and contact do not mix yet",
+                         lm_body_label(sim, sim->links[k].body[e], wa, sizeof wa));
+                return -1;
+            }
     if (sim->def.stress == LM_STRESS_CELL) {
         /* the cell stresses mix the bodies of a cell: no force per body */
         snprintf(sim->err, sizeof sim->err,

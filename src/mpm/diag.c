@@ -9,7 +9,8 @@
 /* docs/physics.md §1: kinetic sum 1/2 m v^2; strain sum V 1/2 sigma:C^-1:sigma
  * (from the stress, so it stays objective); potential -sum m g.x with the
  * initial positions as datum. */
-static lm_energy energy_of(const lm_sim *sim, size_t first, size_t last, double ref)
+static lm_energy energy_of(const lm_sim *sim, size_t first, size_t last, double ref,
+                           int links)
 {
     lm_energy e = {0, 0, 0, 0, 0};
     const lm_particles *p = &sim->p;
@@ -46,6 +47,7 @@ static lm_energy energy_of(const lm_sim *sim, size_t first, size_t last, double 
             bd->first + bd->count <= last)
             e.strain += lm_membrane_segment_energy(sim, b);
     }
+    if (links) e.strain += lm_link_energy(sim);   /* the whole run's, not a body's */
     e.potential = ref - gx;
     e.total = e.kinetic + e.strain + e.internal + e.potential;
     return e;
@@ -92,14 +94,14 @@ double lm_sim_grid_kinetic(const lm_sim *sim)
  * datum. */
 lm_energy lm_sim_energy(const lm_sim *sim)
 {
-    return energy_of(sim, 0, sim->p.n, sim->pe_ref);
+    return energy_of(sim, 0, sim->p.n, sim->pe_ref, 1);
 }
 
 /* One body's share (its potential energy datum is its own seeding). */
 lm_energy lm_body_energy(const lm_sim *sim, int body)
 {
     const lm_body *b = &sim->bodies[body];
-    return energy_of(sim, b->first, b->first + b->count, b->pe_ref);
+    return energy_of(sim, b->first, b->first + b->count, b->pe_ref, 0);
 }
 
 static void range(const lm_sim *sim, int body, size_t *a, size_t *b)

@@ -218,6 +218,17 @@ typedef struct lm_pin {
                               exerted on the material (per unit depth) */
 } lm_pin;
 
+/* A force-displacement link between two material points (link.c): [F]
+ * §4.4's suggestion for the airbag's tether. */
+#define LM_MAX_LINKS 4096
+typedef struct lm_link {
+    int body[2];
+    size_t idx[2];         /* its two points, by index within their bodies */
+    double k, L0;          /* tension k (l - L0): stiffness, rest length */
+    int cable;             /* 1: no compression (T = 0 for l < L0) */
+    int active;            /* 0: removed (no force, no energy) */
+} lm_link;
+
 /* ---- the simulation (sim.c) ---------------------------------------------- */
 
 /* Which stress forms the internal force ([T] §5.4.3): each point's own,
@@ -271,6 +282,8 @@ typedef struct lm_sim {
     int npins;
     double *pin_w, *pin_vx, *pin_vy;   /* per node: sum of the held particles'
                               N_ip and N_ip v_p (allocated with the first pin) */
+    lm_link *links;        /* link.c */
+    int nlinks;
     struct lm_contact *contact;   /* pairs in contact (contact.h); NULL: none */
     char err[512];
 } lm_sim;
@@ -351,6 +364,16 @@ int lm_sim_add_pin(lm_sim *sim, int b, const size_t *idx, size_t n, double vx, d
 /* Changes a pin's velocity between steps. */
 void lm_sim_set_pin_velocity(lm_sim *sim, int pin, double vx, double vy);
 
+/* Links point ia of body ba to point ib of body bb (indices within the
+ * bodies) with tension k (l - L0), none in compression if cable; returns
+ * the link's index, or -1 with sim->err set (link.c). */
+int lm_sim_add_link(lm_sim *sim, int ba, size_t ia, int bb, size_t ib, double k, double L0,
+                    int cable);
+/* Removes (on = 0) or restores a link between steps. */
+void lm_sim_set_link_active(lm_sim *sim, int k, int on);
+double lm_link_length(const lm_sim *sim, int k);
+double lm_link_tension(const lm_sim *sim, int k);   /* 0 when removed */
+
 /* The phi of membrane body b's normals construction ([N] §3) at its
  * present points, element by element, into rep (normals.h; free with
  * lm_nreport_free): for "isosurface", "hybrid", "linear" and
@@ -403,7 +426,7 @@ lm_status lm_sim_step(lm_sim *sim);
  * and reads the file). Loading checks the simulation the script built
  * against the checkpoint's (materials, bodies, pins, grid, basis) and
  * refuses, with sim->err saying why, one that does not fit. */
-#define LM_CHECKPOINT_VERSION 2   /* 2: r0 (axisymmetric membranes) */
+#define LM_CHECKPOINT_VERSION 3   /* 2: r0 (axisymmetric membranes); 3: links */
 size_t lm_sim_state_bytes(const lm_sim *sim);
 void lm_sim_state_save(const lm_sim *sim, unsigned char *buf);
 lm_status lm_sim_state_load(lm_sim *sim, const unsigned char *buf, size_t len);

@@ -137,6 +137,7 @@ void lm_sim_free(lm_sim *sim)
     free(sim->cell_stress);
     for (int k = 0; k < sim->npins; k++) free(sim->pins[k].idx);
     free(sim->pins);
+    free(sim->links);
     free(sim->pin_w);
     lm_contact_free(sim->contact);
     free(sim);

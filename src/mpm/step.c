@@ -234,6 +234,7 @@ void lm_step_forces(lm_sim *sim)
     else
         scatter(sim, SCATTER_FORCES, 2, out, comp);
     if (sim->def.axisym) lm_axisym_forces(sim);   /* -V sigma_thth N / r (axisym.c) */
+    lm_link_forces(sim);                          /* tethers (link.c) */
     size_t nn = lm_grid_nodes(g);
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
     for (long i = 0; i < (long)nn; i++) {

@@ -161,6 +161,10 @@ void lm_membrane_segment_strains(lm_sim *sim);   /* eps_t, sigma at x^{k+1} */
 double lm_membrane_segment_energy(const lm_sim *sim, int b);
 lm_status lm_membrane_check_torn(lm_sim *sim);
 
+/* link.c: step 2's link forces (after the scatter), their stored energy. */
+void lm_link_forces(lm_sim *sim);
+double lm_link_energy(const lm_sim *sim);
+
 /* stress_cell.c: step 2's internal force from the cells' volume-weighted
  * mean stresses, gradients at the cell centres ([T] §5.4.3), for
  * def.stress = LM_STRESS_CELL; segment membranes' forces spread as usual.
