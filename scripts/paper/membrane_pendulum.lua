@@ -44,7 +44,7 @@ for _, r in ipairs{ {0.2, 20}, {0.1, 40}, {0.05, 80}, {0.025, 320} } do
   for _, tf in ipairs{0, 0.3, 0.6, 0.9, 1.2, 1.5} do
     sim:at(tf, function(sm)
       sm:frame{ file = string.format("%s/cell%.3f_t%.1f.png", out, h, tf), width = 480, height = 400,
-                title = string.format("cell %.3f, %d points", h, n) }
+                discs = "spacing", title = string.format("cell %.3f, %d points", h, n) }
     end)
   end
   sim:run{ t_end = T_end }
