@@ -11,10 +11,13 @@
 --
 -- barfem.run{ from = {x, y}, to = {x, y}, elements = 20, rho =, A =, E =,
 --             end_mass =, g = {gx, gy}, one_way = false, t_end =,
---             every =, safety = 0.5, initial_strain = f(u) or nil }
+--             every =, safety = 0.5, initial_strain = f(u) or nil,
+--             snapshots = {t1, t2, ...} or nil }
 -- returns { t = {...}, theta = {...}, x = {...}, y = {...} } sampled every
 -- `every`: theta in degrees from the downward vertical (first -> last
--- node), x, y of the last node.
+-- node), x, y of the last node; with `snapshots`, also snaps = { {t =, x =
+-- {...}, y = {...}}, ... }: every node's position at the first step at or
+-- after each of those times ([M] Fig 11 draws them).
 local M = {}
 
 function M.run(o)
@@ -40,7 +43,8 @@ function M.run(o)
     l0[e] = le / (1 + eps)
   end
   local fx, fy = {}, {}
-  local out = { t = {}, theta = {}, x = {}, y = {} }
+  local out = { t = {}, theta = {}, x = {}, y = {}, snaps = {} }
+  local snap_at = o.snapshots or {}
   local every = o.every or 1e-3
   local next_t, t, k = 0, 0, 0
   local function sample()
@@ -52,6 +56,12 @@ function M.run(o)
     if t >= next_t - 0.5 * dt then
       sample()
       next_t = next_t + every
+    end
+    local s = snap_at[#out.snaps + 1]
+    if s and t >= s - 0.5 * dt then
+      local sx, sy = {}, {}
+      for i = 0, n do sx[i + 1], sy[i + 1] = x[i], y[i] end
+      out.snaps[#out.snaps + 1] = { t = t, x = sx, y = sy }
     end
     for i = 0, n do fx[i], fy[i] = m[i] * gx, m[i] * gy end
     for e = 0, n - 1 do

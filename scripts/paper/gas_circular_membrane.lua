@@ -3,7 +3,8 @@
 -- look: the slack quarter membrane is pushed out by the gas and rings about
 --   its equilibrium; the gas stays inside; the hoop stress oscillates about
 --   p r / t (dashed); the pressure contours (the gas pressure interpolated
---   to the grid, as [T] Fig 56) show the pressure waves inside
+--   to the grid, as [T] Fig 56) show the pressure waves inside, one colour
+--   range (850 to 1150) for every time
 -- checks: hoop stress averaged over about ten periods (t >= 0.0125) within 5 % of p r / t
 --   (with p and r averaged too); radius at 0 and 90 degrees equal; no gas
 --   outside the membrane
@@ -29,9 +30,10 @@ local rec = sim:record{ every = 1e-4, energy = true, file = out .. "/history.csv
 for _, tf in ipairs{0, 0.005, 0.01, 0.05} do
   sim:at(tf, function(s)
     s:frame{ file = string.format("%s/fig12_t%.3f.png", out, tf), width = 400, height = 400,
-             title = string.format("t = %.3f", tf) }
+             discs = "spacing", title = string.format("t = %.3f", tf) }
     s:frame{ file = string.format("%s/pressure_t%.3f.png", out, tf), width = 640, height = 360,
              mirror = "x", contours = "pressure", grid = false, particles = "membranes",
+             range = {850, 1150}, discs = "spacing",
              title = string.format("gas pressure contours, t = %.3f", tf) }
   end)
 end
@@ -45,7 +47,8 @@ lamina.plot{ file = out .. "/fig13_pressure.png", csv = true, width = 640, heigh
              title = "Fig 13: mean gas pressure", xlabel = "t", ylabel = "p",
              series = { { x = t, y = pr, label = "connectivity normals" } } }
 lamina.plot{ file = out .. "/hoop_stress.png", csv = true, width = 640, height = 360,
-             title = "mean hoop stress", xlabel = "t", ylabel = "stress",
+             title = "mean hoop stress", xlabel = "t", ylabel = "stress", legend = "top right",
+             yrange = {-500, 12500},
              series = { { x = t, y = hoop, label = "MPM" },
                         { x = t, y = prt, label = "p r / t", dashed = true, color = 8 } } }
 local t0 = math.min(0.0125, 0.25 * t_end)

@@ -31,7 +31,7 @@ local function run(factor, frames)
                           file = string.format("%s/history_%.1f.csv", out, factor) }
   if frames then
     sim:frame{ file = out .. "/setup.png", width = 240, height = 800,
-               window = {0, 1.4, 0.2, 2.0}, title = "Fig 5(b): t = 0" }
+               window = {0, 1.4, 0.2, 2.03}, discs = "spacing", title = "Fig 5(b): t = 0" }
   end
   local ok = pcall(sim.run, sim, { t_end = periods * T })
   return rec, ok, sim

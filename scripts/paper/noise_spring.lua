@@ -1,5 +1,5 @@
 -- title: Cell-crossing noise: the ten-point spring, and its remedies
--- source: Tran 2005 dissertation [T], App. A.2, Figs 102-104 (and §5.4.3)
+-- source: York's dissertation [T], App. A.2, Figs 102-104 (and §5.4.3)
 -- look: the linear basis with point quadrature (the papers') gains energy
 --   each time point 6 crosses the cell edge near the apex, until the swing
 --   is dozens of times larger; the cell-centred stress gives exactly the

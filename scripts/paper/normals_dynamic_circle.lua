@@ -44,8 +44,8 @@ while k <= #shots and shots[k] <= t_end + 1e-12 do
   iso:run{ t_end = tf }
   con:run{ t_end = tf }
   iso:frame{ file = string.format("%s/fig12_t%.4f.png", out, tf), width = 640, height = 360,
-             mirror = "x", split = con, names = {"isosurface", "connectivity"}, normals = true,
-             colour = "pressure", title = string.format("Fig 12: t = %.3f", tf) }
+             mirror = "x", split = con, names = {"isosurface", "connectivity"}, normals = 4,
+             discs = "spacing", colour = "pressure", title = string.format("Fig 12: t = %.3f", tf) }
   k = k + 1
 end
 iso:run{ t_end = t_end }
@@ -55,7 +55,8 @@ local ti, pi, pc = rec_i:column("t"), rec_i:column("p"), rec_c:column("p")
 local dev = 0
 for j = 1, math.min(#pi, #pc) do dev = math.max(dev, math.abs(pi[j] - pc[j]) / pc[j]) end
 lamina.plot{ file = out .. "/fig13_pressure.png", csv = true, width = 640, height = 360,
-             title = "Fig 13: mean gas pressure", xlabel = "t", ylabel = "p",
+             title = "Fig 13: mean gas pressure", xlabel = "t", ylabel = "p", legend = "top right",
+             yrange = {974, 1010},
              series = { { x = ti, y = pi, label = "isosurface normals" },
                         { x = rec_c:column("t"), y = pc, label = "connectivity normals", dashed = true } } }
 table.sort(worst)

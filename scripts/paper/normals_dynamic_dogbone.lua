@@ -40,8 +40,8 @@ for _, tf in ipairs{0, 0.05, 0.1, 0.2, 0.4, 1, 2} do
   iso:run{ t_end = tf }
   con:run{ t_end = tf }
   iso:frame{ file = string.format("%s/fig14_t%.2f.png", out, tf), width = 720, height = 420,
-             mirror = "x", split = con, names = {"isosurface", "connectivity"}, normals = true,
-             window = {-1.6, 0, 1.6, 1.6}, title = string.format("Figs 14/16: t = %.2f", tf) }
+             mirror = "x", split = con, names = {"isosurface", "connectivity"}, normals = 4,
+             discs = "spacing", window = {-1.6, 0, 1.6, 1.6}, title = string.format("Figs 14/16: t = %.2f", tf) }
   if tf == 0 then
     -- Fig 16: the first steps close up, as the paper shows them: the
     -- membrane points, their normals and the phi of the construction that
@@ -53,7 +53,7 @@ for _, tf in ipairs{0, 0.05, 0.1, 0.2, 0.4, 1, 2} do
       con:step(n - con.nstep)
       iso:frame{ file = string.format("%s/fig16_step%d.png", out, n), width = 760, height = 380,
                  mirror = "x", split = con, names = {"isosurface", "connectivity"},
-                 normals = true, phi = true, particles = "membranes",
+                 normals = true, phi = true, particles = "membranes", discs = "spacing",
                  window = {-0.4, 0.8, 0.4, 1.15},
                  title = string.format("Fig 16: after %d steps, phi contours and normals", n) }
     end

@@ -1,5 +1,5 @@
 -- title: Stable time step of the 1-D bar: points at cell centres against cell sides
--- source: Tran 2005 dissertation [T], §8.5, Fig. 91, input deck App. A.4.11 (Box 14)
+-- source: York's dissertation [T], §8.5, Fig. 91, input deck App. A.4.11 (Box 14)
 -- look: (a) points at the cell centres: log10 of the energy over its start
 --   stays bounded for dt up to 2.1 h/c (2.1 climbs to 289x within the 0.03 s
 --   shown and comes back later) and shoots up at 2.2; (b) points on the cell
@@ -58,7 +58,7 @@ for _, scheme in ipairs{ "musl", "usl" } do
     end
     local tag = scheme == "musl" and panel[case] or (case == "centres" and "c" or "d")
     lamina.plot{ file = string.format("%s/fig91%s_%s_%s.png", out, tag, case, scheme), csv = true,
-                 width = 640, height = 420, yrange = { -1, 6.5 }, legend = "left",
+                 width = 640, height = 420, yrange = { -1, 6.5 }, legend = "best",
                  title = string.format("Fig 91(%s): points at cell %s, %s", tag, case, scheme:upper()),
                  xlabel = "t", ylabel = "log10(E / E0)", series = series }
   end

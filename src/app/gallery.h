@@ -8,6 +8,7 @@
  *   gallery_thumb.c   box-filtered thumbnails
  *   gallery_index.c   the index (README.md, index.html) and the figure pages
  *   gallery_check.c   --check: the gallery agrees with the scripts
+ *   gallery_coverage.c  the papers' figures and tables the gallery covers
  *   gallery_visual.c  --compare / --update-baselines: visual regression
  *
  * Errors are values: functions return 0 or -1 with a message in err[].
@@ -28,6 +29,7 @@
 #define G_META "meta.json"           /* per figure: what the last run made */
 #define G_REPORT "report.json"       /* per figure: lamina.report's values */
 #define G_LOG "log.txt"              /* per figure: the run's stdout and stderr */
+#define G_COVERAGE "coverage.tsv"    /* in the scripts folder: the papers' coverage */
 
 /* ---- options --------------------------------------------------------- */
 
@@ -163,6 +165,20 @@ void g_html(FILE *f, const char *s);
 int g_write_page(const g_options *o, const g_script *s, const lu_json *meta, char *err,
                  size_t errlen);
 int g_write_index(const g_options *o, const g_scripts *all, char *err, size_t errlen);
+
+/* ---- gallery_coverage.c ---------------------------------------------- */
+
+/* The figures and tables a source header cites, as "T Fig 31", "F Table IV":
+ * a paper is named by "1999" / "(membranes)" / "[M]", "2000" /
+ * "(fluid-membrane)" / "[F]", "normals paper" / "[N]", "dissertation" /
+ * "[T]", and holds until another is named. */
+void g_source_refs(const char *source, g_strs *out);
+/* Problems of SCRIPTS/coverage.tsv against the scripts, added to problems
+ * (none when the file does not exist). */
+void g_coverage_check(const g_options *o, const g_scripts *all, g_strs *problems);
+/* The coverage section of the index (nothing when there is no data). */
+void g_coverage_markdown(FILE *f, const g_options *o);
+void g_coverage_html(FILE *f, const g_options *o);
 
 /* ---- modes ----------------------------------------------------------- */
 

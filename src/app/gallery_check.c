@@ -6,7 +6,10 @@
  *     script as it is now (the script hash in meta.json);
  *   - no gallery folder is left without its script;
  *   - the index exists in both forms and lists every figure, and every link
- *     in it points at a file that exists.
+ *     in it points at a file that exists;
+ *   - the papers' coverage (SCRIPTS/coverage.tsv, gallery_coverage.c) names
+ *     only pages that exist, names every page, and gives each page the
+ *     figures its source header cites; the index shows it as it is now.
  *
  * Exit 0 when all holds, 1 with the list of problems otherwise. */
 #include "gallery.h"
@@ -93,7 +96,7 @@ static void links(const char *text, g_strs *out)
 }
 
 static void check_index(const g_options *o, const char *name, const g_scripts *all,
-                        g_strs *p)
+                        void (*coverage)(FILE *, const g_options *), g_strs *p)
 {
     char *path = g_fmt("%s/%s", o->gallery, name);
     char *text;
@@ -122,6 +125,14 @@ static void check_index(const g_options *o, const char *name, const g_scripts *a
         free(want);
     }
     g_strs_free(&l);
+    g_text cov;                      /* the coverage section as it would be written now */
+    g_text_open(&cov);
+    coverage(cov.f, o);
+    g_text_close(&cov);
+    if (cov.len && !strstr(text, cov.buf))
+        problem(p, g_fmt("%s: its coverage section is not %s/%s as it is now (run: lamina "
+                         "gallery)", path, o->scripts, G_COVERAGE));
+    free(cov.buf);
     free(text);
     free(path);
 }
@@ -156,9 +167,10 @@ int g_check(const g_options *o)
             problem(&p, g_fmt("%s/%s/: no script %s/%s.lua made it (remove the folder)",
                               o->gallery, dirs.v[i], o->scripts, dirs.v[i]));
     }
+    g_coverage_check(o, &all, &p);
     if (g_is_dir(o->gallery)) {
-        check_index(o, G_PAGE, &all, &p);
-        check_index(o, "index.html", &all, &p);
+        check_index(o, G_PAGE, &all, g_coverage_markdown, &p);
+        check_index(o, "index.html", &all, g_coverage_html, &p);
     }
     for (size_t i = 0; i < p.n; i++)
         fprintf(stderr, "gallery check: %s\n", p.v[i]);

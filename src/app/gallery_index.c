@@ -296,6 +296,7 @@ static void index_markdown(FILE *f, const g_options *o, const row *rows, size_t 
         fprintf(f, " | %s |\n", rt);
         free(rt);
     }
+    g_coverage_markdown(f, o);
 }
 
 static void index_html(FILE *f, const g_options *o, const row *rows, size_t n)
@@ -345,7 +346,9 @@ static void index_html(FILE *f, const g_options *o, const row *rows, size_t n)
         fputs("</td></tr>\n", f);
         free(rt);
     }
-    fputs("</table>\n</body>\n</html>\n", f);
+    fputs("</table>\n", f);
+    g_coverage_html(f, o);
+    fputs("</body>\n</html>\n", f);
 }
 
 int g_write_index(const g_options *o, const g_scripts *all, char *err, size_t errlen)

@@ -88,6 +88,24 @@ static double particle_radius(const lm_sim *sim)
     return r;
 }
 
+/* discs = "spacing": each body's own radius ([T]-style strings read as
+ * points): a membrane's points a third of their spacing along it (the
+ * spacing from the volume a point started with over the thickness, so
+ * neighbours keep a gap), other bodies half their spacing as above. */
+static double *body_radii(lua_State *L, la_frame_ctx *ctx, const lm_sim *sim)
+{
+    double *r = la_frame_scratch(L, ctx, (sim->nbodies ? sim->nbodies : 1) * sizeof *r);
+    for (int b = 0; b < sim->nbodies; b++) {
+        const lm_body *bd = &sim->bodies[b];
+        const lm_material *mt = sim->mats[bd->mat];
+        r[b] = 0;
+        if (bd->count == 0) continue;
+        double v = sim->p.m[bd->first] / mt->rho;
+        r[b] = bd->membrane && mt->thickness > 0 ? v / mt->thickness / 3.0 : 0.5 * sqrt(v);
+    }
+    return r;
+}
+
 /* ---- a side: one simulation's layers ------------------------------------ */
 
 typedef struct side_store {
@@ -98,8 +116,8 @@ typedef struct side_store {
 } side_store;
 
 /* Membrane normals (the tangent turned +90 degrees, [M] section 3) as
- * arrows one cell long. */
-static void normals(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, lr_arrows *a)
+ * arrows one cell long, at every `every`-th point of each membrane. */
+static void normals(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int every, lr_arrows *a)
 {
     /* tangents exist from the first step on; before it, from a prepare
      * (which sim:membrane has already run: it cannot fail here unless a
@@ -115,7 +133,8 @@ static void normals(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, lr_arrows *a)
     size_t k = 0;
     for (int b = 0; b < sim->nbodies; b++) {
         const lm_body *bd = &sim->bodies[b];
-        for (size_t q = bd->first; bd->membrane && q < bd->first + bd->count; q++, k++) {
+        for (size_t q = bd->first; bd->membrane && q < bd->first + bd->count;
+             q += (size_t)every, k++) {
             x[k] = sim->p.x[q];
             y[k] = sim->p.y[q];
             ux[k] = -sim->p.ty[q];
@@ -123,7 +142,7 @@ static void normals(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, lr_arrows *a)
         }
     }
     const lr_rgba dark = { 0.1, 0.1, 0.1, 1.0 };
-    a->n = n;
+    a->n = k;
     a->x = x;
     a->y = y;
     a->ux = ux;
@@ -202,7 +221,8 @@ static void pressure_contours(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int 
 /* which: 0 every particle, 1 membranes only, 2 none */
 static void fill_side(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int grid,
                       field f, int with_normals, int contour_levels, int which,
-                      int with_phi, int with_contact, lr_panel *p, lr_layers *l)
+                      int with_phi, int with_contact, int own_discs, lr_panel *p,
+                      lr_layers *l)
 {
     side_store *st = la_frame_scratch(L, ctx, sizeof *st);
     if (contour_levels > 0) {
@@ -226,6 +246,8 @@ static void fill_side(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int grid,
     pts->y = sim->p.y;
     pts->group = sim->p.body;
     pts->radius = particle_radius(sim);
+    pts->group_radius = own_discs ? body_radii(L, ctx, sim) : NULL;
+    pts->ngroups = own_discs ? sim->nbodies : 0;
     if (f == F_TENSION && !sim->prepared && lm_sim_prepare(sim) != LM_OK)
         luaL_error(L, "sim:frame: %s", sim->err);   /* tangents before the first step */
     if (f != F_BODY) {
@@ -263,7 +285,7 @@ static void fill_side(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int grid,
     l->points = pts;
     l->npoints = which == 2 ? 0 : 1;
     if (with_normals) {
-        normals(L, ctx, sim, &st->arrows);
+        normals(L, ctx, sim, with_normals, &st->arrows);
         l->arrows = &st->arrows;
         l->narrows = 1;
     }
@@ -485,7 +507,26 @@ void la_frame_panel(lua_State *L, la_frame_ctx *ctx, int fidx, int pidx, int sid
     get(L, fidx, pidx, "grid");
     int grid = lua_isnil(L, -1) || lua_toboolean(L, -1);
     lua_pop(L, 1);
-    int with_normals = boolean(L, ctx, fidx, pidx, "normals", 0);
+    /* normals = true | false | k (every k-th point's) */
+    int with_normals = 0;
+    int nt = get(L, fidx, pidx, "normals");
+    if (nt == LUA_TBOOLEAN) {
+        with_normals = lua_toboolean(L, -1);
+    } else if (nt != LUA_TNIL) {
+        int isnum;
+        double k = lua_tonumberx(L, -1, &isnum);
+        if (!isnum || k < 1 || k > 1e6 || k != floor(k))
+            luaL_error(L, "%s: 'normals' must be true, false or a whole number k >= 1 "
+                          "(every k-th point's)", ctx->fn);
+        with_normals = (int)k;
+    }
+    lua_pop(L, 1);
+    /* discs = "smallest" | "spacing" */
+    const char *discs = string(L, ctx, fidx, pidx, "discs");
+    if (discs && strcmp(discs, "smallest") != 0 && strcmp(discs, "spacing") != 0)
+        luaL_error(L, "%s: discs = \"%s\" is not one of \"smallest\" | \"spacing\"",
+                   ctx->fn, discs);
+    int own_discs = discs && strcmp(discs, "spacing") == 0;
     int with_phi = boolean(L, ctx, fidx, pidx, "phi", 0);
     int with_contact = boolean(L, ctx, fidx, pidx, "contact", 0);
     p->split_x = 0.5 * (p->wx0 + p->wx1);
@@ -518,9 +559,9 @@ void la_frame_panel(lua_State *L, la_frame_ctx *ctx, int fidx, int pidx, int sid
     else if (pt != LUA_TNIL)
         luaL_error(L, "%s: 'particles' must be true, false or \"membranes\"", ctx->fn);
     lua_pop(L, 1);
-    fill_side(L, ctx, sim, grid, f, with_normals, nlevels, which, with_phi, with_contact, p,
-              &p->side[0]);
+    fill_side(L, ctx, sim, grid, f, with_normals, nlevels, which, with_phi, with_contact,
+              own_discs, p, &p->side[0]);
     if (other)
         fill_side(L, ctx, other, grid, f, with_normals, nlevels, which, with_phi, with_contact,
-                  p, &p->side[1]);
+                  own_discs, p, &p->side[1]);
 }

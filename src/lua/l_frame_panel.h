@@ -10,7 +10,7 @@
  * panel, or as defaults for every table in `panels`). */
 #define LA_PANEL_KEYS "window", "grid", "colour", "range", "colourmap", \
     "colourbar", "scalebar", "units", "mirror", "split", "split_at", "names", \
-    "normals", "contours", "contour_levels", "particles", "phi", "contact"
+    "normals", "contours", "contour_levels", "particles", "phi", "contact", "discs"
 
 typedef struct la_frame_ctx {
     const char *fn;     /* "sim:frame", for messages */

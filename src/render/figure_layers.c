@@ -150,7 +150,17 @@ static lr_rgba point_colour(const lr_points *pts, size_t i, const lr_panel *p,
     return lr_cmap_colour(p->cmap, (pts->value[i] - vmin) / (vmax - vmin));
 }
 
-/* Converted in fixed chunks so a million particles need no big buffers. */
+static double point_radius(const lr_points *pts, size_t i)
+{
+    int g = pts->group ? pts->group[i] : 0;
+    if (pts->group_radius && g >= 0 && g < pts->ngroups)
+        return pts->group_radius[g];
+    return pts->radius;
+}
+
+/* Converted in fixed chunks so a million particles need no big buffers; a
+ * chunk is drawn when it is full or the next point's radius differs (bodies
+ * with radii of their own, lr_points.group_radius). */
 int fig_draw_points(lr_canvas *c, const fig_view *v, const fig_mirror *m,
                     const lr_points *pts, const lr_panel *p, double vmin, double vmax)
 {
@@ -161,9 +171,15 @@ int fig_draw_points(lr_canvas *c, const fig_view *v, const fig_mirror *m,
     lr_rgba *colour = malloc(PARTICLE_CHUNK * sizeof *colour);
     int rc = px && py && colour ? 0 : -1;
     double r = fmax(1.0, pts->radius * v->s);
-    double reach = r / v->s;    /* a disc partly inside the window is shown */
     size_t k = 0;
     for (size_t i = 0; i < pts->n && rc == 0; i++) {
+        double ri = fmax(1.0, point_radius(pts, i) * v->s);
+        if (ri != r && k > 0) {
+            lr_canvas_discs(c, k, px, py, r, colour);
+            k = 0;
+        }
+        r = ri;
+        double reach = r / v->s;    /* a disc partly inside the window is shown */
         double x = fig_mx(m, pts->x[i]), y = fig_my(m, pts->y[i]);
         if (!(x >= v->wx0 - reach && x <= v->wx1 + reach &&
               y >= v->wy0 - reach && y <= v->wy1 + reach))

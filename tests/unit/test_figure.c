@@ -81,7 +81,7 @@ static void test_frame_is_figure(void)
     f.title = "title";
     char err[512] = "";
     CHECK(lr_frame_write(&f, path("frame.png"), err, sizeof err) == 0);
-    lr_points pts = { 3, x, y, g, NULL, 0.08 };
+    lr_points pts = { 3, x, y, g, NULL, 0.08, NULL, 0 };
     lr_panel p;
     memset(&p, 0, sizeof p);
     p.wx1 = 2;
@@ -110,7 +110,7 @@ static void test_mirror(lr_backend be)
 {
     static const double x[] = { 0.25 }, y[] = { 0.25 };
     static const int g[] = { 1 };
-    lr_points pts = { 1, x, y, g, NULL, 0.05 };
+    lr_points pts = { 1, x, y, g, NULL, 0.05, NULL, 0 };
     lr_grid grid = { 0, 0, 0.25, 0.25, 4, 4 };
     lr_panel p;
     memset(&p, 0, sizeof p);
@@ -143,13 +143,42 @@ static void test_mirror(lr_backend be)
     free(img);
 }
 
+/* Bodies with radii of their own (lr_points.group_radius, sim:frame's
+ * discs = "spacing"): group 1 drawn at 0.02, group 2 at 0.1, though the
+ * common radius is 0.05; a group beyond ngroups keeps the common one. The
+ * discs' pixel counts go as the radii squared (25 times apart). */
+static void test_group_radius(lr_backend be)
+{
+    static const double x[] = { 0.25, 0.75, 0.5 }, y[] = { 0.5, 0.5, 0.2 };
+    static const int g[] = { 1, 2, 3 };
+    static const double gr[] = { 0.05, 0.02, 0.1 };
+    lr_points pts = { 3, x, y, g, NULL, 0.05, gr, 3 };
+    lr_panel p;
+    memset(&p, 0, sizeof p);
+    p.wx1 = p.wy1 = 1;
+    p.side[0].points = &pts;
+    p.side[0].npoints = 1;
+    lr_figure fig = { 200, 200, be, &p, 1, 0, 0, NULL, NULL, NULL, 0 };
+    char err[512] = "";
+    unsigned char *img = lr_figure_render(&fig, err, sizeof err);
+    CHECK(img != NULL);
+    if (!img)
+        return;
+    int n1 = count(img, 200, 0, 0, 200, 200, lr_palette(1));
+    int n2 = count(img, 200, 0, 0, 200, 200, lr_palette(2));
+    int n3 = count(img, 200, 0, 0, 200, 200, lr_palette(3));
+    CHECK(n1 > 0 && n2 > 15 * n1);        /* (0.1 / 0.02)^2 = 25, less the rims */
+    CHECK(n3 > 3 * n1 && n3 < n2);        /* 0.05: between */
+    free(img);
+}
+
 /* Two "runs" split at x = 0.5: the left shows only the first's particles,
  * the right only the second's, each side named. */
 static void test_split(lr_backend be)
 {
     static const double xa[] = { 0.25, 0.75 }, ya[] = { 0.5, 0.5 };
     static const int ga[] = { 0, 0 }, gb[] = { 1, 1 };
-    lr_points a = { 2, xa, ya, ga, NULL, 0.06 }, b = { 2, xa, ya, gb, NULL, 0.06 };
+    lr_points a = { 2, xa, ya, ga, NULL, 0.06, NULL, 0 }, b = { 2, xa, ya, gb, NULL, 0.06, NULL, 0 };
     lr_panel p;
     memset(&p, 0, sizeof p);
     p.wx1 = p.wy1 = 1;
@@ -181,7 +210,7 @@ static void test_panels_bars(lr_backend be)
 {
     static const double x[] = { 0.2, 0.5, 0.8 }, y[] = { 0.5, 0.5, 0.5 };
     static const double v[] = { 0.0, 5.0, 10.0 };
-    lr_points pts = { 3, x, y, NULL, v, 0.08 };
+    lr_points pts = { 3, x, y, NULL, v, 0.08, NULL, 0 };
     lr_panel p[2];
     memset(p, 0, sizeof p);
     for (int k = 0; k < 2; k++) {
@@ -252,7 +281,7 @@ static void test_colormap(void)
 static void test_vector_and_errors(void)
 {
     static const double x[] = { 0.5 }, y[] = { 0.5 };
-    lr_points pts = { 1, x, y, NULL, NULL, 0.1 };
+    lr_points pts = { 1, x, y, NULL, NULL, 0.1, NULL, 0 };
     lr_panel p;
     memset(&p, 0, sizeof p);
     p.wx1 = p.wy1 = 1;
@@ -356,6 +385,7 @@ int main(void)
     test_frame_is_figure();
     for (int i = 0; i < nb; i++) {
         test_mirror(be[i]);
+        test_group_radius(be[i]);
         test_split(be[i]);
         test_panels_bars(be[i]);
         test_filled_contour(be[i]);

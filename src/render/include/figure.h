@@ -40,6 +40,9 @@ typedef struct lr_points {      /* particles as discs */
     const double *value;        /* non-NULL: colour by value through the
                                    panel's colour map instead */
     double radius;              /* world units, drawn at least 1 px */
+    const double *group_radius; /* non-NULL: the radius of group g, for the
+                                   points whose group is below ngroups */
+    int ngroups;
 } lr_points;
 
 typedef struct lr_curve {       /* a polyline through world points */
