@@ -14,7 +14,7 @@
 #include "gallery.h"
 
 static const char usage_text[] =
-    "usage: lamina gallery [--only PATTERN] [--force] [--check] [--compare]\n"
+    "usage: lamina gallery [--only PATTERN] [--force] [--heavy] [--check] [--compare]\n"
     "                      [--update-baselines] [--scripts DIR] [--gallery DIR]\n"
     "                      [--baselines DIR] [--work DIR] [--set name=value] [--quiet]\n"
     "  (no mode)           render the stale scripts/paper/*.lua into gallery/, write the index\n"
@@ -24,6 +24,7 @@ static const char usage_text[] =
     "  --update-baselines  the same, then rewrite only the baselines that failed\n"
     "  --only PATTERN      only scripts whose name (without .lua) matches the glob\n"
     "  --force             render even figures that are up to date\n"
+    "  --heavy             render the figures marked heavy too (else only with --only)\n"
     "  --scripts DIR       the figure scripts (scripts/paper)\n"
     "  --gallery DIR       the gallery (gallery)\n"
     "  --baselines DIR     the baseline images (tests/visual/baselines)\n"
@@ -79,6 +80,8 @@ static int parse_args(int argc, char **argv, g_options *o)
             o->sets[o->nsets++] = set;
         } else if (!strcmp(a, "--force")) {
             o->force = 1;
+        } else if (!strcmp(a, "--heavy")) {
+            o->heavy = 1;
         } else if (!strcmp(a, "--check")) {
             o->check = 1;
         } else if (!strcmp(a, "--compare")) {
@@ -293,7 +296,7 @@ static int render_all(const g_options *o)
         g_scripts_free(&chosen);
         return 2;
     }
-    size_t ran = 0, fresh = 0, failed = 0;
+    size_t ran = 0, fresh = 0, failed = 0, heavy = 0;
     int broken = 0;
     for (size_t i = 0; i < chosen.n && !broken; i++) {
         const g_script *s = &chosen.v[i];
@@ -301,6 +304,23 @@ static int render_all(const g_options *o)
             fprintf(stderr, "lamina gallery: %s: the header lacks%s%s%s (docs/gallery.md)\n",
                     s->path, s->h.title ? "" : " '-- title:'",
                     s->h.source ? "" : " '-- source:'", s->h.look ? "" : " '-- look:'");
+        if (s->h.heavy && !o->heavy && !o->only && !up_to_date(o, s)) {
+            /* the finest meshes, minutes each (docs/gallery.md "Heavy
+             * figures"): the committed page stays, rewritten from its meta */
+            heavy++;
+            if (!o->quiet)
+                printf("gallery: %s: heavy, not rendered (lamina gallery --heavy, or --only %s): "
+                       "%s\n", s->stem, s->stem, s->h.heavy);
+            char *meta = g_fmt("%s/%s/%s", o->gallery, s->stem, G_META);
+            broken = g_exists(meta) && refresh_page(o, s) != 0;
+            free(meta);
+            continue;
+        }
+        if (s->h.heavy && !o->heavy && !o->only) {   /* up to date: nothing to run */
+            fresh++;
+            broken = refresh_page(o, s) != 0;
+            continue;
+        }
         if (!o->force && up_to_date(o, s)) {
             fresh++;
             if (!o->quiet)
@@ -318,9 +338,9 @@ static int render_all(const g_options *o)
         broken = 1;
     }
     if (!o->quiet && !broken)
-        printf("gallery: %zu figure%s: %zu rendered, %zu up to date, %zu failed; index: "
-               "%s/%s and %s/index.html\n", all.n, all.n == 1 ? "" : "s", ran - failed,
-               fresh, failed, o->gallery, G_PAGE, o->gallery);
+        printf("gallery: %zu figure%s: %zu rendered, %zu up to date, %zu heavy not rendered, "
+               "%zu failed; index: %s/%s and %s/index.html\n", all.n, all.n == 1 ? "" : "s",
+               ran - failed, fresh, heavy, failed, o->gallery, G_PAGE, o->gallery);
     g_scripts_free(&all);
     g_scripts_free(&chosen);
     return broken ? 2 : failed ? 1 : 0;

@@ -40,6 +40,7 @@ typedef struct g_options {
     const char *work;           /* --work DIR (out/visual) */
     const char *only;           /* --only PATTERN (a glob on the script's stem) */
     int force, check, compare, update, quiet;
+    int heavy;                  /* --heavy: render the pages marked heavy too */
     const char **sets;          /* --set name=value, for --compare */
     int nsets;
 } g_options;
@@ -105,6 +106,7 @@ typedef struct g_header {
     char *assumed;  /* -- assumed: inputs the paper leaves out, and why */
     char *thumb;    /* -- thumb: the image the index shows (default: the last) */
     char *visual;   /* -- visual: name=value ... for the regression run */
+    char *heavy;    /* -- heavy: why it is rendered only with --heavy (or --only) */
 } g_header;
 
 typedef struct g_script {

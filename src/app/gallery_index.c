@@ -189,6 +189,9 @@ int g_write_page(const g_options *o, const g_script *s, const lu_json *meta, cha
     fprintf(f, "**Script:** [`%s.lua`](%s) · lamina %s · run time %s\n\n", s->stem,
             rel ? rel : s->path, lu_json_string(meta, "version") ? lu_json_string(meta, "version")
                                                               : LAMINA_VERSION, rt);
+    if (s->h.heavy)
+        fprintf(f, "**Heavy:** %s — rendered by `lamina gallery --heavy` (or `--only %s`), "
+                   "not by a plain `lamina gallery`\n\n", s->h.heavy, s->stem);
     char *thumb = g_fmt("%s/%s", dir, G_THUMB);
     if (g_exists(thumb))
         fprintf(f, "![%s](%s)\n", s->stem, G_THUMB);

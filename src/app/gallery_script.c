@@ -33,9 +33,9 @@ static void append(char **field, const char *text, size_t n)
 static char **field_for(g_header *h, const char *line, size_t n, size_t *skip)
 {
     static const char *const keys[] = { "title", "source", "look", "checks",
-                                        "assumed", "thumb", "visual" };
+                                        "assumed", "thumb", "visual", "heavy" };
     char **fields[] = { &h->title, &h->source, &h->look, &h->checks,
-                        &h->assumed, &h->thumb, &h->visual };
+                        &h->assumed, &h->thumb, &h->visual, &h->heavy };
     for (size_t k = 0; k < sizeof keys / sizeof keys[0]; k++) {
         size_t m = strlen(keys[k]);
         if (n > m && strncmp(line, keys[k], m) == 0 && line[m] == ':') {
@@ -147,6 +147,7 @@ void g_scripts_free(g_scripts *s)
         free(x->h.assumed);
         free(x->h.thumb);
         free(x->h.visual);
+        free(x->h.heavy);
     }
     free(s->v);
     s->v = NULL;

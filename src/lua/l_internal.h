@@ -117,6 +117,7 @@ typedef struct la_sim {
     int npinf;
     int index;                  /* 1 + the sims the script made before it */
     char *ck_file;              /* sim:checkpoint (l_checkpoint.c) */
+    unsigned long long warned_bunched;   /* bodies warned of bunched points (bit b) */
     double ck_every, ck_next;
 } la_sim;
 

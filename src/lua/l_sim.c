@@ -404,6 +404,36 @@ static void advance(lua_State *L, la_sim *s, long nsteps, double t_end)
     la_record_flush(L, 1);
 }
 
+/* After a run: a segment membrane with a quarter of its points slack by
+ * more than 1 % beside taut ones has bunched points that carry nothing
+ * (lm_membrane_segment_slack): said once per membrane, not an error (a
+ * membrane may be partly slack by design). */
+static void warn_bunched(lua_State *L, la_sim *s)
+{
+    const lm_sim *sim = s->sim;
+    for (int b = 0; b < sim->nbodies && b < (int)(8 * sizeof s->warned_bunched); b++) {
+        size_t taut, slack = lm_membrane_segment_slack(sim, b, &taut);
+        size_t n = sim->bodies[b].count;
+        if (s->warned_bunched >> b & 1 || n < 10 || taut == 0 || 4 * slack < n) continue;
+        s->warned_bunched |= 1ull << b;
+        char who[96], line[640];
+        snprintf(line, sizeof line,
+                 "lamina: warning: at t = %.6g (step %ld): %zu of the %zu points of %s are slack "
+                 "by more than 1 %% while %zu carry tension: with force = \"segment\" points closer "
+                 "than the grid resolves stay bunched and carry nothing (docs/robustness.md, \"The "
+                 "dog-bone with segment forces\"); if it should be taut, space its points about 0.4 "
+                 "cells apart at their natural length, or use force = \"point\"\n",
+                 sim->t, sim->step, slack, n, lm_body_label(sim, b, who, sizeof who), taut);
+        lamina_progress_clear_line();
+        fputs(line, stderr);
+        lamina_run *run = la_run(L);
+        if (run && run->log) {
+            fputs(line, run->log);
+            fflush(run->log);
+        }
+    }
+}
+
 static int sim_run(lua_State *L)
 {
     static const char *const keys[] = {"t_end", NULL};
@@ -416,6 +446,7 @@ static int sim_run(lua_State *L)
     double n = floor((t_end - s->sim->t) / s->sim->def.dt + 0.5);
     if (n > 1e12) return luaL_error(L, "sim:run: t_end = %f needs %f steps", t_end, n);
     advance(L, s, n > 0 ? (long)n : 0, t_end);
+    warn_bunched(L, s);
     return 0;
 }
 
@@ -433,6 +464,7 @@ static int sim_step(lua_State *L)
         if (n < 0) n = 0;
     }
     advance(L, s, (long)n, NAN);
+    warn_bunched(L, s);
     return 0;
 }
 

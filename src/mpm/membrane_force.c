@@ -241,6 +241,25 @@ double lm_membrane_segment_energy(const lm_sim *sim, int b)
     return w;
 }
 
+/* The points of segment membrane b slack by more than 1 % (eps_t < -0.01),
+ * and in *taut those stretched. The grid moves a cell's points affinely,
+ * so points bunched closer than it resolves stay bunched, and their
+ * segments carry nothing while the rest hold the load (docs/robustness.md
+ * "The dog-bone with segment forces"): many slack points beside taut ones
+ * is that sign. 0 for other bodies. */
+size_t lm_membrane_segment_slack(const lm_sim *sim, int b, size_t *taut)
+{
+    size_t slack = 0;
+    *taut = 0;
+    if (b < 0 || b >= sim->nbodies || !segment_body(sim, b)) return 0;
+    const lm_body *bd = &sim->bodies[b];
+    for (size_t q = bd->first; q < bd->first + bd->count; q++) {
+        slack += sim->p.et[q] < -0.01;
+        *taut += sim->p.et[q] > 0;
+    }
+    return slack;
+}
+
 /* docs/physics.md §2: neighbouring membrane points must never be more than a
  * cell or so apart, or the grid no longer sees the membrane between them
  * and gas passes through. Two cells apart is reported as a tear. */

@@ -373,6 +373,9 @@ int lm_sim_add_link(lm_sim *sim, int ba, size_t ia, int bb, size_t ib, double k,
 void lm_sim_set_link_active(lm_sim *sim, int k, int on);
 double lm_link_length(const lm_sim *sim, int k);
 double lm_link_tension(const lm_sim *sim, int k);   /* 0 when removed */
+/* Points of segment membrane b slack by more than 1 %; *taut: stretched
+ * ones (membrane_force.c; bunched points, docs/robustness.md). */
+size_t lm_membrane_segment_slack(const lm_sim *sim, int b, size_t *taut);
 
 /* The phi of membrane body b's normals construction ([N] §3) at its
  * present points, element by element, into rep (normals.h; free with
