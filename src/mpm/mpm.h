@@ -272,6 +272,8 @@ typedef struct lm_sim {
     double *pin_w, *pin_vx, *pin_vy;   /* per node: sum of the held particles'
                               N_ip and N_ip v_p (allocated with the first pin) */
     struct lm_contact *contact;   /* pairs in contact (contact.h); NULL: none */
+    struct lm_nwork *nwork;       /* the normals' scratch (normals_work.h), made
+                                     by the first step that needs it; NULL: none */
     char err[512];
 } lm_sim;
 

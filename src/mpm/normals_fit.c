@@ -19,6 +19,7 @@
 #include <string.h>
 
 #include "normals.h"
+#include "normals_work.h"
 #include "util.h"
 
 /* A random point closer than this (relative to the element) to a membrane
@@ -201,9 +202,10 @@ static void row(const lm_nfit *f, const double p[3], double *s)
  * curvature rows (normals_smooth.c) with weight smooth * sqrt(rows), so
  * that their share does not fall as points are added. */
 static lm_nerr assemble_solve(lm_nfit *f, const double *const x[3],
-                              const size_t *idx, size_t k, double *S, double *rhs,
+                              const size_t *idx, size_t k, const lm_nfit_scratch *sc,
                               double smooth, int want_cond)
 {
+    double *S = sc->S, *rhs = sc->rhs;
     int n = f->n;
     for (size_t i = 0; i < k; i++) {
         double p[3];
@@ -225,12 +227,36 @@ static lm_nerr assemble_solve(lm_nfit *f, const double *const x[3],
     m += f->smooth_rows;
     if (f->solver == LM_NS_NORMAL)
         return lm_lsq_normal(m, n, S, rhs, f->phi, &f->info);
-    return lm_lsq_qr_cond(m, n, S, rhs, f->phi, &f->info, want_cond);
+    return lm_lsq_qr_ws(m, n, S, rhs, f->phi, &f->info, want_cond, sc->col);
 }
 
 lm_nerr lm_nfit_element(const lm_nbox *box, const double *const x[3],
                         const size_t *idx, size_t k, const lm_nfit_opts *o,
                         lm_nfit *fit, char *err, size_t errlen)
+{
+    /* one fit's scratch, for callers without a workspace */
+    lm_nfit_scratch sc;
+    sc.rows = k + 2 + (o->smooth > 0 ? LM_NSMOOTH_MAXROWS : 0);
+    sc.S = malloc(sizeof(double) * sc.rows * LM_NMAX);
+    sc.rhs = malloc(sizeof(double) * sc.rows);
+    sc.col = malloc(sizeof(double) * sc.rows);
+    lm_nerr e;
+    if (!sc.S || !sc.rhs || !sc.col) {
+        lu_err(err, errlen, "out of memory (%zu x %d system)", sc.rows, LM_NMAX);
+        e = LM_NERR_MEMORY;
+    } else {
+        e = lm_nfit_element_ws(box, x, idx, k, o, 0, -1, fit, &sc, err, errlen);
+    }
+    free(sc.S);
+    free(sc.rhs);
+    free(sc.col);
+    return e;
+}
+
+lm_nerr lm_nfit_element_ws(const lm_nbox *box, const double *const x[3],
+                           const size_t *idx, size_t k, const lm_nfit_opts *o,
+                           int lean, int nunique, lm_nfit *fit,
+                           const lm_nfit_scratch *sc, char *err, size_t errlen)
 {
     lm_nerr e = check_box(box, err, errlen);
     if (e)
@@ -253,7 +279,7 @@ lm_nerr lm_nfit_element(const lm_nbox *box, const double *const x[3],
     fit->n = lm_nbasis_count(o->basis, box->dim);
     fit->solver = o->solver;
     fit->npoints = (int)k;
-    fit->nunique = lm_npoints_unique(box, x, idx, k);
+    fit->nunique = nunique >= 0 ? nunique : lm_npoints_unique(box, x, idx, k);
     int need = o->min_points > 0 ? o->min_points : box->dim;
     if (fit->nunique < need) {
         lu_err(err, errlen, "only %d distinct membrane point%s in the element: "
@@ -267,12 +293,9 @@ lm_nerr lm_nfit_element(const lm_nbox *box, const double *const x[3],
     fit->rows = (int)k + 1 + fit->has_q2;
 
     int extra = o->smooth > 0 ? LM_NSMOOTH_MAXROWS : 0;
-    double *S = malloc(sizeof(double) * (size_t)(fit->rows + extra) * (size_t)fit->n);
-    double *rhs = malloc(sizeof(double) * (size_t)(fit->rows + extra));
-    if (!S || !rhs) {
-        free(S);
-        free(rhs);
-        lu_err(err, errlen, "out of memory (%d x %d system)", fit->rows, fit->n);
+    if ((size_t)(fit->rows + extra) > sc->rows) {
+        lu_err(err, errlen, "a %d x %d system in scratch for %zu rows", fit->rows + extra,
+               fit->n, sc->rows);
         return LM_NERR_MEMORY;
     }
     lm_nrng rng;
@@ -287,13 +310,11 @@ lm_nerr lm_nfit_element(const lm_nbox *box, const double *const x[3],
         else if (o->phi2 == LM_PHI2_RANDOM)
             draw_point(box, &rng, x, idx, k, o->clearance, fit->q2);
         fit->draws++;
-        e = assemble_solve(fit, x, idx, k, S, rhs, o->smooth, !o->skip_cond);
+        e = assemble_solve(fit, x, idx, k, sc, o->smooth, !o->skip_cond);
         if (e || o->random_given || !(o->cond_limit > 0) ||
             !(fit->info.cond_t > o->cond_limit) || fit->draws >= MAX_DRAWS)
             break;
     }
-    free(S);
-    free(rhs);
     if (e == LM_NERR_SINGULAR) {
         lu_err(err, errlen, "the normal equations are singular (a zero pivot): "
                "%d points, %d unknowns; use the QR solver", (int)k, fit->n);
@@ -308,7 +329,7 @@ lm_nerr lm_nfit_element(const lm_nbox *box, const double *const x[3],
         fit->flags |= LM_NF_REDRAWN;
     if (fit->info.rank < fit->n)
         fit->flags |= LM_NF_UNDERDETERMINED;
-    for (size_t i = 0; i < k; i++) {
+    for (size_t i = 0; i < k && !lean; i++) {
         double p[3];
         point_of(x, fit->dim, idx ? idx[i] : i, p);
         double r = fabs(lm_nfit_phi(fit, p) - 1.0);

@@ -23,6 +23,7 @@
 #include <string.h>
 
 #include "normals.h"
+#include "normals_work.h"
 
 #define AT(M, i, j, ld) ((M)[(size_t)(i) * (size_t)(ld) + (size_t)(j)])
 
@@ -72,7 +73,10 @@ lm_nerr lm_singular_values(int m, int n, const double *A, double *sv)
 {
     /* orthogonalise the shorter side: columns of A if m >= n, else of A^T */
     int rows = m >= n ? m : n, cols = m >= n ? n : m;
-    double *G = malloc(sizeof(double) * (size_t)rows * (size_t)(cols ? cols : 1));
+    /* R of a fit (at most LM_NMAX square) fits on the stack */
+    double small[LM_NMAX * LM_NMAX];
+    size_t size = (size_t)rows * (size_t)(cols ? cols : 1);
+    double *G = size <= LM_NMAX * LM_NMAX ? small : malloc(sizeof(double) * size);
     if (!G)
         return LM_NERR_MEMORY;
     for (int c = 0; c < cols; c++)
@@ -86,7 +90,8 @@ lm_nerr lm_singular_values(int m, int n, const double *A, double *sv)
                 s += G[(size_t)c * rows + i] * G[(size_t)c * rows + i];
         sv[c] = sqrt(s);
     }
-    free(G);
+    if (G != small)
+        free(G);
     qsort(sv, (size_t)n, sizeof *sv, descending);
     return LM_NERR_NONE;
 }
@@ -243,8 +248,11 @@ lm_nerr lm_lsq_qr(int m, int n, double *A, double *b, double *x,
     return lm_lsq_qr_cond(m, n, A, b, x, info, 1);
 }
 
-lm_nerr lm_lsq_qr_cond(int m, int n, double *A, double *b, double *x,
-                       lm_lsq_info *info, int want_cond)
+/* Steps 1-3 in the caller's buffers: perm and y (n), col (max(m, n)), sv
+ * (n), W (min(m, n) (1 + n)) and tau (min(m, n)). */
+static lm_nerr qr_solve(int m, int n, double *A, double *b, double *x,
+                        lm_lsq_info *info, int want_cond, int *perm, double *col,
+                        double *y, double *sv, double *W, double *tau)
 {
     lm_lsq_info dummy;
     if (!info)
@@ -253,20 +261,10 @@ lm_nerr lm_lsq_qr_cond(int m, int n, double *A, double *b, double *x,
     if (m <= 0 || n <= 0)
         return LM_NERR_INPUT;
     int kmax = m < n ? m : n;
-    size_t len = (size_t)(1 + n);
-    int *perm = malloc(sizeof(int) * (size_t)n);
-    double *col = malloc(sizeof(double) * (size_t)(m > n ? m : n));
-    double *y = calloc((size_t)n, sizeof(double));
-    double *sv = malloc(sizeof(double) * (size_t)n);
-    double *W = malloc(sizeof(double) * (size_t)kmax * len);
-    double *tau = malloc(sizeof(double) * (size_t)kmax);
-    lm_nerr e = LM_NERR_NONE;
-    if (!perm || !col || !y || !sv || !W || !tau) {
-        e = LM_NERR_MEMORY;
-        goto out;
-    }
-    for (int j = 0; j < n; j++)
+    for (int j = 0; j < n; j++) {
         perm[j] = j;
+        y[j] = 0.0;
+    }
     qr_pivoted(m, n, A, b, perm, col);
 
     int r = 0;
@@ -278,8 +276,9 @@ lm_nerr lm_lsq_qr_cond(int m, int n, double *A, double *b, double *x,
     if (!want_cond) {
         info->cond_t = info->cond_t_rank = NAN;
     } else {
-        if ((e = lm_singular_values(kmax, n, A, sv)) != LM_NERR_NONE)
-            goto out;
+        lm_nerr e = lm_singular_values(kmax, n, A, sv);
+        if (e != LM_NERR_NONE)
+            return e;
         condition(sv, n, r, info);
     }
 
@@ -294,7 +293,33 @@ lm_nerr lm_lsq_qr_cond(int m, int n, double *A, double *b, double *x,
     }
     for (int j = 0; j < n; j++)
         x[perm[j]] = y[j];
-out:
+    return LM_NERR_NONE;
+}
+
+lm_nerr lm_lsq_qr_cond(int m, int n, double *A, double *b, double *x,
+                       lm_lsq_info *info, int want_cond)
+{
+    if (m <= 0 || n <= 0) {
+        if (info)
+            memset(info, 0, sizeof *info);
+        return LM_NERR_INPUT;
+    }
+    int kmax = m < n ? m : n;
+    size_t len = (size_t)(1 + n);
+    int *perm = malloc(sizeof(int) * (size_t)n);
+    double *col = malloc(sizeof(double) * (size_t)(m > n ? m : n));
+    double *y = malloc(sizeof(double) * (size_t)n);
+    double *sv = malloc(sizeof(double) * (size_t)n);
+    double *W = malloc(sizeof(double) * (size_t)kmax * len);
+    double *tau = malloc(sizeof(double) * (size_t)kmax);
+    lm_nerr e;
+    if (!perm || !col || !y || !sv || !W || !tau) {
+        if (info)
+            memset(info, 0, sizeof *info);
+        e = LM_NERR_MEMORY;
+    } else {
+        e = qr_solve(m, n, A, b, x, info, want_cond, perm, col, y, sv, W, tau);
+    }
     free(perm);
     free(col);
     free(y);
@@ -302,4 +327,15 @@ out:
     free(W);
     free(tau);
     return e;
+}
+
+lm_nerr lm_lsq_qr_ws(int m, int n, double *A, double *b, double *x,
+                     lm_lsq_info *info, int want_cond, double *col)
+{
+    if (n > LM_NMAX)
+        return lm_lsq_qr_cond(m, n, A, b, x, info, want_cond);
+    /* every buffer but col is bounded by LM_NMAX: the stack */
+    int perm[LM_NMAX];
+    double y[LM_NMAX], sv[LM_NMAX], W[LM_NMAX * (LM_NMAX + 1)], tau[LM_NMAX];
+    return qr_solve(m, n, A, b, x, info, want_cond, perm, col, y, sv, W, tau);
 }

@@ -6,6 +6,7 @@
 
 #include "contact.h"
 #include "mpm.h"
+#include "normals_work.h"
 #include "particles.h"
 #include "step.h"
 
@@ -139,6 +140,7 @@ void lm_sim_free(lm_sim *sim)
     free(sim->pins);
     free(sim->pin_w);
     lm_contact_free(sim->contact);
+    lm_nwork_delete(sim->nwork);
     free(sim);
 }
 

@@ -1,0 +1,27 @@
+-- normals_share.lua - issue 17 item 3: the isosurface normals' share of a
+-- dog-bone step (docs/performance.md). The dog-bone of gas_dogbone at cell
+-- 0.1, one thread, `steps` steps with normals "connectivity" (no
+-- construction) and "isosurface", alternating `rounds` times so that the
+-- machine's load falls on both alike; the share is 1 - connectivity /
+-- isosurface per round. The state hashes after the run are printed so a
+-- change that should be bit-identical can be checked.
+--   nice -n 5 lamina run scripts/measure/normals_share.lua --set rounds=3
+local h = lamina.param("cell", 0.1)
+local steps = lamina.param("steps", 400)
+local rounds = lamina.param("rounds", 3)
+local dog = require("dogbone")
+
+local function timed(method)
+  local sim = dog.setup(h, { normals = method, threads = 1 })
+  sim:step(1)                      -- preparation and first allocations apart
+  local c0 = lamina.clock()
+  sim:step(steps)
+  return lamina.clock() - c0, sim:hash()
+end
+
+for r = 1, rounds do
+  local tc, hc = timed("connectivity")
+  local ti, hi = timed("isosurface")
+  print(string.format("round %d: connectivity %.3f s, isosurface %.3f s, share %.1f %% " ..
+                      "(hashes %s %s)", r, tc, ti, 100 * (1 - tc / ti), hc, hi))
+end
