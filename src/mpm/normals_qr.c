@@ -129,24 +129,80 @@ static double householder(double *u, int len, int stride, double *alpha)
 
 /* ---- QR with column pivoting ------------------------------------------------ */
 
+/* Sums over the rows i = k .. m-1 of the columns j0 .. n-1 of A: with u,
+ * acc_j = sum u_i A_ij; without, acc_j = sum A_ij^2. Each column's sum adds
+ * its terms in the order i = k .. m-1, as a plain column loop would, so
+ * the sums are bit for bit the same; but four (then two) columns go
+ * together, so that four running sums are in flight instead of one long
+ * chain of dependent additions - the QR of the fits was about half of the
+ * per-step normals (docs/performance.md). */
+static void column_sums(int m, int n, int k, int j0, const double *A,
+                        const double *u, double *acc)
+{
+    int j = j0;
+    for (; j + 4 <= n; j += 4) {
+        double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+        for (int i = k; i < m; i++) {
+            const double *r = &AT(A, i, j, n);
+            if (u) {
+                double c = u[i];
+                s0 += c * r[0];
+                s1 += c * r[1];
+                s2 += c * r[2];
+                s3 += c * r[3];
+            } else {
+                s0 += r[0] * r[0];
+                s1 += r[1] * r[1];
+                s2 += r[2] * r[2];
+                s3 += r[3] * r[3];
+            }
+        }
+        acc[j] = s0;
+        acc[j + 1] = s1;
+        acc[j + 2] = s2;
+        acc[j + 3] = s3;
+    }
+    for (; j + 2 <= n; j += 2) {
+        double s0 = 0, s1 = 0;
+        for (int i = k; i < m; i++) {
+            const double *r = &AT(A, i, j, n);
+            if (u) {
+                s0 += u[i] * r[0];
+                s1 += u[i] * r[1];
+            } else {
+                s0 += r[0] * r[0];
+                s1 += r[1] * r[1];
+            }
+        }
+        acc[j] = s0;
+        acc[j + 1] = s1;
+    }
+    for (; j < n; j++) {
+        double s0 = 0;
+        for (int i = k; i < m; i++) {
+            double a = AT(A, i, j, n);
+            s0 += u ? u[i] * a : a * a;
+        }
+        acc[j] = s0;
+    }
+}
+
 /* Step 1: A P = Q R in place (R in the upper triangle, the Householder
- * vectors are not kept: Q^T is applied to b on the way). */
+ * vectors are not kept: Q^T is applied to b on the way). acc holds n sums. */
 static void qr_pivoted(int m, int n, double *A, double *b, int *perm,
-                       double *col)
+                       double *col, double *acc)
 {
     int kmax = m < n ? m : n;
     for (int k = 0; k < kmax; k++) {
+        /* the pivot: the remaining column of largest norm (first of ties) */
+        column_sums(m, n, k, k, A, NULL, acc);
         int best = k;
         double bn = -1;
-        for (int j = k; j < n; j++) {
-            double s = 0;
-            for (int i = k; i < m; i++)
-                s += AT(A, i, j, n) * AT(A, i, j, n);
-            if (s > bn) {
-                bn = s;
+        for (int j = k; j < n; j++)
+            if (acc[j] > bn) {
+                bn = acc[j];
                 best = j;
             }
-        }
         if (best != k) {
             for (int i = 0; i < m; i++) {
                 double t = AT(A, i, k, n);
@@ -160,22 +216,24 @@ static void qr_pivoted(int m, int n, double *A, double *b, int *perm,
         double alpha;
         double tau = householder(&AT(A, k, k, n), m - k, n, &alpha);
         if (tau != 0.0) {
+            /* H = I - tau w w^T on the columns right of k and on b:
+             * d_j = tau w.a_j, then a_j -= d_j w */
             for (int i = k; i < m; i++)
                 col[i] = AT(A, i, k, n);
-            for (int j = k + 1; j < n; j++) {
-                double d = 0;
-                for (int i = k; i < m; i++)
-                    d += col[i] * AT(A, i, j, n);
-                d *= tau;
-                for (int i = k; i < m; i++)
-                    AT(A, i, j, n) -= d * col[i];
+            column_sums(m, n, k, k + 1, A, col, acc);
+            double db = 0;
+            for (int i = k; i < m; i++)
+                db += col[i] * b[i];
+            for (int j = k + 1; j < n; j++)
+                acc[j] *= tau;
+            db *= tau;
+            for (int i = k; i < m; i++) {
+                double *row = &AT(A, i, 0, n);
+                double c = col[i];
+                for (int j = k + 1; j < n; j++)
+                    row[j] -= acc[j] * c;
+                b[i] -= db * c;
             }
-            double d = 0;
-            for (int i = k; i < m; i++)
-                d += col[i] * b[i];
-            d *= tau;
-            for (int i = k; i < m; i++)
-                b[i] -= d * col[i];
         }
         AT(A, k, k, n) = alpha;
         for (int i = k + 1; i < m; i++)
@@ -265,7 +323,7 @@ static lm_nerr qr_solve(int m, int n, double *A, double *b, double *x,
         perm[j] = j;
         y[j] = 0.0;
     }
-    qr_pivoted(m, n, A, b, perm, col);
+    qr_pivoted(m, n, A, b, perm, col, sv);   /* sv: free until the end */
 
     int r = 0;
     double r00 = fabs(AT(A, 0, 0, n));
