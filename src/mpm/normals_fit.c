@@ -189,13 +189,12 @@ static void draw_point(const lm_nbox *b, lm_nrng *rng, const double *const x[3],
         memcpy(q, best, sizeof best);
 }
 
-/* Step 2: one row of [S]. */
+/* Step 2: one row of [S] (the basis writes its n values straight in). */
 static void row(const lm_nfit *f, const double p[3], double *s)
 {
-    double xi[3], v[LM_NMAX];
+    double xi[3];
     lm_nbox_to_logical(&f->box, p, xi);
-    lm_nbasis_eval(f->basis, f->dim, xi, v, NULL);
-    memcpy(s, v, sizeof(double) * (size_t)f->n);
+    lm_nbasis_eval(f->basis, f->dim, xi, s, NULL);
 }
 
 /* Steps 2-5 for the current random point(s); smooth > 0 appends the
