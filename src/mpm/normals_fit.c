@@ -226,7 +226,7 @@ static lm_nerr assemble_solve(lm_nfit *f, const double *const x[3],
     m += f->smooth_rows;
     if (f->solver == LM_NS_NORMAL)
         return lm_lsq_normal(m, n, S, rhs, f->phi, &f->info);
-    return lm_lsq_qr_ws(m, n, S, rhs, f->phi, &f->info, want_cond, sc->col);
+    return lm_lsq_qr_ws(m, n, S, rhs, f->phi, &f->info, want_cond, sc->cols);
 }
 
 lm_nerr lm_nfit_element(const lm_nbox *box, const double *const x[3],
@@ -238,9 +238,9 @@ lm_nerr lm_nfit_element(const lm_nbox *box, const double *const x[3],
     sc.rows = k + 2 + (o->smooth > 0 ? LM_NSMOOTH_MAXROWS : 0);
     sc.S = malloc(sizeof(double) * sc.rows * LM_NMAX);
     sc.rhs = malloc(sizeof(double) * sc.rows);
-    sc.col = malloc(sizeof(double) * sc.rows);
+    sc.cols = malloc(sizeof(double) * sc.rows * LM_NMAX);
     lm_nerr e;
-    if (!sc.S || !sc.rhs || !sc.col) {
+    if (!sc.S || !sc.rhs || !sc.cols) {
         lu_err(err, errlen, "out of memory (%zu x %d system)", sc.rows, LM_NMAX);
         e = LM_NERR_MEMORY;
     } else {
@@ -248,7 +248,7 @@ lm_nerr lm_nfit_element(const lm_nbox *box, const double *const x[3],
     }
     free(sc.S);
     free(sc.rhs);
-    free(sc.col);
+    free(sc.cols);
     return e;
 }
 

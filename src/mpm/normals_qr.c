@@ -129,73 +129,83 @@ static double householder(double *u, int len, int stride, double *alpha)
 
 /* ---- QR with column pivoting ------------------------------------------------ */
 
-/* Sums over the rows i = k .. m-1 of the columns j0 .. n-1 of A: with u,
- * acc_j = sum u_i A_ij; without, acc_j = sum A_ij^2. Each column's sum adds
- * its terms in the order i = k .. m-1, as a plain column loop would, so
- * the sums are bit for bit the same; but four (then two) columns go
- * together, so that four running sums are in flight instead of one long
- * chain of dependent additions - the QR of the fits was about half of the
- * per-step normals (docs/performance.md). */
-static void column_sums(int m, int n, int k, int j0, const double *A,
+/* Sums over i = k .. m-1 for the columns j0 .. n-1 of C (column j at
+ * C + j m): with u, acc_j = sum u_i C_ij; without, acc_j = sum C_ij^2.
+ * Each column's sum adds its terms in the order i = k .. m-1, as a plain
+ * loop would, so the sums are bit for bit the same; four (then two)
+ * columns go together so that four running sums are in flight instead of
+ * one chain of dependent additions. */
+static void column_sums(int m, int n, int k, int j0, const double *C,
                         const double *u, double *acc)
 {
     int j = j0;
     for (; j + 4 <= n; j += 4) {
+        const double *c0 = C + (size_t)j * m, *c1 = c0 + m, *c2 = c1 + m, *c3 = c2 + m;
         double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
-        for (int i = k; i < m; i++) {
-            const double *r = &AT(A, i, j, n);
-            if (u) {
-                double c = u[i];
-                s0 += c * r[0];
-                s1 += c * r[1];
-                s2 += c * r[2];
-                s3 += c * r[3];
-            } else {
-                s0 += r[0] * r[0];
-                s1 += r[1] * r[1];
-                s2 += r[2] * r[2];
-                s3 += r[3] * r[3];
+        if (u)
+            for (int i = k; i < m; i++) {
+                s0 += u[i] * c0[i];
+                s1 += u[i] * c1[i];
+                s2 += u[i] * c2[i];
+                s3 += u[i] * c3[i];
             }
-        }
+        else
+            for (int i = k; i < m; i++) {
+                s0 += c0[i] * c0[i];
+                s1 += c1[i] * c1[i];
+                s2 += c2[i] * c2[i];
+                s3 += c3[i] * c3[i];
+            }
         acc[j] = s0;
         acc[j + 1] = s1;
         acc[j + 2] = s2;
         acc[j + 3] = s3;
     }
     for (; j + 2 <= n; j += 2) {
+        const double *c0 = C + (size_t)j * m, *c1 = c0 + m;
         double s0 = 0, s1 = 0;
-        for (int i = k; i < m; i++) {
-            const double *r = &AT(A, i, j, n);
-            if (u) {
-                s0 += u[i] * r[0];
-                s1 += u[i] * r[1];
-            } else {
-                s0 += r[0] * r[0];
-                s1 += r[1] * r[1];
+        if (u)
+            for (int i = k; i < m; i++) {
+                s0 += u[i] * c0[i];
+                s1 += u[i] * c1[i];
             }
-        }
+        else
+            for (int i = k; i < m; i++) {
+                s0 += c0[i] * c0[i];
+                s1 += c1[i] * c1[i];
+            }
         acc[j] = s0;
         acc[j + 1] = s1;
     }
     for (; j < n; j++) {
+        const double *c0 = C + (size_t)j * m;
         double s0 = 0;
-        for (int i = k; i < m; i++) {
-            double a = AT(A, i, j, n);
-            s0 += u ? u[i] * a : a * a;
-        }
+        for (int i = k; i < m; i++)
+            s0 += u ? u[i] * c0[i] : c0[i] * c0[i];
         acc[j] = s0;
     }
 }
 
 /* Step 1: A P = Q R in place (R in the upper triangle, the Householder
- * vectors are not kept: Q^T is applied to b on the way). acc holds n sums. */
+ * vectors are not kept: Q^T is applied to b on the way). C (m n) holds A's
+ * columns apart while the reflections work on them, acc n sums.
+ *
+ * Why the columns apart: every operation here runs down columns, which in
+ * the row-major A are n apart; one column after another in C they are
+ * contiguous and a pivot swap moves one block. The arithmetic - each
+ * element's operations and their order - is that of the plain column loops
+ * on A, so R, Q^T b and the permutation are bit for bit the same. (The QR
+ * was half the cost of the per-step normals, docs/performance.md.) */
 static void qr_pivoted(int m, int n, double *A, double *b, int *perm,
-                       double *col, double *acc)
+                       double *C, double *acc)
 {
+    for (int j = 0; j < n; j++)
+        for (int i = 0; i < m; i++)
+            C[(size_t)j * m + i] = AT(A, i, j, n);
     int kmax = m < n ? m : n;
     for (int k = 0; k < kmax; k++) {
         /* the pivot: the remaining column of largest norm (first of ties) */
-        column_sums(m, n, k, k, A, NULL, acc);
+        column_sums(m, n, k, k, C, NULL, acc);
         int best = k;
         double bn = -1;
         for (int j = k; j < n; j++)
@@ -203,42 +213,45 @@ static void qr_pivoted(int m, int n, double *A, double *b, int *perm,
                 bn = acc[j];
                 best = j;
             }
+        double *ck = C + (size_t)k * m;
         if (best != k) {
+            double *cb = C + (size_t)best * m;
             for (int i = 0; i < m; i++) {
-                double t = AT(A, i, k, n);
-                AT(A, i, k, n) = AT(A, i, best, n);
-                AT(A, i, best, n) = t;
+                double t = ck[i];
+                ck[i] = cb[i];
+                cb[i] = t;
             }
             int t = perm[k];
             perm[k] = perm[best];
             perm[best] = t;
         }
         double alpha;
-        double tau = householder(&AT(A, k, k, n), m - k, n, &alpha);
+        double tau = householder(ck + k, m - k, 1, &alpha);
         if (tau != 0.0) {
-            /* H = I - tau w w^T on the columns right of k and on b:
-             * d_j = tau w.a_j, then a_j -= d_j w */
-            for (int i = k; i < m; i++)
-                col[i] = AT(A, i, k, n);
-            column_sums(m, n, k, k + 1, A, col, acc);
+            /* H = I - tau w w^T (w in ck[k..m)) on the columns right of k
+             * and on b: d_j = tau w.c_j, then c_j -= d_j w */
+            column_sums(m, n, k, k + 1, C, ck, acc);
             double db = 0;
             for (int i = k; i < m; i++)
-                db += col[i] * b[i];
-            for (int j = k + 1; j < n; j++)
-                acc[j] *= tau;
-            db *= tau;
-            for (int i = k; i < m; i++) {
-                double *row = &AT(A, i, 0, n);
-                double c = col[i];
-                for (int j = k + 1; j < n; j++)
-                    row[j] -= acc[j] * c;
-                b[i] -= db * c;
+                db += ck[i] * b[i];
+            for (int j = k + 1; j < n; j++) {
+                double d = acc[j] * tau, *cj = C + (size_t)j * m;
+                for (int i = k; i < m; i++)
+                    cj[i] -= d * ck[i];
             }
+            db *= tau;
+            for (int i = k; i < m; i++)
+                b[i] -= db * ck[i];
         }
-        AT(A, k, k, n) = alpha;
+        ck[k] = alpha;
         for (int i = k + 1; i < m; i++)
-            AT(A, i, k, n) = 0.0;
+            ck[i] = 0.0;
     }
+    /* R back into A's leading rows, all that is read after (the rows
+     * below are zero in R and A is scratch to the caller) */
+    for (int i = 0; i < kmax; i++)
+        for (int j = 0; j < n; j++)
+            AT(A, i, j, n) = C[(size_t)j * m + i];
 }
 
 /* Back substitution with the r x r upper triangle of R (leading dim n). */
@@ -306,10 +319,10 @@ lm_nerr lm_lsq_qr(int m, int n, double *A, double *b, double *x,
     return lm_lsq_qr_cond(m, n, A, b, x, info, 1);
 }
 
-/* Steps 1-3 in the caller's buffers: perm and y (n), col (max(m, n)), sv
- * (n), W (min(m, n) (1 + n)) and tau (min(m, n)). */
+/* Steps 1-3 in the caller's buffers: perm and y (n), C (m n), sv (n), W
+ * (min(m, n) (1 + n)) and tau (min(m, n)). */
 static lm_nerr qr_solve(int m, int n, double *A, double *b, double *x,
-                        lm_lsq_info *info, int want_cond, int *perm, double *col,
+                        lm_lsq_info *info, int want_cond, int *perm, double *C,
                         double *y, double *sv, double *W, double *tau)
 {
     lm_lsq_info dummy;
@@ -323,7 +336,7 @@ static lm_nerr qr_solve(int m, int n, double *A, double *b, double *x,
         perm[j] = j;
         y[j] = 0.0;
     }
-    qr_pivoted(m, n, A, b, perm, col, sv);   /* sv: free until the end */
+    qr_pivoted(m, n, A, b, perm, C, sv);   /* sv: free until the end */
 
     int r = 0;
     double r00 = fabs(AT(A, 0, 0, n));
@@ -365,21 +378,21 @@ lm_nerr lm_lsq_qr_cond(int m, int n, double *A, double *b, double *x,
     int kmax = m < n ? m : n;
     size_t len = (size_t)(1 + n);
     int *perm = malloc(sizeof(int) * (size_t)n);
-    double *col = malloc(sizeof(double) * (size_t)(m > n ? m : n));
+    double *C = malloc(sizeof(double) * (size_t)m * (size_t)n);
     double *y = malloc(sizeof(double) * (size_t)n);
     double *sv = malloc(sizeof(double) * (size_t)n);
     double *W = malloc(sizeof(double) * (size_t)kmax * len);
     double *tau = malloc(sizeof(double) * (size_t)kmax);
     lm_nerr e;
-    if (!perm || !col || !y || !sv || !W || !tau) {
+    if (!perm || !C || !y || !sv || !W || !tau) {
         if (info)
             memset(info, 0, sizeof *info);
         e = LM_NERR_MEMORY;
     } else {
-        e = qr_solve(m, n, A, b, x, info, want_cond, perm, col, y, sv, W, tau);
+        e = qr_solve(m, n, A, b, x, info, want_cond, perm, C, y, sv, W, tau);
     }
     free(perm);
-    free(col);
+    free(C);
     free(y);
     free(sv);
     free(W);
@@ -388,12 +401,12 @@ lm_nerr lm_lsq_qr_cond(int m, int n, double *A, double *b, double *x,
 }
 
 lm_nerr lm_lsq_qr_ws(int m, int n, double *A, double *b, double *x,
-                     lm_lsq_info *info, int want_cond, double *col)
+                     lm_lsq_info *info, int want_cond, double *C)
 {
     if (n > LM_NMAX)
         return lm_lsq_qr_cond(m, n, A, b, x, info, want_cond);
-    /* every buffer but col is bounded by LM_NMAX: the stack */
+    /* every buffer but C is bounded by LM_NMAX: the stack */
     int perm[LM_NMAX];
     double y[LM_NMAX], sv[LM_NMAX], W[LM_NMAX * (LM_NMAX + 1)], tau[LM_NMAX];
-    return qr_solve(m, n, A, b, x, info, want_cond, perm, col, y, sv, W, tau);
+    return qr_solve(m, n, A, b, x, info, want_cond, perm, C, y, sv, W, tau);
 }

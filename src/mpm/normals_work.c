@@ -33,7 +33,7 @@ lm_nerr lm_nwork_reserve(lm_nwork *w, size_t n)
         grow((void **)&w->done, n, sizeof *w->done) ||
         grow((void **)&w->fit.S, rows * LM_NMAX, sizeof *w->fit.S) ||
         grow((void **)&w->fit.rhs, rows, sizeof *w->fit.rhs) ||
-        grow((void **)&w->fit.col, rows, sizeof *w->fit.col))
+        grow((void **)&w->fit.cols, rows * LM_NMAX, sizeof *w->fit.cols))
         return LM_NERR_MEMORY;
     w->cap = n;
     w->fit.rows = rows;
@@ -55,7 +55,7 @@ void lm_nwork_free(lm_nwork *w)
     free(w->done);
     free(w->fit.S);
     free(w->fit.rhs);
-    free(w->fit.col);
+    free(w->fit.cols);
     lm_nbins_free(&w->bins);
     memset(w, 0, sizeof *w);
 }

@@ -18,9 +18,10 @@ typedef struct lm_nsite {
 } lm_nsite;
 
 /* One fit's scratch (normals_fit.c): the system [S]{phi} = {phi0} of up
- * to `rows` rows of LM_NMAX columns, and the QR's column buffer. */
+ * to `rows` rows of LM_NMAX columns, and as much for the QR's copy of its
+ * columns. */
 typedef struct lm_nfit_scratch {
-    double *S, *rhs, *col;
+    double *S, *rhs, *cols;
     size_t rows;
 } lm_nfit_scratch;
 
@@ -63,9 +64,9 @@ lm_nerr lm_nfit_element_ws(const lm_nbox *box, const double *const x[3],
                            const size_t *idx, size_t k, const lm_nfit_opts *o,
                            int lean, int nunique, lm_nfit *fit,
                            const lm_nfit_scratch *sc, char *err, size_t errlen);
-/* lm_lsq_qr_cond for n <= LM_NMAX with col (m entries) given: no
+/* lm_lsq_qr_cond for n <= LM_NMAX with C (m n entries) given: no
  * allocation. */
 lm_nerr lm_lsq_qr_ws(int m, int n, double *A, double *b, double *x,
-                     lm_lsq_info *info, int want_cond, double *col);
+                     lm_lsq_info *info, int want_cond, double *C);
 
 #endif
