@@ -19,9 +19,10 @@ typedef struct lm_nbins {
 /* Bins n points (errors: not finite, outside the grid, memory). b is
  * either zeroed or a previous lm_nbins_make's, whose arrays are reused
  * (grown when too small), so that a workspace's bins allocate only when
- * the grid or the point count grows. */
+ * the grid or the point count grows. sums = 0 leaves out the summed
+ * counts (sum), which only the per-cell merging reads. */
 lm_nerr lm_nbins_make(const lm_ngrid *g, size_t n, const double *const x[3],
-                      lm_nbins *b, char *err, size_t errlen);
+                      int sums, lm_nbins *b, char *err, size_t errlen);
 void lm_nbins_free(lm_nbins *b);
 /* Cell index of cell c (x fastest). */
 long lm_nbins_cell_id(const lm_ngrid *g, const int c[3]);

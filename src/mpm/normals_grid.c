@@ -138,7 +138,7 @@ static long block_count(const lm_ngrid *g, const long *sum, const int lo[3],
 }
 
 lm_nerr lm_nbins_make(const lm_ngrid *g, size_t n, const double *const x[3],
-                      lm_nbins *b, char *err, size_t errlen)
+                      int sums, lm_nbins *b, char *err, size_t errlen)
 {
     int nz = g->dim == 3 ? g->n[2] : 1;
     b->ncells = (long)g->n[0] * g->n[1] * nz;
@@ -153,7 +153,8 @@ lm_nerr lm_nbins_make(const lm_ngrid *g, size_t n, const double *const x[3],
         return LM_NERR_MEMORY;
     }
     memset(b->start, 0, sizeof *b->start * ((size_t)b->ncells + 1));
-    memset(b->sum, 0, sizeof *b->sum * nsum);
+    if (sums)
+        memset(b->sum, 0, sizeof *b->sum * nsum);
     for (size_t i = 0; i < n; i++) {
         double p[3] = {x[0][i], x[1][i], g->dim == 3 ? x[2][i] : 0.0};
         int c[3];
@@ -175,7 +176,8 @@ lm_nerr lm_nbins_make(const lm_ngrid *g, size_t n, const double *const x[3],
         b->cell[i] = id;
         b->start[id + 1]++;
         int k = g->dim == 3 ? c[2] : 0;
-        b->sum[(c[0] + 1) + (long)(g->n[0] + 1) * ((c[1] + 1) + (long)(g->n[1] + 1) * (k + 1))]++;
+        if (sums)
+            b->sum[(c[0] + 1) + (long)(g->n[0] + 1) * ((c[1] + 1) + (long)(g->n[1] + 1) * (k + 1))]++;
     }
     for (long c = 0; c < b->ncells; c++)
         b->start[c + 1] += b->start[c];
@@ -183,6 +185,8 @@ lm_nerr lm_nbins_make(const lm_ngrid *g, size_t n, const double *const x[3],
     memcpy(fill, b->start, sizeof *fill * ((size_t)b->ncells + 1));
     for (size_t i = 0; i < n; i++)
         b->order[fill[b->cell[i]]++] = i;
+    if (!sums)
+        return LM_NERR_NONE;
     /* prefix sums along each axis turn counts into summed counts */
     int N0 = g->n[0] + 1, N1 = g->n[1] + 1, N2 = nz + 1;
     for (int k = 0; k < N2; k++)
@@ -468,7 +472,7 @@ lm_nerr lm_normals_grid_ws(const lm_ngrid *g, size_t n, const double *const x[3]
         return LM_NERR_MEMORY;
     }
     lm_nbins *b = &w->bins;
-    if ((e = lm_nbins_make(g, n, x, b, err, errlen)))
+    if ((e = lm_nbins_make(g, n, x, o->element != LM_NELEM_CENTRED, b, err, errlen)))
         goto out;
     size_t undefined = 0;
     if (o->element == LM_NELEM_CENTRED)
