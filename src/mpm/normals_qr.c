@@ -186,6 +186,13 @@ static void column_sums(int m, int n, int k, int j0, const double *C,
     }
 }
 
+/* c -= d w over len entries (w and c are different columns). */
+static void reflect(int len, double d, const double *restrict w, double *restrict c)
+{
+    for (int i = 0; i < len; i++)
+        c[i] -= d * w[i];
+}
+
 /* Step 1: A P = Q R in place (R in the upper triangle, the Householder
  * vectors are not kept: Q^T is applied to b on the way). C (m n) holds A's
  * columns apart while the reflections work on them, acc n sums.
@@ -234,11 +241,8 @@ static void qr_pivoted(int m, int n, double *A, double *b, int *perm,
             double db = 0;
             for (int i = k; i < m; i++)
                 db += ck[i] * b[i];
-            for (int j = k + 1; j < n; j++) {
-                double d = acc[j] * tau, *cj = C + (size_t)j * m;
-                for (int i = k; i < m; i++)
-                    cj[i] -= d * ck[i];
-            }
+            for (int j = k + 1; j < n; j++)
+                reflect(m - k, acc[j] * tau, ck + k, C + (size_t)j * m + k);
             db *= tau;
             for (int i = k; i < m; i++)
                 b[i] -= db * ck[i];
