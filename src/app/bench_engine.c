@@ -102,7 +102,7 @@ static lm_sim *make_gas(double h, lm_material *gas, lm_material *skin, lm_normal
         return NULL;
     }
     int b = lm_sim_add_membrane(sim, si, 0);
-    if (b >= 0) sim->bodies[b].normals = normals;
+    if (b >= 0 && lm_sim_set_membrane_normals(sim, b, normals) != LM_OK) b = -1;
     int n = (int)ceil(0.25 * 3.14159265358979323846 * 0.5 / (h / 3)) + 1;
     double ds = 0.5 * (3.14159265358979323846 / 2) / (n - 1);
     for (int k = 0; b >= 0 && k < n; k++) {

@@ -410,6 +410,18 @@ lm_status lm_sim_set_membrane_force(lm_sim *sim, int b, lm_mforce force)
     return LM_OK;
 }
 
+lm_status lm_sim_set_membrane_normals(lm_sim *sim, int b, lm_normals normals)
+{
+    if (b < 0 || b >= sim->nbodies || !sim->bodies[b].membrane ||
+        normals < LM_NORMALS_CONNECTIVITY || normals > LM_NORMALS_MASS_MATRIX) {
+        snprintf(sim->err, sizeof sim->err, "body %d is not a membrane, or normals %d is "
+                 "not a method", b + 1, (int)normals);
+        return LM_ERR_INPUT;
+    }
+    sim->bodies[b].normals = normals;
+    return LM_OK;
+}
+
 const char *lm_body_label(const lm_sim *sim, int b, char *buf, size_t len)
 {
     const lm_body *bd = &sim->bodies[b];
