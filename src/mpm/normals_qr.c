@@ -186,11 +186,53 @@ static void column_sums(int m, int n, int k, int j0, const double *C,
     }
 }
 
-/* c -= d w over len entries (w and c are different columns). */
-static void reflect(int len, double d, const double *restrict w, double *restrict c)
+/* The reflection's update of the columns j0 .. n-1, c_j -= d_j w over rows
+ * k .. m-1 (d_j = tau w.c_j in d), and with it the next step's pivot norms:
+ * nrm_j = sum over i = k+1 .. m-1 of the updated c_ij^2. That sum is the one
+ * the next step would form - the same terms in the same order - taken while
+ * the values are at hand instead of in a pass of its own; four columns go
+ * together so that their sums do not wait on one another. */
+static void reflect(int m, int n, int k, int j0, double *C, const double *restrict w,
+                    const double *d, double *nrm)
 {
-    for (int i = 0; i < len; i++)
-        c[i] -= d * w[i];
+    int j = j0;
+    for (; j + 4 <= n; j += 4) {
+        double *restrict c0 = C + (size_t)j * m, *restrict c1 = c0 + m;
+        double *restrict c2 = c1 + m, *restrict c3 = c2 + m;
+        double d0 = d[j], d1 = d[j + 1], d2 = d[j + 2], d3 = d[j + 3];
+        double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+        c0[k] -= d0 * w[k];
+        c1[k] -= d1 * w[k];
+        c2[k] -= d2 * w[k];
+        c3[k] -= d3 * w[k];
+        for (int i = k + 1; i < m; i++) {
+            double wi = w[i];
+            double v0 = c0[i] - d0 * wi, v1 = c1[i] - d1 * wi;
+            double v2 = c2[i] - d2 * wi, v3 = c3[i] - d3 * wi;
+            c0[i] = v0;
+            c1[i] = v1;
+            c2[i] = v2;
+            c3[i] = v3;
+            s0 += v0 * v0;
+            s1 += v1 * v1;
+            s2 += v2 * v2;
+            s3 += v3 * v3;
+        }
+        nrm[j] = s0;
+        nrm[j + 1] = s1;
+        nrm[j + 2] = s2;
+        nrm[j + 3] = s3;
+    }
+    for (; j < n; j++) {
+        double *restrict c0 = C + (size_t)j * m, d0 = d[j], s0 = 0;
+        c0[k] -= d0 * w[k];
+        for (int i = k + 1; i < m; i++) {
+            double v0 = c0[i] - d0 * w[i];
+            c0[i] = v0;
+            s0 += v0 * v0;
+        }
+        nrm[j] = s0;
+    }
 }
 
 /* Step 1: A P = Q R in place (R in the upper triangle, the Householder
@@ -204,20 +246,22 @@ static void reflect(int len, double d, const double *restrict w, double *restric
  * on A, so R, Q^T b and the permutation are bit for bit the same. (The QR
  * was half the cost of the per-step normals, docs/performance.md.) */
 static void qr_pivoted(int m, int n, double *A, double *b, int *perm,
-                       double *C, double *acc)
+                       double *C, double *acc, double *nrm)
 {
     for (int j = 0; j < n; j++)
         for (int i = 0; i < m; i++)
             C[(size_t)j * m + i] = AT(A, i, j, n);
-    int kmax = m < n ? m : n;
+    int kmax = m < n ? m : n, have_norms = 0;
     for (int k = 0; k < kmax; k++) {
-        /* the pivot: the remaining column of largest norm (first of ties) */
-        column_sums(m, n, k, k, C, NULL, acc);
+        /* the pivot: the remaining column of largest norm (first of ties);
+         * the last reflection has left the norms in nrm */
+        if (!have_norms)
+            column_sums(m, n, k, k, C, NULL, nrm);
         int best = k;
         double bn = -1;
         for (int j = k; j < n; j++)
-            if (acc[j] > bn) {
-                bn = acc[j];
+            if (nrm[j] > bn) {
+                bn = nrm[j];
                 best = j;
             }
         double *ck = C + (size_t)k * m;
@@ -242,11 +286,13 @@ static void qr_pivoted(int m, int n, double *A, double *b, int *perm,
             for (int i = k; i < m; i++)
                 db += ck[i] * b[i];
             for (int j = k + 1; j < n; j++)
-                reflect(m - k, acc[j] * tau, ck + k, C + (size_t)j * m + k);
+                acc[j] *= tau;
+            reflect(m, n, k, k + 1, C, ck, acc, nrm);
             db *= tau;
             for (int i = k; i < m; i++)
                 b[i] -= db * ck[i];
         }
+        have_norms = tau != 0.0;
         ck[k] = alpha;
         for (int i = k + 1; i < m; i++)
             ck[i] = 0.0;
@@ -336,11 +382,12 @@ static lm_nerr qr_solve(int m, int n, double *A, double *b, double *x,
     if (m <= 0 || n <= 0)
         return LM_NERR_INPUT;
     int kmax = m < n ? m : n;
-    for (int j = 0; j < n; j++) {
+    for (int j = 0; j < n; j++)
         perm[j] = j;
+    /* sv and y: scratch until the solve (then y starts from 0) */
+    qr_pivoted(m, n, A, b, perm, C, sv, y);
+    for (int j = 0; j < n; j++)
         y[j] = 0.0;
-    }
-    qr_pivoted(m, n, A, b, perm, C, sv);   /* sv: free until the end */
 
     int r = 0;
     double r00 = fabs(AT(A, 0, 0, n));
