@@ -135,16 +135,19 @@ int lm_npoints_unique(const lm_nbox *b, const double *const x[3],
     double tol[3] = {0, 0, 0};
     for (int a = 0; a < b->dim; a++)
         tol[a] = COINCIDENT_TOL * (b->hi[a] - b->lo[a]);
+    const double *x0 = x[0], *x1 = x[1], *x2 = b->dim == 3 ? x[2] : NULL;
     int u = 0;
     for (size_t i = 0; i < k; i++) {
         size_t pi = idx ? idx[i] : i;
+        double p0 = x0[pi], p1 = x1[pi], p2 = x2 ? x2[pi] : 0.0;
         int seen = 0;
-        for (size_t j = 0; j < i && !seen; j++) {
+        for (size_t j = 0; j < i; j++) {
             size_t pj = idx ? idx[j] : j;
-            int same = 1;
-            for (int a = 0; a < b->dim && same; a++)
-                same = !(fabs(x[a][pi] - x[a][pj]) > tol[a]);
-            seen = same;
+            if (fabs(p0 - x0[pj]) > tol[0] || fabs(p1 - x1[pj]) > tol[1] ||
+                (x2 && fabs(p2 - x2[pj]) > tol[2]))
+                continue;
+            seen = 1;
+            break;
         }
         u += !seen;
     }
