@@ -68,15 +68,6 @@ static void point_of(const double *const x[3], int dim, size_t i, double p[3])
         p[a] = a < dim ? x[a][i] : 0.0;
 }
 
-static int same_point(const lm_nbox *b, const double p[3], const double q[3],
-                      double tol)
-{
-    for (int a = 0; a < b->dim; a++)
-        if (fabs(p[a] - q[a]) > tol * (b->hi[a] - b->lo[a]))
-            return 0;
-    return 1;
-}
-
 static lm_nerr check_box(const lm_nbox *b, char *err, size_t errlen)
 {
     if (!b || (b->dim != 2 && b->dim != 3)) {
@@ -126,9 +117,10 @@ static lm_nerr check_points(const lm_nbox *b, const double *const x[3],
     return LM_NERR_NONE;
 }
 
-/* same_point's test with its tolerances worked out once (the same
- * products, so the same answers) and the coordinates read in place: it
- * runs over every pair of an element's points each step. */
+/* Two points are the same when |p_a - q_a| <= COINCIDENT_TOL (hi_a - lo_a)
+ * on every axis; the tolerances are worked out once and the coordinates
+ * read in place (this runs over every pair of an element's points each
+ * step). */
 int lm_npoints_unique(const lm_nbox *b, const double *const x[3],
                         const size_t *idx, size_t k)
 {
@@ -164,6 +156,14 @@ static void draw_point(const lm_nbox *b, lm_nrng *rng, const double *const x[3],
                        const size_t *idx, size_t k, double clearance, double q[3])
 {
     double best[3] = {0, 0, 0}, bestd = -1;
+    /* the element's sizes and the clearance test's tolerances (|p_a - q_a|
+     * <= RANDOM_CLEARANCE (hi_a - lo_a) on every axis: the same point),
+     * worked out once */
+    double size[3] = {1, 1, 1}, tol[3] = {0, 0, 0};
+    for (int a = 0; a < b->dim; a++) {
+        size[a] = b->hi[a] - b->lo[a];
+        tol[a] = RANDOM_CLEARANCE * size[a];
+    }
     for (int attempt = 0; attempt < MAX_DRAWS; attempt++) {
         double xi[3] = {0, 0, 0};
         for (int a = 0; a < b->dim; a++)
@@ -172,17 +172,20 @@ static void draw_point(const lm_nbox *b, lm_nrng *rng, const double *const x[3],
         int clear = 1;
         double dmin = INFINITY;
         for (size_t i = 0; i < k && clear; i++) {
-            double p[3];
-            point_of(x, b->dim, idx ? idx[i] : i, p);
-            clear = !same_point(b, p, q, RANDOM_CLEARANCE);
-            if (clearance > 0) {
-                double d = 0;
-                for (int a = 0; a < b->dim; a++) {
-                    double t = (p[a] - q[a]) / (b->hi[a] - b->lo[a]);
+            size_t pi = idx ? idx[i] : i;
+            int near = 1;
+            double d = 0;
+            for (int a = 0; a < b->dim; a++) {
+                double e = x[a][pi] - q[a];
+                near &= !(fabs(e) > tol[a]);
+                if (clearance > 0) {
+                    double t = e / size[a];
                     d += t * t;
                 }
-                dmin = d < dmin ? d : dmin;
             }
+            clear = !near;
+            if (clearance > 0)
+                dmin = d < dmin ? d : dmin;
         }
         if (!(clearance > 0)) {
             if (clear)
