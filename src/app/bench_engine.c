@@ -8,7 +8,11 @@
  *            cell size chosen for the particle count, MUSL and USL, and
  *            MUSL with the disks a contact-release pair (sim:contact);
  *   gas    - the gas-filled quarter membrane of V6 (16 ppc gas, membrane
- *            points a third of a cell apart, connectivity normals), MUSL.
+ *            points a third of a cell apart, connectivity normals), MUSL;
+ *            and the same with the membrane's normals from the isosurface
+ *            construction (normals "isosurface", normals_centred.c), whose
+ *            cost over the row before is the construction's (issue 17
+ *            item 3, docs/performance.md).
  * `--basis NAME` runs them with that basis (lamina.sim{basis}: linear,
  * gimp, bspline2; default linear).
  * Each case runs for about `work` particle-steps (default 4e6) after one
@@ -80,7 +84,7 @@ static lm_sim *make_disks(double h, lm_scheme scheme, lm_material *mat, int nt)
     return sim;
 }
 
-static lm_sim *make_gas(double h, lm_material *gas, lm_material *skin)
+static lm_sim *make_gas(double h, lm_material *gas, lm_material *skin, lm_normals normals)
 {
     lm_sim_def d;
     lm_sim_def_default(&d);
@@ -98,6 +102,7 @@ static lm_sim *make_gas(double h, lm_material *gas, lm_material *skin)
         return NULL;
     }
     int b = lm_sim_add_membrane(sim, si, 0);
+    if (b >= 0 && lm_sim_set_membrane_normals(sim, b, normals) != LM_OK) b = -1;
     int n = (int)ceil(0.25 * 3.14159265358979323846 * 0.5 / (h / 3)) + 1;
     double ds = 0.5 * (3.14159265358979323846 / 2) / (n - 1);
     for (int k = 0; b >= 0 && k < n; k++) {
@@ -160,7 +165,12 @@ static int time_case(const char *name, builder make, double h, void *ctx, double
     return 0;
 }
 
-typedef struct bench_ctx { lm_material *a, *b; lm_scheme scheme; int contact; } bench_ctx;
+typedef struct bench_ctx {
+    lm_material *a, *b;
+    lm_scheme scheme;
+    int contact;
+    lm_normals normals;    /* the gas case's membrane */
+} bench_ctx;
 
 static lm_sim *build_disks(double h, void *ctx)
 {
@@ -178,7 +188,7 @@ static lm_sim *build_disks(double h, void *ctx)
 static lm_sim *build_gas(double h, void *ctx)
 {
     bench_ctx *c = ctx;
-    return make_gas(h, c->a, c->b);
+    return make_gas(h, c->a, c->b, c->normals);
 }
 
 static lm_material rubber = {.kind = LM_ELASTIC, .rho = 1000, .E = 1000, .nu = 0.3,
@@ -257,15 +267,18 @@ int bench_engine(int argc, char **argv)
     for (int k = 0; k < nsizes; k++) {
         /* two disks of radius 0.2, 4 ppc: about 1.005 / h^2 particles */
         double h = sqrt(1.005 / sizes[k]);
-        bench_ctx musl = {&rubber, NULL, LM_MUSL, 0}, usl = {&rubber, NULL, LM_USL, 0};
-        bench_ctx rel = {&rubber, NULL, LM_MUSL, 1};
+        bench_ctx musl = {&rubber, NULL, LM_MUSL, 0, LM_NORMALS_CONNECTIVITY};
+        bench_ctx usl = {&rubber, NULL, LM_USL, 0, LM_NORMALS_CONNECTIVITY};
+        bench_ctx rel = {&rubber, NULL, LM_MUSL, 1, LM_NORMALS_CONNECTIVITY};
         bad |= time_case("disks MUSL", build_disks, h, &musl, 0.8, work);
         bad |= time_case("disks USL", build_disks, h, &usl, 0.8, work);
         bad |= time_case("disks release", build_disks, h, &rel, 0.8, work);
         /* quarter disk of radius 0.5 at 16 ppc: about 3.14 / h^2 */
         double hg = sqrt(3.14 / sizes[k]);
-        bench_ctx gm = {&air, &skin, LM_MUSL, 0};
+        bench_ctx gm = {&air, &skin, LM_MUSL, 0, LM_NORMALS_CONNECTIVITY};
+        bench_ctx gi = {&air, &skin, LM_MUSL, 0, LM_NORMALS_ISOSURFACE};
         bad |= time_case("gas+membrane", build_gas, hg, &gm, 0.05, work);
+        bad |= time_case("gas+isosurf", build_gas, hg, &gi, 0.05, work);
     }
     return bad ? 1 : 0;
 }

@@ -15,6 +15,7 @@
 #include <stdlib.h>
 
 #include "normals.h"
+#include "normals_work.h"
 
 #include "step.h"
 
@@ -125,15 +126,16 @@ static lm_status without_connectivity(lm_sim *sim, int b)
     lm_ngrid g;
     lm_nopts o;
     body_nopts(sim, b, bd->normals, sim->step, &g, &o);
-    double *nx = malloc(2 * n * sizeof *nx);
-    unsigned char *flags = malloc(n);
-    if (!nx || !flags) {
-        free(nx);
-        free(flags);
+    /* the sim's workspace: allocated by the first step, grown only for a
+     * larger membrane, so later steps allocate nothing here */
+    if (!sim->nwork)
+        sim->nwork = lm_nwork_new();
+    if (!sim->nwork || lm_nwork_reserve(sim->nwork, n)) {
         snprintf(sim->err, sizeof sim->err, "out of memory for the normals of body %d", b + 1);
         return LM_ERR_MEMORY;
     }
-    double *ny = nx + n;
+    double *nx = sim->nwork->nrm, *ny = nx + n;
+    unsigned char *flags = sim->nwork->flags;
     const double *x[3] = {p->x + bd->first, p->y + bd->first, NULL};
     double *nrm[3] = {nx, ny, NULL};
     char why[256] = "";
@@ -146,15 +148,13 @@ static lm_status without_connectivity(lm_sim *sim, int b)
         e = lm_normals_quadratic_colour(&g, n, x, nrm, flags, why, sizeof why);
         break;
     default:
-        e = lm_normals_grid(&g, n, x, &o, nrm, flags, NULL, why, sizeof why);
+        e = lm_normals_grid_ws(&g, n, x, &o, nrm, flags, NULL, sim->nwork, why, sizeof why);
         break;
     }
     if (e == LM_NERR_NONE && (bd->normals == LM_NORMALS_COLOUR ||
                               bd->normals == LM_NORMALS_QUADRATIC_COLOUR) && bd->orient)
         lm_normals_orient(n, 2, x, nrm, o.orient, o.orient_point);
     if (e != LM_NERR_NONE) {
-        free(nx);
-        free(flags);
         snprintf(sim->err, sizeof sim->err,
                  "at t = %.6g (step %ld): the normals of membrane %d failed: %s; likely "
                  "cause: too few points in a cell region, or points outside the grid",
@@ -168,8 +168,6 @@ static lm_status without_connectivity(lm_sim *sim, int b)
         p->tx[bd->first + k] = ny[k];
         p->ty[bd->first + k] = -nx[k];
     }
-    free(nx);
-    free(flags);
     return LM_OK;
 }
 

@@ -285,6 +285,8 @@ typedef struct lm_sim {
     lm_link *links;        /* link.c */
     int nlinks;
     struct lm_contact *contact;   /* pairs in contact (contact.h); NULL: none */
+    struct lm_nwork *nwork;       /* the normals' scratch (normals_work.h), made
+                                     by the first step that needs it; NULL: none */
     char err[512];
 } lm_sim;
 
@@ -354,6 +356,10 @@ void lm_sim_set_body_name(lm_sim *sim, int b, const char *name);
 /* Chooses how membrane body b's stress reaches the grid (before the first
  * step); LM_ERR_INPUT for a body that is not a membrane. */
 lm_status lm_sim_set_membrane_force(lm_sim *sim, int b, lm_mforce force);
+/* Chooses how membrane body b finds its normals (lm_membrane_def.normals,
+ * for membranes built point by point); LM_ERR_INPUT for a body that is not
+ * a membrane or a method that is not one of lm_normals. */
+lm_status lm_sim_set_membrane_normals(lm_sim *sim, int b, lm_normals normals);
 /* "membrane 'skin'" or "body 3": how messages name body b. */
 const char *lm_body_label(const lm_sim *sim, int b, char *buf, size_t len);
 

@@ -93,6 +93,10 @@ void lm_nbasis_node(lm_nbasis b, int dim, int I, double xi[3]);
 /* s[I] = s(xi - I) and ds[I][a] = d s / d xi_a for every I. */
 void lm_nbasis_eval(lm_nbasis b, int dim, const double xi[3],
                     double s[LM_NMAX], double ds[LM_NMAX][3]);
+/* g_a = sum_I c_I ds_I/dxi_a for the 2D quadratic basis at xi (g[2] = 0):
+ * the sum lm_nbasis_eval's ds would give, term for term in the order of I,
+ * without the table. */
+void lm_nbasis_grad_quadratic_2d(const double xi[3], const double c[9], double g[3]);
 
 /* An element (or a merged block of elements): a box, [N] eq 4 restricted
  * to rectangular elements. */

@@ -66,9 +66,69 @@ void lm_nbasis_node(lm_nbasis b, int dim, int I, double xi[3])
     xi[2] = dim == 3 ? node_1d(b, I / (a * a)) : 0.0;
 }
 
+/* The basis the step's centred elements evaluate (2D quadratic), written
+ * out: the general loop below with the third axis' factor 1 (derivative
+ * 0). x * 1.0 is x exactly and these factors are >= 0, so every value is
+ * bit for bit the general loop's; it only skips its branches and the third
+ * axis (the evaluations were the second cost of the per-step normals,
+ * docs/performance.md). */
+static void quadratic_2d(const double xi[3], double s[LM_NMAX],
+                         double ds[LM_NMAX][3])
+{
+    double v0[3], v1[3], d0[3], d1[3];
+    for (int i = 0; i < 3; i++) {
+        double t0 = xi[0] - (i - 0.5), t1 = xi[1] - (i - 0.5);
+        v0[i] = lm_bspline2(t0);
+        v1[i] = lm_bspline2(t1);
+        if (ds) {
+            d0[i] = lm_bspline2_d(t0);
+            d1[i] = lm_bspline2_d(t1);
+        }
+    }
+    for (int j = 0; j < 3; j++)
+        for (int i = 0; i < 3; i++) {
+            int I = i + 3 * j;
+            s[I] = v0[i] * v1[j];
+            if (ds) {
+                ds[I][0] = d0[i] * v1[j];
+                ds[I][1] = v0[i] * d1[j];
+                ds[I][2] = 0.0;
+            }
+        }
+}
+
+/* The step's normals need only grad phi at each point: the products of
+ * quadratic_2d's ds, each times its coefficient and added in the order of
+ * I, as grad_logical (normals_fit.c) adds them from the table. */
+void lm_nbasis_grad_quadratic_2d(const double xi[3], const double c[9], double g[3])
+{
+    double v0[3], v1[3], d0[3], d1[3];
+    for (int i = 0; i < 3; i++) {
+        double t0 = xi[0] - (i - 0.5), t1 = xi[1] - (i - 0.5);
+        v0[i] = lm_bspline2(t0);
+        v1[i] = lm_bspline2(t1);
+        d0[i] = lm_bspline2_d(t0);
+        d1[i] = lm_bspline2_d(t1);
+    }
+    double g0 = 0.0, g1 = 0.0;
+    for (int j = 0; j < 3; j++)
+        for (int i = 0; i < 3; i++) {
+            int I = i + 3 * j;
+            g0 += c[I] * (d0[i] * v1[j]);
+            g1 += c[I] * (v0[i] * d1[j]);
+        }
+    g[0] = g0;
+    g[1] = g1;
+    g[2] = 0.0;
+}
+
 void lm_nbasis_eval(lm_nbasis b, int dim, const double xi[3],
                     double s[LM_NMAX], double ds[LM_NMAX][3])
 {
+    if (b == LM_NB_QUADRATIC && dim == 2) {
+        quadratic_2d(xi, s, ds);
+        return;
+    }
     int a = per_axis(b);
     double v[3][3], d[3][3];     /* [axis][node] value and derivative */
     for (int ax = 0; ax < 3; ax++)

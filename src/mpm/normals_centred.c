@@ -37,21 +37,41 @@
 
 #include "normals.h"
 #include "normals_bins.h"
+#include "normals_work.h"
 
 /* Site streams are kept apart from the per-cell streams (keyed by cell). */
 #define SITE_STREAM ((uint64_t)1 << 62)
 
-typedef struct site_point {
-    long key;
-    size_t i;
-} site_point;
-
-static int by_site(const void *a, const void *b)
+/* Site order, then point order: a total order, so any sort gives the same
+ * sequence (the one qsort gave before the workspace). */
+static int before(const lm_nsite *p, const lm_nsite *q)
 {
-    const site_point *p = a, *q = b;
-    if (p->key != q->key)
-        return p->key < q->key ? -1 : 1;
-    return p->i < q->i ? -1 : p->i > q->i;
+    return p->key != q->key ? p->key < q->key : p->i < q->i;
+}
+
+/* Step 2's sort without allocation (qsort may malloc its buffer): a
+ * bottom-up merge sort of a[0..n) with tmp (n entries) as scratch. */
+static void sort_sites(lm_nsite *a, lm_nsite *tmp, size_t n)
+{
+    lm_nsite *src = a, *dst = tmp;
+    for (size_t run = 1; run < n; run *= 2) {
+        for (size_t lo = 0; lo < n; lo += 2 * run) {
+            size_t mid = lo + run < n ? lo + run : n;
+            size_t hi = lo + 2 * run < n ? lo + 2 * run : n;
+            size_t i = lo, j = mid, k = lo;
+            while (i < mid && j < hi)
+                dst[k++] = before(&src[j], &src[i]) ? src[j++] : src[i++];
+            while (i < mid)
+                dst[k++] = src[i++];
+            while (j < hi)
+                dst[k++] = src[j++];
+        }
+        lm_nsite *t = src;
+        src = dst;
+        dst = t;
+    }
+    if (src != a)
+        memcpy(a, src, sizeof *a * n);
 }
 
 /* Step 1: the lattice site of point i (per axis into s) and its key. */
@@ -140,38 +160,33 @@ lm_nerr lm_normals_centred(const lm_ngrid *g, const lm_nbins *b, size_t n,
                            const double *const x[3], const lm_nopts *o,
                            double *const nrm[3], unsigned char *flags,
                            lm_nelem **els, int *nel, size_t *undefined,
-                           size_t *idx, char *err, size_t errlen)
+                           struct lm_nwork *w, char *err, size_t errlen)
 {
     int quad_min = lm_nbins_default(g, o->quad_min, 7, 26);
     int lin_min = lm_nbins_default(g, o->lin_min, 3, 7);
     int linear = o->basis == LM_NB_LINEAR;
-    site_point *sp = malloc(sizeof *sp * (n ? n : 1));
-    size_t *sel = malloc(sizeof *sel * (n ? n : 1));
+    lm_nsite *sp = w->sites;
+    size_t *idx = w->idx, *sel = w->sel;
     int cap = 0;
     lm_nerr e = LM_NERR_NONE;
-    if (!sp || !sel) {
-        snprintf(err, errlen, "out of memory (%zu points)", n);
-        e = LM_NERR_MEMORY;
-        goto out;
-    }
     for (size_t i = 0; i < n; i++) {
         int s[3];
         sp[i].key = site_of(g, x, i, s);
         sp[i].i = i;
     }
-    qsort(sp, n, sizeof *sp, by_site);
+    sort_sites(sp, w->sites_tmp, n);
     for (size_t a0 = 0, a1; a0 < n; a0 = a1) {
         for (a1 = a0 + 1; a1 < n && sp[a1].key == sp[a0].key; a1++)
             ;
         lm_nelem el;
         memset(&el, 0, sizeof el);
-        int s[3], w = 1, whole, unique;
+        int s[3], wid = 1, whole, unique;
         size_t k;
         site_of(g, x, sp[a0].i, s);
         lm_nbox box;
-        for (;; w *= 2) {
+        for (;; wid *= 2) {
             int sz[3];
-            whole = element_box(g, s, w, &box, el.lo, sz);
+            whole = element_box(g, s, wid, &box, el.lo, sz);
             k = inside(&box, x, idx, lm_nbins_gather(g, b, el.lo, sz, idx), sel);
             unique = lm_npoints_unique(&box, x, sel, k);
             if (unique >= (linear ? lin_min : quad_min) || whole)
@@ -180,16 +195,17 @@ lm_nerr lm_normals_centred(const lm_ngrid *g, const lm_nbins *b, size_t n,
         lm_nfit_opts fo;
         lm_nfit_opts_of(&fo, o, SITE_STREAM | (uint64_t)sp[a0].key);
         fo.basis = !linear && unique >= quad_min ? LM_NB_QUADRATIC : LM_NB_LINEAR;
-        e = lm_nfit_element(&box, x, sel, k, &fo, &el.fit, err, errlen);
+        e = lm_nfit_element_ws(&box, x, sel, k, &fo, !els, unique, &el.fit, &w->fit,
+                               err, errlen);
         if (e == LM_NERR_TOO_FEW && whole)
             snprintf(err, errlen, "only %d distinct membrane point%s in the whole grid: "
                      "at least %d are needed for a normal in %dD", unique,
                      unique == 1 ? "" : "s", g->dim, g->dim);
         if (e)
-            goto out;
-        if (w > 1)
+            return e;
+        if (wid > 1)
             el.fit.flags |= LM_NF_MERGED;
-        el.size = w;
+        el.size = wid;
         for (int a = 0; a < 3; a++) {
             double c = a < g->dim ? 0.5 * (box.lo[a] + box.hi[a]) : 0.0;
             el.cell[a] = a < g->dim ? (int)floor((c - g->x0[a]) / g->h[a]) : 0;
@@ -208,12 +224,8 @@ lm_nerr lm_normals_centred(const lm_ngrid *g, const lm_nbins *b, size_t n,
         }
         if (els && push_elem(els, nel, &cap, &el)) {
             snprintf(err, errlen, "out of memory (report)");
-            e = LM_NERR_MEMORY;
-            goto out;
+            return LM_NERR_MEMORY;
         }
     }
-out:
-    free(sp);
-    free(sel);
     return e;
 }

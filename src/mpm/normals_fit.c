@@ -19,6 +19,7 @@
 #include <string.h>
 
 #include "normals.h"
+#include "normals_work.h"
 #include "util.h"
 
 /* A random point closer than this (relative to the element) to a membrane
@@ -65,15 +66,6 @@ static void point_of(const double *const x[3], int dim, size_t i, double p[3])
 {
     for (int a = 0; a < 3; a++)
         p[a] = a < dim ? x[a][i] : 0.0;
-}
-
-static int same_point(const lm_nbox *b, const double p[3], const double q[3],
-                      double tol)
-{
-    for (int a = 0; a < b->dim; a++)
-        if (fabs(p[a] - q[a]) > tol * (b->hi[a] - b->lo[a]))
-            return 0;
-    return 1;
 }
 
 static lm_nerr check_box(const lm_nbox *b, char *err, size_t errlen)
@@ -125,17 +117,29 @@ static lm_nerr check_points(const lm_nbox *b, const double *const x[3],
     return LM_NERR_NONE;
 }
 
+/* Two points are the same when |p_a - q_a| <= COINCIDENT_TOL (hi_a - lo_a)
+ * on every axis; the tolerances are worked out once and the coordinates
+ * read in place (this runs over every pair of an element's points each
+ * step). */
 int lm_npoints_unique(const lm_nbox *b, const double *const x[3],
                         const size_t *idx, size_t k)
 {
+    double tol[3] = {0, 0, 0};
+    for (int a = 0; a < b->dim; a++)
+        tol[a] = COINCIDENT_TOL * (b->hi[a] - b->lo[a]);
+    const double *x0 = x[0], *x1 = x[1], *x2 = b->dim == 3 ? x[2] : NULL;
     int u = 0;
     for (size_t i = 0; i < k; i++) {
-        double p[3], q[3];
-        point_of(x, b->dim, idx ? idx[i] : i, p);
+        size_t pi = idx ? idx[i] : i;
+        double p0 = x0[pi], p1 = x1[pi], p2 = x2 ? x2[pi] : 0.0;
         int seen = 0;
-        for (size_t j = 0; j < i && !seen; j++) {
-            point_of(x, b->dim, idx ? idx[j] : j, q);
-            seen = same_point(b, p, q, COINCIDENT_TOL);
+        for (size_t j = 0; j < i; j++) {
+            size_t pj = idx ? idx[j] : j;
+            if (fabs(p0 - x0[pj]) > tol[0] || fabs(p1 - x1[pj]) > tol[1] ||
+                (x2 && fabs(p2 - x2[pj]) > tol[2]))
+                continue;
+            seen = 1;
+            break;
         }
         u += !seen;
     }
@@ -152,6 +156,14 @@ static void draw_point(const lm_nbox *b, lm_nrng *rng, const double *const x[3],
                        const size_t *idx, size_t k, double clearance, double q[3])
 {
     double best[3] = {0, 0, 0}, bestd = -1;
+    /* the element's sizes and the clearance test's tolerances (|p_a - q_a|
+     * <= RANDOM_CLEARANCE (hi_a - lo_a) on every axis: the same point),
+     * worked out once */
+    double size[3] = {1, 1, 1}, tol[3] = {0, 0, 0};
+    for (int a = 0; a < b->dim; a++) {
+        size[a] = b->hi[a] - b->lo[a];
+        tol[a] = RANDOM_CLEARANCE * size[a];
+    }
     for (int attempt = 0; attempt < MAX_DRAWS; attempt++) {
         double xi[3] = {0, 0, 0};
         for (int a = 0; a < b->dim; a++)
@@ -160,17 +172,20 @@ static void draw_point(const lm_nbox *b, lm_nrng *rng, const double *const x[3],
         int clear = 1;
         double dmin = INFINITY;
         for (size_t i = 0; i < k && clear; i++) {
-            double p[3];
-            point_of(x, b->dim, idx ? idx[i] : i, p);
-            clear = !same_point(b, p, q, RANDOM_CLEARANCE);
-            if (clearance > 0) {
-                double d = 0;
-                for (int a = 0; a < b->dim; a++) {
-                    double t = (p[a] - q[a]) / (b->hi[a] - b->lo[a]);
+            size_t pi = idx ? idx[i] : i;
+            int near = 1;
+            double d = 0;
+            for (int a = 0; a < b->dim; a++) {
+                double e = x[a][pi] - q[a];
+                near &= !(fabs(e) > tol[a]);
+                if (clearance > 0) {
+                    double t = e / size[a];
                     d += t * t;
                 }
-                dmin = d < dmin ? d : dmin;
             }
+            clear = !near;
+            if (clearance > 0)
+                dmin = d < dmin ? d : dmin;
         }
         if (!(clearance > 0)) {
             if (clear)
@@ -188,22 +203,22 @@ static void draw_point(const lm_nbox *b, lm_nrng *rng, const double *const x[3],
         memcpy(q, best, sizeof best);
 }
 
-/* Step 2: one row of [S]. */
+/* Step 2: one row of [S] (the basis writes its n values straight in). */
 static void row(const lm_nfit *f, const double p[3], double *s)
 {
-    double xi[3], v[LM_NMAX];
+    double xi[3];
     lm_nbox_to_logical(&f->box, p, xi);
-    lm_nbasis_eval(f->basis, f->dim, xi, v, NULL);
-    memcpy(s, v, sizeof(double) * (size_t)f->n);
+    lm_nbasis_eval(f->basis, f->dim, xi, s, NULL);
 }
 
 /* Steps 2-5 for the current random point(s); smooth > 0 appends the
  * curvature rows (normals_smooth.c) with weight smooth * sqrt(rows), so
  * that their share does not fall as points are added. */
 static lm_nerr assemble_solve(lm_nfit *f, const double *const x[3],
-                              const size_t *idx, size_t k, double *S, double *rhs,
+                              const size_t *idx, size_t k, const lm_nfit_scratch *sc,
                               double smooth, int want_cond)
 {
+    double *S = sc->S, *rhs = sc->rhs;
     int n = f->n;
     for (size_t i = 0; i < k; i++) {
         double p[3];
@@ -225,12 +240,36 @@ static lm_nerr assemble_solve(lm_nfit *f, const double *const x[3],
     m += f->smooth_rows;
     if (f->solver == LM_NS_NORMAL)
         return lm_lsq_normal(m, n, S, rhs, f->phi, &f->info);
-    return lm_lsq_qr_cond(m, n, S, rhs, f->phi, &f->info, want_cond);
+    return lm_lsq_qr_ws(m, n, S, rhs, f->phi, &f->info, want_cond, sc->cols);
 }
 
 lm_nerr lm_nfit_element(const lm_nbox *box, const double *const x[3],
                         const size_t *idx, size_t k, const lm_nfit_opts *o,
                         lm_nfit *fit, char *err, size_t errlen)
+{
+    /* one fit's scratch, for callers without a workspace */
+    lm_nfit_scratch sc;
+    sc.rows = k + 2 + (o->smooth > 0 ? LM_NSMOOTH_MAXROWS : 0);
+    sc.S = malloc(sizeof(double) * sc.rows * LM_NMAX);
+    sc.rhs = malloc(sizeof(double) * sc.rows);
+    sc.cols = malloc(sizeof(double) * sc.rows * LM_NMAX);
+    lm_nerr e;
+    if (!sc.S || !sc.rhs || !sc.cols) {
+        lu_err(err, errlen, "out of memory (%zu x %d system)", sc.rows, LM_NMAX);
+        e = LM_NERR_MEMORY;
+    } else {
+        e = lm_nfit_element_ws(box, x, idx, k, o, 0, -1, fit, &sc, err, errlen);
+    }
+    free(sc.S);
+    free(sc.rhs);
+    free(sc.cols);
+    return e;
+}
+
+lm_nerr lm_nfit_element_ws(const lm_nbox *box, const double *const x[3],
+                           const size_t *idx, size_t k, const lm_nfit_opts *o,
+                           int lean, int nunique, lm_nfit *fit,
+                           const lm_nfit_scratch *sc, char *err, size_t errlen)
 {
     lm_nerr e = check_box(box, err, errlen);
     if (e)
@@ -253,7 +292,7 @@ lm_nerr lm_nfit_element(const lm_nbox *box, const double *const x[3],
     fit->n = lm_nbasis_count(o->basis, box->dim);
     fit->solver = o->solver;
     fit->npoints = (int)k;
-    fit->nunique = lm_npoints_unique(box, x, idx, k);
+    fit->nunique = nunique >= 0 ? nunique : lm_npoints_unique(box, x, idx, k);
     int need = o->min_points > 0 ? o->min_points : box->dim;
     if (fit->nunique < need) {
         lu_err(err, errlen, "only %d distinct membrane point%s in the element: "
@@ -267,12 +306,9 @@ lm_nerr lm_nfit_element(const lm_nbox *box, const double *const x[3],
     fit->rows = (int)k + 1 + fit->has_q2;
 
     int extra = o->smooth > 0 ? LM_NSMOOTH_MAXROWS : 0;
-    double *S = malloc(sizeof(double) * (size_t)(fit->rows + extra) * (size_t)fit->n);
-    double *rhs = malloc(sizeof(double) * (size_t)(fit->rows + extra));
-    if (!S || !rhs) {
-        free(S);
-        free(rhs);
-        lu_err(err, errlen, "out of memory (%d x %d system)", fit->rows, fit->n);
+    if ((size_t)(fit->rows + extra) > sc->rows) {
+        lu_err(err, errlen, "a %d x %d system in scratch for %zu rows", fit->rows + extra,
+               fit->n, sc->rows);
         return LM_NERR_MEMORY;
     }
     lm_nrng rng;
@@ -287,13 +323,11 @@ lm_nerr lm_nfit_element(const lm_nbox *box, const double *const x[3],
         else if (o->phi2 == LM_PHI2_RANDOM)
             draw_point(box, &rng, x, idx, k, o->clearance, fit->q2);
         fit->draws++;
-        e = assemble_solve(fit, x, idx, k, S, rhs, o->smooth, !o->skip_cond);
+        e = assemble_solve(fit, x, idx, k, sc, o->smooth, !o->skip_cond);
         if (e || o->random_given || !(o->cond_limit > 0) ||
             !(fit->info.cond_t > o->cond_limit) || fit->draws >= MAX_DRAWS)
             break;
     }
-    free(S);
-    free(rhs);
     if (e == LM_NERR_SINGULAR) {
         lu_err(err, errlen, "the normal equations are singular (a zero pivot): "
                "%d points, %d unknowns; use the QR solver", (int)k, fit->n);
@@ -308,7 +342,7 @@ lm_nerr lm_nfit_element(const lm_nbox *box, const double *const x[3],
         fit->flags |= LM_NF_REDRAWN;
     if (fit->info.rank < fit->n)
         fit->flags |= LM_NF_UNDERDETERMINED;
-    for (size_t i = 0; i < k; i++) {
+    for (size_t i = 0; i < k && !lean; i++) {
         double p[3];
         point_of(x, fit->dim, idx ? idx[i] : i, p);
         double r = fabs(lm_nfit_phi(fit, p) - 1.0);
@@ -334,6 +368,10 @@ static void grad_logical(const lm_nfit *f, const double x[3], double g[3])
 {
     double xi[3], s[LM_NMAX], ds[LM_NMAX][3];
     lm_nbox_to_logical(&f->box, x, xi);
+    if (f->basis == LM_NB_QUADRATIC && f->dim == 2) {
+        lm_nbasis_grad_quadratic_2d(xi, f->phi, g);   /* the same sums */
+        return;
+    }
     lm_nbasis_eval(f->basis, f->dim, xi, s, ds);
     g[0] = g[1] = g[2] = 0.0;
     for (int I = 0; I < f->n; I++)

@@ -35,6 +35,7 @@
 
 #include "normals.h"
 #include "normals_bins.h"
+#include "normals_work.h"
 
 void lm_nopts_default(lm_nopts *o)
 {
@@ -93,6 +94,21 @@ void lm_nbins_free(lm_nbins *b)
     free(b->order);
     free(b->cell);
     free(b->sum);
+    free(b->fill);
+    memset(b, 0, sizeof *b);
+}
+
+/* *p grown to n items of size sz when *cap is smaller (*cap updated). */
+static int grow(void **p, size_t *cap, size_t n, size_t sz)
+{
+    if (n <= *cap && *p)
+        return 0;
+    void *q = realloc(*p, (n ? n : 1) * sz);
+    if (!q)
+        return -1;
+    *p = q;
+    *cap = n;
+    return 0;
 }
 
 long lm_nbins_cell_id(const lm_ngrid *g, const int c[3])
@@ -122,20 +138,23 @@ static long block_count(const lm_ngrid *g, const long *sum, const int lo[3],
 }
 
 lm_nerr lm_nbins_make(const lm_ngrid *g, size_t n, const double *const x[3],
-                      lm_nbins *b, char *err, size_t errlen)
+                      int sums, lm_nbins *b, char *err, size_t errlen)
 {
-    memset(b, 0, sizeof *b);
     int nz = g->dim == 3 ? g->n[2] : 1;
     b->ncells = (long)g->n[0] * g->n[1] * nz;
     size_t nsum = (size_t)(g->n[0] + 1) * (size_t)(g->n[1] + 1) * (size_t)(nz + 1);
-    b->start = calloc((size_t)b->ncells + 1, sizeof *b->start);
-    b->order = malloc(sizeof *b->order * (n ? n : 1));
-    b->cell = malloc(sizeof *b->cell * (n ? n : 1));
-    b->sum = calloc(nsum, sizeof *b->sum);
-    if (!b->start || !b->order || !b->cell || !b->sum) {
+    size_t ncap = b->cap_cells, pcap = b->cap_points;
+    if (grow((void **)&b->start, &ncap, (size_t)b->ncells + 1, sizeof *b->start) ||
+        grow((void **)&b->fill, &b->cap_cells, (size_t)b->ncells + 1, sizeof *b->fill) ||
+        grow((void **)&b->order, &pcap, n, sizeof *b->order) ||
+        grow((void **)&b->cell, &b->cap_points, n, sizeof *b->cell) ||
+        grow((void **)&b->sum, &b->cap_sum, nsum, sizeof *b->sum)) {
         snprintf(err, errlen, "out of memory binning %zu points", n);
         return LM_NERR_MEMORY;
     }
+    memset(b->start, 0, sizeof *b->start * ((size_t)b->ncells + 1));
+    if (sums)
+        memset(b->sum, 0, sizeof *b->sum * nsum);
     for (size_t i = 0; i < n; i++) {
         double p[3] = {x[0][i], x[1][i], g->dim == 3 ? x[2][i] : 0.0};
         int c[3];
@@ -157,19 +176,17 @@ lm_nerr lm_nbins_make(const lm_ngrid *g, size_t n, const double *const x[3],
         b->cell[i] = id;
         b->start[id + 1]++;
         int k = g->dim == 3 ? c[2] : 0;
-        b->sum[(c[0] + 1) + (long)(g->n[0] + 1) * ((c[1] + 1) + (long)(g->n[1] + 1) * (k + 1))]++;
+        if (sums)
+            b->sum[(c[0] + 1) + (long)(g->n[0] + 1) * ((c[1] + 1) + (long)(g->n[1] + 1) * (k + 1))]++;
     }
     for (long c = 0; c < b->ncells; c++)
         b->start[c + 1] += b->start[c];
-    size_t *fill = malloc(sizeof *fill * ((size_t)b->ncells + 1));
-    if (!fill) {
-        snprintf(err, errlen, "out of memory binning %zu points", n);
-        return LM_NERR_MEMORY;
-    }
+    size_t *fill = b->fill;
     memcpy(fill, b->start, sizeof *fill * ((size_t)b->ncells + 1));
     for (size_t i = 0; i < n; i++)
         b->order[fill[b->cell[i]]++] = i;
-    free(fill);
+    if (!sums)
+        return LM_NERR_NONE;
     /* prefix sums along each axis turn counts into summed counts */
     int N0 = g->n[0] + 1, N1 = g->n[1] + 1, N2 = nz + 1;
     for (int k = 0; k < N2; k++)
@@ -298,7 +315,8 @@ static lm_nerr check_grid(const lm_ngrid *g, const lm_nopts *o, char *err,
 /* Steps 2-4 for one occupied cell; the chosen element goes to *el. */
 static lm_nerr solve_cell(const lm_ngrid *g, const lm_nbins *b, const double *const x[3],
                           const lm_nopts *o, const int c[3], size_t *idx,
-                          lm_nelem *el, char *err, size_t errlen)
+                          const lm_nfit_scratch *sc, int lean, lm_nelem *el,
+                          char *err, size_t errlen)
 {
     long id = lm_nbins_cell_id(g, c);
     size_t k0 = b->start[id], k1 = b->start[id + 1], k = k1 - k0;
@@ -342,7 +360,8 @@ static lm_nerr solve_cell(const lm_ngrid *g, const lm_nbins *b, const double *co
     el->cell[2] = c[2];
     memcpy(el->lo, lo, sizeof lo);
     el->size = sz[0];
-    lm_nerr e = lm_nfit_element(&box, x, idx, kb, &fo, &el->fit, err, errlen);
+    lm_nerr e = lm_nfit_element_ws(&box, x, idx, kb, &fo, lean, unique, &el->fit, sc,
+                                   err, errlen);
     if (merged)
         el->fit.flags |= LM_NF_MERGED;
     if (e == LM_NERR_TOO_FEW && merged && whole)
@@ -353,29 +372,36 @@ static lm_nerr solve_cell(const lm_ngrid *g, const lm_nbins *b, const double *co
 }
 
 /* Steps 2-5 over every occupied cell, in cell order: the elements go to
- * *elsp (*nelp of them), undefined normals are counted in *undefp. */
+ * *elsp (*nelp of them) when elsp is not NULL (a report), undefined normals
+ * are counted in *undefp. */
 static lm_nerr cells_pass(const lm_ngrid *g, const lm_nbins *b,
                           const double *const x[3], const lm_nopts *o,
                           double *const nrm[3], unsigned char *flags, lm_nelem **elsp,
-                          int *nelp, size_t *undefp, size_t *idx, char *err,
+                          int *nelp, size_t *undefp, lm_nwork *w, char *err,
                           size_t errlen)
 {
-    long occupied = 0;
-    for (long c = 0; c < b->ncells; c++)
-        occupied += b->start[c + 1] > b->start[c];
-    lm_nelem *els = calloc((size_t)(occupied ? occupied : 1), sizeof *els);
-    *elsp = els;
-    if (!els) {
-        snprintf(err, errlen, "out of memory (%ld elements)", occupied);
-        return LM_NERR_MEMORY;
+    lm_nelem one, *els = NULL;
+    if (elsp) {
+        long occupied = 0;
+        for (long c = 0; c < b->ncells; c++)
+            occupied += b->start[c + 1] > b->start[c];
+        els = calloc((size_t)(occupied ? occupied : 1), sizeof *els);
+        *elsp = els;
+        if (!els) {
+            snprintf(err, errlen, "out of memory (%ld elements)", occupied);
+            return LM_NERR_MEMORY;
+        }
     }
     for (long id = 0; id < b->ncells; id++) {
         if (b->start[id + 1] == b->start[id])
             continue;
         int c[3] = {(int)(id % g->n[0]), (int)((id / g->n[0]) % g->n[1]),
                     g->dim == 3 ? (int)(id / ((long)g->n[0] * g->n[1])) : 0};
-        lm_nelem *el = &els[*nelp];
-        lm_nerr ce = solve_cell(g, b, x, o, c, idx, el, err, errlen);
+        /* without a report one element at a time is enough */
+        lm_nelem *el = els ? &els[*nelp] : &one;
+        if (!els)
+            memset(el, 0, sizeof *el);
+        lm_nerr ce = solve_cell(g, b, x, o, c, w->idx, &w->fit, !elsp, el, err, errlen);
         if (ce == LM_NERR_TOO_FEW && !(el->fit.flags & LM_NF_MERGED) && !o->merge) {
             /* no merging allowed: these points keep no normal */
             for (size_t q = b->start[id]; q < b->start[id + 1]; q++) {
@@ -410,6 +436,18 @@ lm_nerr lm_normals_grid(const lm_ngrid *g, size_t n, const double *const x[3],
                         unsigned char *flags, lm_nreport *rep, char *err,
                         size_t errlen)
 {
+    lm_nwork w;
+    memset(&w, 0, sizeof w);
+    lm_nerr e = lm_normals_grid_ws(g, n, x, o, nrm, flags, rep, &w, err, errlen);
+    lm_nwork_free(&w);
+    return e;
+}
+
+lm_nerr lm_normals_grid_ws(const lm_ngrid *g, size_t n, const double *const x[3],
+                           const lm_nopts *o, double *const nrm[3],
+                           unsigned char *flags, lm_nreport *rep, lm_nwork *w,
+                           char *err, size_t errlen)
+{
     char dummy[8];
     if (!err || !errlen) {
         err = dummy;
@@ -427,35 +465,35 @@ lm_nerr lm_normals_grid(const lm_ngrid *g, size_t n, const double *const x[3],
         if (flags)
             flags[i] = 0;
     }
-    lm_nbins b;
-    size_t *idx = malloc(sizeof *idx * (n ? n : 1));
     lm_nelem *els = NULL;
     int nel = 0;
-    if (!idx) {
+    if (lm_nwork_reserve(w, n)) {
         snprintf(err, errlen, "out of memory (%zu points)", n);
         return LM_NERR_MEMORY;
     }
-    if ((e = lm_nbins_make(g, n, x, &b, err, errlen)))
+    lm_nbins *b = &w->bins;
+    if ((e = lm_nbins_make(g, n, x, o->element != LM_NELEM_CENTRED, b, err, errlen)))
         goto out;
     size_t undefined = 0;
     if (o->element == LM_NELEM_CENTRED)
-        e = lm_normals_centred(g, &b, n, x, o, nrm, flags, rep ? &els : NULL, &nel,
-                               &undefined, idx, err, errlen);
+        e = lm_normals_centred(g, b, n, x, o, nrm, flags, rep ? &els : NULL, &nel,
+                               &undefined, w, err, errlen);
     else
-        e = cells_pass(g, &b, x, o, nrm, flags, &els, &nel, &undefined, idx, err, errlen);
+        e = cells_pass(g, b, x, o, nrm, flags, rep ? &els : NULL, &nel, &undefined, w,
+                       err, errlen);
     if (e)
         goto out;
-    lm_normals_orient(n, g->dim, x, nrm, o->orient, o->orient_point);
+    lm_normals_orient_ws(n, g->dim, x, nrm, o->orient, o->orient_point, w);
     if (rep) {
         rep->nundefined = undefined;
-        rep->ncells = (int)b.ncells;
-        rep->cell_elem = malloc(sizeof *rep->cell_elem * (size_t)b.ncells);
+        rep->ncells = (int)b->ncells;
+        rep->cell_elem = malloc(sizeof *rep->cell_elem * (size_t)b->ncells);
         if (!rep->cell_elem) {
             snprintf(err, errlen, "out of memory (report)");
             e = LM_NERR_MEMORY;
             goto out;
         }
-        for (long id = 0; id < b.ncells; id++)
+        for (long id = 0; id < b->ncells; id++)
             rep->cell_elem[id] = -1;
         for (int k = 0; k < nel; k++) {
             const lm_nelem *el = &els[k];
@@ -472,8 +510,6 @@ lm_nerr lm_normals_grid(const lm_ngrid *g, size_t n, const double *const x[3],
         els = NULL;
     }
 out:
-    lm_nbins_free(&b);
-    free(idx);
     free(els);
     return e;
 }

@@ -18,6 +18,7 @@
 #include <stdlib.h>
 
 #include "normals.h"
+#include "normals_work.h"
 
 static int defined(double *const nrm[3], int dim, size_t i)
 {
@@ -61,22 +62,15 @@ static void by_sequence(size_t n, int dim, double *const nrm[3])
     }
 }
 
+/* d, from and done: n entries of scratch each. */
 static void by_neighbours(size_t n, int dim, const double *const x[3],
-                          double *const nrm[3])
+                          double *const nrm[3], double *d, size_t *from,
+                          unsigned char *done)
 {
-    double *d = malloc(sizeof *d * (n ? n : 1));
-    size_t *from = malloc(sizeof *from * (n ? n : 1));
-    unsigned char *done = calloc(n ? n : 1, 1);
-    if (!d || !from || !done) {       /* no memory: fall back to order */
-        free(d);
-        free(from);
-        free(done);
-        by_sequence(n, dim, nrm);
-        return;
-    }
     size_t todo = 0, start = n;
     for (size_t i = 0; i < n; i++) {
         d[i] = INFINITY;
+        done[i] = 0;
         if (defined(nrm, dim, i)) {
             todo++;
             if (start == n)
@@ -108,6 +102,19 @@ static void by_neighbours(size_t n, int dim, const double *const x[3],
             flip(nrm, dim, next);
         cur = next;
     }
+}
+
+/* by_neighbours in scratch of its own (a call without a workspace). */
+static void by_neighbours_alloc(size_t n, int dim, const double *const x[3],
+                                double *const nrm[3])
+{
+    double *d = malloc(sizeof *d * (n ? n : 1));
+    size_t *from = malloc(sizeof *from * (n ? n : 1));
+    unsigned char *done = malloc(n ? n : 1);
+    if (d && from && done)
+        by_neighbours(n, dim, x, nrm, d, from, done);
+    else                              /* no memory: fall back to order */
+        by_sequence(n, dim, nrm);
     free(d);
     free(from);
     free(done);
@@ -129,12 +136,22 @@ void lm_normals_orient(size_t n, int dim, const double *const x[3],
                        double *const nrm[3], lm_norient how,
                        const double point[3])
 {
+    lm_normals_orient_ws(n, dim, x, nrm, how, point, NULL);
+}
+
+void lm_normals_orient_ws(size_t n, int dim, const double *const x[3],
+                          double *const nrm[3], lm_norient how,
+                          const double point[3], lm_nwork *w)
+{
     switch (how) {
     case LM_NORIENT_SEQUENCE:
         by_sequence(n, dim, nrm);
         break;
     case LM_NORIENT_NEIGHBOURS:
-        by_neighbours(n, dim, x, nrm);
+        if (w && w->cap >= n)
+            by_neighbours(n, dim, x, nrm, w->dist, w->from, w->done);
+        else
+            by_neighbours_alloc(n, dim, x, nrm);
         break;
     case LM_NORIENT_AWAY:
         if (point)

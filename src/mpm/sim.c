@@ -6,6 +6,7 @@
 
 #include "contact.h"
 #include "mpm.h"
+#include "normals_work.h"
 #include "particles.h"
 #include "step.h"
 
@@ -140,6 +141,7 @@ void lm_sim_free(lm_sim *sim)
     free(sim->links);
     free(sim->pin_w);
     lm_contact_free(sim->contact);
+    lm_nwork_delete(sim->nwork);
     free(sim);
 }
 
@@ -406,6 +408,18 @@ lm_status lm_sim_set_membrane_force(lm_sim *sim, int b, lm_mforce force)
     }
     sim->bodies[b].force = force;
     sim->prepared = 0;   /* segments' rest lengths are found by the next prepare */
+    return LM_OK;
+}
+
+lm_status lm_sim_set_membrane_normals(lm_sim *sim, int b, lm_normals normals)
+{
+    if (b < 0 || b >= sim->nbodies || !sim->bodies[b].membrane ||
+        normals < LM_NORMALS_CONNECTIVITY || normals > LM_NORMALS_MASS_MATRIX) {
+        snprintf(sim->err, sizeof sim->err, "body %d is not a membrane, or normals %d is "
+                 "not a method", b + 1, (int)normals);
+        return LM_ERR_INPUT;
+    }
+    sim->bodies[b].normals = normals;
     return LM_OK;
 }
 

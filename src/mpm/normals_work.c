@@ -1,0 +1,72 @@
+/* normals_work.c - the normals engine's workspace (normals_work.h): sized
+ * before the element loop, so that the loop itself never allocates. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "normals_work.h"
+
+/* *p grown to hold n items of size sz (kept as is when it does). */
+static int grow(void **p, size_t n, size_t sz)
+{
+    void *q = realloc(*p, (n ? n : 1) * sz);
+    if (!q)
+        return -1;
+    *p = q;
+    return 0;
+}
+
+lm_nerr lm_nwork_reserve(lm_nwork *w, size_t n)
+{
+    if (n <= w->cap && w->fit.S)
+        return LM_NERR_NONE;
+    /* a fit's rows: its points, the phi = 0 and phi = 2 points and the
+     * curvature rows (normals_fit.c); an element holds at most all n */
+    size_t rows = n + 2 + LM_NSMOOTH_MAXROWS;
+    if (grow((void **)&w->idx, n, sizeof *w->idx) ||
+        grow((void **)&w->sel, n, sizeof *w->sel) ||
+        grow((void **)&w->sites, n, sizeof *w->sites) ||
+        grow((void **)&w->sites_tmp, n, sizeof *w->sites_tmp) ||
+        grow((void **)&w->nrm, 3 * n, sizeof *w->nrm) ||
+        grow((void **)&w->flags, n, sizeof *w->flags) ||
+        grow((void **)&w->dist, n, sizeof *w->dist) ||
+        grow((void **)&w->from, n, sizeof *w->from) ||
+        grow((void **)&w->done, n, sizeof *w->done) ||
+        grow((void **)&w->fit.S, rows * LM_NMAX, sizeof *w->fit.S) ||
+        grow((void **)&w->fit.rhs, rows, sizeof *w->fit.rhs) ||
+        grow((void **)&w->fit.cols, rows * LM_NMAX, sizeof *w->fit.cols))
+        return LM_NERR_MEMORY;
+    w->cap = n;
+    w->fit.rows = rows;
+    return LM_NERR_NONE;
+}
+
+void lm_nwork_free(lm_nwork *w)
+{
+    if (!w)
+        return;
+    free(w->idx);
+    free(w->sel);
+    free(w->sites);
+    free(w->sites_tmp);
+    free(w->nrm);
+    free(w->flags);
+    free(w->dist);
+    free(w->from);
+    free(w->done);
+    free(w->fit.S);
+    free(w->fit.rhs);
+    free(w->fit.cols);
+    lm_nbins_free(&w->bins);
+    memset(w, 0, sizeof *w);
+}
+
+lm_nwork *lm_nwork_new(void)
+{
+    return calloc(1, sizeof(lm_nwork));
+}
+
+void lm_nwork_delete(lm_nwork *w)
+{
+    lm_nwork_free(w);
+    free(w);
+}

@@ -1,0 +1,72 @@
+/* normals_work.h - internal to the normals engine: scratch memory kept
+ * between calls, so that the normals of a simulation step allocate nothing
+ * once the first step has sized it (issue 17 item 3: "no allocation inside
+ * the step"). A simulation owns one (lm_sim.nwork, made with the first
+ * isosurface step, grown only when a membrane holds more points than any
+ * before; freed with the sim). The normals run on one thread, body after
+ * body, so one workspace serves every body. Not part of the API. */
+#ifndef LAMINA_NORMALS_WORK_H
+#define LAMINA_NORMALS_WORK_H
+
+#include "normals.h"
+#include "normals_bins.h"
+
+/* A point and its lattice site (normals_centred.c). */
+typedef struct lm_nsite {
+    long key;
+    size_t i;
+} lm_nsite;
+
+/* One fit's scratch (normals_fit.c): the system [S]{phi} = {phi0} of up
+ * to `rows` rows of LM_NMAX columns, and as much for the QR's copy of its
+ * columns. */
+typedef struct lm_nfit_scratch {
+    double *S, *rhs, *cols;
+    size_t rows;
+} lm_nfit_scratch;
+
+typedef struct lm_nwork {
+    size_t cap;                     /* points the per-point arrays hold */
+    size_t *idx, *sel;              /* a gathered block; its points in a box */
+    lm_nsite *sites, *sites_tmp;    /* centred: points by site; merge scratch */
+    double *nrm;                    /* 3 cap: the normals (membrane.c) */
+    unsigned char *flags;           /* cap: their flags (membrane.c) */
+    double *dist;                   /* orientation by neighbours: cap each */
+    size_t *from;
+    unsigned char *done;
+    lm_nfit_scratch fit;            /* rows for cap points (+ 2 + smoothing) */
+    lm_nbins bins;                  /* grown by lm_nbins_make */
+} lm_nwork;
+
+/* Makes sure w holds n points (and the fits of up to n points); grows,
+ * never shrinks. LM_NERR_MEMORY when it cannot. */
+lm_nerr lm_nwork_reserve(lm_nwork *w, size_t n);
+/* Frees what w holds and empties it (w itself is the caller's). */
+void lm_nwork_free(lm_nwork *w);
+/* A workspace on the heap, empty; NULL without memory. */
+lm_nwork *lm_nwork_new(void);
+void lm_nwork_delete(lm_nwork *w);
+
+/* lm_normals_grid with the caller's workspace. */
+lm_nerr lm_normals_grid_ws(const lm_ngrid *g, size_t n, const double *const x[3],
+                           const lm_nopts *o, double *const nrm[3],
+                           unsigned char *flags, lm_nreport *rep, lm_nwork *w,
+                           char *err, size_t errlen);
+/* lm_normals_orient with the scratch of w (NULL: its own). */
+void lm_normals_orient_ws(size_t n, int dim, const double *const x[3],
+                          double *const nrm[3], lm_norient how,
+                          const double point[3], lm_nwork *w);
+/* lm_nfit_element in the scratch sc (rows >= k + 2, + LM_NSMOOTH_MAXROWS
+ * with smoothing). nunique >= 0: the caller has counted the distinct points
+ * already (the same box and points), so they are not counted again.
+ * lean = 1 leaves out the residual (0), which only a report reads. */
+lm_nerr lm_nfit_element_ws(const lm_nbox *box, const double *const x[3],
+                           const size_t *idx, size_t k, const lm_nfit_opts *o,
+                           int lean, int nunique, lm_nfit *fit,
+                           const lm_nfit_scratch *sc, char *err, size_t errlen);
+/* lm_lsq_qr_cond for n <= LM_NMAX with C (m n entries) given: no
+ * allocation. */
+lm_nerr lm_lsq_qr_ws(int m, int n, double *A, double *b, double *x,
+                     lm_lsq_info *info, int want_cond, double *C);
+
+#endif

@@ -1,0 +1,230 @@
+/* test_normals_work.c - the normals' workspace (normals_work.c) and the
+ * faster pivoted QR (normals_qr.c) change no bit of a result (issue 17
+ * item 3: the step's normals allocate nothing and cost less, the states
+ * stay the same):
+ *  - the QR against a plain row-major reference written the way the QR was
+ *    before (one column at a time): the same solution, bit for bit;
+ *  - lm_lsq_qr_ws (stack and caller's buffer) against lm_lsq_qr_cond;
+ *  - one workspace reused over membranes of several sizes (growing and
+ *    shrinking, every orientation) against a fresh lm_normals_grid. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "normals.h"
+#include "normals_work.h"
+
+#define AT(M, i, j, ld) ((M)[(size_t)(i) * (size_t)(ld) + (size_t)(j)])
+
+/* ---- the reference: pivoted Householder QR, column by column ------------- */
+
+static void ref_qr(int m, int n, double *A, double *b, double *x)
+{
+    int perm[LM_NMAX];
+    double col[256], y[LM_NMAX];
+    for (int j = 0; j < n; j++)
+        perm[j] = j;
+    for (int k = 0; k < n; k++) {
+        int best = k;
+        double bn = -1;
+        for (int j = k; j < n; j++) {
+            double s = 0;
+            for (int i = k; i < m; i++)
+                s += AT(A, i, j, n) * AT(A, i, j, n);
+            if (s > bn) {
+                bn = s;
+                best = j;
+            }
+        }
+        for (int i = 0; i < m; i++) {
+            double t = AT(A, i, k, n);
+            AT(A, i, k, n) = AT(A, i, best, n);
+            AT(A, i, best, n) = t;
+        }
+        int t = perm[k];
+        perm[k] = perm[best];
+        perm[best] = t;
+        double tail = 0;
+        for (int i = k + 1; i < m; i++)
+            tail += AT(A, i, k, n) * AT(A, i, k, n);
+        double u0 = AT(A, k, k, n), alpha = u0;
+        if (tail != 0.0) {
+            double norm = sqrt(u0 * u0 + tail);
+            alpha = u0 >= 0 ? -norm : norm;
+            double w0 = u0 - alpha, tau = 2.0 / (w0 * w0 + tail);
+            AT(A, k, k, n) = w0;
+            for (int i = k; i < m; i++)
+                col[i] = AT(A, i, k, n);
+            for (int j = k + 1; j < n; j++) {
+                double d = 0;
+                for (int i = k; i < m; i++)
+                    d += col[i] * AT(A, i, j, n);
+                d *= tau;
+                for (int i = k; i < m; i++)
+                    AT(A, i, j, n) -= d * col[i];
+            }
+            double d = 0;
+            for (int i = k; i < m; i++)
+                d += col[i] * b[i];
+            d *= tau;
+            for (int i = k; i < m; i++)
+                b[i] -= d * col[i];
+        }
+        AT(A, k, k, n) = alpha;
+    }
+    for (int k = n - 1; k >= 0; k--) {
+        double s = b[k];
+        for (int j = k + 1; j < n; j++)
+            s -= AT(A, k, j, n) * y[j];
+        y[k] = s / AT(A, k, k, n);
+    }
+    for (int j = 0; j < n; j++)
+        x[perm[j]] = y[j];
+}
+
+static double urand(unsigned *s)
+{
+    *s = *s * 1664525u + 1013904223u;
+    return (*s >> 8) / 16777216.0;
+}
+
+/* Rows like a fit's: the 2D quadratic basis at points near a curve, a
+ * random point, and (smooth) the curvature rows. */
+static int fit_like(unsigned *seed, int k, int smooth, double *A, double *b)
+{
+    lm_nbox box = {2, {0, 0, 0}, {1, 1, 0}};
+    int m = 0;
+    for (int p = 0; p <= k; p++, m++) {
+        double t = urand(seed), xi[3] = {t, 0.5 + 0.1 * (t - 0.5) * (t - 0.5), 0};
+        if (p == k) {
+            xi[0] = urand(seed);
+            xi[1] = urand(seed);
+        }
+        lm_nbasis_eval(LM_NB_QUADRATIC, 2, xi, A + m * 9, NULL);
+        b[m] = p < k;
+    }
+    if (smooth) {
+        int r = lm_nsmooth_rows(LM_NB_QUADRATIC, &box, 2e-3 * sqrt((double)m), A + m * 9);
+        for (int q = 0; q < r; q++)
+            b[m + q] = 0;
+        m += r;
+    }
+    return m;
+}
+
+static void test_qr_bits(void)
+{
+    unsigned seed = 7;
+    int same = 0, tried = 0;
+    for (int c = 0; c < 200; c++) {
+        double A[64 * 9], b[64], A1[64 * 9], b1[64], A2[64 * 9], b2[64], C[64 * 9];
+        double x0[9], x1[9], x2[9];
+        int m = fit_like(&seed, 9 + c % 20, c % 3 != 0, A, b);
+        memcpy(A1, A, sizeof A);
+        memcpy(b1, b, sizeof b);
+        memcpy(A2, A, sizeof A);
+        memcpy(b2, b, sizeof b);
+        lm_lsq_info i1, i2;
+        ref_qr(m, 9, A, b, x0);
+        CHECK(lm_lsq_qr_cond(m, 9, A1, b1, x1, &i1, 0) == LM_NERR_NONE);
+        CHECK(lm_lsq_qr_ws(m, 9, A2, b2, x2, &i2, 0, C) == LM_NERR_NONE);
+        CHECK(memcmp(x1, x2, sizeof x1) == 0);
+        if (i1.rank == 9) {      /* the reference has no rank-deficient branch */
+            tried++;
+            same += memcmp(x0, x1, sizeof x0) == 0;
+        }
+    }
+    CHECK(tried > 100);
+    CHECK(same == tried);
+}
+
+/* Underdetermined and rank-deficient systems: the two entry points agree. */
+static void test_qr_ws_deficient(void)
+{
+    unsigned seed = 11;
+    for (int c = 0; c < 50; c++) {
+        double A[8 * 9], b[8], A1[8 * 9], b1[8], C[8 * 9], x[9], x1[9];
+        int m = 3 + c % 6;
+        for (int i = 0; i < m; i++) {
+            for (int j = 0; j < 9; j++)
+                A[i * 9 + j] = j == 4 ? A[i * 9] : urand(&seed);   /* column 4 = column 0 */
+            b[i] = urand(&seed);
+        }
+        memcpy(A1, A, sizeof A);
+        memcpy(b1, b, sizeof b);
+        lm_lsq_info i0, i1;
+        CHECK(lm_lsq_qr_cond(m, 9, A, b, x, &i0, 1) == LM_NERR_NONE);
+        CHECK(lm_lsq_qr_ws(m, 9, A1, b1, x1, &i1, 1, C) == LM_NERR_NONE);
+        CHECK(memcmp(x, x1, sizeof x) == 0);
+        CHECK(i0.rank == i1.rank && i0.rank < 9);
+        CHECK(memcmp(&i0.cond_t, &i1.cond_t, sizeof i0.cond_t) == 0);
+    }
+}
+
+/* ---- the workspace ---------------------------------------------------------- */
+
+/* n points on a wavy circle about (0.5, 0.5) in the unit square. */
+static void wavy_circle(size_t n, double *x, double *y)
+{
+    for (size_t k = 0; k < n; k++) {
+        double a = 2 * 3.14159265358979323846 * (double)k / (double)n;
+        double r = 0.3 + 0.01 * sin(7 * a);
+        x[k] = 0.5 + r * cos(a);
+        y[k] = 0.5 + r * sin(a);
+    }
+}
+
+static void test_workspace_reuse(void)
+{
+    const lm_ngrid g = {2, {0, 0, 0}, {0.05, 0.05, 0}, {20, 20, 1}};
+    const size_t sizes[] = {60, 400, 90, 400, 37};
+    const lm_norient how[] = {LM_NORIENT_NONE, LM_NORIENT_NEIGHBOURS, LM_NORIENT_AWAY,
+                              LM_NORIENT_SEQUENCE, LM_NORIENT_NEIGHBOURS};
+    lm_nwork w;
+    memset(&w, 0, sizeof w);
+    for (int c = 0; c < 5; c++) {
+        size_t n = sizes[c];
+        double *x = malloc(n * sizeof *x), *y = malloc(n * sizeof *y);
+        double *a = calloc(4 * n, sizeof *a);
+        unsigned char *fa = calloc(n, 1), *fb = calloc(n, 1);
+        wavy_circle(n, x, y);
+        const double *pts[3] = {x, y, NULL};
+        double *na[3] = {a, a + n, NULL}, *nb[3] = {a + 2 * n, a + 3 * n, NULL};
+        for (int centred = 0; centred < 2; centred++) {
+            lm_nopts o;
+            if (centred)
+                lm_nopts_centred(&o);
+            else
+                lm_nopts_default(&o);
+            o.orient = how[c];
+            o.orient_point[0] = o.orient_point[1] = 0.5;
+            o.skip_cond = c % 2;
+            o.seed = 3 + (uint64_t)c;
+            char err[256];
+            CHECK(lm_normals_grid(&g, n, pts, &o, na, fa, NULL, err, sizeof err) ==
+                  LM_NERR_NONE);
+            CHECK(lm_normals_grid_ws(&g, n, pts, &o, nb, fb, NULL, &w, err, sizeof err) ==
+                  LM_NERR_NONE);
+            CHECK(memcmp(a, a + 2 * n, 2 * n * sizeof *a) == 0);
+            CHECK(memcmp(fa, fb, n) == 0);
+        }
+        CHECK(w.cap >= n);
+        free(x);
+        free(y);
+        free(a);
+        free(fa);
+        free(fb);
+    }
+    CHECK(w.cap == 400);          /* grown twice to the largest, never shrunk */
+    lm_nwork_free(&w);
+    CHECK(w.cap == 0 && w.idx == NULL);
+}
+
+int main(void)
+{
+    test_qr_bits();
+    test_qr_ws_deficient();
+    test_workspace_reuse();
+    return CHECK_DONE();
+}
