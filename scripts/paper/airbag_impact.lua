@@ -67,7 +67,8 @@ print(airbag.bag_note)
 
 local function frames(s, tf, bodies)
   s:frame{ file = string.format("%s/shape_t%.3f.png", out, tf), width = 640, height = 520,
-           mirror = "x", window = {-0.4, -0.01, 0.4, 0.5}, scalebar = true, units = "m",
+           mirror = "x", window = {-0.32, -0.001, 0.32, 0.499}, scalebar = true, units = "m",
+           discs = "spacing",   -- the whole cross-section: the scale bar inside the grid
            title = string.format("t = %.0f ms from the probe's start (tether %s)", 1e3 * tf,
                                  variants:match("[^,]+")) }
   if tf == 0.04 then   -- the same moment revolved about the axis (assets/lua/revolve.lua)

@@ -42,6 +42,7 @@
 --   spacing (sum m / rho exceeds the enclosed area by ~20 % at t = 4 at
 --   cells 0.1 and 0.05) and that mean misses what the membrane feels
 --   (docs/decisions.md "Gas pressure over the space").
+-- heavy: four meshes to t = 4, the finest cell 0.05 with gas splitting: about 11 min here (two threads)
 -- visual: finest=0.4 t_end=0.5 threads=1
 -- thumb: cell0.100_t4.0.png
 local out = lamina.param("out", "out/gas_dogbone")
