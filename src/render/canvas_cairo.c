@@ -21,6 +21,10 @@
 #include <string.h>
 #include "util.h"
 
+/* Sub-pixel positions per axis a stamped disc can take: at most 1/8 px
+ * off, which no one sees. */
+#define STAMP_PHASES 4
+
 typedef struct cc_canvas {
     lr_canvas base;
     cairo_surface_t *surface;
@@ -29,6 +33,13 @@ typedef struct cc_canvas {
     cairo_surface_t *stamps;    /* disc coverage masks, NULL until needed */
     double stamp_r;             /* the radius they were drawn for */
     int stamp_reach, stamp_size;
+    /* each mask's covered pixels, in row order: offset (dy * stride_px +
+     * dx, rebuilt for the surface's stride) and coverage; tile q's run is
+     * cov_at[q] .. cov_at[q + 1] (see "discs") */
+    int *cov_off;
+    unsigned char *cov_val;
+    int cov_at[STAMP_PHASES * STAMP_PHASES + 1];
+    int cov_stride;             /* the surface stride the offsets are for */
     /* where stamped discs may write: the canvas, or the clip rectangle */
     int bx0, by0, bx1, by1;
     /* vector output: the file being written (lr_atomic), its state */
@@ -49,9 +60,6 @@ static cc_canvas *as_cairo(lr_canvas *c) { return (cc_canvas *)c; }
 /* Discs up to this radius (pixels) are stamped, see "discs" below. */
 #define STAMP_MAX_RADIUS 24.0
 
-/* Sub-pixel positions per axis a stamped disc can take: at most 1/8 px
- * off, which no one sees. */
-#define STAMP_PHASES 4
 
 /* Below this radius an arc is slower than a pixel and looks no better. */
 #define DISC_MIN_ARC_RADIUS 0.8
@@ -125,6 +133,8 @@ static void cc_destroy(lr_canvas *base)
         cairo_surface_finish(c->surface);   /* before the file goes */
     cairo_surface_destroy(c->surface);
     cairo_surface_destroy(c->stamps);
+    free(c->cov_off);
+    free(c->cov_val);
     if (c->out_open)
         lr_atomic_abort(&c->out, "not finished", NULL, 0);
     free(c);
@@ -377,6 +387,7 @@ static int prepare_stamps(cc_canvas *c, double r)
         return 0;
     cairo_surface_destroy(c->stamps);
     c->stamps = NULL;
+    c->cov_stride = 0;   /* the covered-pixel lists go with the masks */
     int reach = (int)ceil(r) + 1, size = 2 * reach + 1;
     int tiles = STAMP_PHASES * STAMP_PHASES;
     cairo_surface_t *m = cairo_image_surface_create(CAIRO_FORMAT_A8, size,
@@ -443,6 +454,67 @@ static void blend(unsigned char *dst, const argb8 *k, uint32_t cov)
     memcpy(dst, &out, sizeof out);
 }
 
+/* mul255 on two 8-bit lanes at bits 0 and 16 at once: x*y + 128 stays
+ * below 2^16 in each lane and so does t + (t >> 8), so no carry crosses a
+ * lane and each lane is mul255's value, exactly. */
+static uint32_t mul255_2(uint32_t x, uint32_t y)
+{
+    uint32_t t = x * y + 0x00800080u;
+    t += (t >> 8) & 0x00FF00FFu;
+    return (t >> 8) & 0x00FF00FFu;
+}
+
+/* blend(), two channels per multiply: the same sums to the last bit (each
+ * channel's sum is at most 255, so none spills into its neighbour). ag and
+ * rb are k's alpha-green and red-blue lanes. */
+static void blend2(unsigned char *dst, uint32_t ag, uint32_t rb, uint32_t cov)
+{
+    uint32_t d;
+    memcpy(&d, dst, sizeof d);
+    uint32_t sag = mul255_2(ag, cov), srb = mul255_2(rb, cov);
+    uint32_t keep = 255 - (sag >> 16);
+    uint32_t out = (sag + mul255_2((d >> 8) & 0x00FF00FFu, keep)) << 8 |
+                   (srb + mul255_2(d & 0x00FF00FFu, keep));
+    memcpy(dst, &out, sizeof out);
+}
+
+/* Each mask's covered pixels as (offset in the surface, coverage), so that
+ * a stamp wholly inside the canvas touches only them: built once per
+ * radius and stride; -1 without memory (the caller then loops the mask). */
+static int prepare_cover(cc_canvas *c, int istride)
+{
+    if (c->cov_stride == istride)
+        return 0;
+    int size = c->stamp_size, tiles = STAMP_PHASES * STAMP_PHASES;
+    int mstride = cairo_image_surface_get_stride(c->stamps);
+    const unsigned char *m = cairo_image_surface_get_data(c->stamps);
+    size_t n = 0;
+    for (int q = 0; q < tiles; q++)
+        for (int j = 0; j < size; j++)
+            for (int i = 0; i < size; i++)
+                n += m[((size_t)q * size + j) * mstride + i] != 0;
+    int *off = realloc(c->cov_off, (n ? n : 1) * sizeof *off);
+    if (off) c->cov_off = off;
+    unsigned char *val = realloc(c->cov_val, n ? n : 1);
+    if (val) c->cov_val = val;
+    if (!off || !val)
+        return -1;
+    n = 0;
+    for (int q = 0; q < tiles; q++) {
+        c->cov_at[q] = (int)n;
+        for (int j = 0; j < size; j++)
+            for (int i = 0; i < size; i++) {
+                unsigned char v = m[((size_t)q * size + j) * mstride + i];
+                if (!v) continue;
+                off[n] = j * istride + 4 * i;
+                val[n++] = v;
+            }
+    }
+    c->cov_at[tiles] = (int)n;
+    c->cov_stride = istride;
+    return 0;
+}
+
 /* The phase bin of a coordinate's fractional part. */
 static int phase(double frac)
 {
@@ -464,6 +536,14 @@ static void stamp_disc(cc_canvas *c, unsigned char *img, int istride,
     int j1 = c->by1 - y0 < size ? c->by1 - y0 : size;
     int i0 = x0 < c->bx0 ? c->bx0 - x0 : 0;
     int i1 = c->bx1 - x0 < size ? c->bx1 - x0 : size;
+    if (c->cov_stride == istride && j0 == 0 && i0 == 0 && j1 == size && i1 == size) {
+        /* wholly inside: only the covered pixels, two channels a multiply */
+        unsigned char *at = img + (size_t)y0 * istride + 4 * (size_t)x0;
+        uint32_t ag = k->ch[0] << 16 | k->ch[2], rb = k->ch[1] << 16 | k->ch[3];
+        for (int e = c->cov_at[q]; e < c->cov_at[q + 1]; e++)
+            blend2(at + c->cov_off[e], ag, rb, c->cov_val[e]);
+        return;
+    }
     for (int j = j0; j < j1; j++) {
         const unsigned char *cov = tile + (size_t)j * mstride;
         /* from the first pixel inside the canvas: a stamp reaching past the
@@ -485,6 +565,8 @@ static void discs_stamped(cc_canvas *c, size_t n, const double *px,
     unsigned char *img = cairo_image_surface_get_data(c->surface);
     int istride = cairo_image_surface_get_stride(c->surface);
     int dot = r < DISC_MIN_ARC_RADIUS;
+    if (!dot)
+        prepare_cover(c, istride);   /* on failure the masks are looped */
     const lr_rgba *last = NULL;
     argb8 k = { { 0, 0, 0, 0 } };
     for (size_t i = 0; i < n; i++) {
