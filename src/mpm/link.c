@@ -38,14 +38,17 @@ double lm_link_length(const lm_sim *sim, int k)
     return hypot(sim->p.x[b] - sim->p.x[a], sim->p.y[b] - sim->p.y[a]);
 }
 
-/* Tension of link k at its present length (0 when inactive). */
+/* Tension of link k at length l (0 when inactive or a slack cable). */
+static double tension_at(const lm_link *lk, double l)
+{
+    double s = l - lk->L0;
+    if (!lk->active || (lk->cable && s < 0)) return 0;
+    return lk->k * s;
+}
+
 double lm_link_tension(const lm_sim *sim, int k)
 {
-    const lm_link *lk = &sim->links[k];
-    if (!lk->active) return 0;
-    double s = lm_link_length(sim, k) - lk->L0;
-    if (lk->cable && s < 0) return 0;
-    return lk->k * s;
+    return tension_at(&sim->links[k], lm_link_length(sim, k));
 }
 
 static int in_contact(const lm_sim *sim, int b)
@@ -129,9 +132,9 @@ void lm_link_forces(lm_sim *sim)
     double per = sim->def.axisym ? 1 / TWO_PI : 1;
     int any = 0;
     for (int k = 0; k < sim->nlinks; k++) {
-        double T = lm_link_tension(sim, k) * per, l = lm_link_length(sim, k);
-        if (T == 0 || !(l > 0)) continue;
         const lm_link *lk = &sim->links[k];
+        double l = lm_link_length(sim, k), T = tension_at(lk, l) * per;
+        if (T == 0 || !(l > 0)) continue;
         size_t a = point_of(sim, lk, 0), b = point_of(sim, lk, 1);
         double ex = (p->x[b] - p->x[a]) / l, ey = (p->y[b] - p->y[a]) / l;
         for (int e = 0; e < 2; e++) {

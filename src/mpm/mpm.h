@@ -150,7 +150,8 @@ typedef struct lm_particles {
     /* Membranes with segment forces (membrane_force.c): L0 is the
      * unstrained length of the segment from this point to the next in
      * curve order (0: none), and (fpx, fpy) the net tension of the point's
-     * segments, spread to the nodes with N_ip. */
+     * segments, spread to the nodes with N_ip in step 2; spent then, they
+     * keep the point's x^k until MUSL's step 5 moves it (membrane_force.c). */
     double *L0, *fpx, *fpy;
     /* Pins (pin.c): 1 + the index of the pin holding the particle, else 0. */
     int *pin;

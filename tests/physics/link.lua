@@ -34,14 +34,11 @@ local function run(axisym, law, slack)
   end
   local ia, ib = nearest(a, 0.3), nearest(b, 0.7)
   local k = 2e5
+  local pa, pb = a:particles(), b:particles()
+  local d0 = math.sqrt((pb.x[ib] - pa.x[ia])^2 + (pb.y[ib] - pa.y[ia])^2)
+  -- slack: a cable longer than the distance; else the rest length 0.02 short of it
   local link = sim:link{ a = {a, ia}, b = {b, ib}, stiffness = k, law = law,
-                         length = slack and 0.45 or nil }
-  local d0 = link:length()
-  if not slack then
-    -- rebuild with the rest length 0.02 short of the present distance
-    link:remove()
-    link = sim:link{ a = {a, ia}, b = {b, ib}, stiffness = k, law = law, length = d0 - 0.02 }
-  end
+                         length = slack and 0.45 or d0 - 0.02 }
   local scale = axisym and 2 * math.pi or 1     -- per radian -> whole body
   local m1, m2 = a:mass() * scale, b:mass() * scale
   local omega = math.sqrt(k * (1 / m1 + 1 / m2))
