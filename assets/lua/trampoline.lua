@@ -8,7 +8,7 @@
 -- on the sheet's wave speed at cell 0.05).
 local M = {}
 
--- o.cell (0.05), o.force ("segment"), o.threads (1), o.basis ("linear"). Returns sim, sheet, ball, {pin1, pin2}.
+-- o.cell (0.05), o.force ("segment"), o.threads (1), o.basis (lamina's default, "bspline2"). Returns sim, sheet, ball, {pin1, pin2}.
 function M.setup(o)
   o = o or {}
   local h = o.cell or 0.05

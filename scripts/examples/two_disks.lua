@@ -9,7 +9,9 @@ local dt    = lamina.param("dt", 1e-3)
 local out   = lamina.param("out", "out/two_disks")
 local scheme = lamina.param("scheme", "musl")
 
-local sim = lamina.sim{ domain = {0, 0, 1, 1}, cell = cell, dt = dt, scheme = scheme }
+-- the 1994 paper's bilinear basis (lamina's default is the quadratic
+-- B-spline, docs/api.md)
+local sim = lamina.sim{ domain = {0, 0, 1, 1}, cell = cell, dt = dt, scheme = scheme, basis = "linear" }
 local rubber = lamina.elastic{ rho = 1000, E = 1000, nu = 0.3, plane = "strain" }
 local a = sim:body{ material = rubber, ppc = 4, velocity = { 0.1,  0.1},
                     region = lamina.disk{ center = {0.25, 0.25}, radius = 0.2 }, name = "lower" }

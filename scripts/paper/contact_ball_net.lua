@@ -30,7 +30,7 @@ local t_end = lamina.param("t_end", 6)
 local h = 0.25
 
 local function run(law, mu, frames)
-  local sim = lamina.sim{ domain = {0, 0, 10, 10}, cell = h, dt = 1e-3 }
+  local sim = lamina.sim{ basis = "linear", domain = {0, 0, 10, 10}, cell = h, dt = 1e-3 }
   local ballm = lamina.elastic{ rho = 1, E = 1e4, nu = 0.3, plane = "stress" }
   local netm = lamina.membrane{ rho = 0.5, E = 1e4, nu = 0, thickness = 0.0125, law = "uniaxial" }
   local net = sim:membrane{ material = netm, curve = lamina.segment{ from = {7.5, 0}, to = {7.5, 10} },

@@ -23,7 +23,7 @@
 local out = lamina.param("out", "out/contact_disks_wire")
 local t_end = lamina.param("t_end", 5)
 local h = 0.25
-local sim = lamina.sim{ domain = {-2, 1, 12, 9}, cell = h, dt = 1e-3 }
+local sim = lamina.sim{ basis = "linear", domain = {-2, 1, 12, 9}, cell = h, dt = 1e-3 }
 local diskm = lamina.elastic{ rho = 1, E = 1e4, nu = 0.3, plane = "stress" }
 local wirem = lamina.membrane{ rho = 1, E = 1e4, nu = 0, thickness = 0.05, law = "uniaxial" }
 local wire = sim:membrane{ material = wirem, curve = lamina.segment{ from = {5, 2}, to = {5, 8} },

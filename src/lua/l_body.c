@@ -494,6 +494,11 @@ static int body_index(lua_State *L)
         lua_pushinteger(L, b->index + 1);
         return 1;
     }
+    /* a membrane's force form, so a script can see which default it got */
+    if (strcmp(k, "force") == 0 && sim->bodies[b->index].membrane) {
+        lua_pushstring(L, sim->bodies[b->index].force == LM_MFORCE_SEGMENT ? "segment" : "point");
+        return 1;
+    }
     luaL_getmetafield(L, 1, "methods");
     la_getfield(L, -1, k);
     if (lua_isnil(L, -1)) return luaL_error(L, "body has no field or method '%s'", k);

@@ -112,9 +112,11 @@ int la_sim_membrane(lua_State *L)
     int n = cp.closed ? intervals : intervals + 1;
     double ds = cp.length / intervals;   /* within a cell: the engine checks */
     /* force: how the tension reaches the grid (membrane_force.c); "point"
-     * is the papers' quadrature */
+     * is the papers' quadrature, "segment" the default: a stretched
+     * membrane at rest stays at rest with it at any angle and spacing
+     * (issue 13 item 2; docs/robustness.md "Which default") */
     static const char *const forces[] = {"point", "segment", NULL};
-    int force = la_option(L, fn, "force", la_opt_string(L, 2, fn, "force", "point"), forces);
+    int force = la_option(L, fn, "force", la_opt_string(L, 2, fn, "force", "segment"), forces);
     int method = la_option(L, fn, "normals",
                            la_opt_string(L, 2, fn, "normals", "connectivity"), normal_methods);
     /* orient = {x, y}: normals point away from that point (the gas's

@@ -106,8 +106,13 @@ int la_sim_new(lua_State *L)
     if (!isfinite(d.gx) || !isfinite(d.gy))   /* else blamed on dt steps later */
         luaL_error(L, "%s: 'gravity' must be two finite numbers (got {%f, %f})", fn, d.gx, d.gy);
     read_boundary(L, fn, &d);
-    d.basis = (lm_basis)la_option(L, fn, "basis", la_opt_string(L, 1, fn, "basis", "linear"),
-                                  bases);
+    /* The default is the quadratic B-spline: with segment forces (the
+     * membranes' default) it does best on issue 13's checks
+     * (docs/robustness.md "Which default"); [T] §5.4.3's cell stress is
+     * bilinear, so asking for it alone keeps the papers' basis. */
+    const char *basis_default = d.stress == LM_STRESS_CELL ? "linear" : "bspline2";
+    d.basis = (lm_basis)la_option(L, fn, "basis",
+                                  la_opt_string(L, 1, fn, "basis", basis_default), bases);
     /* [T] §5.4.3's cell stress is a bilinear construction (gradients at the
      * cell centre of the cell's four nodes) */
     if (d.stress == LM_STRESS_CELL && d.basis != LM_BASIS_LINEAR)

@@ -10,7 +10,7 @@ E = lamina.param("E", 1000)
 local fail = lamina.param("fail", "no")
 local out = lamina.param("out", "out/cli")
 
-sim = lamina.sim{ domain = {0, 0, 1, 1}, cell = 0.1, dt = 1e-3 }
+sim = lamina.sim{ basis = "linear", domain = {0, 0, 1, 1}, cell = 0.1, dt = 1e-3 }
 rubber = lamina.elastic{ rho = 1000, E = E, nu = 0.3 }
 local a = sim:body{ material = rubber, ppc = 4, velocity = { 0.1,  0.1},
                     region = lamina.disk{ center = {0.3, 0.3}, radius = 0.15 } }

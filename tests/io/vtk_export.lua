@@ -4,7 +4,7 @@
 -- tests/io/vtk_check.py, which reads the files back with meshio (an
 -- independent reader) and compares them with these values.
 local out = lamina.param("out", "out/vtk_export/run")
-local sim = lamina.sim{domain = {0, 0, 1, 1}, cell = 0.1, dt = 5e-5}
+local sim = lamina.sim{basis = "linear", domain = {0, 0, 1, 1}, cell = 0.1, dt = 5e-5}
 local el = lamina.elastic{rho = 1000, E = 1e5, nu = 0.3}
 local disk = sim:body{material = el, region = lamina.disk{center = {0.3, 0.3}, radius = 0.15},
                       velocity = {1, 0.5}, name = "disk"}
@@ -12,7 +12,7 @@ local air = lamina.gas{rho = 1, p = 1000}
 local gas = sim:body{material = air, name = "gas",
                      region = lamina.rect{x0 = 0.6, y0 = 0.6, x1 = 0.9, y1 = 0.9}}
 local skin = lamina.membrane{rho = 0.5, E = 1e6, thickness = 0.1}
-local m = sim:membrane{material = skin, count = 12, name = "m", initial_strain = 0.001,
+local m = sim:membrane{force = "point", material = skin, count = 12, name = "m", initial_strain = 0.001,
                        curve = lamina.arc{center = {0.5, 0.5}, radius = 0.45, from = 200, to = 250}}
 sim:vtk{file = out, every = 0.001}
 sim:run{t_end = 0.003}

@@ -12,7 +12,7 @@
 -- The paper's left/right velocities (0.3 / 1.7) are checked, and not
 -- reached, in contact_two_bar_paper.lua.
 local function run(release)
-  local sim = lamina.sim{ domain = {0, 0, 5, 5}, cell = 0.25, dt = 7e-4 }
+  local sim = lamina.sim{ basis = "linear", domain = {0, 0, 5, 5}, cell = 0.25, dt = 7e-4 }
   local mat = lamina.elastic{ rho = 1, E = 1e5, nu = 0.3, plane = "stress" }
   local l = sim:body{ material = mat, ppc = 4, velocity = {2, 0}, name = "left",
                       region = lamina.rect{ min = {1, 0.25}, max = {2.25, 4.75} } }

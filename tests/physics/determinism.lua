@@ -8,7 +8,7 @@ local steps = lamina.param("steps", 300)
 local full = lamina.param("full", true)
 
 local function build(v)
-  local sim = lamina.sim{ domain = {0, 0, 1, 1}, cell = 0.05, dt = 1e-3 }
+  local sim = lamina.sim{ basis = "linear", domain = {0, 0, 1, 1}, cell = 0.05, dt = 1e-3 }
   local m = lamina.elastic{ rho = 1000, E = 1000, nu = 0.3 }
   sim:body{ material = m, ppc = 4, velocity = {v, v},
             region = lamina.disk{ center = {0.25, 0.25}, radius = 0.2 } }

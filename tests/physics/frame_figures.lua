@@ -7,7 +7,7 @@
 local out = lamina.param("out", "out/frame_figures")
 
 local function run(scheme)
-  local sim = lamina.sim{ domain = {0, 0, 1, 1}, cell = 0.05, dt = 1e-3, scheme = scheme,
+  local sim = lamina.sim{ basis = "linear", domain = {0, 0, 1, 1}, cell = 0.05, dt = 1e-3, scheme = scheme,
                           boundary = { left = "symmetry", bottom = "symmetry" } }
   local rubber = lamina.elastic{ rho = 1000, E = 1000, nu = 0.3 }
   sim:body{ material = rubber, ppc = 4, velocity = {-0.1, -0.1}, name = "quarter disk",

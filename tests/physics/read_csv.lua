@@ -4,7 +4,7 @@
 -- in one plot; a path outside the output root and a missing file are
 -- refused.
 local out = "out/read_csv"
-local sim = lamina.sim{dt = 1e-3, domain = {0, 0, 1, 1}, cell = 0.1}
+local sim = lamina.sim{basis = "linear", dt = 1e-3, domain = {0, 0, 1, 1}, cell = 0.1}
 local el = lamina.elastic{rho = 1000, E = 1000, nu = 0.3}
 local b = sim:body{material = el, region = lamina.disk{center = {0.5, 0.5}, radius = 0.2},
                    velocity = {0.1, 0.05}}

@@ -19,7 +19,7 @@ local tracer_dx = lamina.param("tracer_dx", 0)   -- negative control: a changed 
 local title     = lamina.param("title", "two disks meet")   -- ... a changed drawing
 
 local cell = 0.05
-local sim = lamina.sim{ domain = {0, 0, 1, 1}, cell = cell, dt = 1e-3 }
+local sim = lamina.sim{ basis = "linear", domain = {0, 0, 1, 1}, cell = cell, dt = 1e-3 }
 local rubber = lamina.elastic{ rho = 1000, E = 1000, nu = 0.3, plane = "strain" }
 sim:body{ material = rubber, ppc = 4, velocity = { 0.15,  0.15}, name = "lower",
           region = lamina.disk{ center = {0.32, 0.32}, radius = 0.15 } }
