@@ -251,7 +251,8 @@ static void fill_side(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, const side_o
     st->grid.nx = g->nx;
     st->grid.ny = g->ny;
     l->grid = o->grid ? &st->grid : NULL;
-    lr_points base = { 0 };
+    lr_points base;
+    memset(&base, 0, sizeof base);
     base.n = sim->p.n;
     base.x = sim->p.x;
     base.y = sim->p.y;
