@@ -309,6 +309,9 @@ static int l_panel(lua_State *L)
     const char *fn = "figure:panel";
     la_figure *f = check_fig(L);
     la_check_keys(L, 2, fn, keys);
+    /* read before the scene is made: an error here leaks nothing */
+    int axes_outside = la_option(L, fn, "axes", la_opt_string(L, 2, fn, "axes", "ends"),
+                                 axes_names);
     double k = la_opt_number(L, 2, fn, "index", f->cur + 1);
     if (!(k >= 1 && k <= f->cols * f->rows) || k != floor(k))
         return luaL_error(L, "%s: index must be 1..%d", fn, f->cols * f->rows);
@@ -369,8 +372,7 @@ static int l_panel(lua_State *L)
         lr_view_clip(&view, c0, c1, c2, c3);
         p->set = 1;
         p->dim = d3 ? 3 : 2;
-        p->axes_outside = la_option(L, fn, "axes", la_opt_string(L, 2, fn, "axes", "ends"),
-                                    axes_names);
+        p->axes_outside = axes_outside;
         memcpy(p->lo, lo, sizeof lo);
         memcpy(p->hi, hi, sizeof hi);
         p->captions = 0;
