@@ -5,9 +5,10 @@
 --   thrown back; with release it leaves the net as its velocity to the left
 --   is greatest and then flies at constant speed while the net rings on;
 --   with friction (lamina's addition, mu = 0.3) the net holds the ball a
---   little longer (the impact is symmetric, so no spin); the frames with
---   contact = true show the normals of both sides of the net where it
---   touches the ball ([T] Fig 101)
+--   little longer (the impact is symmetric, so no spin); each frame's
+--   close-up (right) shows the contact normals of the ball and the net at
+--   every other node where they meet ([T] Fig 101), with the node's state
+--   (grey: moved together, green: released, magenta: slid)
 -- checks: the time the ball leaves the net (paper about 2.8: when its
 --   velocity settles) and its speed afterwards (paper about -0.7, §5.9), the
 --   total energy's spread once it has left (the net keeps ringing)
@@ -60,8 +61,15 @@ local function run(law, mu, frames)
     for _, ft in ipairs{0, 1, 2, 3, 4, 5, 6} do
       if ft <= t_end then
         sim:at(ft, function(s)
-          s:frame{ file = string.format("%s/%s_t%.1f.png", out, law, ft), width = 400, height = 400,
-                   contact = true, title = string.format("%s: t = %.1f", law, ft) }
+          -- the whole box, and a close-up of where the ball meets the net
+          -- with the contact normals of every other node, 1.5 times their
+          -- usual length, so that single arrows can be judged
+          -- (docs/gallery.md, "Legibility checklist" 2)
+          s:frame{ file = string.format("%s/%s_t%.1f.png", out, law, ft), width = 820, height = 440,
+                   title = string.format("%s: t = %.1f", law, ft),
+                   panels = { { title = "the box" },
+                              { title = "contact normals, close-up", window = {6, 3, 10, 7},
+                                contact = { every = 2, scale = 1.5 } } } }
         end)
       end
     end
@@ -89,7 +97,7 @@ lamina.plot{ file = out .. "/energy.png", csv = true, title = "Fig 100: total en
              xlabel = "t", ylabel = "energy",
              series = { { x = rel.t, y = rel.e, label = "release" },
                         { x = fr.t, y = fr.e, label = "friction", dashed = true } } }
-lamina.plot{ file = out .. "/ball_spin.png", csv = true, title = "The ball's angular velocity",
+lamina.plot{ file = out .. "/ball_spin.png", csv = true, title = "The ball's angular velocity", legend = "best",
              xlabel = "t", ylabel = "omega",
              series = { { x = rel.t, y = rel.spin, label = "release" },
                         { x = fr.t, y = fr.spin, label = "friction, mu = 0.3" } } }

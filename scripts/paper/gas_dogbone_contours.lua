@@ -1,8 +1,9 @@
 -- title: Dog-bone expansion: gas pressure and membrane stress contours
 -- source: York's dissertation §6.2.4, Fig 56 (quadrant I, simulation 4)
 -- look: left, the gas pressure interpolated to the grid nodes as filled
---   bands under the membrane points; right, the membrane points coloured by
---   their tangential stress sigma_t. Early (t = 0.2) the gas is still
+--   bands under the membrane points; right, the membrane drawn as a band,
+--   each point's stretch of it coloured by its tangential stress sigma_t
+--   (the points are 2 px apart). Early (t = 0.2) the gas is still
 --   pushing the slack membrane out: the pressure is high and uneven. Once
 --   it has settled to a near circle (t = 2) the pressure is nearly uniform
 --   near 29 inside (jagged bands, as [T] says of its own: no smoothing),
@@ -46,14 +47,22 @@ local rec = sim:record{ every = 0.01, values = {
   r90 = function() return mem:radius_at(90) end } }
 
 local p_range, s_range = {0, 80}, {0, 1000}
+-- The window is what the gas and the membrane reach at both times (the
+-- domain's top and right strips stay empty), so that each colour bar
+-- stands next to its data; the membrane's stress is drawn as a band 7 px
+-- wide, each point's stretch in its colour: the points are 2 px apart
+-- here, too close for discs to show their colours (docs/gallery.md,
+-- "Legibility checklist" 3).
+local window = {0, 0, 1.55, 1.55}
 local function frame(tf, name)
-  sim:frame{ file = string.format("%s/%s.png", out, name), width = 860, height = 440,
+  sim:frame{ file = string.format("%s/%s.png", out, name), width = 800, height = 440,
              layout = {1, 2}, title = string.format("Fig 56: cell %.2f, t = %.1f", h, tf),
+             window = window,
              panels = {
                { title = "gas pressure at the nodes", contours = "pressure", particles = "membranes",
                  grid = false, range = p_range, contour_levels = 16 },
                { title = "membrane stress sigma_t", colour = "tension", colourmap = "viridis",
-                 particles = "membranes", grid = false, range = s_range } } }
+                 particles = "membranes", grid = false, range = s_range, band = 7 } } }
 end
 sim:at(math.min(0.2, t_end), function() frame(math.min(0.2, t_end), "fig56_a_early") end)
 sim:at(t_end, function() frame(t_end, "fig56_b_end") end)

@@ -3,8 +3,10 @@
 -- look: left half the membrane's normals from the isosurface construction
 --   without connectivity (lamina's centred elements), right half from
 --   connectivity; the arrows agree and point outward (the paper's flipped
---   arrows are fixed by orienting away from the centre); the gas pressure
---   histories of the two runs lie on top of each other
+--   arrows are fixed by orienting away from the centre); the gas coloured
+--   by its points' pressure (one range, 700-1300, for every frame), the
+--   membrane in its own colour; the gas pressure histories of the two runs
+--   lie on top of each other
 -- checks: the largest difference of the two pressure histories (the test
 --   asks for 5 %); the worst normal error per step against the radial
 --   direction and against each point's connectivity normal (median and
@@ -45,7 +47,12 @@ while k <= #shots and shots[k] <= t_end + 1e-12 do
   con:run{ t_end = tf }
   iso:frame{ file = string.format("%s/fig12_t%.4f.png", out, tf), width = 640, height = 360,
              mirror = "x", split = con, names = {"isosurface", "connectivity"}, normals = 4,
-             discs = "spacing", colour = "pressure", title = string.format("Fig 12: t = %.3f", tf) }
+             discs = "spacing", title = string.format("Fig 12: t = %.3f", tf),
+             -- the gas by its pressure, one range for every frame (wide enough
+             -- for t = 0.05); the membrane in its own colour, not
+             -- in the gas's range (docs/gallery.md, "Legibility checklist" 3)
+             colour = "pressure", colour_bodies = { iso_gas }, colourmap = "viridis",
+             range = {700, 1300} }
   k = k + 1
 end
 iso:run{ t_end = t_end }

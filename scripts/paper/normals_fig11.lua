@@ -68,7 +68,10 @@ for i, c in ipairs(cases) do
                                              seed = t}.normals, ex))
   end
   worst = math.max(worst, w)
-  fig:panel{index = i, box = cube, title = c.label,
+  -- axis names beside the cube's outline: at the far ends of the axes the
+  -- y name falls inside the cube, among the points (docs/gallery.md,
+  -- "Legibility checklist" 5)
+  fig:panel{index = i, box = cube, title = c.label, axes = "outside",
             caption = string.format("max error %.1e rad (paper: exact); rank %d of 27", m, r.rank)}
   c.outline(fig)
   fig:normals{result = r, points = pts, exact = ex, length = 0.22}

@@ -8,7 +8,14 @@
  * dark grey - the pair moved in the centre-of-mass field (contact, stick);
  * green - a body moved in its own field (release); magenta - a friction
  * pair slid. Only the normals the correction used are drawn, as the papers
- * show only "the pertinent normals". */
+ * show only "the pertinent normals".
+ *
+ * contact = {every = k, scale = s} (issue 16 item 3, docs/gallery.md
+ * "Legibility checklist" 2: single arrows must be judged): a node in each
+ * k x k block of nodes (the first where a pair met, row by row), its arrows
+ * s times as long, 2 px wide on a white outline, so that an arrow in one
+ * body's colour reads over the other body's discs. contact = true keeps
+ * its thin arrows, pixel for pixel. */
 #include <math.h>
 #include <string.h>
 
@@ -16,15 +23,38 @@
 #include "l_frame_panel.h"
 #include "step.h"
 
-void la_frame_contact(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, lr_layers *l)
+/* The nodes shown: 1 at a node where a pair met and which is the first
+ * such node of its every x every block. */
+static unsigned char *shown_nodes(lua_State *L, la_frame_ctx *ctx, const lm_grid *g,
+                                  const unsigned char *state, int every)
+{
+    int bx = g->nx / every + 1, by = g->ny / every + 1;
+    /* indexed like state: ghost nodes included (lm_grid_node) */
+    unsigned char *shown = la_frame_scratch(L, ctx, lm_grid_nodes(g));
+    unsigned char *taken = la_frame_scratch(L, ctx, (size_t)bx * (size_t)by);
+    for (int j = 0; j <= g->ny; j++)
+        for (int i = 0; i <= g->nx; i++) {
+            long id = lm_grid_node(g, i, j);
+            size_t b = (size_t)(j / every) * (size_t)bx + (size_t)(i / every);
+            if (state[id] == LM_CNODE_NONE || taken[b]) continue;
+            taken[b] = 1;
+            shown[id] = 1;
+        }
+    return shown;
+}
+
+void la_frame_contact(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int every,
+                      double scale, int outlined, lr_layers *l)
 {
     const lm_contact *c = sim->contact;
     if (!c || c->npairs == 0 || !c->state) return;
     const lm_grid *g = &sim->grid;
     double h = fmin(g->hx, g->hy);
     size_t nodes = (size_t)(g->nx + 1) * (size_t)(g->ny + 1);
-    /* arrows: the old sets, one per paired body, three node marks */
-    size_t nsets = l->narrows + (size_t)c->nf + 3;
+    const unsigned char *shown = shown_nodes(L, ctx, g, c->state, every);
+    /* arrows: the old sets, one per paired body (each after its white
+     * outline when outlined), three node marks */
+    size_t nsets = l->narrows + (size_t)c->nf * (outlined ? 2 : 1) + 3;
     lr_arrows *sets = la_frame_scratch(L, ctx, nsets * sizeof *sets);
     if (l->narrows) memcpy(sets, l->arrows, l->narrows * sizeof *sets);
     size_t k = l->narrows;
@@ -36,7 +66,7 @@ void la_frame_contact(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, lr_layers *l
         for (int j = 0; j <= g->ny; j++)
             for (int i = 0; i <= g->nx; i++) {
                 long id = lm_grid_node(g, i, j);
-                if (c->state[id] == LM_CNODE_NONE || cf->m[id] <= 0) continue;
+                if (!shown[id] || cf->m[id] <= 0) continue;
                 if (cf->nx[id] == 0 && cf->ny[id] == 0) continue;
                 x[n] = g->x0 + i * g->hx;
                 y[n] = g->y0 + j * g->hy;
@@ -44,8 +74,18 @@ void la_frame_contact(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, lr_layers *l
                 uy[n] = cf->ny[id];
                 n++;
             }
-        sets[k] = (lr_arrows){ .n = n, .x = x, .y = y, .ux = ux, .uy = uy, .length = 0.6 * h,
-                               .width = 1.5, .head = 6.0, .colour = lr_palette(cf->body) };
+        sets[k] = (lr_arrows){ .n = n, .x = x, .y = y, .ux = ux, .uy = uy,
+                               .length = 0.6 * h * scale, .width = 1.5, .head = 6.0,
+                               .colour = lr_palette(cf->body) };
+        if (outlined) {
+            sets[k + 1] = sets[k];
+            sets[k + 1].width = 2.0;
+            sets[k + 1].head = 8.0;
+            sets[k].width = 5.0;
+            sets[k].head = 11.0;
+            sets[k].colour = (lr_rgba){ 1, 1, 1, 0.9 };
+            k++;
+        }
     }
     static const lr_rgba mark[3] = { {0.25, 0.25, 0.25, 1}, {0.0, 0.6, 0.3, 1},
                                      {0.85, 0.1, 0.75, 1} };
@@ -55,7 +95,8 @@ void la_frame_contact(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, lr_layers *l
         size_t n = 0;
         for (int j = 0; j <= g->ny; j++)
             for (int i = 0; i <= g->nx; i++) {
-                if (c->state[lm_grid_node(g, i, j)] != s + 1) continue;
+                long id = lm_grid_node(g, i, j);
+                if (!shown[id] || c->state[id] != s + 1) continue;
                 /* a short thick bar centred on the node: a square mark */
                 x[n] = g->x0 + i * g->hx - 0.08 * h;
                 y[n] = g->y0 + j * g->hy;

@@ -110,7 +110,7 @@ static double *body_radii(lua_State *L, la_frame_ctx *ctx, const lm_sim *sim)
 
 typedef struct side_store {
     lr_grid grid;
-    lr_points points;
+    lr_points points[2];
     lr_arrows arrows;
     lr_field field;
 } side_store;
@@ -218,15 +218,26 @@ static void pressure_contours(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int 
     fd->colours = colours;
 }
 
-/* which: 0 every particle, 1 membranes only, 2 none */
-static void fill_side(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int grid,
-                      field f, int with_normals, int contour_levels, int which,
-                      int with_phi, int with_contact, int own_discs, lr_panel *p,
-                      lr_layers *l)
+/* What a panel asks of each side beyond its colour. */
+typedef struct side_opts {
+    int grid;
+    field f;
+    int normals;                /* 0, or every k-th point's */
+    int contour_levels;         /* 0: no pressure contours */
+    int phi;
+    int contact_every;          /* 0: no contact arrows */
+    double contact_scale;
+    int contact_outlined;       /* the table form */
+    int own_discs;
+    la_frame_points_opts pts;   /* which bodies, coloured how, band */
+} side_opts;
+
+static void fill_side(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, const side_opts *o,
+                      lr_panel *p, lr_layers *l)
 {
     side_store *st = la_frame_scratch(L, ctx, sizeof *st);
-    if (contour_levels > 0) {
-        pressure_contours(L, ctx, sim, contour_levels, &st->field, p, f == F_BODY);
+    if (o->contour_levels > 0) {
+        pressure_contours(L, ctx, sim, o->contour_levels, &st->field, p, o->f == F_BODY);
         if (st->field.f) {
             l->fields = &st->field;
             l->nfields = 1;
@@ -239,62 +250,39 @@ static void fill_side(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int grid,
     st->grid.hy = g->hy;
     st->grid.nx = g->nx;
     st->grid.ny = g->ny;
-    l->grid = grid ? &st->grid : NULL;
-    lr_points *pts = &st->points;
-    pts->n = sim->p.n;
-    pts->x = sim->p.x;
-    pts->y = sim->p.y;
-    pts->group = sim->p.body;
-    pts->radius = particle_radius(sim);
-    pts->group_radius = own_discs ? body_radii(L, ctx, sim) : NULL;
-    pts->ngroups = own_discs ? sim->nbodies : 0;
-    if (f == F_TENSION && !sim->prepared && lm_sim_prepare(sim) != LM_OK)
+    l->grid = o->grid ? &st->grid : NULL;
+    lr_points base;
+    memset(&base, 0, sizeof base);
+    base.n = sim->p.n;
+    base.x = sim->p.x;
+    base.y = sim->p.y;
+    base.group = sim->p.body;
+    base.radius = particle_radius(sim);
+    base.group_radius = o->own_discs ? body_radii(L, ctx, sim) : NULL;
+    base.ngroups = o->own_discs ? sim->nbodies : 0;
+    if (o->f == F_TENSION && !sim->prepared && lm_sim_prepare(sim) != LM_OK)
         luaL_error(L, "sim:frame: %s", sim->err);   /* tangents before the first step */
-    if (f != F_BODY) {
-        double *v = la_frame_scratch(L, ctx, (sim->p.n ? sim->p.n : 1) * sizeof *v);
+    double *v = NULL;
+    if (o->f != F_BODY) {
+        v = la_frame_scratch(L, ctx, (sim->p.n ? sim->p.n : 1) * sizeof *v);
         for (size_t i = 0; i < sim->p.n; i++)
-            v[i] = field_value(&sim->p, i, f);
-        pts->value = v;
+            v[i] = field_value(&sim->p, i, o->f);
     }
-    if (which == 1) {
-        /* membranes only (over pressure contours, say): a compacted copy */
-        size_t n = 0;
-        for (int b = 0; b < sim->nbodies; b++)
-            if (sim->bodies[b].membrane) n += sim->bodies[b].count;
-        double *x = la_frame_scratch(L, ctx, (n ? n : 1) * sizeof *x);
-        double *y = la_frame_scratch(L, ctx, (n ? n : 1) * sizeof *y);
-        int *grp = la_frame_scratch(L, ctx, (n ? n : 1) * sizeof *grp);
-        double *v = pts->value ? la_frame_scratch(L, ctx, (n ? n : 1) * sizeof *v) : NULL;
-        size_t k = 0;
-        for (int b = 0; b < sim->nbodies; b++) {
-            const lm_body *bd = &sim->bodies[b];
-            if (!bd->membrane) continue;
-            for (size_t q = bd->first; q < bd->first + bd->count; q++, k++) {
-                x[k] = sim->p.x[q];
-                y[k] = sim->p.y[q];
-                grp[k] = b;
-                if (v) v[k] = pts->value[q];
-            }
-        }
-        pts->n = n;
-        pts->x = x;
-        pts->y = y;
-        pts->group = grp;
-        pts->value = v;
-    }
-    l->points = pts;
-    l->npoints = which == 2 ? 0 : 1;
-    if (with_normals) {
-        normals(L, ctx, sim, with_normals, &st->arrows);
+    l->points = st->points;
+    l->npoints = la_frame_points(L, ctx, sim, v, &o->pts, &base, st->points);
+    if (o->normals) {
+        normals(L, ctx, sim, o->normals, &st->arrows);
         l->arrows = &st->arrows;
         l->narrows = 1;
     }
-    if (with_phi) {
+    if (o->phi) {
         lr_curve *cv;
         l->ncurves = la_frame_phi(L, ctx, sim, &cv);
         l->curves = cv;
     }
-    if (with_contact) la_frame_contact(L, ctx, sim, l);
+    if (o->contact_every)
+        la_frame_contact(L, ctx, sim, o->contact_every, o->contact_scale, o->contact_outlined,
+                         l);
 }
 
 /* ---- the keys ----------------------------------------------------------- */
@@ -481,6 +469,88 @@ static lm_sim *split(lua_State *L, const la_frame_ctx *ctx, int fidx, int pidx,
     return other;
 }
 
+/* contact = true | false | {every = k, scale = s} */
+static void contact_opt(lua_State *L, const la_frame_ctx *ctx, int fidx, int pidx,
+                        side_opts *o)
+{
+    int t = get(L, fidx, pidx, "contact");
+    o->contact_every = 0;
+    o->contact_scale = 1.0;
+    if (t == LUA_TBOOLEAN) {
+        o->contact_every = lua_toboolean(L, -1);
+    } else if (t == LUA_TTABLE) {
+        int idx = lua_gettop(L);
+        static const char *const keys[] = { "every", "scale", NULL };
+        o->contact_outlined = 1;
+        la_check_keys(L, idx, "sim:frame: contact", keys);
+        double k = la_opt_number(L, idx, "sim:frame: contact", "every", 1);
+        if (!(k >= 1 && k <= 1e6) || k != floor(k))
+            luaL_error(L, "%s: contact's 'every' must be a whole number k >= 1 (a node "
+                          "of each k x k block of nodes)", ctx->fn);
+        o->contact_every = (int)k;
+        o->contact_scale = la_opt_number(L, idx, "sim:frame: contact", "scale", 1);
+        if (!(o->contact_scale > 0 && o->contact_scale <= 100))
+            luaL_error(L, "%s: contact's 'scale' must be a number in (0, 100]", ctx->fn);
+    } else if (t != LUA_TNIL) {
+        luaL_error(L, "%s: 'contact' must be true, false or {every = k, scale = s} (got %s)",
+                   ctx->fn, luaL_typename(L, -1));
+    }
+    lua_pop(L, 1);
+}
+
+/* band = w: membranes drawn as bands w pixels wide, in (0, 64] */
+static double band_opt(lua_State *L, const la_frame_ctx *ctx, int fidx, int pidx)
+{
+    double w = 0;
+    if (get(L, fidx, pidx, "band") != LUA_TNIL) {
+        int isnum;
+        w = lua_tonumberx(L, -1, &isnum);
+        if (!isnum || !(w > 0 && w <= 64))
+            luaL_error(L, "%s: 'band' must be a width in pixels in (0, 64]", ctx->fn);
+    }
+    lua_pop(L, 1);
+    return w;
+}
+
+/* colour_bodies = {body, ...}: the bodies coloured by the field, by index
+ * (bodies of the panel's simulation or of its split one: a split panel's
+ * two runs are built alike). NULL when absent. */
+static unsigned char *colour_bodies(lua_State *L, la_frame_ctx *ctx, int fidx, int pidx,
+                                    const lm_sim *sim, const lm_sim *other, field f,
+                                    int *nvalued)
+{
+    unsigned char *valued = NULL;
+    *nvalued = 0;
+    if (get(L, fidx, pidx, "colour_bodies") != LUA_TNIL) {
+        int idx = lua_gettop(L);
+        size_t n = lua_istable(L, idx) ? lua_rawlen(L, idx) : 0;
+        if (n == 0)
+            luaL_error(L, "%s: 'colour_bodies' must be a list of bodies", ctx->fn);
+        if (f == F_BODY)
+            luaL_error(L, "%s: 'colour_bodies' needs colour = a field (e.g. \"pressure\")",
+                       ctx->fn);
+        int nb = sim->nbodies;
+        if (other && other->nbodies > nb) nb = other->nbodies;
+        valued = la_frame_scratch(L, ctx, (size_t)(nb ? nb : 1));
+        for (size_t i = 0; i < n; i++) {
+            lua_rawgeti(L, idx, (lua_Integer)i + 1);
+            if (!luaL_testudata(L, -1, LA_BODY))
+                luaL_error(L, "%s: colour_bodies[%d] must be a body (got %s)", ctx->fn,
+                           (int)i + 1, luaL_typename(L, -1));
+            lm_sim *owner;
+            int b = la_check_body(L, -1, &owner);
+            if (owner != sim && owner != other)
+                luaL_error(L, "%s: colour_bodies[%d] is a body of a simulation this panel "
+                              "does not show", ctx->fn, (int)i + 1);
+            valued[b] = 1;
+            lua_pop(L, 1);
+        }
+        *nvalued = nb;
+    }
+    lua_pop(L, 1);
+    return valued;
+}
+
 void la_frame_panel(lua_State *L, la_frame_ctx *ctx, int fidx, int pidx, int sidx,
                     lr_panel *p)
 {
@@ -526,9 +596,13 @@ void la_frame_panel(lua_State *L, la_frame_ctx *ctx, int fidx, int pidx, int sid
     if (discs && strcmp(discs, "smallest") != 0 && strcmp(discs, "spacing") != 0)
         luaL_error(L, "%s: discs = \"%s\" is not one of \"smallest\" | \"spacing\"",
                    ctx->fn, discs);
-    int own_discs = discs && strcmp(discs, "spacing") == 0;
-    int with_phi = boolean(L, ctx, fidx, pidx, "phi", 0);
-    int with_contact = boolean(L, ctx, fidx, pidx, "contact", 0);
+    side_opts o;
+    memset(&o, 0, sizeof o);
+    o.own_discs = discs && strcmp(discs, "spacing") == 0;
+    o.phi = boolean(L, ctx, fidx, pidx, "phi", 0);
+    contact_opt(L, ctx, fidx, pidx, &o);
+    o.pts.band = band_opt(L, ctx, fidx, pidx);
+    o.pts.valued = colour_bodies(L, ctx, fidx, pidx, sim, other, f, &o.pts.nvalued);
     p->split_x = 0.5 * (p->wx0 + p->wx1);
     if (get(L, fidx, pidx, "split_at") != LUA_TNIL) {
         int isnum;
@@ -559,9 +633,12 @@ void la_frame_panel(lua_State *L, la_frame_ctx *ctx, int fidx, int pidx, int sid
     else if (pt != LUA_TNIL)
         luaL_error(L, "%s: 'particles' must be true, false or \"membranes\"", ctx->fn);
     lua_pop(L, 1);
-    fill_side(L, ctx, sim, grid, f, with_normals, nlevels, which, with_phi, with_contact,
-              own_discs, p, &p->side[0]);
+    o.grid = grid;
+    o.f = f;
+    o.normals = with_normals;
+    o.contour_levels = nlevels;
+    o.pts.which = which;
+    fill_side(L, ctx, sim, &o, p, &p->side[0]);
     if (other)
-        fill_side(L, ctx, other, grid, f, with_normals, nlevels, which, with_phi, with_contact,
-                  own_discs, p, &p->side[1]);
+        fill_side(L, ctx, other, &o, p, &p->side[1]);
 }

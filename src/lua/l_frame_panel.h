@@ -10,7 +10,8 @@
  * panel, or as defaults for every table in `panels`). */
 #define LA_PANEL_KEYS "window", "grid", "colour", "range", "colourmap", \
     "colourbar", "scalebar", "units", "mirror", "split", "split_at", "names", \
-    "normals", "contours", "contour_levels", "particles", "phi", "contact", "discs"
+    "normals", "contours", "contour_levels", "particles", "phi", "contact", "discs", \
+    "band", "colour_bodies"
 
 typedef struct la_frame_ctx {
     const char *fn;     /* "sim:frame", for messages */
@@ -29,11 +30,33 @@ void *la_frame_scratch(lua_State *L, la_frame_ctx *ctx, size_t n);
  * per level, in scratch memory; returns their count. */
 size_t la_frame_phi(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, lr_curve **out);
 
+/* l_frame_points.c: a side's particles as point layers. */
+typedef struct la_frame_points_opts {
+    int which;                  /* 0 every body, 1 membranes only, 2 none */
+    const unsigned char *valued;/* non-NULL: valued[b] for bodies b < nvalued
+                                   coloured by the field, the others (and
+                                   bodies beyond) in their body colour */
+    int nvalued;
+    double band;                /* pixels; > 0: membranes joined by a band */
+} la_frame_points_opts;
+
+/* Fills out[] from base (positions, groups and radii of every particle)
+ * and value (the field per particle, or NULL); returns the layer count:
+ * 0 (which = 2), 1, or 2 with valued (the field's bodies, then the
+ * others over them). */
+size_t la_frame_points(lua_State *L, la_frame_ctx *ctx, const lm_sim *sim,
+                       const double *value, const la_frame_points_opts *o,
+                       const lr_points *base, lr_points out[2]);
+
 void la_frame_panel(lua_State *L, la_frame_ctx *ctx, int fidx, int pidx, int sidx,
                     lr_panel *p);
 
 /* l_frame_contact.c: contact = true, the grid normals and node states of
- * the last step's contact correction appended to the side's arrows. */
-void la_frame_contact(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, lr_layers *l);
+ * the last step's contact correction appended to the side's arrows; at one
+ * node of each every x every block of nodes, the arrows scale times their
+ * usual length, outlined in white when outlined (contact = {every = ,
+ * scale = }; 1, 1 and not outlined for true). */
+void la_frame_contact(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int every,
+                      double scale, int outlined, lr_layers *l);
 
 #endif

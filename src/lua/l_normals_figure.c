@@ -43,6 +43,8 @@ typedef struct la_panel {
     int dim;
     int captions;               /* caption lines drawn so far */
     size_t scene;               /* 3D: its view in la_figure.views, + 1 */
+    int axes_outside;           /* 3D: axis names beside the box's outline
+                                   (axes = "outside"), not at the far ends */
 } la_panel;
 
 /* A 3D panel's view and what was drawn into it, drawn at fig:write. A
@@ -297,15 +299,19 @@ static double caption_y(const la_panel *p, int k)
     return p->py + p->ph - 2.0 * BAND * p->font + (k + 1) * 1.3 * p->font;
 }
 
-/* fig:panel{index =, window = | box =, azimuth =, elevation =, title =,
- * caption =}: selects a panel and sets its view. */
+/* fig:panel{index =, window = | box =, azimuth =, elevation =, axes =,
+ * title =, caption =}: selects a panel and sets its view. */
 static int l_panel(lua_State *L)
 {
     static const char *const keys[] = {"index", "window", "box", "azimuth",
-                                       "elevation", "title", "caption", NULL};
+                                       "elevation", "axes", "title", "caption", NULL};
+    static const char *const axes_names[] = {"ends", "outside", NULL};
     const char *fn = "figure:panel";
     la_figure *f = check_fig(L);
     la_check_keys(L, 2, fn, keys);
+    /* read before the scene is made: an error here leaks nothing */
+    int axes_outside = la_option(L, fn, "axes", la_opt_string(L, 2, fn, "axes", "ends"),
+                                 axes_names);
     double k = la_opt_number(L, 2, fn, "index", f->cur + 1);
     if (!(k >= 1 && k <= f->cols * f->rows) || k != floor(k))
         return luaL_error(L, "%s: index must be 1..%d", fn, f->cols * f->rows);
@@ -366,6 +372,7 @@ static int l_panel(lua_State *L)
         lr_view_clip(&view, c0, c1, c2, c3);
         p->set = 1;
         p->dim = d3 ? 3 : 2;
+        p->axes_outside = axes_outside;
         memcpy(p->lo, lo, sizeof lo);
         memcpy(p->hi, hi, sizeof hi);
         p->captions = 0;
@@ -418,10 +425,18 @@ static void draw_box(lua_State *L, la_figure *f, const la_panel *p,
     lr_scene3d *s = scene(f, p);
     added(L, lr_scene3d_box(s, lo, hi, width, colour), "figure");
     static const char *const names[] = {"x", "y", "z"};
+    double at[3][3], out[3][2];
+    if (p->axes_outside)
+        lr_view_axis_places(&p->view, lo, hi, at, out);
     for (int a = 0; a < 3; a++) {
-        double q[3] = {lo[0], lo[1], lo[2]};
+        double q[3] = {lo[0], lo[1], lo[2]}, dx = 0.0, dy = 0.0;
         q[a] = hi[a] + 0.1 * (hi[a] - lo[a]);
-        added(L, lr_scene3d_text(s, q, 0.0, 0.35 * p->font, p->font, TEXT,
+        if (p->axes_outside) {      /* a font size off the outline's edge */
+            memcpy(q, at[a], sizeof q);
+            dx = p->font * out[a][0];
+            dy = p->font * out[a][1];
+        }
+        added(L, lr_scene3d_text(s, q, dx, dy + 0.35 * p->font, p->font, TEXT,
                                  LR_ALIGN_CENTER, names[a]), "figure");
     }
 }

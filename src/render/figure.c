@@ -42,6 +42,8 @@ static const char *layers_problem(const lr_layers *l)
             return "particle positions missing";
         if (!isfinite(p->radius) || p->radius < 0)
             return "particle radius must be finite and not negative";
+        if (!(p->band >= 0) || !isfinite(p->band))
+            return "a band's width must be finite and not negative";
     }
     for (size_t i = 0; i < l->ncurves; i++)
         if (l->curves[i].n > 0 && (!l->curves[i].x || !l->curves[i].y))

@@ -126,3 +126,45 @@ void lr_view_offset(lr_view *v, double dx, double dy)
         v->clip[3] += dy;
     }
 }
+
+/* Axis names off the data (issue 16 item 3; docs/gallery.md, "Legibility
+ * checklist" 5): an edge of the box lies on the outline of its projection
+ * when exactly one of the two faces meeting there faces the viewer. Of an
+ * axis's four edges such an outline edge is taken - the lower one on the
+ * screen for x and y, the left one for z, as plots put their axis names -
+ * and the name goes beside its middle, away from the box's centre. */
+void lr_view_axis_places(const lr_view *v, const double lo[3], const double hi[3],
+                         double at[3][3], double out[3][2])
+{
+    double mid[3] = { 0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), 0.5 * (lo[2] + hi[2]) };
+    double cx, cy;
+    lr_view_map(v, mid, &cx, &cy);
+    for (int a = 0; a < 3; a++) {
+        int b = (a + 1) % 3, c = (a + 2) % 3;
+        double best = -INFINITY;
+        for (int k = 0; k < 4; k++) {
+            int sb = k & 1, sc = k >> 1;        /* 0: the lo side, 1: the hi side */
+            /* a face's outward normal is -e or +e: visible when it points
+             * towards the viewer */
+            int vis_b = (sb ? v->toward[b] : -v->toward[b]) > 1e-9;
+            int vis_c = (sc ? v->toward[c] : -v->toward[c]) > 1e-9;
+            double q[3];
+            q[a] = mid[a];
+            q[b] = sb ? hi[b] : lo[b];
+            q[c] = sc ? hi[c] : lo[c];
+            double x, y;
+            lr_view_map(v, q, &x, &y);
+            /* outline edges first; then lowest (x, y) or leftmost (z) */
+            double score = (vis_b != vis_c ? 1e9 : 0.0) + (a < 2 ? y : -x);
+            if (score > best) {
+                best = score;
+                at[a][0] = q[0];
+                at[a][1] = q[1];
+                at[a][2] = q[2];
+                double dx = x - cx, dy = y - cy, len = hypot(dx, dy);
+                out[a][0] = len > 1e-9 ? dx / len : (a < 2 ? 0.0 : -1.0);
+                out[a][1] = len > 1e-9 ? dy / len : (a < 2 ? 1.0 : 0.0);
+            }
+        }
+    }
+}

@@ -86,7 +86,7 @@ static void make_scene(scene *s)
         s->group[i] = g;
     }
     s->grid = (lr_grid){ 0.0, 0.0, 1.0 / 32, 1.0 / 24, 32, 24 };
-    s->pts = (lr_points){ NP, s->x, s->y, s->group, NULL, 0.0045, NULL, 0 };
+    s->pts = (lr_points){ NP, s->x, s->y, s->group, NULL, 0.0045, NULL, 0, 0, NULL };
     for (int i = 0; i < 64; i++) {      /* normals round a circle */
         double a = 6.283185307179586 * i / 64;
         s->ax[i] = 0.5 + 0.3 * cos(a);

@@ -81,7 +81,7 @@ static void test_frame_is_figure(void)
     f.title = "title";
     char err[512] = "";
     CHECK(lr_frame_write(&f, path("frame.png"), err, sizeof err) == 0);
-    lr_points pts = { 3, x, y, g, NULL, 0.08, NULL, 0 };
+    lr_points pts = { 3, x, y, g, NULL, 0.08, NULL, 0, 0, NULL };
     lr_panel p;
     memset(&p, 0, sizeof p);
     p.wx1 = 2;
@@ -110,7 +110,7 @@ static void test_mirror(lr_backend be)
 {
     static const double x[] = { 0.25 }, y[] = { 0.25 };
     static const int g[] = { 1 };
-    lr_points pts = { 1, x, y, g, NULL, 0.05, NULL, 0 };
+    lr_points pts = { 1, x, y, g, NULL, 0.05, NULL, 0, 0, NULL };
     lr_grid grid = { 0, 0, 0.25, 0.25, 4, 4 };
     lr_panel p;
     memset(&p, 0, sizeof p);
@@ -152,7 +152,7 @@ static void test_group_radius(lr_backend be)
     static const double x[] = { 0.25, 0.75, 0.5 }, y[] = { 0.5, 0.5, 0.2 };
     static const int g[] = { 1, 2, 3 };
     static const double gr[] = { 0.05, 0.02, 0.1 };
-    lr_points pts = { 3, x, y, g, NULL, 0.05, gr, 3 };
+    lr_points pts = { 3, x, y, g, NULL, 0.05, gr, 3, 0, NULL };
     lr_panel p;
     memset(&p, 0, sizeof p);
     p.wx1 = p.wy1 = 1;
@@ -172,13 +172,59 @@ static void test_group_radius(lr_backend be)
     free(img);
 }
 
+/* A band (lr_points.band, sim:frame's band = w): two points joined, each
+ * half of the band in its own point's colour, by group and by value;
+ * without the band only the small discs are there, and a point whose
+ * next is -1 starts none. */
+static long band_pixels(lr_backend be, double band, const double *v, lr_rgba left,
+                        lr_rgba right, long *nright)
+{
+    static const double x[] = { 0.2, 0.8, 0.5 }, y[] = { 0.5, 0.5, 0.2 };
+    static const int g[] = { 1, 2, 3 };
+    static const long next[] = { 1, -1, -1 };
+    lr_points pts = { 3, x, y, g, v, 0.02, NULL, 0, band, next };
+    lr_panel p;
+    memset(&p, 0, sizeof p);
+    p.wx1 = p.wy1 = 1;
+    p.vmin = 0;
+    p.vmax = 1;
+    p.side[0].points = &pts;
+    p.side[0].npoints = 1;
+    lr_figure fig = { 200, 200, be, &p, 1, 0, 0, NULL, NULL, NULL, 0 };
+    char err[512] = "";
+    unsigned char *img = lr_figure_render(&fig, err, sizeof err);
+    CHECK(img != NULL);
+    if (!img)
+        return -1;
+    long n = count(img, 200, 0, 0, 100, 200, left);
+    *nright = count(img, 200, 100, 0, 200, 200, right);
+    /* the third point's disc only: nothing between it and the others */
+    CHECK(count(img, 200, 0, 0, 200, 200, lr_palette(3)) < 80);
+    free(img);
+    return n;
+}
+
+static void test_band(lr_backend be)
+{
+    long r0, r1;
+    long l0 = band_pixels(be, 0, NULL, lr_palette(1), lr_palette(2), &r0);
+    long l1 = band_pixels(be, 8, NULL, lr_palette(1), lr_palette(2), &r1);
+    /* discs of radius ~4 px (~50 px each) against half bands ~55 x 8 px */
+    CHECK(l0 > 10 && l0 < 80 && r0 > 10 && r0 < 80);
+    CHECK(l1 > 5 * l0 && r1 > 5 * r0);
+    static const double v[] = { 0.0, 1.0, 0.5 };
+    lr_rgba lo = lr_cmap_colour(LR_CMAP_VIRIDIS, 0), hi = lr_cmap_colour(LR_CMAP_VIRIDIS, 1);
+    long lv = band_pixels(be, 8, v, lo, hi, &r1);
+    CHECK(lv > 5 * l0 && r1 > 5 * r0);
+}
+
 /* Two "runs" split at x = 0.5: the left shows only the first's particles,
  * the right only the second's, each side named. */
 static void test_split(lr_backend be)
 {
     static const double xa[] = { 0.25, 0.75 }, ya[] = { 0.5, 0.5 };
     static const int ga[] = { 0, 0 }, gb[] = { 1, 1 };
-    lr_points a = { 2, xa, ya, ga, NULL, 0.06, NULL, 0 }, b = { 2, xa, ya, gb, NULL, 0.06, NULL, 0 };
+    lr_points a = { 2, xa, ya, ga, NULL, 0.06, NULL, 0, 0, NULL }, b = { 2, xa, ya, gb, NULL, 0.06, NULL, 0, 0, NULL };
     lr_panel p;
     memset(&p, 0, sizeof p);
     p.wx1 = p.wy1 = 1;
@@ -210,7 +256,7 @@ static void test_panels_bars(lr_backend be)
 {
     static const double x[] = { 0.2, 0.5, 0.8 }, y[] = { 0.5, 0.5, 0.5 };
     static const double v[] = { 0.0, 5.0, 10.0 };
-    lr_points pts = { 3, x, y, NULL, v, 0.08, NULL, 0 };
+    lr_points pts = { 3, x, y, NULL, v, 0.08, NULL, 0, 0, NULL };
     lr_panel p[2];
     memset(p, 0, sizeof p);
     for (int k = 0; k < 2; k++) {
@@ -281,7 +327,7 @@ static void test_colormap(void)
 static void test_vector_and_errors(void)
 {
     static const double x[] = { 0.5 }, y[] = { 0.5 };
-    lr_points pts = { 1, x, y, NULL, NULL, 0.1, NULL, 0 };
+    lr_points pts = { 1, x, y, NULL, NULL, 0.1, NULL, 0, 0, NULL };
     lr_panel p;
     memset(&p, 0, sizeof p);
     p.wx1 = p.wy1 = 1;
@@ -386,6 +432,7 @@ int main(void)
     for (int i = 0; i < nb; i++) {
         test_mirror(be[i]);
         test_group_radius(be[i]);
+        test_band(be[i]);
         test_split(be[i]);
         test_panels_bars(be[i]);
         test_filled_contour(be[i]);

@@ -5,6 +5,7 @@
  * same scene gives the same bytes - and both backends put every mark on
  * the pixels of the same camera. Also the compositing of a drawn view
  * over an image (lr_rgba_over). */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -295,8 +296,31 @@ static void test_over(void)
     CHECK(dst[12] == 0);
 }
 
+/* Axis names off the box (lr_view_axis_places, lamina.figure's axes =
+ * "outside"): seen from azimuth -60, elevation 25 the outline edges are
+ * x's front bottom edge (y = 0, z = 0), y's right bottom one (x = 1,
+ * z = 0) and z's left one (x = 0, y = 0); each name moves away from the
+ * cube's centre along a unit direction. */
+static void test_axis_places(void)
+{
+    lr_view v = cube_view();
+    const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
+    double at[3][3], out[3][2];
+    lr_view_axis_places(&v, lo, hi, at, out);
+    const double want[3][3] = { {0.5, 0, 0}, {1, 0.5, 0}, {0, 0, 0.5} };
+    for (int a = 0; a < 3; a++)
+        for (int k = 0; k < 3; k++)
+            CHECK(at[a][k] == want[a][k]);
+    CHECK(out[0][1] > 0.5);                 /* x: down */
+    CHECK(out[1][0] > 0.3 && out[1][1] > 0.3);   /* y: down and right */
+    CHECK(out[2][0] < -0.9);                /* z: left */
+    for (int a = 0; a < 3; a++)
+        CHECK(fabs(hypot(out[a][0], out[a][1]) - 1) < 1e-12);
+}
+
 int main(void)
 {
+    test_axis_places();
     test_scene_basics();
     test_painter_is_layers();
     test_over();

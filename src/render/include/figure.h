@@ -43,6 +43,12 @@ typedef struct lr_points {      /* particles as discs */
     const double *group_radius; /* non-NULL: the radius of group g, for the
                                    points whose group is below ngroups */
     int ngroups;
+    double band;                /* pixels; > 0 (with next): a band this wide
+                                   over the discs from each point i to point
+                                   next[i], each half in its own point's
+                                   colour (a membrane's colour read along it) */
+    const long *next;           /* next[i] >= 0: the point i is joined to;
+                                   < 0: none */
 } lr_points;
 
 typedef struct lr_curve {       /* a polyline through world points */

@@ -40,6 +40,13 @@ void lr_view_3d(lr_view *v, double px, double py, double pw, double ph,
                 double elevation);
 /* Pixel position of world point p (p[2] ignored in 2D). */
 void lr_view_map(const lr_view *v, const double p[3], double *x, double *y);
+/* Where a 3D view's axis names go off the box (lamina.figure's panel
+ * axes = "outside"): for axis a, at[a] is the middle of an edge along a
+ * on the outline of the projected box (the lower one for x and y, the
+ * left one for z) and out[a] the unit pixel direction from the box's
+ * centre to it, to move the name along. */
+void lr_view_axis_places(const lr_view *v, const double lo[3], const double hi[3],
+                         double at[3][3], double out[3][2]);
 /* Layers draw inside this pixel rectangle only (a panel of a figure). */
 void lr_view_clip(lr_view *v, double x0, double y0, double x1, double y1);
 /* Moves the view (and its clip rectangle) by dx, dy pixels: the same
