@@ -1,4 +1,4 @@
--- title: Dog-bone membrane expansion: a slack membrane pushed out to a circle by gas
+-- title: Dog-bone expansion, variant: lamina's earlier superellipse construction
 -- source: York, Sulsky & Schreyer 2000 (fluid-membrane), §4.3, Figs 10-13,
 --   Tables II-IV; York's dissertation §6.2, Fig 47, Tables 4-6
 -- look: the gas (blue) pushes the wrinkled dog-bone membrane (vermilion)
@@ -7,9 +7,10 @@
 -- checks: final radius and pressure beside [F] Table III and [T] Table 5;
 --   hoop stress against p r / t ([F] Table IV); radius at 0 vs 90 degrees;
 --   gas outside the membrane; energy change
--- assumed: the texts give the shape only as labels (x = 0.5, y = 1,
---   Pi = 100); [T]'s input deck (App. A.4.7, Box 9) has a gas region of
---   area 0.475, found late and not used yet: see assets/lua/dogbone.lua. A superellipse lobe of
+-- assumed: a variant kept beside the reference page gas_dogbone, which runs
+--   [T]'s own input deck (App. A.4.7, Box 9; assets/lua/dogbone_box9.lua).
+--   This one is the shape lamina built before that deck was read, from the
+--   figures' labels only (x = 0.5, y = 1, Pi = 100): a superellipse lobe of
 --   half-width 0.5 and top y = 1 with a neck of half-width 0.35 at y = 0;
 --   quarter gas area 0.447; the membrane slack, carrying 2.2 of material
 --   (the quarter circle of radius 1.40) pressed into the 1.390 boundary
@@ -45,7 +46,7 @@
 -- heavy: four meshes to t = 4, the finest cell 0.05 with gas splitting: about 11 min here (two threads)
 -- visual: finest=0.4 t_end=0.5 threads=1
 -- thumb: cell0.100_t4.0.png
-local out = lamina.param("out", "out/gas_dogbone")
+local out = lamina.param("out", "out/gas_dogbone_superellipse")
 local finest = lamina.param("finest", 0.05)
 local t_end = lamina.param("t_end", 4)
 local threads = lamina.param("threads", 2)   -- fixed here, so the state does not depend on the machine
@@ -73,6 +74,7 @@ for _, h in ipairs{0.4, 0.2, 0.1, 0.05} do
   for _, tf in ipairs{0, 0.1, 0.2, 0.4, 1, t_end} do
     sim:at(tf, function(s)
       s:frame{ file = string.format("%s/cell%.3f_t%.1f.png", out, h, tf), width = 480, height = 480,
+               discs = "spacing",   -- the membrane as points (docs/gallery.md checklist)
                title = string.format("cell %.3f, t = %.1f", h, tf) }
     end)
   end
