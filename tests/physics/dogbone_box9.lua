@@ -64,3 +64,20 @@ for _, h in ipairs{0.4, 0.2, 0.1, 0.05} do
     assert(math.abs(b.radius(mem, 90) - 1) < 2e-3, "radius at 90 degrees is not Fig 47's y = 1")
   end
 end
+
+-- A short run (cell 0.4 to t = 2, about a second): the deck's membrane holds
+-- its gas (no point outside the membrane closed along the axes) and, as
+-- [T] Table 5's simulation 1 (1.08 / 1.13) and [F] §4.3.1 ("the radii
+-- differ"), stays non-circular at this cell: r(90) - r(0) above Table 5's
+-- 1.13 - 1.08 = 0.05; measured r(0) 1.0024, r(90) 1.1408 at t = 2 (the
+-- gallery's run: 1.056 / 1.114 over [7.5, 8.5]).
+do
+  local sim, gas, mem = b.setup(0.4)
+  local out = 0
+  sim:every(0.05, function() out = math.max(out, mem:escaped(gas, {-1, -1})) end)
+  sim:run{ t_end = 2 }
+  local r0, r90 = b.radius(mem, 0), b.radius(mem, 90)
+  print(string.format("cell 0.4 to t = 2: r(0) %.4f, r(90) %.4f, gas outside %d", r0, r90, out))
+  assert(out == 0, "gas left the membrane")
+  assert(r90 - r0 > 0.05, "cell 0.4 is circular, unlike [T] Table 5's simulation 1")
+end
