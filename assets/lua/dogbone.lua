@@ -19,12 +19,12 @@
 --     2.2 / (pi/2) = 1.40; energy conservation then gives
 --     p = 0.447 * 250 * 0.4 / (pi/4 1.40^2) = 29.0, beside [T] Table 5's
 --     1.394-1.396 and 29.0.
--- Found later, not used yet: [T] Appendix A.4.7 (Box 9, the input deck of
--- simulation 4) gives the gas region as two polygons, (0, 0) (0.426, 0)
--- (0.426, 0.9) (0, 0.95) and (0.426, 0.65) (0.9, 0.65) (0.9, 0.74)
--- (0.426, 0.9): area 0.475, which with the membrane's 0.11 is [T] Table 5's
--- total mass 0.584; that deck also has mu = 0.1 and dt = 0.35e-4. Moving to
--- it changes every dog-bone number, so it is left for its own issue.
+-- Since then [T] Appendix A.4.7 (Box 9, the input deck of simulation 4)
+-- has been read: assets/lua/dogbone_box9.lua builds the deck's gas (two
+-- quadrilaterals, area 0.475) and membrane line, and the V7 reference page
+-- scripts/paper/gas_dogbone.lua runs it. This construction stays as a
+-- variant (scripts/paper/gas_dogbone_superellipse.lua) and for the tests
+-- and pages written on it.
 local M = { neck = 0.35, a = 0.5, b = 0.5, yc = 0.5, n = 3, natural_length = 2.2 }
 
 -- The lobe's half-width at height y (0 outside it).

@@ -1,5 +1,5 @@
 -- normals_share.lua - issue 17 item 3: the isosurface normals' share of a
--- dog-bone step (docs/performance.md). The dog-bone of gas_dogbone at cell
+-- dog-bone step (docs/performance.md). The dog-bone of gas_dogbone_superellipse at cell
 -- 0.1, one thread, `steps` steps after a first one (preparation and the
 -- workspace's allocation kept apart) with normals "connectivity" (no
 -- construction) and "isosurface", alternating `rounds` times so that the

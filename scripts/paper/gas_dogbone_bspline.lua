@@ -2,7 +2,8 @@
 -- source: York, Sulsky & Schreyer 2000 (fluid-membrane), §4.3, Tables III-IV;
 --   York's dissertation §6.2, Table 5 (row cell 0.05); a remedy of issue 13
 --   (robust numerics), docs/robustness.md "The dog-bone with segment forces"
--- look: the same expansion as the gas_dogbone page's finest row, but with
+-- look: the same expansion as the gas_dogbone_superellipse page's finest
+--   row, but with
 --   lamina.sim{basis = "bspline2"} and the papers' continuity density, no
 --   splitting, pure FLIP: the membrane seals (no gas outside at any sample),
 --   rings and settles to a quarter circle; r(0) and r(90) converge
@@ -11,8 +12,9 @@
 --   difference at that cell ([F] Table III: 1.36, 31.7); the hoop stress against p r / t of
 --   the same run (ours; [F] Table IV reports 2-5 %); gas outside the membrane
 --   (0). With the papers' bilinear basis this run fails at t = 0.58 without
---   splitting (gas_dogbone page)
--- assumed: the set-up of the gas_dogbone page (assets/lua/dogbone.lua: its
+--   splitting (gas_dogbone_superellipse page; [T]'s Box 9 deck, on the
+--   gas_dogbone page, needs the B-spline at 0.05 too)
+-- assumed: the set-up of the gas_dogbone_superellipse page (assets/lua/dogbone.lua: its
 --   construction of the shape, gas rho 1, mu 0.2, e 250, 64 ppc; membrane
 --   rho 0.5, E 1e6, nu 0.3, t 0.1, plane stress, one-way, 400 points,
 --   initial strain ln(1.39/2.2)); dt = 0.5 h / c_membrane; means over the

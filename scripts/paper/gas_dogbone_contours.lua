@@ -21,7 +21,7 @@
 --   degrees, t = 0.1), both averaged over t = 1 to 2, within 5 %: [F] Table
 --   IV's stated agreement at its finer cells (2-5 %). Reported: the spread
 --   of sigma_t along the membrane and of the gas points' pressure at t = 2
--- assumed: the dog-bone of the gas_dogbone page (assets/lua/dogbone.lua:
+-- assumed: the dog-bone of the gas_dogbone_superellipse page (assets/lua/dogbone.lua:
 --   lamina's construction of the shape; [T]'s input deck, Box 9, is not
 --   used yet) at cell 0.1 with 200 membrane points, not [T]'s simulation 4
 --   (cell 0.05, 400 points), which takes minutes per time unit here; run to
@@ -115,6 +115,6 @@ lamina.report{
     math.abs(dev) <= 0.05 and "pass" or "FAIL", hoop, p, r, thick, prt, 100 * dev),
   stress_along_membrane = string.format("sigma_t from %.0f to %.0f, mean %.0f, at t = %.1f; %d of %d points slack (sigma_t = 0)",
                                         smin, smax, ssum / q.n, sim.t, slack, q.n),
-  gas_pressure_spread = string.format("points' own pressure (gamma - 1) rho_p e_p, continuity densities: %.2f +- %.2f (sd) at t = %.1f (not checked here: the gas_dogbone page finds hot thin gas against the membrane and continuity densities that drift from the spacing)", pm, math.sqrt(pv / g.n), sim.t),
+  gas_pressure_spread = string.format("points' own pressure (gamma - 1) rho_p e_p, continuity densities: %.2f +- %.2f (sd) at t = %.1f (not checked here: the gas_dogbone_superellipse page finds hot thin gas against the membrane and continuity densities that drift from the spacing)", pm, math.sqrt(pv / g.n), sim.t),
   state_hash = sim:hash(),
 }

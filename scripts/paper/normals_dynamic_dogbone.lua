@@ -13,7 +13,7 @@
 --   points) with the normals
 -- checks: the largest difference of the two pressure histories after the
 --   first oscillation; final radii at 0 and 90 degrees of both runs
--- assumed: the dog-bone of gas_dogbone (assets/lua/dogbone.lua) at cell 0.1,
+-- assumed: the dog-bone of gas_dogbone_superellipse (assets/lua/dogbone.lua) at cell 0.1,
 --   200 membrane points, pure FLIP, to t = 2 (the paper's figures stop at
 --   the early oscillations and the final shape); normals = "isosurface"
 --   (docs/normals.md "Centred elements"); quarter model mirrored

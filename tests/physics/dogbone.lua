@@ -2,7 +2,8 @@
 -- Table 5; docs/physics.md V7), reduced: cells 0.4 / 0.2 / 0.1 to t = 2.5
 -- (the gallery adds 0.05 and runs to t = 4). The construction of the shape
 -- (not given numerically in the papers) is in assets/lua/dogbone.lua;
--- scripts/paper/gas_dogbone.lua says why.
+-- scripts/paper/gas_dogbone_superellipse.lua says why (the V7 reference page,
+-- scripts/paper/gas_dogbone.lua, now runs [T] Box 9: assets/lua/dogbone_box9.lua).
 -- Checks (issue 8): gas contained at every refinement; at cell 0.1 the
 -- final shape is circular (radius at 0 and 90 degrees within 1 %) and the
 -- time-averaged hoop stress within 5 % of p r / t; final radius and
