@@ -132,6 +132,8 @@ static lm_status field_alloc(lm_contact_field *f, size_t nn, size_t ncells)
     return LM_OK;
 }
 
+static const lm_cbox EMPTY = {0, -1, 0, -1};
+
 /* Makes the fields for the grid and the body-to-field map (bodies can be
  * added between runs). */
 static lm_status reserve(lm_sim *sim)
@@ -149,9 +151,16 @@ static lm_status reserve(lm_sim *sim)
             c->f[k].body = b;
         }
         c->nn = nn;
+        c->sx = sim->grid.sx;
+        c->sy = (int)(nn / (size_t)sim->grid.sx);
+        c->inv_sx = 1.0 / c->sx;
+        c->dirty = EMPTY;
     }
-    for (int k = 0; k < c->nf; k++)
-        if (!c->f[k].m && field_alloc(&c->f[k], nn, ncells) != LM_OK) goto oom;
+    for (int k = 0; k < c->nf; k++) {
+        if (c->f[k].m) continue;
+        if (field_alloc(&c->f[k], nn, ncells) != LM_OK) goto oom;
+        c->f[k].mbox = EMPTY;   /* all zero */
+    }
     if (c->nbodies_alloc != sim->nbodies) {
         int *ob = realloc(c->of_body, (size_t)sim->nbodies * sizeof *ob);
         if (!ob) goto oom;
@@ -169,6 +178,60 @@ oom:
     return LM_ERR_MEMORY;
 }
 
+static lm_cbox box_meet(const lm_cbox *a, const lm_cbox *b)
+{
+    lm_cbox r = {a->i0 > b->i0 ? a->i0 : b->i0, a->i1 < b->i1 ? a->i1 : b->i1,
+                 a->j0 > b->j0 ? a->j0 : b->j0, a->j1 < b->j1 ? a->j1 : b->j1};
+    return lm_cbox_empty(&r) ? EMPTY : r;
+}
+
+static void box_join(lm_cbox *a, const lm_cbox *b)
+{
+    if (lm_cbox_empty(b)) return;
+    if (lm_cbox_empty(a)) {
+        *a = *b;
+        return;
+    }
+    if (b->i0 < a->i0) a->i0 = b->i0;
+    if (b->i1 > a->i1) a->i1 = b->i1;
+    if (b->j0 < a->j0) a->j0 = b->j0;
+    if (b->j1 > a->j1) a->j1 = b->j1;
+}
+
+/* b and r nodes around it, within the storage. */
+static lm_cbox box_grow(const lm_contact *c, const lm_cbox *b, int r)
+{
+    if (lm_cbox_empty(b)) return EMPTY;
+    lm_cbox g = {b->i0 - r, b->i1 + r, b->j0 - r, b->j1 + r};
+    if (g.i0 < 0) g.i0 = 0;
+    if (g.j0 < 0) g.j0 = 0;
+    if (g.i1 > c->sx - 1) g.i1 = c->sx - 1;
+    if (g.j1 > c->sy - 1) g.j1 = c->sy - 1;
+    return g;
+}
+
+/* The nodes the stencils of the body's particles reach (walls fold a ghost
+ * node's sum into a mirror node two nodes in, which the same stencil
+ * reaches: the box holds the body's sums whole). */
+static lm_cbox body_box(const lm_sim *sim, const lm_contact_field *f)
+{
+    const lm_contact *c = sim->contact;
+    const lm_body *bd = &sim->bodies[f->body];
+    const int *node = sim->p.node;
+    if (bd->count == 0) return EMPTY;
+    int i0 = c->sx, i1 = -1, j0 = c->sy, j1 = -1;
+    for (size_t q = bd->first; q < bd->first + bd->count; q++) {
+        int i, j;
+        lm_cbox_ij(c, node[q], &i, &j);
+        if (i < i0) i0 = i;
+        if (i > i1) i1 = i;
+        if (j < j0) j0 = j;
+        if (j > j1) j1 = j;
+    }
+    lm_cbox b = {i0, i1 + sim->grid.sw - 1, j0, j1 + sim->grid.sw - 1};
+    return b;
+}
+
 /* Is q a membrane point whose tension reaches the grid along segments? */
 static int segment_point(const lm_sim *sim, size_t q)
 {
@@ -176,25 +239,39 @@ static int segment_point(const lm_sim *sim, size_t q)
     return bd->membrane && bd->force == LM_MFORCE_SEGMENT;
 }
 
-/* Steps 1-2 for one body alone: m^I, p^I and f^I = f^int,I + m^I g, the
- * same sums as step.c's over the body's particles only ([M] eqs 23, 25),
- * then folded at the walls like the shared field. */
-static void body_sums(lm_sim *sim, lm_contact_field *f)
+#if defined(__GNUC__)
+#define LM_FORCE_INLINE inline __attribute__((always_inline))
+#else
+#define LM_FORCE_INLINE inline
+#endif
+
+/* body_sums' particle loop for a stencil W nodes wide: the mass of every
+ * particle (for mmax), momentum and force only of those whose stencils
+ * reach the contact box, so that the sums at its nodes are whole, in the
+ * same order as over all of them. */
+static LM_FORCE_INLINE void body_sums_w(lm_sim *sim, lm_contact_field *f, const int W)
 {
     const lm_grid *g = &sim->grid;
     const lm_particles *p = &sim->p;
+    const lm_contact *c = sim->contact;
     const lm_body *bd = &sim->bodies[f->body];
-    const int W = g->sw, NS = W * W;
-    size_t nn = lm_grid_nodes(g);
-    memset(f->m, 0, 5 * nn * sizeof(double));   /* m, px, py, fx, fy */
+    const int NS = W * W;
+    double *const fm = f->m;
     for (size_t q = bd->first; q < bd->first + bd->count; q++) {
-        const double *N = p->N + NS * q, *Gx = p->Gx + NS * q, *Gy = p->Gy + NS * q;
+        const double *N = p->N + NS * q;
+        const int node = p->node[q];
+        const double m = p->m[q];
+        if (!lm_cbox_reaches(c, &c->box, node, W)) {
+            for (int k = 0; k < NS; k++) fm[lm_stencil_node(g, W, node, k)] += m * N[k];
+            continue;
+        }
+        const double *Gx = p->Gx + NS * q, *Gy = p->Gy + NS * q;
         const int seg = segment_point(sim, q);
-        const double m = p->m[q], V = m / p->rho[q];
+        const double V = m / p->rho[q];
         for (int k = 0; k < NS; k++) {
-            long i = lm_stencil_node(g, W, p->node[q], k);
+            long i = lm_stencil_node(g, W, node, k);
             double w = m * N[k];
-            f->m[i] += w;
+            fm[i] += w;
             f->px[i] += w * p->vx[q];
             f->py[i] += w * p->vy[q];
             if (seg) {
@@ -206,42 +283,70 @@ static void body_sums(lm_sim *sim, lm_contact_field *f)
             }
         }
     }
+}
+
+/* Steps 1-2 for one body alone: m^I, p^I and f^I = f^int,I + m^I g, the
+ * same sums as step.c's over the body's particles only ([M] eqs 23, 25),
+ * then folded at the walls like the shared field; m everywhere, the rest
+ * whole in the contact box (px ... fy are zero outside `dirty` here). */
+static void body_sums(lm_sim *sim, lm_contact_field *f)
+{
+    const lm_grid *g = &sim->grid;
+    lm_contact *c = sim->contact;
+    double *const mz[1] = {f->m};
+    lm_cbox_zero(c, &f->mbox, mz, 1);
+    f->mbox = f->nodes;
+    if (g->sw == 2) body_sums_w(sim, f, 2);
+    else body_sums_w(sim, f, 3);
     double *const out[5] = {f->m, f->px, f->py, f->fx, f->fy};
     static const lm_comp comp[5] = {LM_COMP_SCALAR, LM_COMP_X, LM_COMP_Y, LM_COMP_X,
                                     LM_COMP_Y};
     lm_grid_fold(g, 5, out, comp);
-    for (size_t i = 0; i < nn; i++) {
-        f->fx[i] += f->m[i] * sim->def.gx;
-        f->fy[i] += f->m[i] * sim->def.gy;
-    }
+    const lm_cbox *b = &c->box;
+    for (int j = b->j0; j <= b->j1; j++)
+        for (long i = (long)j * c->sx + b->i0; i <= (long)j * c->sx + b->i1; i++) {
+            f->fx[i] += f->m[i] * sim->def.gx;
+            f->fy[i] += f->m[i] * sim->def.gy;
+        }
 }
 
 /* The sums of the field f as the shared field's less every other field's
- * (all bodies are paired). Mass below 1e-12 of the node's is rounding: the
- * body is not there. */
+ * (all bodies are paired): the mass over the body's nodes, the rest over
+ * the contact box. Mass below 1e-12 of the node's is rounding: the body is
+ * not there (outside its nodes the difference is that rounding, so zero). */
 static void rest_sums(lm_sim *sim, lm_contact_field *f)
 {
     const lm_grid *g = &sim->grid;
-    const lm_contact *c = sim->contact;
-    size_t nn = lm_grid_nodes(g);
-    memcpy(f->m, g->m, nn * sizeof(double));
-    memcpy(f->px, g->px, nn * sizeof(double));
-    memcpy(f->py, g->py, nn * sizeof(double));
-    memcpy(f->fx, g->fx, nn * sizeof(double));
-    memcpy(f->fy, g->fy, nn * sizeof(double));
-    for (int k = 0; k < c->nf; k++) {
-        const lm_contact_field *o = &c->f[k];
-        if (o == f) continue;
-        for (size_t i = 0; i < nn; i++) {
-            f->m[i] -= o->m[i];
-            f->px[i] -= o->px[i];
-            f->py[i] -= o->py[i];
-            f->fx[i] -= o->fx[i];
-            f->fy[i] -= o->fy[i];
+    lm_contact *c = sim->contact;
+    double *const mz[1] = {f->m};
+    lm_cbox_zero(c, &f->mbox, mz, 1);
+    f->mbox = f->nodes;
+    const lm_cbox *b = &f->nodes;
+    for (int j = b->j0; j <= b->j1; j++)
+        for (long i = (long)j * c->sx + b->i0; i <= (long)j * c->sx + b->i1; i++) {
+            double m = g->m[i];
+            for (int k = 0; k < c->nf; k++)
+                if (&c->f[k] != f) m -= c->f[k].m[i];
+            f->m[i] = m <= 1e-12 * g->m[i] ? 0 : m;
         }
-    }
-    for (size_t i = 0; i < nn; i++)
-        if (f->m[i] <= 1e-12 * g->m[i]) f->m[i] = f->px[i] = f->py[i] = f->fx[i] = f->fy[i] = 0;
+    b = &c->box;
+    for (int j = b->j0; j <= b->j1; j++)
+        for (long i = (long)j * c->sx + b->i0; i <= (long)j * c->sx + b->i1; i++) {
+            double px = g->px[i], py = g->py[i], fx = g->fx[i], fy = g->fy[i];
+            for (int k = 0; k < c->nf; k++) {
+                const lm_contact_field *o = &c->f[k];
+                if (o == f) continue;
+                px -= o->px[i];
+                py -= o->py[i];
+                fx -= o->fx[i];
+                fy -= o->fy[i];
+            }
+            if (f->m[i] <= 1e-12 * g->m[i]) px = py = fx = fy = 0;
+            f->px[i] = px;
+            f->py[i] = py;
+            f->fx[i] = fx;
+            f->fy[i] = fy;
+        }
 }
 
 void lm_contact_body_normals(lm_sim *sim, lm_contact_field *f);   /* contact_normals.c */
@@ -253,6 +358,21 @@ lm_status lm_contact_sums(lm_sim *sim)
     lm_status st = reserve(sim);
     if (st != LM_OK) return st;
     lm_contact *c = sim->contact;
+    /* what the last step left in px ... day, cleared */
+    for (int k = 0; k < c->nf; k++) {
+        lm_contact_field *f = &c->f[k];
+        double *const a[11] = {f->px, f->py, f->fx, f->fy, f->tx, f->ty,
+                               f->s, f->dvx, f->dvy, f->dax, f->day};
+        lm_cbox_zero(c, &c->dirty, a, 11);
+    }
+    /* where pairs can meet: both bodies of a pair reach the node */
+    for (int k = 0; k < c->nf; k++) c->f[k].nodes = body_box(sim, &c->f[k]);
+    c->box = EMPTY;
+    for (int k = 0; k < c->npairs; k++) {
+        lm_cbox m = box_meet(&c->f[c->pairs[k].a].nodes, &c->f[c->pairs[k].b].nodes);
+        box_join(&c->box, &m);
+    }
+    c->dirty = box_grow(c, &c->box, 4);
     /* when every body is in a pair, the last one's sums are the shared
      * field's less the others': one scatter saved. Not with pins: at a
      * node a held body barely reaches, its true mass may be below the
@@ -263,11 +383,13 @@ lm_status lm_contact_sums(lm_sim *sim)
     for (int k = 0; k < c->nf; k++)
         if (k != last) body_sums(sim, &c->f[k]);
     if (last >= 0) rest_sums(sim, &c->f[last]);
-    size_t nn = lm_grid_nodes(&sim->grid);
     for (int k = 0; k < c->nf; k++) {
         lm_contact_field *f = &c->f[k];
-        f->mmax = 0;
-        for (size_t i = 0; i < nn; i++) f->mmax = fmax(f->mmax, f->m[i]);
+        f->mmax = 0;   /* m is zero outside its nodes */
+        const lm_cbox *b = &f->nodes;
+        for (int j = b->j0; j <= b->j1; j++)
+            for (long i = (long)j * c->sx + b->i0; i <= (long)j * c->sx + b->i1; i++)
+                f->mmax = fmax(f->mmax, f->m[i]);
         lm_contact_body_normals(sim, f);
     }
     lm_contact_release_test(sim);

@@ -14,6 +14,8 @@
 #ifndef LAMINA_CONTACT_H
 #define LAMINA_CONTACT_H
 
+#include <string.h>
+
 #include "mpm.h"
 
 typedef enum lm_contact_law {
@@ -35,7 +37,22 @@ typedef struct lm_contact_pair {
     double mu;
 } lm_contact_pair;
 
-/* The grid fields of one body in a pair. */
+/* A rectangle of nodes in the grid's storage (ghost ring included): node
+ * (i, j) is j * sx + i; empty when i0 > i1 or j0 > j1. The contact sums,
+ * sweeps and clears run over such boxes, not the whole grid (below). */
+typedef struct lm_cbox {
+    int i0, i1, j0, j1;
+} lm_cbox;
+
+/* The grid fields of one body in a pair.
+ *
+ * Where they hold what (contact.c): m is the body's mass at every node
+ * (zero outside `nodes`); the rest are only meant where pairs can meet,
+ * lm_contact.box: there the sums are the whole body's, the normals and
+ * own are this step's. Outside `box` px ... fy hold partial sums and nx,
+ * ny, own older values that nothing reads; px ... day are zero outside
+ * lm_contact.dirty, and dv, da zero outside `box` but for the ghost
+ * ring's images (what the particle gathers read). */
 typedef struct lm_contact_field {
     int body;
     double *m, *px, *py;   /* step 1 sums; p^L after step 3; step 5 re-map */
@@ -49,6 +66,8 @@ typedef struct lm_contact_field {
     unsigned char *own;    /* 1: own field, 2: sliding, 0: shared */
     double *chi;           /* colour at cell centres, nx * ny */
     double mmax;           /* largest nodal mass of the body this step */
+    lm_cbox nodes;         /* the nodes its particles' stencils reach */
+    lm_cbox mbox;          /* where m may be non-zero (the last step's nodes) */
 } lm_contact_field;
 
 typedef struct lm_contact {
@@ -61,12 +80,55 @@ typedef struct lm_contact {
     unsigned char *flag;   /* per field, scratch of the correction */
     size_t nn;             /* nodes the fields were made for */
     unsigned char *state;  /* LM_CNODE_* per node, last step */
+    int sx, sy;            /* the grid's storage: sx nodes a row, sy rows */
+    double inv_sx;         /* 1 / sx (lm_cbox_ij) */
+    lm_cbox box;           /* where pairs can meet: the union of the pairs'
+                              overlaps of their bodies' nodes */
+    lm_cbox dirty;         /* where px ... day may be non-zero: box and 4
+                              nodes around (stencils, the walls' images) */
+    lm_cbox near;          /* the nodes with a state (stick, release, slide) */
+    lm_cbox moved;         /* the nodes of state release or slide */
     /* Grid kinetic energy of the paired bodies' fields (and the rest of
      * the mass as one field) at the contact nodes, before and after the
      * correction of the last step: after <= before ([M] §4.1). */
     double ke_before, ke_after;
     long nodes_stick, nodes_release, nodes_slide;
 } lm_contact;
+
+/* Node idx's column i and row j in the storage (idx = j sx + i), with a
+ * multiplication instead of a division (corrected by one if rounding
+ * misses). */
+static inline void lm_cbox_ij(const lm_contact *c, long idx, int *i, int *j)
+{
+    long r = (long)((double)idx * c->inv_sx);
+    if (r * c->sx > idx) r--;
+    else if ((r + 1) * c->sx <= idx) r++;
+    *j = (int)r;
+    *i = (int)(idx - r * c->sx);
+}
+
+/* Does the W x W stencil whose first node is idx reach box b? */
+static inline int lm_cbox_reaches(const lm_contact *c, const lm_cbox *b, long idx, int W)
+{
+    int i, j;
+    lm_cbox_ij(c, idx, &i, &j);
+    return i <= b->i1 && i + W - 1 >= b->i0 && j <= b->j1 && j + W - 1 >= b->j0;
+}
+
+static inline int lm_cbox_empty(const lm_cbox *b)
+{
+    return b->i0 > b->i1 || b->j0 > b->j1;
+}
+
+/* Zeroes the n arrays a (doubles, one block n nodes apart when stride is
+ * the node count, or any) over box b. */
+static inline void lm_cbox_zero(const lm_contact *c, const lm_cbox *b, double *const *a, int n)
+{
+    if (lm_cbox_empty(b)) return;
+    size_t w = (size_t)(b->i1 - b->i0 + 1) * sizeof(double);
+    for (int k = 0; k < n; k++)
+        for (int j = b->j0; j <= b->j1; j++) memset(a[k] + (long)j * c->sx + b->i0, 0, w);
+}
 
 /* Adds a pair (bodies a != b); -1 with sim->err naming the key if the
  * input is bad. mu only for friction (>= 0). */

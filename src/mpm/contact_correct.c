@@ -153,10 +153,14 @@ void lm_contact_release_test(lm_sim *sim)
 {
     lm_contact *c = sim->contact;
     const lm_grid *g = &sim->grid;
-    size_t nn = lm_grid_nodes(g);
     unsigned char *flag = c->flag;
-    for (int k = 0; k < c->nf; k++) memset(c->f[k].own, 0, nn);
-    for (long i = 0; i < (long)nn; i++) {
+    const lm_cbox *b = &c->box;   /* no pair meets outside it */
+    if (lm_cbox_empty(b)) return;
+    for (int k = 0; k < c->nf; k++)
+        for (int j = b->j0; j <= b->j1; j++)
+            memset(c->f[k].own + (long)j * c->sx + b->i0, 0, (size_t)(b->i1 - b->i0 + 1));
+    for (int j = b->j0; j <= b->j1; j++)
+    for (long i = (long)j * c->sx + b->i0; i <= (long)j * c->sx + b->i1; i++) {
         double mG = g->m[i];
         if (mG <= 0) continue;
         int any = 0;
@@ -172,6 +176,19 @@ void lm_contact_release_test(lm_sim *sim)
         if (any)
             for (int k = 0; k < c->nf; k++) c->f[k].own[i] = flag[k] == 1;
     }
+}
+
+/* a grown to hold b (b a node) */
+static void grow_to(lm_cbox *a, const lm_cbox *b)
+{
+    if (lm_cbox_empty(a)) {
+        *a = *b;
+        return;
+    }
+    if (b->i0 < a->i0) a->i0 = b->i0;
+    if (b->i1 > a->i1) a->i1 = b->i1;
+    if (b->j0 < a->j0) a->j0 = b->j0;
+    if (b->j1 > a->j1) a->j1 = b->j1;
 }
 
 /* The correction at node i. */
@@ -288,13 +305,26 @@ static void correct_node(lm_sim *sim, long i)
 }
 
 /* A pinned body's own field moves with its pins where they hold the grid,
- * as the shared field does (pin.c): p^L = m v_pin, the force to match. */
+ * as the shared field does (pin.c's lm_pin_hold, over the contact box):
+ * p^L = m v_pin, the force to match. */
 static void pin_field(const lm_sim *sim, lm_contact_field *f)
 {
     int held = 0;
     for (int k = 0; k < sim->npins && !held; k++) held = sim->pins[k].body == f->body;
     if (!held) return;
-    lm_pin_hold(sim, f->m, f->px, f->py, f->fx, f->fy);
+    const lm_contact *c = sim->contact;
+    const lm_cbox *b = &c->box;
+    double dt = sim->def.dt;
+    for (int j = b->j0; j <= b->j1; j++)
+        for (long i = (long)j * c->sx + b->i0; i <= (long)j * c->sx + b->i1; i++) {
+            if (!(sim->pin_w[i] > 0) || f->m[i] <= 0) continue;
+            double hx = f->m[i] * sim->pin_vx[i] / sim->pin_w[i];
+            double hy = f->m[i] * sim->pin_vy[i] / sim->pin_w[i];
+            f->fx[i] += (hx - f->px[i]) / dt;
+            f->fy[i] += (hy - f->py[i]) / dt;
+            f->px[i] = hx;
+            f->py[i] = hy;
+        }
 }
 
 void lm_contact_correct(lm_sim *sim)
@@ -304,23 +334,35 @@ void lm_contact_correct(lm_sim *sim)
     lm_grid *g = &sim->grid;
     size_t nn = lm_grid_nodes(g);
     double dt = sim->def.dt;
+    const lm_cbox *b = &c->box;   /* the fields are meant there only */
     for (int k = 0; k < c->nf; k++) {
         lm_contact_field *f = &c->f[k];
-        for (size_t i = 0; i < nn; i++) {
-            f->px[i] += dt * f->fx[i];   /* [M] eq 24: p^L of the body */
-            f->py[i] += dt * f->fy[i];
-        }
+        for (int j = b->j0; j <= b->j1; j++)
+            for (long i = (long)j * c->sx + b->i0; i <= (long)j * c->sx + b->i1; i++) {
+                f->px[i] += dt * f->fx[i];   /* [M] eq 24: p^L of the body */
+                f->py[i] += dt * f->fy[i];
+            }
         pin_field(sim, f);
         lm_grid_apply_bc(g, f->px, f->py);
         lm_grid_apply_bc(g, f->fx, f->fy);
-        /* s, tx, ty, dv and da cleared (own is the release test's) */
-        memset(f->tx, 0, 7 * nn * sizeof(double));
+        /* s, tx, ty, dv and da are zero (lm_contact_sums cleared them) */
     }
     memset(c->state, 0, nn);
     c->ke_before = c->ke_after = 0;
     c->nodes_stick = c->nodes_release = c->nodes_slide = 0;
-    for (long i = 0; i < (long)nn; i++)
-        if (g->m[i] > 0) correct_node(sim, i);
+    /* the nodes where pairs met, and where a body moved in its own field
+     * or slid: the particles near them are corrected */
+    c->near = c->moved = (lm_cbox){0, -1, 0, -1};
+    for (int j = b->j0; j <= b->j1; j++)
+        for (int ii = b->i0; ii <= b->i1; ii++) {
+            long i = (long)j * c->sx + ii;
+            if (!(g->m[i] > 0)) continue;
+            correct_node(sim, i);
+            if (c->state[i] == LM_CNODE_NONE) continue;
+            lm_cbox one = {ii, ii, j, j};
+            grow_to(&c->near, &one);
+            if (c->state[i] != LM_CNODE_STICK) grow_to(&c->moved, &one);
+        }
     static const lm_comp comp[4] = {LM_COMP_X, LM_COMP_Y, LM_COMP_X, LM_COMP_Y};
     for (int k = 0; k < c->nf; k++) {
         double *const d[4] = {c->f[k].dvx, c->f[k].dvy, c->f[k].dax, c->f[k].day};
@@ -334,8 +376,13 @@ void lm_contact_correct(lm_sim *sim)
 static int touches(const lm_sim *sim, size_t q, unsigned mask)
 {
     const lm_grid *g = &sim->grid;
-    const unsigned char *st = sim->contact->state;
+    const lm_contact *c = sim->contact;
+    const unsigned char *st = c->state;
     const int W = g->sw;
+    /* every node of such a state is in near (any state) or moved (release,
+     * slide) */
+    const lm_cbox *b = mask & (1u << LM_CNODE_STICK) ? &c->near : &c->moved;
+    if (lm_cbox_empty(b) || !lm_cbox_reaches(c, b, sim->p.node[q], W)) return 0;
     for (int k = 0; k < W * W; k++)
         if (mask >> st[lm_stencil_node(g, W, sim->p.node[q], k)] & 1) return 1;
     return 0;
@@ -367,6 +414,7 @@ void lm_contact_g2p(lm_sim *sim)
     const lm_grid *g = &sim->grid;
     lm_particles *p = &sim->p;
     double dt = sim->def.dt, pic = sim->def.pic;
+    if (lm_cbox_empty(&c->near)) return;
     for (int k = 0; k < c->nf; k++) {
         const lm_contact_field *f = &c->f[k];
         const lm_body *bd = &sim->bodies[f->body];
@@ -395,13 +443,15 @@ void lm_contact_strain_velocity(lm_sim *sim)
     lm_grid *g = &sim->grid;
     const lm_particles *p = &sim->p;
     const int W = g->sw, NS = W * W;
-    size_t nn = lm_grid_nodes(g);
     static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
+    const lm_cbox *mv = &c->moved;   /* where bodies moved apart or slid */
     for (int k = 0; k < c->nf; k++) {
         lm_contact_field *f = &c->f[k];
         const lm_body *bd = &sim->bodies[f->body];
-        memset(f->px, 0, 2 * nn * sizeof(double));
-        memset(f->dvx, 0, 2 * nn * sizeof(double));
+        /* p^L and v^L - v cleared (they are zero outside dirty) */
+        double *const z[4] = {f->px, f->py, f->dvx, f->dvy};
+        lm_cbox_zero(c, &c->dirty, z, 4);
+        if (lm_cbox_empty(mv)) continue;
         for (size_t q = bd->first; q < bd->first + bd->count; q++) {
             /* only where a body moved in its own field or slid */
             if (!touches(sim, q, 1u << LM_CNODE_RELEASE | 1u << LM_CNODE_SLIDE)) continue;
@@ -414,15 +464,18 @@ void lm_contact_strain_velocity(lm_sim *sim)
         }
         double *const out[2] = {f->px, f->py};
         lm_grid_fold(g, 2, out, comp);
-        for (size_t i = 0; i < nn; i++) {
-            if (f->m[i] > 0) {
-                f->px[i] /= f->m[i];   /* now the body's velocity */
-                f->py[i] /= f->m[i];
+        /* read below at the release and slide nodes only */
+        for (int j = mv->j0; j <= mv->j1; j++)
+            for (long i = (long)j * c->sx + mv->i0; i <= (long)j * c->sx + mv->i1; i++) {
+                if (f->m[i] > 0) {
+                    f->px[i] /= f->m[i];   /* now the body's velocity */
+                    f->py[i] /= f->m[i];
+                }
             }
-        }
         lm_grid_apply_bc(g, f->px, f->py);
     }
-    for (long i = 0; i < (long)nn; i++) {
+    for (int j = mv->j0; j <= mv->j1; j++)
+    for (long i = (long)j * c->sx + mv->i0; i <= (long)j * c->sx + mv->i1; i++) {
         if (c->state[i] != LM_CNODE_RELEASE && c->state[i] != LM_CNODE_SLIDE) continue;
         double mG = g->m[i], mR = 0, pRx = 0, pRy = 0;
         for (int k = 0; k < c->nf; k++) {
