@@ -31,6 +31,7 @@ void lm_contact_free(lm_contact *c)
     free(c->of_body);
     free(c->flag);
     free(c->state);
+    free(c->qflag);
     free(c);
 }
 
@@ -170,6 +171,12 @@ static lm_status reserve(lm_sim *sim)
     unsigned char *fl = realloc(c->flag, (size_t)c->nf);
     if (!fl) goto oom;
     c->flag = fl;
+    if (c->nq != sim->p.n) {
+        unsigned char *qf = realloc(c->qflag, sim->p.n ? sim->p.n : 1);
+        if (!qf) goto oom;
+        c->qflag = qf;
+        c->nq = sim->p.n;
+    }
     for (int b = 0; b < sim->nbodies; b++) c->of_body[b] = -1;
     for (int k = 0; k < c->nf; k++) c->of_body[c->f[k].body] = k;
     return LM_OK;
@@ -389,7 +396,7 @@ lm_status lm_contact_sums(lm_sim *sim)
         const lm_cbox *b = &f->nodes;
         for (int j = b->j0; j <= b->j1; j++)
             for (long i = (long)j * c->sx + b->i0; i <= (long)j * c->sx + b->i1; i++)
-                f->mmax = fmax(f->mmax, f->m[i]);
+                if (f->m[i] > f->mmax) f->mmax = f->m[i];   /* fmax: m is a number */
         lm_contact_body_normals(sim, f);
     }
     lm_contact_release_test(sim);

@@ -88,6 +88,10 @@ typedef struct lm_contact {
                               nodes around (stencils, the walls' images) */
     lm_cbox near;          /* the nodes with a state (stick, release, slide) */
     lm_cbox moved;         /* the nodes of state release or slide */
+    unsigned char *qflag;  /* per particle of a paired body, this step: 1 its
+                              stencil reaches a node in near with a state,
+                              2 one of state release or slide (nq of them) */
+    size_t nq;
     /* Grid kinetic energy of the paired bodies' fields (and the rest of
      * the mass as one field) at the contact nodes, before and after the
      * correction of the last step: after <= before ([M] §4.1). */
@@ -118,6 +122,38 @@ static inline int lm_cbox_reaches(const lm_contact *c, const lm_cbox *b, long id
 static inline int lm_cbox_empty(const lm_cbox *b)
 {
     return b->i0 > b->i1 || b->j0 > b->j1;
+}
+
+/* The walls' conditions (lm_grid_apply_bc) on ux, uy at the nodes of box b
+ * only: the same zeroes there. */
+static inline void lm_cbox_apply_bc(const lm_contact *c, const lm_grid *g, const lm_cbox *b,
+                                    double *ux, double *uy)
+{
+    if (lm_cbox_empty(b)) return;
+    int l = g->pad, r = g->nx + g->pad, bo = g->pad, t = g->ny + g->pad;
+    for (int j = b->j0; j <= b->j1; j++) {
+        long row = (long)j * c->sx;
+        if (b->i0 <= l && l <= b->i1) {
+            if (g->bc[LM_LEFT] != LM_BC_FREE) ux[row + l] = 0;
+            if (g->bc[LM_LEFT] == LM_BC_FIXED) uy[row + l] = 0;
+        }
+        if (b->i0 <= r && r <= b->i1) {
+            if (g->bc[LM_RIGHT] != LM_BC_FREE) ux[row + r] = 0;
+            if (g->bc[LM_RIGHT] == LM_BC_FIXED) uy[row + r] = 0;
+        }
+    }
+    for (int i = b->i0; i <= b->i1; i++) {
+        if (b->j0 <= bo && bo <= b->j1) {
+            long n = (long)bo * c->sx + i;
+            if (g->bc[LM_BOTTOM] != LM_BC_FREE) uy[n] = 0;
+            if (g->bc[LM_BOTTOM] == LM_BC_FIXED) ux[n] = 0;
+        }
+        if (b->j0 <= t && t <= b->j1) {
+            long n = (long)t * c->sx + i;
+            if (g->bc[LM_TOP] != LM_BC_FREE) uy[n] = 0;
+            if (g->bc[LM_TOP] == LM_BC_FIXED) ux[n] = 0;
+        }
+    }
 }
 
 /* Zeroes the n arrays a (doubles, one block n nodes apart when stride is

@@ -191,6 +191,33 @@ static void grow_to(lm_cbox *a, const lm_cbox *b)
     if (b->j1 > a->j1) a->j1 = b->j1;
 }
 
+/* lm_contact.qflag of the paired bodies' particles: does the stencil
+ * reach a node where a pair met (1), one where a body moved in its own
+ * field or slid (2)? Particles away from where pairs meet need no
+ * correction, and most of a body is away from them. */
+static void particle_flags(lm_sim *sim)
+{
+    lm_contact *c = sim->contact;
+    const lm_grid *g = &sim->grid;
+    const lm_particles *p = &sim->p;
+    const unsigned char *st = c->state;
+    const int W = g->sw;
+    if (lm_cbox_empty(&c->near)) return;   /* read only when it is not */
+    for (int k = 0; k < c->nf; k++) {
+        const lm_body *bd = &sim->bodies[c->f[k].body];
+        for (size_t q = bd->first; q < bd->first + bd->count; q++) {
+            unsigned char fl = 0;
+            if (lm_cbox_reaches(c, &c->near, p->node[q], W))
+                for (int j = 0; j < W * W; j++) {
+                    unsigned char s = st[lm_stencil_node(g, W, p->node[q], j)];
+                    if (s != LM_CNODE_NONE) fl |= 1;
+                    if (s == LM_CNODE_RELEASE || s == LM_CNODE_SLIDE) fl |= 2;
+                }
+            c->qflag[q] = fl;
+        }
+    }
+}
+
 /* The correction at node i. */
 static void correct_node(lm_sim *sim, long i)
 {
@@ -343,8 +370,8 @@ void lm_contact_correct(lm_sim *sim)
                 f->py[i] += dt * f->fy[i];
             }
         pin_field(sim, f);
-        lm_grid_apply_bc(g, f->px, f->py);
-        lm_grid_apply_bc(g, f->fx, f->fy);
+        lm_cbox_apply_bc(c, g, b, f->px, f->py);
+        lm_cbox_apply_bc(c, g, b, f->fx, f->fy);
         /* s, tx, ty, dv and da are zero (lm_contact_sums cleared them) */
     }
     memset(c->state, 0, nn);
@@ -363,29 +390,12 @@ void lm_contact_correct(lm_sim *sim)
             grow_to(&c->near, &one);
             if (c->state[i] != LM_CNODE_STICK) grow_to(&c->moved, &one);
         }
+    particle_flags(sim);
     static const lm_comp comp[4] = {LM_COMP_X, LM_COMP_Y, LM_COMP_X, LM_COMP_Y};
     for (int k = 0; k < c->nf; k++) {
         double *const d[4] = {c->f[k].dvx, c->f[k].dvy, c->f[k].dax, c->f[k].day};
         lm_grid_fill(g, 4, d, comp);
     }
-}
-
-/* Does particle q's stencil reach a node whose state is in `mask` (bit
- * 1 << state)? Particles away from where pairs meet need no correction,
- * and most of a body is away from them. */
-static int touches(const lm_sim *sim, size_t q, unsigned mask)
-{
-    const lm_grid *g = &sim->grid;
-    const lm_contact *c = sim->contact;
-    const unsigned char *st = c->state;
-    const int W = g->sw;
-    /* every node of such a state is in near (any state) or moved (release,
-     * slide) */
-    const lm_cbox *b = mask & (1u << LM_CNODE_STICK) ? &c->near : &c->moved;
-    if (lm_cbox_empty(b) || !lm_cbox_reaches(c, b, sim->p.node[q], W)) return 0;
-    for (int k = 0; k < W * W; k++)
-        if (mask >> st[lm_stencil_node(g, W, sim->p.node[q], k)] & 1) return 1;
-    return 0;
 }
 
 /* sum_i N_iq d_i over particle q's stencil, for two nodal arrays. */
@@ -419,7 +429,7 @@ void lm_contact_g2p(lm_sim *sim)
         const lm_contact_field *f = &c->f[k];
         const lm_body *bd = &sim->bodies[f->body];
         for (size_t q = bd->first; q < bd->first + bd->count; q++) {
-            if (p->pin[q] || !touches(sim, q, ~1u)) continue;
+            if (p->pin[q] || !(c->qflag[q] & 1)) continue;
             double ax, ay, ux, uy;
             gather2(g, p, q, f->dax, f->day, &ax, &ay);
             gather2(g, p, q, f->dvx, f->dvy, &ux, &uy);
@@ -454,7 +464,7 @@ void lm_contact_strain_velocity(lm_sim *sim)
         if (lm_cbox_empty(mv)) continue;
         for (size_t q = bd->first; q < bd->first + bd->count; q++) {
             /* only where a body moved in its own field or slid */
-            if (!touches(sim, q, 1u << LM_CNODE_RELEASE | 1u << LM_CNODE_SLIDE)) continue;
+            if (!(c->qflag[q] & 2)) continue;
             const double *N = p->N + NS * q;
             for (int j = 0; j < NS; j++) {
                 long i = lm_stencil_node(g, W, p->node[q], j);
@@ -472,7 +482,7 @@ void lm_contact_strain_velocity(lm_sim *sim)
                     f->py[i] /= f->m[i];
                 }
             }
-        lm_grid_apply_bc(g, f->px, f->py);
+        lm_cbox_apply_bc(c, g, mv, f->px, f->py);
     }
     for (int j = mv->j0; j <= mv->j1; j++)
     for (long i = (long)j * c->sx + mv->i0; i <= (long)j * c->sx + mv->i1; i++) {
@@ -522,7 +532,7 @@ void lm_contact_velocity(const lm_sim *sim, size_t q, double *ux, double *uy)
     const lm_particles *p = &sim->p;
     if (!c || c->npairs == 0 || p->pin[q]) return;
     int k = c->of_body[p->body[q]];
-    if (k < 0 || !touches(sim, q, 1u << LM_CNODE_RELEASE | 1u << LM_CNODE_SLIDE)) return;
+    if (k < 0 || lm_cbox_empty(&c->moved) || !(c->qflag[q] & 2)) return;
     double dx, dy;
     gather2(&sim->grid, p, q, c->f[k].dvx, c->f[k].dvy, &dx, &dy);
     *ux += dx;
@@ -535,7 +545,7 @@ void lm_contact_gradient(const lm_sim *sim, size_t q, double L[4])
     const lm_particles *p = &sim->p;
     if (!c || c->npairs == 0 || p->pin[q]) return;
     int k = c->of_body[p->body[q]];
-    if (k < 0 || !touches(sim, q, 1u << LM_CNODE_RELEASE | 1u << LM_CNODE_SLIDE)) return;
+    if (k < 0 || lm_cbox_empty(&c->moved) || !(c->qflag[q] & 2)) return;
     const lm_contact_field *f = &c->f[k];
     const lm_grid *g = &sim->grid;
     const int W = g->sw, NS = W * W;
