@@ -390,12 +390,25 @@ lm_status lm_contact_sums(lm_sim *sim)
     for (int k = 0; k < c->nf; k++)
         if (k != last) body_sums(sim, &c->f[k]);
     if (last >= 0) rest_sums(sim, &c->f[last]);
+    /* the nodes where a pair does meet: the rest of box needs no sweep */
+    c->met = EMPTY;
+    const lm_cbox *b = &c->box;
+    for (int j = b->j0; j <= b->j1; j++)
+        for (int ii = b->i0; ii <= b->i1; ii++) {
+            long i = (long)j * c->sx + ii;
+            for (int k = 0; k < c->npairs; k++)
+                if (c->f[c->pairs[k].a].m[i] > 0 && c->f[c->pairs[k].b].m[i] > 0) {
+                    lm_cbox one = {ii, ii, j, j};
+                    box_join(&c->met, &one);
+                    break;
+                }
+        }
     for (int k = 0; k < c->nf; k++) {
         lm_contact_field *f = &c->f[k];
         f->mmax = 0;   /* m is zero outside its nodes */
-        const lm_cbox *b = &f->nodes;
-        for (int j = b->j0; j <= b->j1; j++)
-            for (long i = (long)j * c->sx + b->i0; i <= (long)j * c->sx + b->i1; i++)
+        const lm_cbox *n = &f->nodes;
+        for (int j = n->j0; j <= n->j1; j++)
+            for (long i = (long)j * c->sx + n->i0; i <= (long)j * c->sx + n->i1; i++)
                 if (f->m[i] > f->mmax) f->mmax = f->m[i];   /* fmax: m is a number */
         lm_contact_body_normals(sim, f);
     }

@@ -49,7 +49,8 @@ typedef struct lm_cbox {
  * Where they hold what (contact.c): m is the body's mass at every node
  * (zero outside `nodes`); the rest are only meant where pairs can meet,
  * lm_contact.box: there the sums are the whole body's, the normals and
- * own are this step's. Outside `box` px ... fy hold partial sums and nx,
+ * own are this step's (nx, ny and own over lm_contact.met, the part of box
+ * where pairs do meet, which is all that reads them). Outside `box` px ... fy hold partial sums and nx,
  * ny, own older values that nothing reads; px ... day are zero outside
  * lm_contact.dirty, and dv, da zero outside `box` but for the ghost
  * ring's images (what the particle gathers read). */
@@ -84,6 +85,8 @@ typedef struct lm_contact {
     double inv_sx;         /* 1 / sx (lm_cbox_ij) */
     lm_cbox box;           /* where pairs can meet: the union of the pairs'
                               overlaps of their bodies' nodes */
+    lm_cbox met;           /* the nodes of box where a pair meets (both its
+                              bodies have mass): the sweeps run over it */
     lm_cbox dirty;         /* where px ... day may be non-zero: box and 4
                               nodes around (stencils, the walls' images) */
     lm_cbox near;          /* the nodes with a state (stick, release, slide) */

@@ -154,7 +154,7 @@ void lm_contact_release_test(lm_sim *sim)
     lm_contact *c = sim->contact;
     const lm_grid *g = &sim->grid;
     unsigned char *flag = c->flag;
-    const lm_cbox *b = &c->box;   /* no pair meets outside it */
+    const lm_cbox *b = &c->met;   /* no pair meets outside it */
     if (lm_cbox_empty(b)) return;
     for (int k = 0; k < c->nf; k++)
         for (int j = b->j0; j <= b->j1; j++)
@@ -332,7 +332,7 @@ static void correct_node(lm_sim *sim, long i)
 }
 
 /* A pinned body's own field moves with its pins where they hold the grid,
- * as the shared field does (pin.c's lm_pin_hold, over the contact box):
+ * as the shared field does (pin.c's lm_pin_hold, over the nodes where pairs meet):
  * p^L = m v_pin, the force to match. */
 static void pin_field(const lm_sim *sim, lm_contact_field *f)
 {
@@ -340,7 +340,7 @@ static void pin_field(const lm_sim *sim, lm_contact_field *f)
     for (int k = 0; k < sim->npins && !held; k++) held = sim->pins[k].body == f->body;
     if (!held) return;
     const lm_contact *c = sim->contact;
-    const lm_cbox *b = &c->box;
+    const lm_cbox *b = &c->met;
     double dt = sim->def.dt;
     for (int j = b->j0; j <= b->j1; j++)
         for (long i = (long)j * c->sx + b->i0; i <= (long)j * c->sx + b->i1; i++) {
@@ -361,7 +361,7 @@ void lm_contact_correct(lm_sim *sim)
     lm_grid *g = &sim->grid;
     size_t nn = lm_grid_nodes(g);
     double dt = sim->def.dt;
-    const lm_cbox *b = &c->box;   /* the fields are meant there only */
+    const lm_cbox *b = &c->met;   /* the fields are read there only */
     for (int k = 0; k < c->nf; k++) {
         lm_contact_field *f = &c->f[k];
         for (int j = b->j0; j <= b->j1; j++)

@@ -61,14 +61,14 @@ static double chi_at(const lm_grid *g, const double *chi, int i, int j)
     return chi[(size_t)j * g->nx + i];
 }
 
-/* The normals at the nodes of the contact box (lm_contact.box), the only
+/* The normals at the nodes where pairs meet (lm_contact.met), the only
  * ones read (the release test, the frames at nodes where pairs met); zero
  * at its ghost nodes. */
 void lm_contact_body_normals(lm_sim *sim, lm_contact_field *f)
 {
     const lm_grid *g = &sim->grid;
     const lm_contact *c = sim->contact;
-    const lm_cbox *b = &c->box;
+    const lm_cbox *b = &c->met;
     if (lm_cbox_empty(b)) return;
     double *const n2[2] = {f->nx, f->ny};
     lm_cbox_zero(c, b, n2, 2);
