@@ -14,6 +14,8 @@
 #include "contact.h"
 #include "step.h"
 
+static const lm_cbox EMPTY = {0, -1, 0, -1};
+
 static void field_free(lm_contact_field *f)
 {
     free(f->m);   /* one block: see field_alloc */
@@ -89,6 +91,8 @@ int lm_sim_add_contact(lm_sim *sim, int a, int b, lm_contact_law law, double mu)
     if (!sim->contact) {
         sim->contact = calloc(1, sizeof *sim->contact);
         if (!sim->contact) goto oom;
+        lm_contact *n = sim->contact;
+        n->box = n->met = n->dirty = n->near = n->moved = EMPTY;
     }
     lm_contact *c = sim->contact;
     for (int k = 0; k < c->npairs; k++) {
@@ -132,8 +136,6 @@ static lm_status field_alloc(lm_contact_field *f, size_t nn, size_t ncells)
     f->chi = chi;
     return LM_OK;
 }
-
-static const lm_cbox EMPTY = {0, -1, 0, -1};
 
 /* Makes the fields for the grid and the body-to-field map (bodies can be
  * added between runs). */
@@ -380,6 +382,12 @@ lm_status lm_contact_sums(lm_sim *sim)
         box_join(&c->box, &m);
     }
     c->dirty = box_grow(c, &c->box, 4);
+    if (lm_cbox_empty(&c->box)) {
+        /* no pair can meet: nothing below would be read (the fields keep
+         * their old values, m zero outside mbox) */
+        c->met = EMPTY;
+        return LM_OK;
+    }
     /* when every body is in a pair, the last one's sums are the shared
      * field's less the others': one scatter saved. Not with pins: at a
      * node a held body barely reaches, its true mass may be below the

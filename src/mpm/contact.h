@@ -169,6 +169,13 @@ static inline void lm_cbox_zero(const lm_contact *c, const lm_cbox *b, double *c
         for (int j = b->j0; j <= b->j1; j++) memset(a[k] + (long)j * c->sx + b->i0, 0, w);
 }
 
+/* Did any body move in its own field or slide in the last correction
+ * (else lm_contact_gradient and lm_contact_velocity add nothing)? */
+static inline int lm_contact_moved(const lm_contact *c)
+{
+    return c && c->npairs > 0 && !lm_cbox_empty(&c->moved);
+}
+
 /* Adds a pair (bodies a != b); -1 with sim->err naming the key if the
  * input is bad. mu only for friction (>= 0). */
 int lm_sim_add_contact(lm_sim *sim, int a, int b, lm_contact_law law, double mu);
