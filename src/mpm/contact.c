@@ -381,7 +381,9 @@ lm_status lm_contact_sums(lm_sim *sim)
         lm_cbox m = box_meet(&c->f[c->pairs[k].a].nodes, &c->f[c->pairs[k].b].nodes);
         box_join(&c->box, &m);
     }
-    c->dirty = box_grow(c, &c->box, 4);
+    /* what the stencils of particles that reach box reach (sw - 1 nodes
+     * on), and where the walls fold their ghost nodes (2 nodes in) */
+    c->dirty = box_grow(c, &c->box, sim->grid.sw - 1 + 2 * sim->grid.pad);
     if (lm_cbox_empty(&c->box)) {
         /* no pair can meet: nothing below would be read (the fields keep
          * their old values, m zero outside mbox) */

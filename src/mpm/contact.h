@@ -87,8 +87,9 @@ typedef struct lm_contact {
                               overlaps of their bodies' nodes */
     lm_cbox met;           /* the nodes of box where a pair meets (both its
                               bodies have mass): the sweeps run over it */
-    lm_cbox dirty;         /* where px ... day may be non-zero: box and 4
-                              nodes around (stencils, the walls' images) */
+    lm_cbox dirty;         /* where px ... day may be non-zero: box and the
+                              nodes around that stencils reach (and, with
+                              the ghost ring, the walls' images): 1 or 4 */
     lm_cbox near;          /* the nodes with a state (stick, release, slide) */
     lm_cbox moved;         /* the nodes of state release or slide */
     unsigned char *qflag;  /* per particle of a paired body, this step: 1 its
@@ -103,13 +104,12 @@ typedef struct lm_contact {
 } lm_contact;
 
 /* Node idx's column i and row j in the storage (idx = j sx + i), with a
- * multiplication instead of a division (corrected by one if rounding
- * misses). */
+ * multiplication instead of a division: (idx + 1/2) / sx is at least
+ * 1/(2 sx) from an integer, and the product's rounding error, (idx + 1/2)
+ * / sx times 2^-52, is far below that for any grid (idx < 2^51). */
 static inline void lm_cbox_ij(const lm_contact *c, long idx, int *i, int *j)
 {
-    long r = (long)((double)idx * c->inv_sx);
-    if (r * c->sx > idx) r--;
-    else if ((r + 1) * c->sx <= idx) r++;
+    long r = (long)(((double)idx + 0.5) * c->inv_sx);
     *j = (int)r;
     *i = (int)(idx - r * c->sx);
 }

@@ -29,6 +29,13 @@ static double beta2(double x)
 
 /* The colour at cells [ci0, ci1] x [cj0, cj1] (within the grid): only the
  * points whose nine centres reach them, in the same order as all. */
+/* floor(v) as an int (|v| < 2^31), without the library call */
+static inline int ifloor(double v)
+{
+    int t = (int)v;
+    return t > v ? t - 1 : t;
+}
+
 static void colour(const lm_sim *sim, lm_contact_field *f, int ci0, int ci1, int cj0, int cj1)
 {
     const lm_grid *g = &sim->grid;
@@ -39,7 +46,7 @@ static void colour(const lm_sim *sim, lm_contact_field *f, int ci0, int ci1, int
     for (size_t q = bd->first; q < bd->first + bd->count; q++) {
         /* position in cell-centre units: centre c sits at c + 1/2 cells */
         double fx = (p->x[q] - g->x0) / g->hx - 0.5, fy = (p->y[q] - g->y0) / g->hy - 0.5;
-        int cx = (int)floor(fx + 0.5), cy = (int)floor(fy + 0.5);
+        int cx = ifloor(fx + 0.5), cy = ifloor(fy + 0.5);
         if (cx + 1 < ci0 || cx - 1 > ci1 || cy + 1 < cj0 || cy - 1 > cj1) continue;
         for (int b = -1; b <= 1; b++) {
             int j = cy + b;
