@@ -367,12 +367,15 @@ lm_status lm_contact_sums(lm_sim *sim)
     lm_status st = reserve(sim);
     if (st != LM_OK) return st;
     lm_contact *c = sim->contact;
-    /* what the last step left in px ... day, cleared */
+    /* what the last step left in px ... day, cleared (tx, ty, s only
+     * friction writes) */
+    int friction = 0;
+    for (int k = 0; k < c->npairs; k++) friction |= c->pairs[k].law == LM_CONTACT_FRICTION;
     for (int k = 0; k < c->nf; k++) {
         lm_contact_field *f = &c->f[k];
-        double *const a[11] = {f->px, f->py, f->fx, f->fy, f->tx, f->ty,
-                               f->s, f->dvx, f->dvy, f->dax, f->day};
-        lm_cbox_zero(c, &c->dirty, a, 11);
+        double *const a[11] = {f->px, f->py, f->fx, f->fy, f->dvx, f->dvy,
+                               f->dax, f->day, f->tx, f->ty, f->s};
+        lm_cbox_zero(c, &c->dirty, a, friction ? 11 : 8);
     }
     /* where pairs can meet: both bodies of a pair reach the node */
     for (int k = 0; k < c->nf; k++) c->f[k].nodes = body_box(sim, &c->f[k]);

@@ -79,12 +79,23 @@ void lm_contact_body_normals(lm_sim *sim, lm_contact_field *f)
     if (lm_cbox_empty(b)) return;
     double *const n2[2] = {f->nx, f->ny};
     lm_cbox_zero(c, b, n2, 2);
-    /* the box's grid nodes (i, j), without the ghost ring */
+    /* the box's grid nodes (i, j) where the body is (the normal is wanted
+     * nowhere else), without the ghost ring */
     int i0 = b->i0 - g->pad, i1 = b->i1 - g->pad, j0 = b->j0 - g->pad, j1 = b->j1 - g->pad;
     if (i0 < 0) i0 = 0;
     if (j0 < 0) j0 = 0;
     if (i1 > g->nx) i1 = g->nx;
     if (j1 > g->ny) j1 = g->ny;
+    int bi0 = i1 + 1, bi1 = i0 - 1, bj0 = j1 + 1, bj1 = j0 - 1;
+    for (int j = j0; j <= j1; j++)
+        for (int i = i0; i <= i1; i++)
+            if (f->m[lm_grid_node(g, i, j)] > 0) {
+                if (i < bi0) bi0 = i;
+                if (i > bi1) bi1 = i;
+                if (j < bj0) bj0 = j;
+                if (j > bj1) bj1 = j;
+            }
+    i0 = bi0, i1 = bi1, j0 = bj0, j1 = bj1;
     if (i0 > i1 || j0 > j1) return;
     /* the cells around them */
     int ci0 = i0 - 1 < 0 ? 0 : i0 - 1, cj0 = j0 - 1 < 0 ? 0 : j0 - 1;
