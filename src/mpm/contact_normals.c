@@ -48,6 +48,8 @@ static void colour(const lm_sim *sim, lm_contact_field *f, int ci0, int ci1, int
         double fx = (p->x[q] - g->x0) / g->hx - 0.5, fy = (p->y[q] - g->y0) / g->hy - 0.5;
         int cx = ifloor(fx + 0.5), cy = ifloor(fy + 0.5);
         if (cx + 1 < ci0 || cx - 1 > ci1 || cy + 1 < cj0 || cy - 1 > cj1) continue;
+        double wx[3];   /* each weight once, the same products below */
+        for (int a = -1; a <= 1; a++) wx[a + 1] = beta2(fx - (cx + a));
         for (int b = -1; b <= 1; b++) {
             int j = cy + b;
             if (j < 0 || j >= g->ny) continue;
@@ -55,7 +57,7 @@ static void colour(const lm_sim *sim, lm_contact_field *f, int ci0, int ci1, int
             for (int a = -1; a <= 1; a++) {
                 int i = cx + a;
                 if (i < 0 || i >= g->nx) continue;
-                f->chi[(size_t)j * g->nx + i] += wy * beta2(fx - i);
+                f->chi[(size_t)j * g->nx + i] += wy * wx[a + 1];
             }
         }
     }
