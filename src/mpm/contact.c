@@ -1,11 +1,22 @@
 /* contact.c - pairs of bodies in contact and their own grid fields
  * ([M] eqs 23-25, [T] eqs 9.4-9.6).
  *
- * Only bodies named in a pair get fields, so memory and time grow with
- * them, not with the bodies of the run. The sums are done serially, body
- * by body and particle by particle in storage order: the same on every
- * thread count (threads.h), and cheap beside the step's own scatters as
- * long as the paired bodies are a part of the run. */
+ * Only bodies named in a pair get fields, so memory grows with them, not
+ * with the bodies of the run. Time grows with where the pairs meet: each
+ * step finds the nodes each paired body's stencils reach (a box), and the
+ * union of the pairs' overlaps of those boxes (lm_contact.box). Momentum
+ * and force are summed only from the particles whose stencils reach it, so
+ * that at its nodes the sums are whole; mass from every particle of the
+ * body (the release test needs its largest nodal mass). The normals, the
+ * release test and the correction run over the nodes where a pair does
+ * meet (lm_contact.met), the particle corrections over the particles next
+ * to them; arrays are cleared only where the last step wrote
+ * (lm_contact.dirty). While no pair can meet only the boxes are found.
+ * The values that are read are the same operations in the same order as
+ * over the whole grid, so the results are bit for bit those of the
+ * whole-grid sweeps (docs/performance.md, "Contact's cost"). The sums are
+ * done serially, body by body and particle by particle in storage order:
+ * the same on every thread count (threads.h). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

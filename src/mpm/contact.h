@@ -176,6 +176,17 @@ static inline int lm_contact_moved(const lm_contact *c)
     return c && c->npairs > 0 && !lm_cbox_empty(&c->moved);
 }
 
+/* lm_contact_gradient for the particles that need it: those of paired
+ * bodies next to a node where one moved in its own field or slid (ask
+ * lm_contact_moved once before a pass: the flags are this step's only
+ * then). */
+void lm_contact_gradient(const lm_sim *sim, size_t q, double L[4]);
+static inline void lm_contact_gradient_near(const lm_sim *sim, size_t q, double L[4])
+{
+    const lm_contact *c = sim->contact;
+    if (c->of_body[sim->p.body[q]] >= 0 && c->qflag[q] & 2) lm_contact_gradient(sim, q, L);
+}
+
 /* Adds a pair (bodies a != b); -1 with sim->err naming the key if the
  * input is bad. mu only for friction (>= 0). */
 int lm_sim_add_contact(lm_sim *sim, int a, int b, lm_contact_law law, double mu);

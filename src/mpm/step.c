@@ -420,7 +420,7 @@ void lm_step_gas_maxima(lm_sim *sim, double *max_div, double *c_max)
         if (mat->kind != LM_GAS || !mat->av) continue;
         double L[4];
         velocity_gradient(&sim->grid, p, (size_t)q, L);
-        if (moved) lm_contact_gradient(sim, (size_t)q, L);
+        if (moved) lm_contact_gradient_near(sim, (size_t)q, L);
         double div = fabs(sim->def.axisym ? L[0] + L[3] + lm_axisym_hoop_rate(sim, (size_t)q)
                                            : L[0] + L[3]);
         double c = lm_gas_sound_speed(mat, p->e[q]);
@@ -436,7 +436,7 @@ void lm_step_gas_maxima(lm_sim *sim, double *max_div, double *c_max)
 static void rate_at(const lm_sim *sim, size_t q, lm_rate *r, int moved)
 {
     velocity_gradient(&sim->grid, &sim->p, q, r->L);
-    if (moved) lm_contact_gradient(sim, q, r->L);   /* contact.h */
+    if (moved) lm_contact_gradient_near(sim, q, r->L);   /* contact.h */
     const double *L = r->L, dt = sim->def.dt;
     r->dexx = dt * L[0];
     r->deyy = dt * L[3];
