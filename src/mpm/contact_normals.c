@@ -48,17 +48,17 @@ static void colour(const lm_sim *sim, lm_contact_field *f, int ci0, int ci1, int
         double fx = (p->x[q] - g->x0) / g->hx - 0.5, fy = (p->y[q] - g->y0) / g->hy - 0.5;
         int cx = ifloor(fx + 0.5), cy = ifloor(fy + 0.5);
         if (cx + 1 < ci0 || cx - 1 > ci1 || cy + 1 < cj0 || cy - 1 > cj1) continue;
-        double wx[3];   /* each weight once, the same products below */
-        for (int a = -1; a <= 1; a++) wx[a + 1] = beta2(fx - (cx + a));
-        for (int b = -1; b <= 1; b++) {
+        /* its centres within the cells wanted (inside the grid): each
+         * weight once, the same products as over all nine */
+        int a0 = cx - 1 < ci0 ? ci0 - cx : -1, a1 = cx + 1 > ci1 ? ci1 - cx : 1;
+        int b0 = cy - 1 < cj0 ? cj0 - cy : -1, b1 = cy + 1 > cj1 ? cj1 - cy : 1;
+        double wx[3];
+        for (int a = a0; a <= a1; a++) wx[a + 1] = beta2(fx - (cx + a));
+        for (int b = b0; b <= b1; b++) {
             int j = cy + b;
-            if (j < 0 || j >= g->ny) continue;
             double wy = beta2(fy - j);
-            for (int a = -1; a <= 1; a++) {
-                int i = cx + a;
-                if (i < 0 || i >= g->nx) continue;
-                f->chi[(size_t)j * g->nx + i] += wy * wx[a + 1];
-            }
+            double *row = f->chi + (size_t)j * g->nx;
+            for (int a = a0; a <= a1; a++) row[cx + a] += wy * wx[a + 1];
         }
     }
 }
