@@ -282,7 +282,10 @@ static LM_FORCE_INLINE void body_sums_w(lm_sim *sim, lm_contact_field *f, const 
         const int node = p->node[q];
         const double m = p->m[q];
         if (!lm_cbox_reaches(c, &c->box, node, W)) {
-            for (int k = 0; k < NS; k++) fm[lm_stencil_node(g, W, node, k)] += m * N[k];
+            for (int b = 0; b < W; b++) {
+                const long row = lm_stencil_row(g, node, b);
+                for (int a = 0; a < W; a++) fm[row + a] += m * N[b * W + a];
+            }
             continue;
         }
         const double *Gx = p->Gx + NS * q, *Gy = p->Gy + NS * q;
