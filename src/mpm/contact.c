@@ -45,6 +45,7 @@ void lm_contact_free(lm_contact *c)
     free(c->flag);
     free(c->state);
     free(c->qflag);
+    free(c->qi);
     free(c);
 }
 
@@ -149,7 +150,7 @@ static lm_status field_alloc(lm_contact_field *f, size_t nn, size_t ncells)
 }
 
 /* Makes the fields for the grid and the body-to-field map (bodies can be
- * added between runs). */
+ * added between runs), and the particles' scratch. */
 static lm_status reserve(lm_sim *sim)
 {
     lm_contact *c = sim->contact;
@@ -185,9 +186,14 @@ static lm_status reserve(lm_sim *sim)
     if (!fl) goto oom;
     c->flag = fl;
     if (c->nq != sim->p.n) {
-        unsigned char *qf = realloc(c->qflag, sim->p.n ? sim->p.n : 1);
+        size_t n = sim->p.n ? sim->p.n : 1;
+        unsigned char *qf = realloc(c->qflag, n);
         if (!qf) goto oom;
         c->qflag = qf;
+        int *ij = realloc(c->qi, 2 * n * sizeof *ij);   /* qi, then qj */
+        if (!ij) goto oom;
+        c->qi = ij;
+        c->qj = ij + n;
         c->nq = sim->p.n;
     }
     for (int b = 0; b < sim->nbodies; b++) c->of_body[b] = -1;
@@ -235,7 +241,7 @@ static lm_cbox box_grow(const lm_contact *c, const lm_cbox *b, int r)
  * reaches: the box holds the body's sums whole). */
 static lm_cbox body_box(const lm_sim *sim, const lm_contact_field *f)
 {
-    const lm_contact *c = sim->contact;
+    lm_contact *c = sim->contact;
     const lm_body *bd = &sim->bodies[f->body];
     const int *node = sim->p.node;
     if (bd->count == 0) return EMPTY;
@@ -243,6 +249,8 @@ static lm_cbox body_box(const lm_sim *sim, const lm_contact_field *f)
     for (size_t q = bd->first; q < bd->first + bd->count; q++) {
         int i, j;
         lm_cbox_ij(c, node[q], &i, &j);
+        c->qi[q] = i;
+        c->qj[q] = j;
         if (i < i0) i0 = i;
         if (i > i1) i1 = i;
         if (j < j0) j0 = j;
@@ -281,7 +289,7 @@ static LM_FORCE_INLINE void body_sums_w(lm_sim *sim, lm_contact_field *f, const 
         const double *N = p->N + NS * q;
         const int node = p->node[q];
         const double m = p->m[q];
-        if (!lm_cbox_reaches(c, &c->box, node, W)) {
+        if (!lm_cbox_reaches_q(c, &c->box, q, W)) {
             for (int b = 0; b < W; b++) {
                 const long row = lm_stencil_row(g, node, b);
                 for (int a = 0; a < W; a++) fm[row + a] += m * N[b * W + a];

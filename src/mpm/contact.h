@@ -95,6 +95,8 @@ typedef struct lm_contact {
     unsigned char *qflag;  /* per particle of a paired body, this step: 1 its
                               stencil reaches a node in near with a state,
                               2 one of state release or slide (nq of them) */
+    int *qi, *qj;          /* per particle of a paired body, this step: the
+                              column and row of its stencil's first node */
     size_t nq;
     /* Grid kinetic energy of the paired bodies' fields (and the rest of
      * the mass as one field) at the contact nodes, before and after the
@@ -157,6 +159,13 @@ static inline void lm_cbox_apply_bc(const lm_contact *c, const lm_grid *g, const
             if (g->bc[LM_TOP] == LM_BC_FIXED) ux[n] = 0;
         }
     }
+}
+
+/* Does particle q's W x W stencil reach box b (qi, qj this step's)? */
+static inline int lm_cbox_reaches_q(const lm_contact *c, const lm_cbox *b, size_t q, int W)
+{
+    int i = c->qi[q], j = c->qj[q];
+    return i <= b->i1 && i + W - 1 >= b->i0 && j <= b->j1 && j + W - 1 >= b->j0;
 }
 
 /* Zeroes the n arrays a (doubles, one block n nodes apart when stride is

@@ -207,7 +207,7 @@ static void particle_flags(lm_sim *sim)
         const lm_body *bd = &sim->bodies[c->f[k].body];
         for (size_t q = bd->first; q < bd->first + bd->count; q++) {
             unsigned char fl = 0;
-            if (lm_cbox_reaches(c, &c->near, p->node[q], W))
+            if (lm_cbox_reaches_q(c, &c->near, q, W))
                 for (int j = 0; j < W * W; j++) {
                     unsigned char s = st[lm_stencil_node(g, W, p->node[q], j)];
                     if (s != LM_CNODE_NONE) fl |= 1;
