@@ -156,7 +156,7 @@ static lm_status reserve(lm_sim *sim)
     lm_contact *c = sim->contact;
     size_t nn = lm_grid_nodes(&sim->grid);
     size_t ncells = (size_t)sim->grid.nx * (size_t)sim->grid.ny;
-    if (c->nn != nn) {
+    if (c->nn != nn || c->sx != sim->grid.sx) {
         free(c->state);
         c->state = calloc(nn, 1);
         if (!c->state) goto oom;
