@@ -1,11 +1,22 @@
 /* contact.c - pairs of bodies in contact and their own grid fields
  * ([M] eqs 23-25, [T] eqs 9.4-9.6).
  *
- * Only bodies named in a pair get fields, so memory and time grow with
- * them, not with the bodies of the run. The sums are done serially, body
- * by body and particle by particle in storage order: the same on every
- * thread count (threads.h), and cheap beside the step's own scatters as
- * long as the paired bodies are a part of the run. */
+ * Only bodies named in a pair get fields, so memory grows with them, not
+ * with the bodies of the run. Time grows with where the pairs meet: each
+ * step finds the nodes each paired body's stencils reach (a box), and the
+ * union of the pairs' overlaps of those boxes (lm_contact.box). Momentum
+ * and force are summed only from the particles whose stencils reach it, so
+ * that at its nodes the sums are whole; mass from every particle of the
+ * body (the release test needs its largest nodal mass). The normals, the
+ * release test and the correction run over the nodes where a pair does
+ * meet (lm_contact.met), the particle corrections over the particles next
+ * to them; arrays are cleared only where the last step wrote
+ * (lm_contact.dirty). While no pair can meet only the boxes are found.
+ * The values that are read are the same operations in the same order as
+ * over the whole grid, so the results are bit for bit those of the
+ * whole-grid sweeps (docs/performance.md, "Contact's cost"). The sums are
+ * done serially, body by body and particle by particle in storage order:
+ * the same on every thread count (threads.h). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -13,6 +24,8 @@
 
 #include "contact.h"
 #include "step.h"
+
+static const lm_cbox EMPTY = {0, -1, 0, -1};
 
 static void field_free(lm_contact_field *f)
 {
@@ -31,6 +44,8 @@ void lm_contact_free(lm_contact *c)
     free(c->of_body);
     free(c->flag);
     free(c->state);
+    free(c->qflag);
+    free(c->qi);
     free(c);
 }
 
@@ -88,6 +103,8 @@ int lm_sim_add_contact(lm_sim *sim, int a, int b, lm_contact_law law, double mu)
     if (!sim->contact) {
         sim->contact = calloc(1, sizeof *sim->contact);
         if (!sim->contact) goto oom;
+        lm_contact *n = sim->contact;
+        n->box = n->met = n->dirty = n->near = n->moved = EMPTY;
     }
     lm_contact *c = sim->contact;
     for (int k = 0; k < c->npairs; k++) {
@@ -133,13 +150,13 @@ static lm_status field_alloc(lm_contact_field *f, size_t nn, size_t ncells)
 }
 
 /* Makes the fields for the grid and the body-to-field map (bodies can be
- * added between runs). */
+ * added between runs), and the particles' scratch. */
 static lm_status reserve(lm_sim *sim)
 {
     lm_contact *c = sim->contact;
     size_t nn = lm_grid_nodes(&sim->grid);
     size_t ncells = (size_t)sim->grid.nx * (size_t)sim->grid.ny;
-    if (c->nn != nn) {
+    if (c->nn != nn || c->sx != sim->grid.sx) {
         free(c->state);
         c->state = calloc(nn, 1);
         if (!c->state) goto oom;
@@ -149,9 +166,16 @@ static lm_status reserve(lm_sim *sim)
             c->f[k].body = b;
         }
         c->nn = nn;
+        c->sx = sim->grid.sx;
+        c->sy = (int)(nn / (size_t)sim->grid.sx);
+        c->inv_sx = 1.0 / c->sx;
+        c->dirty = EMPTY;
     }
-    for (int k = 0; k < c->nf; k++)
-        if (!c->f[k].m && field_alloc(&c->f[k], nn, ncells) != LM_OK) goto oom;
+    for (int k = 0; k < c->nf; k++) {
+        if (c->f[k].m) continue;
+        if (field_alloc(&c->f[k], nn, ncells) != LM_OK) goto oom;
+        c->f[k].mbox = EMPTY;   /* all zero */
+    }
     if (c->nbodies_alloc != sim->nbodies) {
         int *ob = realloc(c->of_body, (size_t)sim->nbodies * sizeof *ob);
         if (!ob) goto oom;
@@ -161,12 +185,79 @@ static lm_status reserve(lm_sim *sim)
     unsigned char *fl = realloc(c->flag, (size_t)c->nf);
     if (!fl) goto oom;
     c->flag = fl;
+    if (c->nq != sim->p.n) {
+        size_t n = sim->p.n ? sim->p.n : 1;
+        unsigned char *qf = realloc(c->qflag, n);
+        if (!qf) goto oom;
+        c->qflag = qf;
+        int *ij = realloc(c->qi, 2 * n * sizeof *ij);   /* qi, then qj */
+        if (!ij) goto oom;
+        c->qi = ij;
+        c->qj = ij + n;
+        c->nq = sim->p.n;
+    }
     for (int b = 0; b < sim->nbodies; b++) c->of_body[b] = -1;
     for (int k = 0; k < c->nf; k++) c->of_body[c->f[k].body] = k;
     return LM_OK;
 oom:
     snprintf(sim->err, sizeof sim->err, "out of memory for the contact fields");
     return LM_ERR_MEMORY;
+}
+
+static lm_cbox box_meet(const lm_cbox *a, const lm_cbox *b)
+{
+    lm_cbox r = {a->i0 > b->i0 ? a->i0 : b->i0, a->i1 < b->i1 ? a->i1 : b->i1,
+                 a->j0 > b->j0 ? a->j0 : b->j0, a->j1 < b->j1 ? a->j1 : b->j1};
+    return lm_cbox_empty(&r) ? EMPTY : r;
+}
+
+static void box_join(lm_cbox *a, const lm_cbox *b)
+{
+    if (lm_cbox_empty(b)) return;
+    if (lm_cbox_empty(a)) {
+        *a = *b;
+        return;
+    }
+    if (b->i0 < a->i0) a->i0 = b->i0;
+    if (b->i1 > a->i1) a->i1 = b->i1;
+    if (b->j0 < a->j0) a->j0 = b->j0;
+    if (b->j1 > a->j1) a->j1 = b->j1;
+}
+
+/* b and r nodes around it, within the storage. */
+static lm_cbox box_grow(const lm_contact *c, const lm_cbox *b, int r)
+{
+    if (lm_cbox_empty(b)) return EMPTY;
+    lm_cbox g = {b->i0 - r, b->i1 + r, b->j0 - r, b->j1 + r};
+    if (g.i0 < 0) g.i0 = 0;
+    if (g.j0 < 0) g.j0 = 0;
+    if (g.i1 > c->sx - 1) g.i1 = c->sx - 1;
+    if (g.j1 > c->sy - 1) g.j1 = c->sy - 1;
+    return g;
+}
+
+/* The nodes the stencils of the body's particles reach (walls fold a ghost
+ * node's sum into a mirror node two nodes in, which the same stencil
+ * reaches: the box holds the body's sums whole). */
+static lm_cbox body_box(const lm_sim *sim, const lm_contact_field *f)
+{
+    lm_contact *c = sim->contact;
+    const lm_body *bd = &sim->bodies[f->body];
+    const int *node = sim->p.node;
+    if (bd->count == 0) return EMPTY;
+    int i0 = c->sx, i1 = -1, j0 = c->sy, j1 = -1;
+    for (size_t q = bd->first; q < bd->first + bd->count; q++) {
+        int i, j;
+        lm_cbox_ij(c, node[q], &i, &j);
+        c->qi[q] = i;
+        c->qj[q] = j;
+        if (i < i0) i0 = i;
+        if (i > i1) i1 = i;
+        if (j < j0) j0 = j;
+        if (j > j1) j1 = j;
+    }
+    lm_cbox b = {i0, i1 + sim->grid.sw - 1, j0, j1 + sim->grid.sw - 1};
+    return b;
 }
 
 /* Is q a membrane point whose tension reaches the grid along segments? */
@@ -176,25 +267,42 @@ static int segment_point(const lm_sim *sim, size_t q)
     return bd->membrane && bd->force == LM_MFORCE_SEGMENT;
 }
 
-/* Steps 1-2 for one body alone: m^I, p^I and f^I = f^int,I + m^I g, the
- * same sums as step.c's over the body's particles only ([M] eqs 23, 25),
- * then folded at the walls like the shared field. */
-static void body_sums(lm_sim *sim, lm_contact_field *f)
+#if defined(__GNUC__)
+#define LM_FORCE_INLINE inline __attribute__((always_inline))
+#else
+#define LM_FORCE_INLINE inline
+#endif
+
+/* body_sums' particle loop for a stencil W nodes wide: the mass of every
+ * particle (for mmax), momentum and force only of those whose stencils
+ * reach the contact box, so that the sums at its nodes are whole, in the
+ * same order as over all of them. */
+static LM_FORCE_INLINE void body_sums_w(lm_sim *sim, lm_contact_field *f, const int W)
 {
     const lm_grid *g = &sim->grid;
     const lm_particles *p = &sim->p;
+    const lm_contact *c = sim->contact;
     const lm_body *bd = &sim->bodies[f->body];
-    const int W = g->sw, NS = W * W;
-    size_t nn = lm_grid_nodes(g);
-    memset(f->m, 0, 5 * nn * sizeof(double));   /* m, px, py, fx, fy */
+    const int NS = W * W;
+    double *const fm = f->m;
     for (size_t q = bd->first; q < bd->first + bd->count; q++) {
-        const double *N = p->N + NS * q, *Gx = p->Gx + NS * q, *Gy = p->Gy + NS * q;
+        const double *N = p->N + NS * q;
+        const int node = p->node[q];
+        const double m = p->m[q];
+        if (!lm_cbox_reaches_q(c, &c->box, q, W)) {
+            for (int b = 0; b < W; b++) {
+                const long row = lm_stencil_row(g, node, b);
+                for (int a = 0; a < W; a++) fm[row + a] += m * N[b * W + a];
+            }
+            continue;
+        }
+        const double *Gx = p->Gx + NS * q, *Gy = p->Gy + NS * q;
         const int seg = segment_point(sim, q);
-        const double m = p->m[q], V = m / p->rho[q];
+        const double V = m / p->rho[q];
         for (int k = 0; k < NS; k++) {
-            long i = lm_stencil_node(g, W, p->node[q], k);
+            long i = lm_stencil_node(g, W, node, k);
             double w = m * N[k];
-            f->m[i] += w;
+            fm[i] += w;
             f->px[i] += w * p->vx[q];
             f->py[i] += w * p->vy[q];
             if (seg) {
@@ -206,42 +314,70 @@ static void body_sums(lm_sim *sim, lm_contact_field *f)
             }
         }
     }
+}
+
+/* Steps 1-2 for one body alone: m^I, p^I and f^I = f^int,I + m^I g, the
+ * same sums as step.c's over the body's particles only ([M] eqs 23, 25),
+ * then folded at the walls like the shared field; m everywhere, the rest
+ * whole in the contact box (px ... fy are zero outside `dirty` here). */
+static void body_sums(lm_sim *sim, lm_contact_field *f)
+{
+    const lm_grid *g = &sim->grid;
+    lm_contact *c = sim->contact;
+    double *const mz[1] = {f->m};
+    lm_cbox_zero(c, &f->mbox, mz, 1);
+    f->mbox = f->nodes;
+    if (g->sw == 2) body_sums_w(sim, f, 2);
+    else body_sums_w(sim, f, 3);
     double *const out[5] = {f->m, f->px, f->py, f->fx, f->fy};
     static const lm_comp comp[5] = {LM_COMP_SCALAR, LM_COMP_X, LM_COMP_Y, LM_COMP_X,
                                     LM_COMP_Y};
     lm_grid_fold(g, 5, out, comp);
-    for (size_t i = 0; i < nn; i++) {
-        f->fx[i] += f->m[i] * sim->def.gx;
-        f->fy[i] += f->m[i] * sim->def.gy;
-    }
+    const lm_cbox *b = &c->box;
+    for (int j = b->j0; j <= b->j1; j++)
+        for (long i = (long)j * c->sx + b->i0; i <= (long)j * c->sx + b->i1; i++) {
+            f->fx[i] += f->m[i] * sim->def.gx;
+            f->fy[i] += f->m[i] * sim->def.gy;
+        }
 }
 
 /* The sums of the field f as the shared field's less every other field's
- * (all bodies are paired). Mass below 1e-12 of the node's is rounding: the
- * body is not there. */
+ * (all bodies are paired): the mass over the body's nodes, the rest over
+ * the contact box. Mass below 1e-12 of the node's is rounding: the body is
+ * not there (outside its nodes the difference is that rounding, so zero). */
 static void rest_sums(lm_sim *sim, lm_contact_field *f)
 {
     const lm_grid *g = &sim->grid;
-    const lm_contact *c = sim->contact;
-    size_t nn = lm_grid_nodes(g);
-    memcpy(f->m, g->m, nn * sizeof(double));
-    memcpy(f->px, g->px, nn * sizeof(double));
-    memcpy(f->py, g->py, nn * sizeof(double));
-    memcpy(f->fx, g->fx, nn * sizeof(double));
-    memcpy(f->fy, g->fy, nn * sizeof(double));
-    for (int k = 0; k < c->nf; k++) {
-        const lm_contact_field *o = &c->f[k];
-        if (o == f) continue;
-        for (size_t i = 0; i < nn; i++) {
-            f->m[i] -= o->m[i];
-            f->px[i] -= o->px[i];
-            f->py[i] -= o->py[i];
-            f->fx[i] -= o->fx[i];
-            f->fy[i] -= o->fy[i];
+    lm_contact *c = sim->contact;
+    double *const mz[1] = {f->m};
+    lm_cbox_zero(c, &f->mbox, mz, 1);
+    f->mbox = f->nodes;
+    const lm_cbox *b = &f->nodes;
+    for (int j = b->j0; j <= b->j1; j++)
+        for (long i = (long)j * c->sx + b->i0; i <= (long)j * c->sx + b->i1; i++) {
+            double m = g->m[i];
+            for (int k = 0; k < c->nf; k++)
+                if (&c->f[k] != f) m -= c->f[k].m[i];
+            f->m[i] = m <= 1e-12 * g->m[i] ? 0 : m;
         }
-    }
-    for (size_t i = 0; i < nn; i++)
-        if (f->m[i] <= 1e-12 * g->m[i]) f->m[i] = f->px[i] = f->py[i] = f->fx[i] = f->fy[i] = 0;
+    b = &c->box;
+    for (int j = b->j0; j <= b->j1; j++)
+        for (long i = (long)j * c->sx + b->i0; i <= (long)j * c->sx + b->i1; i++) {
+            double px = g->px[i], py = g->py[i], fx = g->fx[i], fy = g->fy[i];
+            for (int k = 0; k < c->nf; k++) {
+                const lm_contact_field *o = &c->f[k];
+                if (o == f) continue;
+                px -= o->px[i];
+                py -= o->py[i];
+                fx -= o->fx[i];
+                fy -= o->fy[i];
+            }
+            if (f->m[i] <= 1e-12 * g->m[i]) px = py = fx = fy = 0;
+            f->px[i] = px;
+            f->py[i] = py;
+            f->fx[i] = fx;
+            f->fy[i] = fy;
+        }
 }
 
 void lm_contact_body_normals(lm_sim *sim, lm_contact_field *f);   /* contact_normals.c */
@@ -253,6 +389,32 @@ lm_status lm_contact_sums(lm_sim *sim)
     lm_status st = reserve(sim);
     if (st != LM_OK) return st;
     lm_contact *c = sim->contact;
+    /* what the last step left in px ... day, cleared (tx, ty, s only
+     * friction writes) */
+    int friction = 0;
+    for (int k = 0; k < c->npairs; k++) friction |= c->pairs[k].law == LM_CONTACT_FRICTION;
+    for (int k = 0; k < c->nf; k++) {
+        lm_contact_field *f = &c->f[k];
+        double *const a[11] = {f->px, f->py, f->fx, f->fy, f->dvx, f->dvy,
+                               f->dax, f->day, f->tx, f->ty, f->s};
+        lm_cbox_zero(c, &c->dirty, a, friction ? 11 : 8);
+    }
+    /* where pairs can meet: both bodies of a pair reach the node */
+    for (int k = 0; k < c->nf; k++) c->f[k].nodes = body_box(sim, &c->f[k]);
+    c->box = EMPTY;
+    for (int k = 0; k < c->npairs; k++) {
+        lm_cbox m = box_meet(&c->f[c->pairs[k].a].nodes, &c->f[c->pairs[k].b].nodes);
+        box_join(&c->box, &m);
+    }
+    /* what the stencils of particles that reach box reach (sw - 1 nodes
+     * on), and where the walls fold their ghost nodes (2 nodes in) */
+    c->dirty = box_grow(c, &c->box, sim->grid.sw - 1 + 2 * sim->grid.pad);
+    if (lm_cbox_empty(&c->box)) {
+        /* no pair can meet: nothing below would be read (the fields keep
+         * their old values, m zero outside mbox) */
+        c->met = EMPTY;
+        return LM_OK;
+    }
     /* when every body is in a pair, the last one's sums are the shared
      * field's less the others': one scatter saved. Not with pins: at a
      * node a held body barely reaches, its true mass may be below the
@@ -263,11 +425,26 @@ lm_status lm_contact_sums(lm_sim *sim)
     for (int k = 0; k < c->nf; k++)
         if (k != last) body_sums(sim, &c->f[k]);
     if (last >= 0) rest_sums(sim, &c->f[last]);
-    size_t nn = lm_grid_nodes(&sim->grid);
+    /* the nodes where a pair does meet: the rest of box needs no sweep */
+    c->met = EMPTY;
+    const lm_cbox *b = &c->box;
+    for (int j = b->j0; j <= b->j1; j++)
+        for (int ii = b->i0; ii <= b->i1; ii++) {
+            long i = (long)j * c->sx + ii;
+            for (int k = 0; k < c->npairs; k++)
+                if (c->f[c->pairs[k].a].m[i] > 0 && c->f[c->pairs[k].b].m[i] > 0) {
+                    lm_cbox one = {ii, ii, j, j};
+                    box_join(&c->met, &one);
+                    break;
+                }
+        }
     for (int k = 0; k < c->nf; k++) {
         lm_contact_field *f = &c->f[k];
-        f->mmax = 0;
-        for (size_t i = 0; i < nn; i++) f->mmax = fmax(f->mmax, f->m[i]);
+        f->mmax = 0;   /* m is zero outside its nodes */
+        const lm_cbox *n = &f->nodes;
+        for (int j = n->j0; j <= n->j1; j++)
+            for (long i = (long)j * c->sx + n->i0; i <= (long)j * c->sx + n->i1; i++)
+                if (f->m[i] > f->mmax) f->mmax = f->m[i];   /* fmax: m is a number */
         lm_contact_body_normals(sim, f);
     }
     lm_contact_release_test(sim);

@@ -153,10 +153,14 @@ void lm_contact_release_test(lm_sim *sim)
 {
     lm_contact *c = sim->contact;
     const lm_grid *g = &sim->grid;
-    size_t nn = lm_grid_nodes(g);
     unsigned char *flag = c->flag;
-    for (int k = 0; k < c->nf; k++) memset(c->f[k].own, 0, nn);
-    for (long i = 0; i < (long)nn; i++) {
+    const lm_cbox *b = &c->met;   /* no pair meets outside it */
+    if (lm_cbox_empty(b)) return;
+    for (int k = 0; k < c->nf; k++)
+        for (int j = b->j0; j <= b->j1; j++)
+            memset(c->f[k].own + (long)j * c->sx + b->i0, 0, (size_t)(b->i1 - b->i0 + 1));
+    for (int j = b->j0; j <= b->j1; j++)
+    for (long i = (long)j * c->sx + b->i0; i <= (long)j * c->sx + b->i1; i++) {
         double mG = g->m[i];
         if (mG <= 0) continue;
         int any = 0;
@@ -171,6 +175,46 @@ void lm_contact_release_test(lm_sim *sim)
         }
         if (any)
             for (int k = 0; k < c->nf; k++) c->f[k].own[i] = flag[k] == 1;
+    }
+}
+
+/* a grown to hold b (b a node) */
+static void grow_to(lm_cbox *a, const lm_cbox *b)
+{
+    if (lm_cbox_empty(a)) {
+        *a = *b;
+        return;
+    }
+    if (b->i0 < a->i0) a->i0 = b->i0;
+    if (b->i1 > a->i1) a->i1 = b->i1;
+    if (b->j0 < a->j0) a->j0 = b->j0;
+    if (b->j1 > a->j1) a->j1 = b->j1;
+}
+
+/* lm_contact.qflag of the paired bodies' particles: does the stencil
+ * reach a node where a pair met (1), one where a body moved in its own
+ * field or slid (2)? Particles away from where pairs meet need no
+ * correction, and most of a body is away from them. */
+static void particle_flags(lm_sim *sim)
+{
+    lm_contact *c = sim->contact;
+    const lm_grid *g = &sim->grid;
+    const lm_particles *p = &sim->p;
+    const unsigned char *st = c->state;
+    const int W = g->sw;
+    if (lm_cbox_empty(&c->near)) return;   /* read only when it is not */
+    for (int k = 0; k < c->nf; k++) {
+        const lm_body *bd = &sim->bodies[c->f[k].body];
+        for (size_t q = bd->first; q < bd->first + bd->count; q++) {
+            unsigned char fl = 0;
+            if (lm_cbox_reaches_q(c, &c->near, q, W))
+                for (int j = 0; j < W * W; j++) {
+                    unsigned char s = st[lm_stencil_node(g, W, p->node[q], j)];
+                    if (s != LM_CNODE_NONE) fl |= 1;
+                    if (s == LM_CNODE_RELEASE || s == LM_CNODE_SLIDE) fl |= 2;
+                }
+            c->qflag[q] = fl;
+        }
     }
 }
 
@@ -288,13 +332,26 @@ static void correct_node(lm_sim *sim, long i)
 }
 
 /* A pinned body's own field moves with its pins where they hold the grid,
- * as the shared field does (pin.c): p^L = m v_pin, the force to match. */
+ * as the shared field does (pin.c's lm_pin_hold, over the nodes where pairs meet):
+ * p^L = m v_pin, the force to match. */
 static void pin_field(const lm_sim *sim, lm_contact_field *f)
 {
     int held = 0;
     for (int k = 0; k < sim->npins && !held; k++) held = sim->pins[k].body == f->body;
     if (!held) return;
-    lm_pin_hold(sim, f->m, f->px, f->py, f->fx, f->fy);
+    const lm_contact *c = sim->contact;
+    const lm_cbox *b = &c->met;
+    double dt = sim->def.dt;
+    for (int j = b->j0; j <= b->j1; j++)
+        for (long i = (long)j * c->sx + b->i0; i <= (long)j * c->sx + b->i1; i++) {
+            if (!(sim->pin_w[i] > 0) || f->m[i] <= 0) continue;
+            double hx = f->m[i] * sim->pin_vx[i] / sim->pin_w[i];
+            double hy = f->m[i] * sim->pin_vy[i] / sim->pin_w[i];
+            f->fx[i] += (hx - f->px[i]) / dt;
+            f->fy[i] += (hy - f->py[i]) / dt;
+            f->px[i] = hx;
+            f->py[i] = hy;
+        }
 }
 
 void lm_contact_correct(lm_sim *sim)
@@ -304,41 +361,41 @@ void lm_contact_correct(lm_sim *sim)
     lm_grid *g = &sim->grid;
     size_t nn = lm_grid_nodes(g);
     double dt = sim->def.dt;
+    const lm_cbox *b = &c->met;   /* the fields are read there only */
     for (int k = 0; k < c->nf; k++) {
         lm_contact_field *f = &c->f[k];
-        for (size_t i = 0; i < nn; i++) {
-            f->px[i] += dt * f->fx[i];   /* [M] eq 24: p^L of the body */
-            f->py[i] += dt * f->fy[i];
-        }
+        for (int j = b->j0; j <= b->j1; j++)
+            for (long i = (long)j * c->sx + b->i0; i <= (long)j * c->sx + b->i1; i++) {
+                f->px[i] += dt * f->fx[i];   /* [M] eq 24: p^L of the body */
+                f->py[i] += dt * f->fy[i];
+            }
         pin_field(sim, f);
-        lm_grid_apply_bc(g, f->px, f->py);
-        lm_grid_apply_bc(g, f->fx, f->fy);
-        /* s, tx, ty, dv and da cleared (own is the release test's) */
-        memset(f->tx, 0, 7 * nn * sizeof(double));
+        lm_cbox_apply_bc(c, g, b, f->px, f->py);
+        lm_cbox_apply_bc(c, g, b, f->fx, f->fy);
+        /* s, tx, ty, dv and da are zero (lm_contact_sums cleared them) */
     }
     memset(c->state, 0, nn);
     c->ke_before = c->ke_after = 0;
     c->nodes_stick = c->nodes_release = c->nodes_slide = 0;
-    for (long i = 0; i < (long)nn; i++)
-        if (g->m[i] > 0) correct_node(sim, i);
+    /* the nodes where pairs met, and where a body moved in its own field
+     * or slid: the particles near them are corrected */
+    c->near = c->moved = (lm_cbox){0, -1, 0, -1};
+    for (int j = b->j0; j <= b->j1; j++)
+        for (int ii = b->i0; ii <= b->i1; ii++) {
+            long i = (long)j * c->sx + ii;
+            if (!(g->m[i] > 0)) continue;
+            correct_node(sim, i);
+            if (c->state[i] == LM_CNODE_NONE) continue;
+            lm_cbox one = {ii, ii, j, j};
+            grow_to(&c->near, &one);
+            if (c->state[i] != LM_CNODE_STICK) grow_to(&c->moved, &one);
+        }
+    particle_flags(sim);
     static const lm_comp comp[4] = {LM_COMP_X, LM_COMP_Y, LM_COMP_X, LM_COMP_Y};
     for (int k = 0; k < c->nf; k++) {
         double *const d[4] = {c->f[k].dvx, c->f[k].dvy, c->f[k].dax, c->f[k].day};
         lm_grid_fill(g, 4, d, comp);
     }
-}
-
-/* Does particle q's stencil reach a node whose state is in `mask` (bit
- * 1 << state)? Particles away from where pairs meet need no correction,
- * and most of a body is away from them. */
-static int touches(const lm_sim *sim, size_t q, unsigned mask)
-{
-    const lm_grid *g = &sim->grid;
-    const unsigned char *st = sim->contact->state;
-    const int W = g->sw;
-    for (int k = 0; k < W * W; k++)
-        if (mask >> st[lm_stencil_node(g, W, sim->p.node[q], k)] & 1) return 1;
-    return 0;
 }
 
 /* sum_i N_iq d_i over particle q's stencil, for two nodal arrays. */
@@ -367,11 +424,12 @@ void lm_contact_g2p(lm_sim *sim)
     const lm_grid *g = &sim->grid;
     lm_particles *p = &sim->p;
     double dt = sim->def.dt, pic = sim->def.pic;
+    if (lm_cbox_empty(&c->near)) return;
     for (int k = 0; k < c->nf; k++) {
         const lm_contact_field *f = &c->f[k];
         const lm_body *bd = &sim->bodies[f->body];
         for (size_t q = bd->first; q < bd->first + bd->count; q++) {
-            if (p->pin[q] || !touches(sim, q, ~1u)) continue;
+            if (p->pin[q] || !(c->qflag[q] & 1)) continue;
             double ax, ay, ux, uy;
             gather2(g, p, q, f->dax, f->day, &ax, &ay);
             gather2(g, p, q, f->dvx, f->dvy, &ux, &uy);
@@ -395,16 +453,18 @@ void lm_contact_strain_velocity(lm_sim *sim)
     lm_grid *g = &sim->grid;
     const lm_particles *p = &sim->p;
     const int W = g->sw, NS = W * W;
-    size_t nn = lm_grid_nodes(g);
     static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
+    const lm_cbox *mv = &c->moved;   /* where bodies moved apart or slid */
     for (int k = 0; k < c->nf; k++) {
         lm_contact_field *f = &c->f[k];
         const lm_body *bd = &sim->bodies[f->body];
-        memset(f->px, 0, 2 * nn * sizeof(double));
-        memset(f->dvx, 0, 2 * nn * sizeof(double));
+        /* p^L and v^L - v cleared (they are zero outside dirty) */
+        double *const z[4] = {f->px, f->py, f->dvx, f->dvy};
+        lm_cbox_zero(c, &c->dirty, z, 4);
+        if (lm_cbox_empty(mv)) continue;
         for (size_t q = bd->first; q < bd->first + bd->count; q++) {
             /* only where a body moved in its own field or slid */
-            if (!touches(sim, q, 1u << LM_CNODE_RELEASE | 1u << LM_CNODE_SLIDE)) continue;
+            if (!(c->qflag[q] & 2)) continue;
             const double *N = p->N + NS * q;
             for (int j = 0; j < NS; j++) {
                 long i = lm_stencil_node(g, W, p->node[q], j);
@@ -414,15 +474,18 @@ void lm_contact_strain_velocity(lm_sim *sim)
         }
         double *const out[2] = {f->px, f->py};
         lm_grid_fold(g, 2, out, comp);
-        for (size_t i = 0; i < nn; i++) {
-            if (f->m[i] > 0) {
-                f->px[i] /= f->m[i];   /* now the body's velocity */
-                f->py[i] /= f->m[i];
+        /* read below at the release and slide nodes only */
+        for (int j = mv->j0; j <= mv->j1; j++)
+            for (long i = (long)j * c->sx + mv->i0; i <= (long)j * c->sx + mv->i1; i++) {
+                if (f->m[i] > 0) {
+                    f->px[i] /= f->m[i];   /* now the body's velocity */
+                    f->py[i] /= f->m[i];
+                }
             }
-        }
-        lm_grid_apply_bc(g, f->px, f->py);
+        lm_cbox_apply_bc(c, g, mv, f->px, f->py);
     }
-    for (long i = 0; i < (long)nn; i++) {
+    for (int j = mv->j0; j <= mv->j1; j++)
+    for (long i = (long)j * c->sx + mv->i0; i <= (long)j * c->sx + mv->i1; i++) {
         if (c->state[i] != LM_CNODE_RELEASE && c->state[i] != LM_CNODE_SLIDE) continue;
         double mG = g->m[i], mR = 0, pRx = 0, pRy = 0;
         for (int k = 0; k < c->nf; k++) {
@@ -469,7 +532,7 @@ void lm_contact_velocity(const lm_sim *sim, size_t q, double *ux, double *uy)
     const lm_particles *p = &sim->p;
     if (!c || c->npairs == 0 || p->pin[q]) return;
     int k = c->of_body[p->body[q]];
-    if (k < 0 || !touches(sim, q, 1u << LM_CNODE_RELEASE | 1u << LM_CNODE_SLIDE)) return;
+    if (k < 0 || lm_cbox_empty(&c->moved) || !(c->qflag[q] & 2)) return;
     double dx, dy;
     gather2(&sim->grid, p, q, c->f[k].dvx, c->f[k].dvy, &dx, &dy);
     *ux += dx;
@@ -482,7 +545,7 @@ void lm_contact_gradient(const lm_sim *sim, size_t q, double L[4])
     const lm_particles *p = &sim->p;
     if (!c || c->npairs == 0 || p->pin[q]) return;
     int k = c->of_body[p->body[q]];
-    if (k < 0 || !touches(sim, q, 1u << LM_CNODE_RELEASE | 1u << LM_CNODE_SLIDE)) return;
+    if (k < 0 || lm_cbox_empty(&c->moved) || !(c->qflag[q] & 2)) return;
     const lm_contact_field *f = &c->f[k];
     const lm_grid *g = &sim->grid;
     const int W = g->sw, NS = W * W;

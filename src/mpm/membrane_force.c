@@ -162,13 +162,14 @@ void lm_membrane_segment_move(lm_sim *sim)
 {
     lm_particles *p = &sim->p;
     double dt = sim->def.dt;
+    const int moved = lm_contact_moved(sim->contact);   /* bodies in own fields */
     for (int b = 0; b < sim->nbodies; b++) {
         if (!musl_moves(sim, b)) continue;
         const lm_body *bd = &sim->bodies[b];
         for (size_t q = bd->first; q < bd->first + bd->count; q++) {
             double ux, uy;
             remapped_velocity(&sim->grid, p, q, &ux, &uy);
-            lm_contact_velocity(sim, q, &ux, &uy);
+            if (moved) lm_contact_velocity(sim, q, &ux, &uy);
             p->x[q] = p->fpx[q] + dt * ux;
             p->y[q] = p->fpy[q] + dt * uy;
         }

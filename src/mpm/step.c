@@ -411,6 +411,7 @@ void lm_step_gas_maxima(lm_sim *sim, double *max_div, double *c_max)
     int m = 0;
     while (m < sim->nmats && !(sim->mats[m]->kind == LM_GAS && sim->mats[m]->av)) m++;
     if (m == sim->nmats) n = 0;
+    const int moved = lm_contact_moved(sim->contact);   /* bodies in own fields */
     /* maxima do not depend on the order they are taken in */
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) \
     reduction(max : md, cm) if (n >= LM_PARTICLE_LOOP_MIN)
@@ -419,7 +420,7 @@ void lm_step_gas_maxima(lm_sim *sim, double *max_div, double *c_max)
         if (mat->kind != LM_GAS || !mat->av) continue;
         double L[4];
         velocity_gradient(&sim->grid, p, (size_t)q, L);
-        if (sim->contact) lm_contact_gradient(sim, (size_t)q, L);
+        if (moved) lm_contact_gradient_near(sim, (size_t)q, L);
         double div = fabs(sim->def.axisym ? L[0] + L[3] + lm_axisym_hoop_rate(sim, (size_t)q)
                                            : L[0] + L[3]);
         double c = lm_gas_sound_speed(mat, p->e[q]);
@@ -432,10 +433,10 @@ void lm_step_gas_maxima(lm_sim *sim, double *max_div, double *c_max)
 
 /* Step 7 at particle q: L = sum_i v_i (x) G_ip, the strain increment
  * (dt/2)(L + L^T) and the spin (1/2)(L - L^T). */
-static void rate_at(const lm_sim *sim, size_t q, lm_rate *r)
+static void rate_at(const lm_sim *sim, size_t q, lm_rate *r, int moved)
 {
     velocity_gradient(&sim->grid, &sim->p, q, r->L);
-    if (sim->contact) lm_contact_gradient(sim, q, r->L);   /* contact.h */
+    if (moved) lm_contact_gradient_near(sim, q, r->L);   /* contact.h */
     const double *L = r->L, dt = sim->def.dt;
     r->dexx = dt * L[0];
     r->deyy = dt * L[3];
@@ -474,11 +475,12 @@ void lm_step_stress(lm_sim *sim, double max_div, double c_max)
     const lm_grid *g = &sim->grid;
     double h = fmin(g->hx, g->hy);
     long n = (long)sim->p.n;
+    const int moved = lm_contact_moved(sim->contact);   /* bodies in own fields */
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
     for (long q = 0; q < n; q++) {
         if (segment_point(sim, (size_t)q)) continue;   /* from lengths */
         lm_rate r;
-        rate_at(sim, (size_t)q, &r);
+        rate_at(sim, (size_t)q, &r, moved);
         r.dt = sim->def.dt;
         r.max_div = max_div;
         r.c_max = c_max;
