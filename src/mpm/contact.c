@@ -105,6 +105,7 @@ int lm_sim_add_contact(lm_sim *sim, int a, int b, lm_contact_law law, double mu)
         if (!sim->contact) goto oom;
         lm_contact *n = sim->contact;
         n->box = n->met = n->dirty = n->near = n->moved = EMPTY;
+        n->held_node = n->held_body = n->held_by = -1;
     }
     lm_contact *c = sim->contact;
     for (int k = 0; k < c->npairs; k++) {

@@ -103,6 +103,12 @@ typedef struct lm_contact {
      * correction of the last step: after <= before ([M] §4.1). */
     double ke_before, ke_after;
     long nodes_stick, nodes_release, nodes_slide;
+    /* A node a pin holds where a pair meets and an unpinned partner has
+     * almost all the mass (contact_correct.c, held_check): the partner is
+     * held by another body's pins. The first such node and that body, or
+     * -1; lm_step_check stops the run with them. */
+    long held_node;
+    int held_body, held_by;
 } lm_contact;
 
 /* Node idx's column i and row j in the storage (idx = j sx + i), with a

@@ -218,6 +218,44 @@ static void particle_flags(lm_sim *sim)
     }
 }
 
+static int body_pinned(const lm_sim *sim, int b)
+{
+    for (int k = 0; k < sim->npins; k++)
+        if (sim->pins[k].body == b) return 1;
+    return 0;
+}
+
+/* A pin holds every node its points touch (pin.c). Where a pair meets at
+ * such a node and an unpinned partner has nearly all of the node's mass,
+ * the pin holds that partner, not its own body: with the quadratic
+ * B-spline a pinned plane's stencil reaches 1.5 cells into a block lying
+ * on it (its weight 0.03 at the second node row against the block's 0.97)
+ * and the block cannot slide at all (measured: a = -0.003 where
+ * g (sin - mu cos) = 2.40). The first such node is recorded for
+ * lm_step_check, which stops the run naming both; a partner with at most
+ * HELD of the mass shares the node with the pinned body, as at the
+ * interface row of the linear and GIMP stencils, and is left to the
+ * contact correction; so is a pinned body whose share is rounding (uGIMP's
+ * weight at the edge of its support: 1e-30). */
+#define HELD 0.9
+static void held_check(lm_sim *sim, long i)
+{
+    lm_contact *c = sim->contact;
+    if (c->held_body >= 0 || !pinned_node(sim, i)) return;
+    int held = -1, by = -1;
+    for (int k = 0; k < c->nf; k++) {
+        const lm_contact_field *f = &c->f[k];
+        if (!(f->m[i] > REST_TOL * sim->grid.m[i])) continue;   /* rounding: uGIMP's edge */
+        if (body_pinned(sim, f->body)) by = f->body;
+        else if (f->m[i] > HELD * sim->grid.m[i]) held = f->body;
+    }
+    if (held >= 0 && by >= 0) {
+        c->held_node = i;
+        c->held_body = held;
+        c->held_by = by;
+    }
+}
+
 /* The correction at node i. */
 static void correct_node(lm_sim *sim, long i)
 {
@@ -227,6 +265,7 @@ static void correct_node(lm_sim *sim, long i)
     int any = 0;
     for (int k = 0; k < c->npairs && !any; k++) any = pair_here(c, k, i);
     if (!any) return;
+    held_check(sim, i);
     double vGx = g->px[i] / mG, vGy = g->py[i] / mG;
     double aGx = g->fx[i] / mG, aGy = g->fy[i] / mG;
     /* the same test with the Lagrangian velocities p^L / m: a pair that

@@ -534,6 +534,28 @@ static inline int check_one(lm_sim *sim, size_t q)
 /* Stops the run at the first sign of trouble, naming the particle (the
  * lowest-numbered one, whatever the thread count), rather than letting NaN
  * spread through the grid. */
+/* A body held by another's pins at a contact node (contact_correct.c,
+ * held_check): a silent wrong answer (it cannot move there), so the run
+ * stops naming both and the way out. */
+static lm_status contact_held(lm_sim *sim)
+{
+    const lm_contact *c = sim->contact;
+    const lm_grid *g = &sim->grid;
+    long i = c->held_node;
+    char who[96], pin[96];
+    snprintf(sim->err, sizeof sim->err,
+             "at t = %.6g (step %ld): %s is held at the node (%.6g, %.6g), where it has "
+             "nearly all the mass, by the pins of %s, whose shape functions reach that far "
+             "(contact); likely cause: the basis' stencil is wider than the contact "
+             "layer (basis = \"bspline2\" reaches 1.5 cells): use basis = \"gimp\", or pin "
+             "only points more than two cells from the other body",
+             sim->t, sim->step, lm_body_label(sim, c->held_body, who, sizeof who),
+             g->x0 + (double)(i % g->sx - g->pad) * g->hx,
+             g->y0 + (double)(i / g->sx - g->pad) * g->hy,
+             lm_body_label(sim, c->held_by, pin, sizeof pin));
+    return LM_ERR_UNSTABLE;
+}
+
 lm_status lm_step_check(lm_sim *sim)
 {
     long n = (long)sim->p.n, first = n;
@@ -541,6 +563,7 @@ lm_status lm_step_check(lm_sim *sim)
     reduction(min : first) if (n >= LM_PARTICLE_LOOP_MIN)
     for (long q = 0; q < n; q++)
         if (check_one(sim, (size_t)q) && q < first) first = q;
+    if (sim->contact && sim->contact->held_body >= 0) return contact_held(sim);
     if (first == n) return lm_membrane_check_torn(sim);
     /* a membrane that tore lets its points fly: the tear is the news */
     if (lm_membrane_check_torn(sim) != LM_OK) return LM_ERR_UNSTABLE;
