@@ -19,37 +19,15 @@ local t_end_p = lamina.param("t_end", 0)
 local basis = lamina.param("basis", "linear")
 local threads = lamina.param("threads", 1)
 
+local scenes = require("contact_scenes")
+
 local function two_bar(contact)
-  local sim = lamina.sim{ basis = basis, domain = {0, 0, 5, 5}, cell = 0.0625,
-                          dt = 1.75e-4, threads = threads }
-  local mat = lamina.elastic{ rho = 1, E = 1e5, nu = 0.3, plane = "stress" }
-  local l = sim:body{ material = mat, ppc = 4, velocity = {2, 0}, name = "left",
-                      region = lamina.rect{ min = {1, 0.25}, max = {2.25, 4.75} } }
-  local r = sim:body{ material = mat, ppc = 4, name = "right",
-                      region = lamina.rect{ min = {2.75, 0.25}, max = {4, 4.75} } }
-  if contact then sim:contact{ l, r, law = "release" } end
-  return sim, 0.5
+  return (scenes.two_bar{ cell = 0.0625, basis = basis, threads = threads, release = contact }), 0.5
 end
 
 local function disks_wire(contact)
-  local h = 0.25
-  local sim = lamina.sim{ basis = basis, domain = {-2, 1, 12, 9}, cell = h, dt = 1e-3,
-                          threads = threads }
-  local diskm = lamina.elastic{ rho = 1, E = 1e4, nu = 0.3, plane = "stress" }
-  local wirem = lamina.membrane{ rho = 1, E = 1e4, nu = 0, thickness = 0.05, law = "uniaxial" }
-  local wire = sim:membrane{ material = wirem, curve = lamina.segment{ from = {5, 2}, to = {5, 8} },
-                             spacing = h / 3, force = "segment", name = "wire" }
-  wire:pin{ points = "ends" }
-  local d1 = sim:body{ material = diskm, ppc = 4, velocity = {1.0, 0}, name = "disk I",
-                       region = lamina.disk{ center = {3.9, 5}, radius = 0.75 } }
-  local d2 = sim:body{ material = diskm, ppc = 4, velocity = {-1.1, 0}, name = "disk II",
-                       region = lamina.disk{ center = {7.6, 5}, radius = 0.75 } }
-  if contact then
-    sim:contact{ d1, wire, law = "release" }
-    sim:contact{ d2, wire, law = "release" }
-    sim:contact{ d1, d2, law = "release" }
-  end
-  return sim, 5
+  return (scenes.disks_wire{ centres = { {3.9, 5}, {7.6, 5} }, velocities = { {1.0, 0}, {-1.1, 0} },
+                             basis = basis, threads = threads, release = contact }), 5
 end
 
 local make = ({ two_bar = two_bar, disks_wire = disks_wire })[case]

@@ -22,20 +22,8 @@
 -- thumb: frame_t1.5.png
 local out = lamina.param("out", "out/contact_disks_wire")
 local t_end = lamina.param("t_end", 5)
-local h = 0.25
-local sim = lamina.sim{ basis = "linear", domain = {-2, 1, 12, 9}, cell = h, dt = 1e-3 }
-local diskm = lamina.elastic{ rho = 1, E = 1e4, nu = 0.3, plane = "stress" }
-local wirem = lamina.membrane{ rho = 1, E = 1e4, nu = 0, thickness = 0.05, law = "uniaxial" }
-local wire = sim:membrane{ material = wirem, curve = lamina.segment{ from = {5, 2}, to = {5, 8} },
-                           spacing = h / 3, force = "segment", name = "wire" }
-wire:pin{ points = "ends" }
-local d1 = sim:body{ material = diskm, ppc = 4, velocity = {1.0, 0}, name = "disk I",
-                     region = lamina.disk{ center = {3.9, 5}, radius = 0.75 } }
-local d2 = sim:body{ material = diskm, ppc = 4, velocity = {-1.1, 0}, name = "disk II",
-                     region = lamina.disk{ center = {7.6, 5}, radius = 0.75 } }
-sim:contact{ d1, wire, law = "release" }
-sim:contact{ d2, wire, law = "release" }
-sim:contact{ d1, d2, law = "release" }
+local sim, wire, d1, d2, h = require("contact_scenes").disks_wire{
+  centres = { {3.9, 5}, {7.6, 5} }, velocities = { {1.0, 0}, {-1.1, 0} }, release = true }
 
 -- the smallest distance from a disk's points to the wire's
 local function clearance(disk)

@@ -18,20 +18,8 @@
 -- thumb: omega.png
 local out = lamina.param("out", "out/contact_offset_disks")
 local t_end = lamina.param("t_end", 4)
-local h = 0.25
-local sim = lamina.sim{ basis = "linear", domain = {-2, 1, 12, 9}, cell = h, dt = 1e-3 }
-local diskm = lamina.elastic{ rho = 1, E = 1e4, nu = 0.3, plane = "stress" }
-local wirem = lamina.membrane{ rho = 1, E = 1e4, nu = 0, thickness = 0.05, law = "uniaxial" }
-local wire = sim:membrane{ material = wirem, curve = lamina.segment{ from = {5, 2}, to = {5, 8} },
-                           spacing = h / 3, force = "segment", name = "wire" }
-wire:pin{ points = "ends" }
-local d1 = sim:body{ material = diskm, ppc = 4, velocity = {1, 0}, name = "disk I",
-                     region = lamina.disk{ center = {3.9, 5.5}, radius = 0.75 } }
-local d2 = sim:body{ material = diskm, ppc = 4, velocity = {-1, 0}, name = "disk II",
-                     region = lamina.disk{ center = {6.1, 4.5}, radius = 0.75 } }
-sim:contact{ d1, wire, law = "release" }
-sim:contact{ d2, wire, law = "release" }
-sim:contact{ d1, d2, law = "release" }
+local sim, wire, d1, d2 = require("contact_scenes").disks_wire{
+  centres = { {3.9, 5.5}, {6.1, 4.5} }, velocities = { {1, 0}, {-1, 0} }, release = true }
 
 -- angular velocity of a body about its centre of mass
 local function omega(b)

@@ -21,15 +21,10 @@
 -- thumb: fig20b_velocities.png
 local out = lamina.param("out", "out/contact_two_bar")
 local meshes = lamina.param("meshes", 3)
+local scenes = require("contact_scenes")
 
 local function run(cell, release, frames)
-  local sim = lamina.sim{ basis = "linear", domain = {0, 0, 5, 5}, cell = cell, dt = 7e-4 * cell / 0.25 }
-  local mat = lamina.elastic{ rho = 1, E = 1e5, nu = 0.3, plane = "stress" }
-  local l = sim:body{ material = mat, ppc = 4, velocity = {2, 0}, name = "left",
-                      region = lamina.rect{ min = {1, 0.25}, max = {2.25, 4.75} } }
-  local r = sim:body{ material = mat, ppc = 4, name = "right",
-                      region = lamina.rect{ min = {2.75, 0.25}, max = {4, 4.75} } }
-  if release then sim:contact{ l, r, law = "release" } end
+  local sim, l, r = scenes.two_bar{ cell = cell, release = release }
   local t, vl, vr, e = {}, {}, {}, {}
   local e0 = sim:energy().total
   sim:every(7e-4 * cell / 0.25, function(s)   -- every step: the energy spike is short

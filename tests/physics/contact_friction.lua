@@ -12,33 +12,9 @@
 -- expected failure): the linear basis gives -5.8 % at 30/0.3, and mu = 0.6
 -- at 45 degrees -15 % with GIMP (friction about 6-10 % too strong). With
 -- bspline2 a pinned plane cannot be used: its pin holds the nodes one cell
--- into the block, and the block does not move.
-local function slide(theta, mu, basis)
-  local g, th = 10, math.rad(theta)
-  local sim = lamina.sim{ domain = {0, 0, 4, 1.5}, cell = 0.1, dt = 2e-4, basis = basis,
-                          gravity = {g * math.sin(th), -g * math.cos(th)} }
-  local mat = lamina.elastic{ rho = 1, E = 1e4, nu = 0.3, plane = "strain" }
-  local plane = sim:body{ material = mat, ppc = 4, name = "plane",
-                          region = lamina.rect{ min = {0.2, 0.2}, max = {3.8, 0.6} } }
-  plane:pin{ points = "all" }
-  local block = sim:body{ material = mat, ppc = 4, name = "block",
-                          region = lamina.rect{ min = {0.5, 0.6}, max = {1.0, 0.9} } }
-  sim:contact{ block, plane, law = "friction", mu = mu }
-  local n, st, sv, stt, stv = 0, 0, 0, 0, 0
-  sim:every(0.01, function(s)
-    if s.t >= 0.2 - 1e-9 then
-      local v = block:velocity()
-      n, st, sv, stt, stv = n + 1, st + s.t, sv + v, stt + s.t * s.t, stv + s.t * v
-    end
-  end)
-  sim:run{ t_end = 0.6 }
-  local a = (n * stv - st * sv) / (n * stt - st * st)
-  local exact = g * (math.sin(th) - mu * math.cos(th))
-  local vx, vy = block:velocity()
-  print(string.format("%s theta %g mu %g: a = %.4f, g(sin - mu cos) = %.4f (%.2f %%), "
-    .. "v(0.6) = (%.4f, %.4f)", basis, theta, mu, a, exact, 100 * (a - exact) / exact, vx, vy))
-  return a, exact, math.sqrt(vx * vx + vy * vy)
-end
+-- into the block, and the block does not move; such a run stops saying so
+-- (tests/bad/contact_pin_held.lua).
+local slide = require("contact_scenes").slide
 
 for _, c in ipairs{ {30, 0.3}, {45, 0.3}, {30, 0} } do
   local a, exact = slide(c[1], c[2], "gimp")

@@ -11,14 +11,9 @@
 --    particles stay within 1.5 cells of each other to t = 0.5 ([M] Fig 18).
 -- The paper's left/right velocities (0.3 / 1.7) are checked, and not
 -- reached, in contact_two_bar_paper.lua.
+local scenes = require("contact_scenes")
 local function run(release)
-  local sim = lamina.sim{ basis = "linear", domain = {0, 0, 5, 5}, cell = 0.25, dt = 7e-4 }
-  local mat = lamina.elastic{ rho = 1, E = 1e5, nu = 0.3, plane = "stress" }
-  local l = sim:body{ material = mat, ppc = 4, velocity = {2, 0}, name = "left",
-                      region = lamina.rect{ min = {1, 0.25}, max = {2.25, 4.75} } }
-  local r = sim:body{ material = mat, ppc = 4, name = "right",
-                      region = lamina.rect{ min = {2.75, 0.25}, max = {4, 4.75} } }
-  if release then sim:contact{ l, r, law = "release" } end
+  local sim, l, r = scenes.two_bar{ release = release }
   local function gap()
     local right_min, left_max = math.huge, -math.huge
     for _, x in ipairs(l:particles().x) do left_max = math.max(left_max, x) end

@@ -10,13 +10,7 @@
 -- asserts the paper's band, so it fails until lamina reaches it; the set-up
 -- is that of contact_two_bar.lua.
 local cell = lamina.param("cell", 0.25)
-local sim = lamina.sim{ basis = "linear", domain = {0, 0, 5, 5}, cell = cell, dt = 7e-4 * cell / 0.25 }
-local mat = lamina.elastic{ rho = 1, E = 1e5, nu = 0.3, plane = "stress" }
-local l = sim:body{ material = mat, ppc = 4, velocity = {2, 0},
-                    region = lamina.rect{ min = {1, 0.25}, max = {2.25, 4.75} } }
-local r = sim:body{ material = mat, ppc = 4,
-                    region = lamina.rect{ min = {2.75, 0.25}, max = {4, 4.75} } }
-sim:contact{ l, r, law = "release" }
+local sim, l, r = require("contact_scenes").two_bar{ cell = cell, release = true }
 sim:run{ t_end = 0.5 }
 local vl, vr = l:velocity(), r:velocity()
 print(string.format("cell %g: left %.4f (paper 0.3), right %.4f (paper 1.7)", cell, vl, vr))

@@ -1,0 +1,96 @@
+-- contact_scenes.lua - the contact set-ups that gallery pages, tests and
+-- measurements share (issue 14), so that each is written once.
+--   * two_bar: [M] §4.1-4.2 / [T] A.4.12's deck: bars [1, 2.25] and
+--     [2.75, 4] x [0.25, 4.75] on a 5 x 5 domain, 4 ppc, E 1e5, nu 0.3,
+--     plane stress, the left one at 2; dt 7e-4 at cell 0.25, scaled with
+--     the cell (the deck's Courant number);
+--   * disks_wire: [M] §4.3-4.4's wire pinned at both ends between two
+--     disks (the figures give no dimensions: scripts/paper/contact_disks_wire.lua
+--     says what was assumed), the disks' centres and velocities given;
+--   * incline: a block on a pinned plane with friction, gravity tilted by
+--     theta (issue 14 item 5; Bardenhagen et al. 2001's check), and slide,
+--     its measured acceleration against g (sin theta - mu cos theta).
+local M = {}
+
+-- o.cell (0.25), o.basis ("linear"), o.threads, o.release (sim:contact
+-- law "release" between the bars). Returns sim, left, right.
+function M.two_bar(o)
+  local cell = o.cell or 0.25
+  local sim = lamina.sim{ basis = o.basis or "linear", domain = {0, 0, 5, 5}, cell = cell,
+                          dt = 7e-4 * cell / 0.25, threads = o.threads }
+  local mat = lamina.elastic{ rho = 1, E = 1e5, nu = 0.3, plane = "stress" }
+  local l = sim:body{ material = mat, ppc = 4, velocity = {2, 0}, name = "left",
+                      region = lamina.rect{ min = {1, 0.25}, max = {2.25, 4.75} } }
+  local r = sim:body{ material = mat, ppc = 4, name = "right",
+                      region = lamina.rect{ min = {2.75, 0.25}, max = {4, 4.75} } }
+  if o.release then sim:contact{ l, r, law = "release" } end
+  return sim, l, r
+end
+
+-- o.centres {{x, y}, {x, y}} and o.velocities {{vx, vy}, {vx, vy}} of
+-- disks I and II, o.basis ("linear"), o.threads, o.release (the three
+-- release pairs: each disk with the wire, and the disks with each other).
+-- Cell 0.25, dt 1e-3. Returns sim, wire, disk I, disk II, h.
+function M.disks_wire(o)
+  local h = 0.25
+  local sim = lamina.sim{ basis = o.basis or "linear", domain = {-2, 1, 12, 9}, cell = h,
+                          dt = 1e-3, threads = o.threads }
+  local diskm = lamina.elastic{ rho = 1, E = 1e4, nu = 0.3, plane = "stress" }
+  local wirem = lamina.membrane{ rho = 1, E = 1e4, nu = 0, thickness = 0.05, law = "uniaxial" }
+  local wire = sim:membrane{ material = wirem, curve = lamina.segment{ from = {5, 2}, to = {5, 8} },
+                             spacing = h / 3, force = "segment", name = "wire" }
+  wire:pin{ points = "ends" }
+  local d1 = sim:body{ material = diskm, ppc = 4, velocity = o.velocities[1], name = "disk I",
+                       region = lamina.disk{ center = o.centres[1], radius = 0.75 } }
+  local d2 = sim:body{ material = diskm, ppc = 4, velocity = o.velocities[2], name = "disk II",
+                       region = lamina.disk{ center = o.centres[2], radius = 0.75 } }
+  if o.release then
+    sim:contact{ d1, wire, law = "release" }
+    sim:contact{ d2, wire, law = "release" }
+    sim:contact{ d1, d2, law = "release" }
+  end
+  return sim, wire, d1, d2, h
+end
+
+-- o.theta (degrees), o.mu, o.basis, o.threads, o.third (a third body in a
+-- release pair with the block). Returns sim, block, g.
+function M.incline(o)
+  local g, th = 10, math.rad(o.theta)
+  local sim = lamina.sim{ domain = {0, 0, 4, 1.5}, cell = 0.1, dt = 2e-4, basis = o.basis,
+                          threads = o.threads, gravity = {g * math.sin(th), -g * math.cos(th)} }
+  local mat = lamina.elastic{ rho = 1, E = 1e4, nu = 0.3, plane = "strain" }
+  local plane = sim:body{ material = mat, ppc = 4, name = "plane",
+                          region = lamina.rect{ min = {0.2, 0.2}, max = {3.8, 0.6} } }
+  plane:pin{ points = "all" }
+  local block = sim:body{ material = mat, ppc = 4, name = "block",
+                          region = lamina.rect{ min = {0.5, 0.6}, max = {1.0, 0.9} } }
+  local third = o.third and sim:body{ material = mat, ppc = 4, name = "third", velocity = {-1, 0},
+                                      region = lamina.rect{ min = {1.6, 0.6}, max = {2.0, 0.9} } }
+  sim:contact{ block, plane, law = "friction", mu = o.mu }
+  if third then sim:contact{ third, block, law = "release" } end
+  return sim, block, g
+end
+
+-- The incline run to t = 0.6: the block's acceleration as the least-squares
+-- slope of its speed over [0.2, 0.6] (after the start's transient), the
+-- exact g (sin theta - mu cos theta), and its speed at the end; printed.
+function M.slide(theta, mu, basis)
+  local sim, block, g = M.incline{ theta = theta, mu = mu, basis = basis }
+  local th = math.rad(theta)
+  local n, st, sv, stt, stv = 0, 0, 0, 0, 0
+  sim:every(0.01, function(s)
+    if s.t >= 0.2 - 1e-9 then
+      local v = block:velocity()
+      n, st, sv, stt, stv = n + 1, st + s.t, sv + v, stt + s.t * s.t, stv + s.t * v
+    end
+  end)
+  sim:run{ t_end = 0.6 }
+  local a = (n * stv - st * sv) / (n * stt - st * st)
+  local exact = g * (math.sin(th) - mu * math.cos(th))
+  local vx, vy = block:velocity()
+  print(string.format("%s theta %g mu %g: a = %.4f, g(sin - mu cos) = %.4f (%.2f %%), "
+    .. "v(0.6) = (%.4f, %.4f)", basis, theta, mu, a, exact, 100 * (a - exact) / exact, vx, vy))
+  return a, exact, math.sqrt(vx * vx + vy * vy)
+end
+
+return M
