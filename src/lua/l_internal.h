@@ -118,8 +118,25 @@ typedef struct la_sim {
     int index;                  /* 1 + the sims the script made before it */
     char *ck_file;              /* sim:checkpoint (l_checkpoint.c) */
     unsigned long long warned_bunched;   /* bodies warned of bunched points (bit b) */
+    int warned_energy;          /* said once: the energy rose (l_energy_watch.c) */
     double ck_every, ck_next;
 } la_sim;
+
+/* The total energy over one sim:run (l_energy_watch.c): a rise by a tenth
+ * with no driven pin is said once, as a warning. */
+typedef struct la_energy_watch {
+    double seen0;               /* the energy at the start, as the grid sees it */
+    double scale;               /* the most energy in play so far */
+    double floor;               /* rounding: M c_max^2 x 1e-12 */
+    double t0;
+    long step0;
+    int driven;
+} la_energy_watch;
+void la_energy_watch_begin(const la_sim *s, la_energy_watch *w);
+void la_energy_watch_step(const la_sim *s, la_energy_watch *w);
+void la_energy_watch_end(lua_State *L, la_sim *s, const la_energy_watch *w);
+/* A warning line to stderr (clearing the progress line) and the run log. */
+void la_warn(lua_State *L, const char *line);
 
 void la_open_sim(lua_State *L);
 int la_sim_new(lua_State *L);

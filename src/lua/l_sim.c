@@ -383,8 +383,11 @@ static void advance(lua_State *L, la_sim *s, long nsteps, double t_end)
     la_progress_begin(L, 1, nsteps);
     fire_due(L, s);
     la_checkpoint_due(L, 1, s);
+    la_energy_watch watch;
+    la_energy_watch_begin(s, &watch);
     for (long n = 0; isnan(t_end) ? n < nsteps : steps_to(s, t_end) > 0; n++) {
         la_pins_update(L, 1, s);
+        la_energy_watch_step(s, &watch);
         lm_status st = lm_sim_step(s->sim);
         if (st != LM_OK) {
             s->running = 0;
@@ -407,6 +410,7 @@ static void advance(lua_State *L, la_sim *s, long nsteps, double t_end)
     run->active = NULL;
     la_progress_end(L);
     la_record_flush(L, 1);
+    la_energy_watch_end(L, s, &watch);
 }
 
 /* After a run: a segment membrane with a quarter of its points slack by
@@ -429,13 +433,18 @@ static void warn_bunched(lua_State *L, la_sim *s)
                  "dog-bone with segment forces\"); if it should be taut, space its points about 0.4 "
                  "cells apart at their natural length, or use force = \"point\"\n",
                  sim->t, sim->step, slack, n, lm_body_label(sim, b, who, sizeof who), taut);
-        lamina_progress_clear_line();
-        fputs(line, stderr);
-        lamina_run *run = la_run(L);
-        if (run && run->log) {
-            fputs(line, run->log);
-            fflush(run->log);
-        }
+        la_warn(L, line);
+    }
+}
+
+void la_warn(lua_State *L, const char *line)
+{
+    lamina_progress_clear_line();
+    fputs(line, stderr);
+    lamina_run *run = la_run(L);
+    if (run && run->log) {
+        fputs(line, run->log);
+        fflush(run->log);
     }
 }
 

@@ -1,0 +1,105 @@
+/* l_energy_watch.c - a run whose total energy grows says so.
+ *
+ * Nothing in lamina's models makes energy: gravity's work is in the
+ * potential energy, the gas's in its internal energy, the springs' and
+ * membranes' in their strain; contact and artificial viscosity only take it
+ * away. So a total that rises by a tenth over one sim:run with no pin
+ * driving a body is the numerics feeding the motion. Measured (2026-12-02):
+ * an elastic disk ringing a little while it flies across the grid at speed
+ * 1 (radius 1.5, E 1e4, cell 0.0625, bilinear basis, MUSL, Courant number
+ * 0.42) gained 79 % in 8 s with no sign in its velocity; the ball of the
+ * ball-and-net page at that cell nearly doubled its energy after leaving
+ * the net. The bilinear basis' cell-crossing noise pumps the vibration of
+ * a moving body (docs/robustness.md, "Energy growth of a moving body on the
+ * bilinear basis"); the quadratic B-spline and uGIMP keep it.
+ *
+ * It is a warning, not a failure: the run's numbers may still serve, and
+ * the script may have put energy in itself (a callback that sets
+ * velocities). Runs of fewer than WATCH_MIN_STEPS steps are not judged
+ * (their energy is two O(N) sums, negligible beside that many steps). */
+#include <math.h>
+#include <stdio.h>
+
+#include "l_internal.h"
+
+#define WATCH_MIN_STEPS 100
+#define WATCH_RISE 0.1   /* of the energy's scale: see energy_scale */
+
+/* The size the rise is judged against: the sum of the magnitudes of the
+ * parts, the largest seen during the run (sampled every WATCH_EVERY steps
+ * and at both ends), so that a pendulum caught near a turning point, or a
+ * body started at rest under gravity (total 0), is judged against the
+ * energy it has swung through. */
+static double energy_scale(lm_energy e)
+{
+    return e.kinetic + fabs(e.strain) + fabs(e.internal) + fabs(e.potential);
+}
+
+/* Energies below this share of M c_max^2 (the whole mass moving at the
+ * fastest wave speed) are rounding: a body at rest holds 1e-16 or so, and
+ * its relative changes mean nothing. */
+#define WATCH_FLOOR 1e-12
+#define WATCH_EVERY 64
+
+/* The energy the dynamics sees: the particles' kinetic energy as the grid
+ * sees it (docs/api.md, sim:energy's grid_kinetic). Without a PIC blend,
+ * FLIP's hidden velocity (which moves nothing) can grow in a run whose
+ * motion keeps its energy (the pendulum of tests/physics/pendulum_flip.lua:
+ * the angle within 0.025 degrees of the FEM while the particles' sum rose
+ * by 7 % of the swing); that is not the growth this watch is for. */
+static double seen_energy(const lm_sim *sim, lm_energy e)
+{
+    return e.total - e.kinetic + lm_sim_grid_kinetic(sim);
+}
+
+void la_energy_watch_begin(const la_sim *s, la_energy_watch *w)
+{
+    const lm_particles *p = &s->sim->p;
+    double M = 0, c = 0;
+    for (size_t q = 0; q < p->n; q++) M += p->m[q];
+    lm_sim_courant(s->sim, &c);
+    w->floor = WATCH_FLOOR * M * c * c;
+    lm_energy e = lm_sim_energy(s->sim);
+    w->seen0 = seen_energy(s->sim, e);
+    w->scale = energy_scale(e);
+    w->t0 = s->sim->t;
+    w->step0 = s->sim->step;
+    w->driven = 0;
+}
+
+/* After the pins' velocities are set for the step: a driven pin does work. */
+void la_energy_watch_step(const la_sim *s, la_energy_watch *w)
+{
+    const lm_sim *sim = s->sim;
+    for (int k = 0; k < sim->npins && !w->driven; k++)
+        w->driven = sim->pins[k].vx != 0 || sim->pins[k].vy != 0;
+    if ((sim->step - w->step0) % WATCH_EVERY == 0)
+        w->scale = fmax(w->scale, energy_scale(lm_sim_energy(sim)));
+}
+
+void la_energy_watch_end(lua_State *L, la_sim *s, const la_energy_watch *w)
+{
+    const lm_sim *sim = s->sim;
+    if (s->warned_energy || w->driven || sim->step - w->step0 < WATCH_MIN_STEPS) return;
+    lm_energy e1 = lm_sim_energy(sim);
+    double seen1 = seen_energy(sim, e1);
+    double scale = fmax(w->scale, energy_scale(e1));
+    double rise = seen1 - w->seen0;
+    if (!(rise > w->floor) || !(rise > WATCH_RISE * scale)) return;
+    s->warned_energy = 1;
+    double cn = lm_sim_courant(sim, NULL);
+    char why[400], line[1000];
+    if (sim->def.basis == LM_BASIS_LINEAR)
+        snprintf(why, sizeof why, "the bilinear basis' cell-crossing noise feeding a moving "
+                 "body's vibration (docs/robustness.md, \"Energy growth of a moving body on the "
+                 "bilinear basis\"): basis = \"bspline2\" or \"gimp\" keeps it");
+    else
+        snprintf(why, sizeof why, "a step too near the stability limit (Courant number %.3g): "
+                 "try a smaller dt", cn);
+    snprintf(line, sizeof line,
+             "lamina: warning: the total energy rose by %.1f %% of the most the run held (%.6g) "
+             "during sim:run, from %.6g to %.6g between t = %.6g and %.6g (steps %ld to %ld), "
+             "with no pin driving a body (kinetic energy as the grid sees it); likely cause: %s\n",
+             100 * rise / scale, scale, w->seen0, seen1, w->t0, sim->t, w->step0, sim->step, why);
+    la_warn(L, line);
+}
