@@ -100,6 +100,21 @@ static int sort_nearly_sorted(lm_nsite *a, size_t n)
     return 1;
 }
 
+/* (int)floor(v) and (int)ceil(v) for v within int's range, from the
+ * truncating conversion (no call into libm: these run for every point and
+ * element of every step). */
+static inline int floor_int(double v)
+{
+    int i = (int)v;
+    return i - (v < i);
+}
+
+static inline int ceil_int(double v)
+{
+    int i = (int)v;
+    return i + (v > i);
+}
+
 /* Step 1: the lattice site of point i (per axis into s) and its key. */
 static long site_of(const lm_ngrid *g, const double *const x[3], size_t i, int s[3])
 {
@@ -108,7 +123,7 @@ static long site_of(const lm_ngrid *g, const double *const x[3], size_t i, int s
     for (int a = 0; a < g->dim; a++) {
         int m = 2 * g->n[a] - 1;
         double f = 2.0 * (x[a][i] - g->x0[a]) / g->h[a] - 1.0;
-        int v = (int)floor(f + 0.5);
+        int v = floor_int(f + 0.5);
         s[a] = v < 0 ? 0 : v > m - 1 ? m - 1 : v;
         key += s[a] * stride;
         stride *= m;
@@ -142,8 +157,8 @@ static int element_box(const lm_ngrid *g, const int s[3], int w, lm_nbox *box,
             l = g->x0[a] + L - width;
         box->lo[a] = l;
         box->hi[a] = l + width;
-        int c0 = (int)floor((l - g->x0[a]) / g->h[a] + 1e-9);
-        int c1 = (int)ceil((l + width - g->x0[a]) / g->h[a] - 1e-9) - 1;
+        int c0 = floor_int((l - g->x0[a]) / g->h[a] + 1e-9);
+        int c1 = ceil_int((l + width - g->x0[a]) / g->h[a] - 1e-9) - 1;
         c0 = c0 < 0 ? 0 : c0;
         c1 = c1 > g->n[a] - 1 ? g->n[a] - 1 : c1;
         lo[a] = c0;
@@ -157,6 +172,18 @@ static size_t inside(const lm_nbox *box, const double *const x[3], const size_t 
                      size_t k, size_t *sel)
 {
     size_t m = 0;
+    if (box->dim == 2) {
+        /* without branches (a gathered point is in or out at random): the
+         * same tests, so the same points in the same order */
+        double lo0 = box->lo[0], hi0 = box->hi[0], lo1 = box->lo[1], hi1 = box->hi[1];
+        for (size_t j = 0; j < k; j++) {
+            size_t q = idx[j];
+            double p0 = x[0][q], p1 = x[1][q];
+            sel[m] = q;
+            m += (size_t)((p0 >= lo0) & (p0 <= hi0) & (p1 >= lo1) & (p1 <= hi1));
+        }
+        return m;
+    }
     for (size_t j = 0; j < k; j++) {
         int in = 1;
         for (int a = 0; a < box->dim && in; a++)
@@ -277,7 +304,7 @@ lm_nerr lm_normals_centred(const lm_ngrid *g, const lm_nbins *b, size_t n,
         el.size = wid;
         for (int a = 0; a < 3; a++) {
             double c = a < g->dim ? 0.5 * (box.lo[a] + box.hi[a]) : 0.0;
-            el.cell[a] = a < g->dim ? (int)floor((c - g->x0[a]) / g->h[a]) : 0;
+            el.cell[a] = a < g->dim ? floor_int((c - g->x0[a]) / g->h[a]) : 0;
         }
         /* step 5 */
         for (size_t q = a0; q < a1; q++) {
