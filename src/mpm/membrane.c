@@ -83,7 +83,13 @@ static void body_nopts(const lm_sim *sim, int b, lm_normals method, long step,
     o->orient_point[1] = bd->oy;
     if (method != LM_NORMALS_ISOSURFACE)
         o->basis = method == LM_NORMALS_HYBRID ? LM_NB_HYBRID : LM_NB_LINEAR;
-    o->solver = method == LM_NORMALS_MASS_MATRIX ? LM_NS_NORMAL : LM_NS_QR;
+    /* the centred elements' quadratic fits by the normal equations ([N]
+     * eq 13, T = L D L^T), the pivoted QR where T is near singular
+     * (normals_fit.c): the QR's normals to 5e-9 degrees (measured on the
+     * dog-bone) at a fraction of its cost (docs/performance.md, issue 17
+     * item 3) */
+    o->solver = method == LM_NORMALS_MASS_MATRIX ? LM_NS_NORMAL
+              : method == LM_NORMALS_ISOSURFACE ? LM_NS_CHOLESKY : LM_NS_QR;
 }
 
 int lm_membrane_phi(const lm_sim *sim, int b, struct lm_nreport *rep, char *err, size_t errlen)

@@ -43,7 +43,11 @@ typedef enum lm_nbasis {
     LM_NB_HYBRID = 3        /* grids only: [N] §8's rule, see lm_nopts */
 } lm_nbasis;
 
-typedef enum lm_nsolver { LM_NS_QR = 0, LM_NS_NORMAL = 1 } lm_nsolver;
+/* LM_NS_CHOLESKY: the normal equations [N] eq 13 by Cholesky for the 2D
+ * quadratic fits of the centred elements (the simulation's per-step
+ * normals, normals_fit.c), the pivoted QR wherever T is too near singular
+ * for them and for every other fit. */
+typedef enum lm_nsolver { LM_NS_QR = 0, LM_NS_NORMAL = 1, LM_NS_CHOLESKY = 2 } lm_nsolver;
 
 typedef enum lm_nerr {
     LM_NERR_NONE = 0,

@@ -100,16 +100,36 @@ static void quadratic_2d(const double xi[3], double s[LM_NMAX],
 /* The step's normals need only grad phi at each point: the products of
  * quadratic_2d's ds, each times its coefficient and added in the order of
  * I, as grad_logical (normals_fit.c) adds them from the table. */
+/* lm_bspline2 and lm_bspline2_d at t = x - (i - 1/2), i = 0, 1, 2, for x in
+ * [0, 1] (a point in its element), without their branches: there t_0 lies
+ * in [1/2, 3/2], t_1 in [-1/2, 1/2], t_2 in [-3/2, -1/2], so each takes
+ * one piece; at the joins (x = 0 or 1) both pieces give the same value
+ * exactly (1/2, and slope -1 or 1), and |t| (1.5 - |t|) are formed from
+ * the same t, so every value is bit for bit the functions'. */
+static void quadratic_1d(double x, double v[3], double d[3])
+{
+    if (!(x >= 0.0 && x <= 1.0)) {
+        for (int i = 0; i < 3; i++) {
+            v[i] = lm_bspline2(x - (i - 0.5));
+            d[i] = lm_bspline2_d(x - (i - 0.5));
+        }
+        return;
+    }
+    double t0 = x - (0 - 0.5), t1 = x - (1 - 0.5), t2 = x - (2 - 0.5);
+    double e0 = 1.5 - t0, e2 = 1.5 - (-t2);
+    v[0] = 0.5 * e0 * e0;
+    d[0] = -e0;
+    v[1] = 0.75 - t1 * t1;
+    d[1] = -2.0 * t1;
+    v[2] = 0.5 * e2 * e2;
+    d[2] = e2;
+}
+
 void lm_nbasis_grad_quadratic_2d(const double xi[3], const double c[9], double g[3])
 {
     double v0[3], v1[3], d0[3], d1[3];
-    for (int i = 0; i < 3; i++) {
-        double t0 = xi[0] - (i - 0.5), t1 = xi[1] - (i - 0.5);
-        v0[i] = lm_bspline2(t0);
-        v1[i] = lm_bspline2(t1);
-        d0[i] = lm_bspline2_d(t0);
-        d1[i] = lm_bspline2_d(t1);
-    }
+    quadratic_1d(xi[0], v0, d0);
+    quadratic_1d(xi[1], v1, d1);
     double g0 = 0.0, g1 = 0.0;
     for (int j = 0; j < 3; j++)
         for (int i = 0; i < 3; i++) {

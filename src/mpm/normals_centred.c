@@ -74,6 +74,47 @@ static void sort_sites(lm_nsite *a, lm_nsite *tmp, size_t n)
         memcpy(a, src, sizeof *a * n);
 }
 
+/* Step 2's sort when a[0..n) is nearly in order already (the last step's
+ * order with this step's sites: a few points change site each step), by
+ * insertion, giving up after 8 n moves (then 0: the merge sort finishes
+ * from there). Both give the one sequence of the total order, whatever
+ * order a starts in, so the result does not depend on the last call. */
+static int sort_nearly_sorted(lm_nsite *a, size_t n)
+{
+    size_t moves = 0, limit = 8 * n + 16;
+    for (size_t i = 1; i < n; i++) {
+        if (!before(&a[i], &a[i - 1]))
+            continue;
+        lm_nsite t = a[i];
+        size_t j = i;
+        while (j > 0 && before(&t, &a[j - 1])) {
+            a[j] = a[j - 1];
+            j--;
+            if (++moves > limit) {
+                a[j] = t;
+                return 0;
+            }
+        }
+        a[j] = t;
+    }
+    return 1;
+}
+
+/* (int)floor(v) and (int)ceil(v) for v within int's range, from the
+ * truncating conversion (no call into libm: these run for every point and
+ * element of every step). */
+static inline int floor_int(double v)
+{
+    int i = (int)v;
+    return i - (v < i);
+}
+
+static inline int ceil_int(double v)
+{
+    int i = (int)v;
+    return i + (v > i);
+}
+
 /* Step 1: the lattice site of point i (per axis into s) and its key. */
 static long site_of(const lm_ngrid *g, const double *const x[3], size_t i, int s[3])
 {
@@ -82,7 +123,7 @@ static long site_of(const lm_ngrid *g, const double *const x[3], size_t i, int s
     for (int a = 0; a < g->dim; a++) {
         int m = 2 * g->n[a] - 1;
         double f = 2.0 * (x[a][i] - g->x0[a]) / g->h[a] - 1.0;
-        int v = (int)floor(f + 0.5);
+        int v = floor_int(f + 0.5);
         s[a] = v < 0 ? 0 : v > m - 1 ? m - 1 : v;
         key += s[a] * stride;
         stride *= m;
@@ -116,8 +157,8 @@ static int element_box(const lm_ngrid *g, const int s[3], int w, lm_nbox *box,
             l = g->x0[a] + L - width;
         box->lo[a] = l;
         box->hi[a] = l + width;
-        int c0 = (int)floor((l - g->x0[a]) / g->h[a] + 1e-9);
-        int c1 = (int)ceil((l + width - g->x0[a]) / g->h[a] - 1e-9) - 1;
+        int c0 = floor_int((l - g->x0[a]) / g->h[a] + 1e-9);
+        int c1 = ceil_int((l + width - g->x0[a]) / g->h[a] - 1e-9) - 1;
         c0 = c0 < 0 ? 0 : c0;
         c1 = c1 > g->n[a] - 1 ? g->n[a] - 1 : c1;
         lo[a] = c0;
@@ -131,6 +172,18 @@ static size_t inside(const lm_nbox *box, const double *const x[3], const size_t 
                      size_t k, size_t *sel)
 {
     size_t m = 0;
+    if (box->dim == 2) {
+        /* without branches (a gathered point is in or out at random): the
+         * same tests, so the same points in the same order */
+        double lo0 = box->lo[0], hi0 = box->hi[0], lo1 = box->lo[1], hi1 = box->hi[1];
+        for (size_t j = 0; j < k; j++) {
+            size_t q = idx[j];
+            double p0 = x[0][q], p1 = x[1][q];
+            sel[m] = q;
+            m += (size_t)((p0 >= lo0) & (p0 <= hi0) & (p1 >= lo1) & (p1 <= hi1));
+        }
+        return m;
+    }
     for (size_t j = 0; j < k; j++) {
         int in = 1;
         for (int a = 0; a < box->dim && in; a++)
@@ -156,6 +209,34 @@ static int push_elem(lm_nelem **els, int *nel, int *cap, const lm_nelem *el)
     return 0;
 }
 
+/* LAMINA_NRM_CMP (normals_work.h): the fit again by the QR, and the angle
+ * between its normal and the Cholesky fit's at each of the site's points. */
+static void compare_qr(const lm_nbox *box, const double *const x[3], const size_t *sel,
+                       size_t k, const lm_nfit_opts *fo, int unique, const lm_nfit *fit,
+                       const lm_nsite *sp, size_t np, lm_nwork *w)
+{
+    lm_nfit_opts qo = *fo;
+    lm_nfit qr;
+    char err[256];
+    qo.solver = LM_NS_QR;
+    if (lm_nfit_element_ws(box, x, sel, k, &qo, LM_NFIT_LEAN | LM_NFIT_INSIDE, unique, &qr,
+                           &w->fit, err, sizeof err))
+        return;
+    for (size_t q = 0; q < np; q++) {
+        size_t i = sp[q].i;
+        double p[3] = {x[0][i], x[1][i], box->dim == 3 ? x[2][i] : 0.0}, a[3], b[3];
+        if (lm_nfit_normal(fit, p, a) || lm_nfit_normal(&qr, p, b))
+            continue;
+        double c[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+                       a[0] * b[1] - a[1] * b[0]};
+        double ang = atan2(sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]),
+                           a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) * (180.0 / 3.14159265358979323846);
+        w->cmp_max = ang > w->cmp_max ? ang : w->cmp_max;
+        w->cmp_sum += ang;
+        w->cmp_n++;
+    }
+}
+
 lm_nerr lm_normals_centred(const lm_ngrid *g, const lm_nbins *b, size_t n,
                            const double *const x[3], const lm_nopts *o,
                            double *const nrm[3], unsigned char *flags,
@@ -169,17 +250,28 @@ lm_nerr lm_normals_centred(const lm_ngrid *g, const lm_nbins *b, size_t n,
     size_t *idx = w->idx, *sel = w->sel;
     int cap = 0;
     lm_nerr e = LM_NERR_NONE;
-    for (size_t i = 0; i < n; i++) {
-        int s[3];
-        sp[i].key = site_of(g, x, i, s);
-        sp[i].i = i;
+    if (w->sites_n == n) {
+        /* the last call's order (points move little in a step), re-keyed */
+        for (size_t q = 0; q < n; q++) {
+            int s[3];
+            sp[q].key = site_of(g, x, sp[q].i, s);
+        }
+    } else {
+        for (size_t i = 0; i < n; i++) {
+            int s[3];
+            sp[i].key = site_of(g, x, i, s);
+            sp[i].i = i;
+        }
     }
-    sort_sites(sp, w->sites_tmp, n);
+    if (!sort_nearly_sorted(sp, n))
+        sort_sites(sp, w->sites_tmp, n);
+    w->sites_n = n;
     for (size_t a0 = 0, a1; a0 < n; a0 = a1) {
         for (a1 = a0 + 1; a1 < n && sp[a1].key == sp[a0].key; a1++)
             ;
+        /* every field is written below: lo by element_box, fit by the
+         * fit (which clears it first), size and cell after it */
         lm_nelem el;
-        memset(&el, 0, sizeof el);
         int s[3], wid = 1, whole, unique;
         size_t k;
         site_of(g, x, sp[a0].i, s);
@@ -195,20 +287,24 @@ lm_nerr lm_normals_centred(const lm_ngrid *g, const lm_nbins *b, size_t n,
         lm_nfit_opts fo;
         lm_nfit_opts_of(&fo, o, SITE_STREAM | (uint64_t)sp[a0].key);
         fo.basis = !linear && unique >= quad_min ? LM_NB_QUADRATIC : LM_NB_LINEAR;
-        e = lm_nfit_element_ws(&box, x, sel, k, &fo, !els, unique, &el.fit, &w->fit,
-                               err, errlen);
+        /* sel holds the points inside the closed box (inside()) */
+        e = lm_nfit_element_ws(&box, x, sel, k, &fo,
+                               (els ? 0 : LM_NFIT_LEAN) | LM_NFIT_INSIDE, unique,
+                               &el.fit, &w->fit, err, errlen);
         if (e == LM_NERR_TOO_FEW && whole)
             snprintf(err, errlen, "only %d distinct membrane point%s in the whole grid: "
                      "at least %d are needed for a normal in %dD", unique,
                      unique == 1 ? "" : "s", g->dim, g->dim);
         if (e)
             return e;
+        if (w->cmp && fo.solver == LM_NS_CHOLESKY)
+            compare_qr(&box, x, sel, k, &fo, unique, &el.fit, sp + a0, a1 - a0, w);
         if (wid > 1)
             el.fit.flags |= LM_NF_MERGED;
         el.size = wid;
         for (int a = 0; a < 3; a++) {
             double c = a < g->dim ? 0.5 * (box.lo[a] + box.hi[a]) : 0.0;
-            el.cell[a] = a < g->dim ? (int)floor((c - g->x0[a]) / g->h[a]) : 0;
+            el.cell[a] = a < g->dim ? floor_int((c - g->x0[a]) / g->h[a]) : 0;
         }
         /* step 5 */
         for (size_t q = a0; q < a1; q++) {

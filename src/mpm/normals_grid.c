@@ -315,7 +315,7 @@ static lm_nerr check_grid(const lm_ngrid *g, const lm_nopts *o, char *err,
 /* Steps 2-4 for one occupied cell; the chosen element goes to *el. */
 static lm_nerr solve_cell(const lm_ngrid *g, const lm_nbins *b, const double *const x[3],
                           const lm_nopts *o, const int c[3], size_t *idx,
-                          const lm_nfit_scratch *sc, int lean, lm_nelem *el,
+                          lm_nfit_scratch *sc, int lean, lm_nelem *el,
                           char *err, size_t errlen)
 {
     long id = lm_nbins_cell_id(g, c);

@@ -1,5 +1,6 @@
 /* normals_work.c - the normals engine's workspace (normals_work.h): sized
  * before the element loop, so that the loop itself never allocates. */
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -35,6 +36,12 @@ lm_nerr lm_nwork_reserve(lm_nwork *w, size_t n)
         grow((void **)&w->fit.rhs, rows, sizeof *w->fit.rhs) ||
         grow((void **)&w->fit.cols, rows * LM_NMAX, sizeof *w->fit.cols))
         return LM_NERR_MEMORY;
+    if (!w->fit.smooth) {
+        /* empty: smooth[1] = 0 says no aspect is kept yet */
+        w->fit.smooth = calloc(LM_NSMOOTH_CACHE, sizeof *w->fit.smooth);
+        if (!w->fit.smooth)
+            return LM_NERR_MEMORY;
+    }
     w->cap = n;
     w->fit.rows = rows;
     return LM_NERR_NONE;
@@ -44,6 +51,11 @@ void lm_nwork_free(lm_nwork *w)
 {
     if (!w)
         return;
+    if (w->cmp)
+        fprintf(stderr, "LAMINA_NRM_CMP: %lu normals, Cholesky against QR: largest "
+                "angle %.3g degrees, mean %.3g; %lu fits fell back to the QR\n",
+                w->cmp_n, w->cmp_max, w->cmp_n ? w->cmp_sum / (double)w->cmp_n : 0.0,
+                w->fit.fallbacks);
     free(w->idx);
     free(w->sel);
     free(w->sites);
@@ -56,13 +68,17 @@ void lm_nwork_free(lm_nwork *w)
     free(w->fit.S);
     free(w->fit.rhs);
     free(w->fit.cols);
+    free(w->fit.smooth);
     lm_nbins_free(&w->bins);
     memset(w, 0, sizeof *w);
 }
 
 lm_nwork *lm_nwork_new(void)
 {
-    return calloc(1, sizeof(lm_nwork));
+    lm_nwork *w = calloc(1, sizeof(lm_nwork));
+    if (w)
+        w->cmp = getenv("LAMINA_NRM_CMP") != NULL;
+    return w;
 }
 
 void lm_nwork_delete(lm_nwork *w)

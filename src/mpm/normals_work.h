@@ -19,16 +19,24 @@ typedef struct lm_nsite {
 
 /* One fit's scratch (normals_fit.c): the system [S]{phi} = {phi0} of up
  * to `rows` rows of LM_NMAX columns, and as much for the QR's copy of its
- * columns. */
+ * columns. smooth (NULL: none kept) holds LM_NSMOOTH_CACHE doubles: the
+ * curvature rows' own S^T S (weight 1) for the last element aspect the
+ * Cholesky fits met, so that it is not rebuilt for every fit. */
+#define LM_NSMOOTH_CACHE (2 + 81)
 typedef struct lm_nfit_scratch {
     double *S, *rhs, *cols;
+    double *smooth;
     size_t rows;
+    /* LM_NS_CHOLESKY fits that fell back to the QR (counted, not reset) */
+    unsigned long fallbacks;
 } lm_nfit_scratch;
 
 typedef struct lm_nwork {
     size_t cap;                     /* points the per-point arrays hold */
     size_t *idx, *sel;              /* a gathered block; its points in a box */
     lm_nsite *sites, *sites_tmp;    /* centred: points by site; merge scratch */
+    size_t sites_n;                 /* points sites holds from the last call
+                                       (0: none), its order a starting point */
     double *nrm;                    /* 3 cap: the normals (membrane.c) */
     unsigned char *flags;           /* cap: their flags (membrane.c) */
     double *dist;                   /* orientation by neighbours: cap each */
@@ -36,6 +44,15 @@ typedef struct lm_nwork {
     unsigned char *done;
     lm_nfit_scratch fit;            /* rows for cap points (+ 2 + smoothing) */
     lm_nbins bins;                  /* grown by lm_nbins_make */
+    /* A measurement (docs/performance.md): with LAMINA_NRM_CMP set in the
+     * environment when the workspace is made, every LM_NS_CHOLESKY fit of
+     * the centred elements is solved again by the QR and the angle between
+     * the two normals taken at each of its points; the largest, the sum
+     * and the count go to stderr when the workspace is freed. The normals
+     * used are the Cholesky ones, so the run is the same. */
+    int cmp;
+    double cmp_max, cmp_sum;
+    unsigned long cmp_n;
 } lm_nwork;
 
 /* Makes sure w holds n points (and the fits of up to n points); grows,
@@ -59,11 +76,15 @@ void lm_normals_orient_ws(size_t n, int dim, const double *const x[3],
 /* lm_nfit_element in the scratch sc (rows >= k + 2, + LM_NSMOOTH_MAXROWS
  * with smoothing). nunique >= 0: the caller has counted the distinct points
  * already (the same box and points), so they are not counted again.
- * lean = 1 leaves out the residual (0), which only a report reads. */
+ * lean & LM_NFIT_LEAN leaves out the residual (0), which only a report
+ * reads; lean & LM_NFIT_INSIDE says the caller chose the points as those
+ * inside the closed box (so they are finite and inside), and they are not
+ * checked again. */
+enum { LM_NFIT_LEAN = 1, LM_NFIT_INSIDE = 2 };
 lm_nerr lm_nfit_element_ws(const lm_nbox *box, const double *const x[3],
                            const size_t *idx, size_t k, const lm_nfit_opts *o,
                            int lean, int nunique, lm_nfit *fit,
-                           const lm_nfit_scratch *sc, char *err, size_t errlen);
+                           lm_nfit_scratch *sc, char *err, size_t errlen);
 /* lm_lsq_qr_cond for n <= LM_NMAX with C (m n entries) given: no
  * allocation. */
 lm_nerr lm_lsq_qr_ws(int m, int n, double *A, double *b, double *x,

@@ -293,6 +293,76 @@ static void test_fit_options(void)
           LM_NERR_INPUT);
 }
 
+/* The angle between two 2D directions by atan2 (acos cannot resolve the
+ * 1e-9 degrees compared here). */
+static double angle_small(double ax, double ay, double bx, double by)
+{
+    return fabs(atan2(ax * by - ay * bx, ax * bx + ay * by)) * DEG;
+}
+
+/* LM_NS_CHOLESKY (the simulation's solver: the normal equations of [N] eq
+ * 13 for the 2D quadratic fits, normals_fit.c) against the pivoted QR, the
+ * same elements and random points: the same normals to far below a
+ * degree's millionth on circles, wrinkled circles and off-centre arcs;
+ * exact circles stay exact. Without the curvature rows a straight
+ * membrane leaves T singular (phi is free off the line): every such fit
+ * falls back to the QR (minimum norm), so the normals are the QR's bit
+ * for bit. */
+static void test_cholesky_matches_qr(void)
+{
+    enum { N = 91 };
+    double x[N], y[N], a[2][N], b[2][N], worst = 0, exact = 0;
+    for (int shape = 0; shape < 4; shape++)
+        for (int s = 1; s <= 20; s++) {
+            double R = shape == 2 ? 0.3 : 0.5, ox = shape == 2 ? 0.013 : 0;
+            double oy = shape == 2 ? 0.021 : 0;
+            int n = shape == 3 ? 40 : N;
+            for (int k = 0; k < n; k++) {
+                double t = 0.5 * PI * k / (N - 1);
+                double r = R + (shape == 1 ? 1e-4 * sin(30 * t + s) : 0.0);
+                x[k] = shape == 3 ? 0.05 + 0.9 * k / (n - 1) : ox + r * cos(t);
+                y[k] = shape == 3 ? 0.4 : oy + r * sin(t);
+            }
+            lm_nopts o;
+            lm_nopts_centred(&o);
+            o.seed = (uint64_t)s;
+            o.skip_cond = 1;
+            const double *p[3] = {x, y, NULL};
+            double *na[3] = {a[0], a[1], NULL}, *nb[3] = {b[0], b[1], NULL};
+            o.solver = LM_NS_CHOLESKY;
+            CHECK(lm_normals_grid(&grid10, (size_t)n, p, &o, na, NULL, NULL, NULL, 0) ==
+                  LM_NERR_NONE);
+            o.solver = LM_NS_QR;
+            CHECK(lm_normals_grid(&grid10, (size_t)n, p, &o, nb, NULL, NULL, NULL, 0) ==
+                  LM_NERR_NONE);
+            for (int k = 0; k < n; k++) {
+                worst = fmax(worst, angle_small(a[0][k], a[1][k], b[0][k], b[1][k]));
+                if (shape == 0)
+                    exact = fmax(exact, angle(a[0][k], a[1][k], 0, x[k], y[k], 0));
+            }
+        }
+    printf("Cholesky against QR, circles, wrinkled and off-centre arcs, a line: "
+           "max %.2g deg; circles by Cholesky: max error %.2g deg\n", worst, exact);
+    CHECK(worst < 1e-6);
+    CHECK(exact < 1e-5);
+    for (int k = 0; k < 40; k++) {
+        x[k] = 0.05 + 0.9 * k / 39.0;
+        y[k] = 0.43;
+    }
+    lm_nopts o;
+    lm_nopts_centred(&o);
+    o.skip_cond = 1;
+    o.smooth = 0;
+    const double *p[3] = {x, y, NULL};
+    double *na[3] = {a[0], a[1], NULL}, *nb[3] = {b[0], b[1], NULL};
+    o.solver = LM_NS_CHOLESKY;
+    CHECK(lm_normals_grid(&grid10, 40, p, &o, na, NULL, NULL, NULL, 0) == LM_NERR_NONE);
+    o.solver = LM_NS_QR;
+    CHECK(lm_normals_grid(&grid10, 40, p, &o, nb, NULL, NULL, NULL, 0) == LM_NERR_NONE);
+    for (int k = 0; k < 40; k++)
+        CHECK(a[0][k] == b[0][k] && a[1][k] == b[1][k]);
+}
+
 int main(void)
 {
     test_smooth_rows();
@@ -302,5 +372,6 @@ int main(void)
     test_determinism();
     test_never_nan();
     test_fit_options();
+    test_cholesky_matches_qr();
     return CHECK_DONE();
 }
