@@ -85,6 +85,12 @@ lm_nerr lm_nfit_element_ws(const lm_nbox *box, const double *const x[3],
                            const size_t *idx, size_t k, const lm_nfit_opts *o,
                            int lean, int nunique, lm_nfit *fit,
                            lm_nfit_scratch *sc, char *err, size_t errlen);
+/* The 2D quadratic element's fit (f->phi) by the normal equations
+ * (normals_fit_ne.c): the k points of idx with phi0 = 1 and the random
+ * point with 0, plus the curvature rows when smooth > 0; -1 when T is too
+ * near singular (f->phi untouched: solve by the QR instead). */
+int lm_nfit_quadratic_2d_ne(lm_nfit *f, const double *const x[3], const size_t *idx,
+                            size_t k, lm_nfit_scratch *sc, double smooth);
 /* lm_lsq_qr_cond for n <= LM_NMAX with C (m n entries) given: no
  * allocation. */
 lm_nerr lm_lsq_qr_ws(int m, int n, double *A, double *b, double *x,

@@ -1,0 +1,269 @@
+/* normals_fit_ne.c - the 2D quadratic element's fit by the normal
+ * equations ([N] eqs 12-13: T phi = S^T phi0, T = S^T S), the solve the
+ * simulation's isosurface normals use (issue 17 item 3: the pivoted QR was
+ * half of the construction). T is summed straight from the tensor-product
+ * rows, factored as L D L^T without square roots; a fit whose pivot falls
+ * below CHOL_PIVOT_TOL of its diagonal returns -1 and goes to the QR
+ * (normals_fit.c, assemble_solve). Measured against the QR over 800 400
+ * normals of the dog-bone: at most 5.3e-9 degrees apart (docs/performance.md). */
+#include <math.h>
+#include <string.h>
+
+#include "normals.h"
+#include "normals_work.h"
+
+/* A pivot d_j of T = L D L^T (Cholesky's L_jj^2: T_jj less what the
+ * earlier unknowns explain) below this fraction of T_jj: the fit goes to
+ * the QR. */
+#define CHOL_PIVOT_TOL 1e-10
+
+/* The quadratic B-splines of the centres -1/2, 1/2, 3/2 at xi ([N] §5,
+ * lm_bspline2): on [0, 1], where an element's points lie, the three
+ * pieces are 1/2 (1 - xi)^2, 3/4 - (xi - 1/2)^2 and 1/2 xi^2; a point a
+ * rounding outside takes the general function. */
+static inline void bspline2_three(double xi, double v[3])
+{
+    if (xi >= 0.0 && xi <= 1.0) {
+        double u = 1.0 - xi, c = xi - 0.5;
+        v[0] = 0.5 * u * u;
+        v[1] = 0.75 - c * c;
+        v[2] = 0.5 * xi * xi;
+        return;
+    }
+    for (int i = 0; i < 3; i++)
+        v[i] = lm_bspline2(xi - (i - 0.5));
+}
+
+
+/* T_IJ (I = i + 3 j, J = k + 3 l, J <= I, row by row) is the sum
+ * G[pair(i, k)][pair(j, l)], pair (a, b) the index of the product b_a b_b
+ * of one axis (0 .. 5 for (0,0) (0,1) (0,2) (1,1) (1,2) (2,2)): its place
+ * in G (6 x 6). */
+static const int GIDX[45] = {
+#define G_AT(I, J) (PAIR_OF((I) % 3, (J) % 3) * 6 + PAIR_OF((I) / 3, (J) / 3))
+#define PAIR_OF(a, b) ((a) <= (b) ? (a) * 3 - (a) * ((a) - 1) / 2 + (b) - (a) \
+                                  : (b) * 3 - (b) * ((b) - 1) / 2 + (a) - (b))
+    G_AT(0, 0),
+    G_AT(1, 0), G_AT(1, 1),
+    G_AT(2, 0), G_AT(2, 1), G_AT(2, 2),
+    G_AT(3, 0), G_AT(3, 1), G_AT(3, 2), G_AT(3, 3),
+    G_AT(4, 0), G_AT(4, 1), G_AT(4, 2), G_AT(4, 3), G_AT(4, 4),
+    G_AT(5, 0), G_AT(5, 1), G_AT(5, 2), G_AT(5, 3), G_AT(5, 4), G_AT(5, 5),
+    G_AT(6, 0), G_AT(6, 1), G_AT(6, 2), G_AT(6, 3), G_AT(6, 4), G_AT(6, 5), G_AT(6, 6),
+    G_AT(7, 0), G_AT(7, 1), G_AT(7, 2), G_AT(7, 3), G_AT(7, 4), G_AT(7, 5), G_AT(7, 6),
+    G_AT(7, 7),
+    G_AT(8, 0), G_AT(8, 1), G_AT(8, 2), G_AT(8, 3), G_AT(8, 4), G_AT(8, 5), G_AT(8, 6),
+    G_AT(8, 7), G_AT(8, 8)
+#undef PAIR_OF
+#undef G_AT
+};
+
+/* The products b_i b_k of one axis, in pair order. */
+static void pair_products(const double v[3], double p[6])
+{
+    p[0] = v[0] * v[0];
+    p[1] = v[0] * v[1];
+    p[2] = v[0] * v[2];
+    p[3] = v[1] * v[1];
+    p[4] = v[1] * v[2];
+    p[5] = v[2] * v[2];
+}
+
+/* C^T C of the curvature rows at weight 1 for the element's aspect (the
+ * rows depend on nothing else). The aspect h_y / h_x of a box differs from
+ * box to box in its last bits (hi - lo rounds with the position), so it is
+ * first rounded to 40 bits (a change of 1e-12 in weak rows: nothing a
+ * normal shows) - a function of the box alone, so a run does not depend
+ * on which element came first, and the grid's elements share one entry of
+ * the cache: cache[0] the rounded aspect, cache[1] the number of rows (0:
+ * nothing kept), cache[2..83) C^T C. Returns the number of rows. */
+static int smooth_ctc(const lm_nbox *box, double *cache, double ctc[81])
+{
+    int ex;
+    double m = frexp((box->hi[1] - box->lo[1]) / (box->hi[0] - box->lo[0]), &ex);
+    double aspect = ldexp(nearbyint(ldexp(m, 40)), ex - 40);
+    if (cache && cache[1] > 0 && cache[0] == aspect) {
+        memcpy(ctc, cache + 2, sizeof(double) * 81);
+        return (int)cache[1];
+    }
+    lm_nbox unit = {2, {0, 0, 0}, {1.0, aspect, 0}};
+    double C[LM_NSMOOTH_MAXROWS * 9];
+    int r = lm_nsmooth_rows(LM_NB_QUADRATIC, &unit, 1.0, C);
+    for (int I = 0; I < 9; I++)
+        for (int J = 0; J < 9; J++) {
+            double t = 0.0;
+            for (int q = 0; q < r; q++)
+                t += C[q * 9 + I] * C[q * 9 + J];
+            ctc[I * 9 + J] = t;
+        }
+    if (cache) {
+        cache[0] = aspect;
+        cache[1] = r;
+        memcpy(cache + 2, ctc, sizeof(double) * 81);
+    }
+    return r;
+}
+
+/* Step j of T = L D L^T (L unit lower triangular): the pivot d_j, column
+ * j of L, and the update of the trailing lower triangle; -1 when d_j falls
+ * below CHOL_PIVOT_TOL of the original T_jj (diag). Called with j a
+ * constant, so that the compiler knows every loop's bounds. */
+static inline int ldlt9_step(double T[9][9], const double diag[9], double inv[9], int j)
+{
+    double d = T[j][j];
+    if (!(d > CHOL_PIVOT_TOL * diag[j]))
+        return -1;
+    double r = 1.0 / d, col[9];
+    inv[j] = r;
+    for (int i = j + 1; i < 9; i++) {
+        col[i] = T[i][j];           /* d_j L_ij */
+        T[i][j] = col[i] * r;       /* L_ij */
+    }
+    for (int i = j + 1; i < 9; i++) {
+        double l = T[i][j];
+        for (int c = j + 1; c <= i; c++)
+            T[i][c] -= l * col[c];
+    }
+    return 0;
+}
+
+/* y_i -= L_ij y_j for i > j (L y = b, column j; j a constant). */
+static inline void forward9(const double T[9][9], double y[9], int j)
+{
+    for (int i = j + 1; i < 9; i++)
+        y[i] -= T[i][j] * y[j];
+}
+
+/* x_i -= L_ji x_j for i < j (L^T x = z, column j; j a constant). */
+static inline void backward9(const double T[9][9], double x[9], int j)
+{
+    for (int i = 0; i < j; i++)
+        x[i] -= T[j][i] * x[j];
+}
+
+/* T = L D L^T, then L D L^T x = b: Cholesky's factorisation without its
+ * square roots (D holds the squares of Cholesky's pivots), right-looking,
+ * so that each step's updates of the trailing matrix are independent of
+ * one another instead of one chain of dot products. -1, with x untouched,
+ * when a pivot falls below CHOL_PIVOT_TOL of its T_jj. T's lower triangle
+ * is overwritten. */
+static int ldlt9(double T[9][9], const double b[9], double x[9])
+{
+    double diag[9], inv[9], y[9];
+    for (int j = 0; j < 9; j++)
+        diag[j] = T[j][j];
+    if (ldlt9_step(T, diag, inv, 0) || ldlt9_step(T, diag, inv, 1) ||
+        ldlt9_step(T, diag, inv, 2) || ldlt9_step(T, diag, inv, 3) ||
+        ldlt9_step(T, diag, inv, 4) || ldlt9_step(T, diag, inv, 5) ||
+        ldlt9_step(T, diag, inv, 6) || ldlt9_step(T, diag, inv, 7) ||
+        ldlt9_step(T, diag, inv, 8))
+        return -1;
+    /* L y = b, then z = D^-1 y, then L^T x = z; each solve right-looking
+     * too: once y_i (x_i) is known, it is taken off every later entry */
+    for (int i = 0; i < 9; i++)
+        y[i] = b[i];
+    forward9(T, y, 0);
+    forward9(T, y, 1);
+    forward9(T, y, 2);
+    forward9(T, y, 3);
+    forward9(T, y, 4);
+    forward9(T, y, 5);
+    forward9(T, y, 6);
+    forward9(T, y, 7);
+    for (int i = 0; i < 9; i++)
+        x[i] = y[i] * inv[i];
+    backward9(T, x, 8);
+    backward9(T, x, 7);
+    backward9(T, x, 6);
+    backward9(T, x, 5);
+    backward9(T, x, 4);
+    backward9(T, x, 3);
+    backward9(T, x, 2);
+    backward9(T, x, 1);
+    return 0;
+}
+
+/* Steps 2-5 for the 2D quadratic basis by the normal equations, the
+ * curvature rows at weight smooth * sqrt(rows) as assemble_solve adds them.
+ * Two passes over the points: the first writes each point's 1D values and
+ * products into a row of sc->S (18 of its 27 places), the second sums them
+ * with the sums held in registers, a row of G at a time (G updated in
+ * memory point after point was a chain of loads and stores).
+ * -1 when T is too near singular (f->phi is then untouched). */
+int lm_nfit_quadratic_2d_ne(lm_nfit *f, const double *const x[3], const size_t *idx,
+                            size_t k, lm_nfit_scratch *sc, double smooth)
+{
+    enum { PU = 0, PV = 6, U = 12, V = 15, LD = LM_NMAX };
+    const lm_nbox *b = &f->box;
+    double lo0 = b->lo[0], lo1 = b->lo[1];
+    double w0 = b->hi[0] - b->lo[0], w1 = b->hi[1] - b->lo[1];
+    double *S = sc->S;
+    /* the k points (phi0 = 1), then the random point (phi0 = 0) */
+    for (size_t i = 0; i <= k; i++) {
+        double xi, eta, *r = S + i * LD;
+        if (i < k) {
+            size_t q = idx ? idx[i] : i;
+            xi = (x[0][q] - lo0) / w0;
+            eta = (x[1][q] - lo1) / w1;
+        } else {
+            xi = (f->q[0] - lo0) / w0;
+            eta = (f->q[1] - lo1) / w1;
+        }
+        bspline2_three(xi, r + U);
+        bspline2_three(eta, r + V);
+        pair_products(r + U, r + PU);
+        pair_products(r + V, r + PV);
+    }
+    double G[6][6], rhs[9];
+    for (int a = 0; a < 6; a++) {
+        double g0 = 0, g1 = 0, g2 = 0, g3 = 0, g4 = 0, g5 = 0;
+        for (size_t i = 0; i <= k; i++) {
+            const double *r = S + i * LD, pa = r[PU + a];
+            g0 += pa * r[PV + 0];
+            g1 += pa * r[PV + 1];
+            g2 += pa * r[PV + 2];
+            g3 += pa * r[PV + 3];
+            g4 += pa * r[PV + 4];
+            g5 += pa * r[PV + 5];
+        }
+        G[a][0] = g0;
+        G[a][1] = g1;
+        G[a][2] = g2;
+        G[a][3] = g3;
+        G[a][4] = g4;
+        G[a][5] = g5;
+    }
+    /* rhs_I = sum over the points of b_i(xi) b_j(eta), I = i + 3 j */
+    for (int j = 0; j < 3; j++) {
+        double s0 = 0, s1 = 0, s2 = 0;
+        for (size_t i = 0; i < k; i++) {
+            const double *r = S + i * LD, vj = r[V + j];
+            s0 += vj * r[U + 0];
+            s1 += vj * r[U + 1];
+            s2 += vj * r[U + 2];
+        }
+        rhs[3 * j] = s0;
+        rhs[3 * j + 1] = s1;
+        rhs[3 * j + 2] = s2;
+    }
+    double ctc[81], w2 = 0.0;
+    f->smooth_rows = 0;
+    if (smooth > 0) {
+        double w = smooth * sqrt((double)f->rows);
+        f->smooth_rows = smooth_ctc(b, sc->smooth, ctc);
+        w2 = w * w;
+    } else {
+        memset(ctc, 0, sizeof ctc);
+    }
+    double T[9][9];
+    const double *g = &G[0][0];
+    for (int I = 0, e = 0; I < 9; I++)
+        for (int J = 0; J <= I; J++, e++)
+            T[I][J] = g[GIDX[e]] + w2 * ctc[I * 9 + J];
+    if (ldlt9(T, rhs, f->phi))
+        return -1;
+    f->info.rank = 9;
+    f->info.cond_t = f->info.cond_t_rank = NAN;
+    return 0;
+}
+
