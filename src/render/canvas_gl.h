@@ -25,7 +25,8 @@
  * Small shapes are batched: consecutive lines share one draw call,
  * consecutive discs of one radius another; a call of another kind, a clip,
  * a fill, text or a read flushes the batch first, so drawing order is
- * kept. */
+ * kept. Long dense runs of discs of about a pixel's radius are gathered
+ * into rectangles instead of drawn as points (canvas_gl_dense.c). */
 #ifndef LAMINA_CANVAS_GL_H
 #define LAMINA_CANVAS_GL_H
 
@@ -75,12 +76,11 @@ typedef struct gl_engine {
     GLint view3d_size;
     /* gathered discs (canvas_gl_dense.c): compiled at the first run */
     int dense_state;            /* 0: not tried; 1: ready; -1: no GLSL 1.30 */
-    GLuint dense_prog, dense_tex[5];    /* cells (a ring), coverage table */
-    int dense_next;             /* the ring's next */
-    GLint dense_vp, dense_h, dense_rgb;
-    int dense_tw, dense_th;     /* the cells: the canvas and a pixel round it */
+    GLuint dense_prog, dense_tex[2];    /* the cells, the coverage table */
+    int dense_tw, dense_th;     /* the cells' texture size */
+    GLint dense_vp, dense_h, dense_rgb, dense_org, dense_max;
     double dense_r, dense_a;    /* what the table is for */
-    uint16_t *dense_cells;      /* the cells' texels, zero between runs */
+    uint16_t *dense_cells;      /* a layer's cells, zero between layers */
     size_t dense_cap;
     uint32_t *dense_more, *dense_list;  /* discs for the next layer */
     size_t dense_morecap, dense_listcap;

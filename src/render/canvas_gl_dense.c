@@ -46,11 +46,8 @@
 #define DENSE_MIN_RUN 2048
 #define DENSE_FILL 4
 #define CODES 17                /* 0: no disc; 1 + qx + 4 qy */
-/* Cell textures used in turn: llvmpipe makes an upload into a texture
- * that a pending draw reads wait for that draw, so the runs of a frame
- * (the bench's four bodies) each get their own. */
-#define RING 4
-#define TABLE RING              /* dense_tex[TABLE]: the coverage table */
+#define CELLS 0                 /* dense_tex[]: the discs by pixel */
+#define TABLE 1                 /* ... the coverage table */
 #define PAIRS (CODES * CODES)   /* a texel: code a + CODES * code b */
 
 static const char *const dense_vs =
@@ -63,19 +60,21 @@ static const char *const dense_vs =
     "}\n"
     "void main() { gl_Position = to_clip(a_pos); }\n";
 
-/* Texel (x + 1, y + 1) holds the discs centred in pixel (x, y), so pixel
- * p's neighbours are texels p + (0..2, 0..2), none outside the texture.
- * u_keep at (pair, n): what that pair of discs in neighbour n leaves of
- * this pixel, 1 - alpha coverage for each. */
+/* The cells hold the discs by the pixel holding their centre, with a
+ * pixel of margin round them (layer()), so pixel p's neighbours are
+ * texels p - u_org + (0..2, 0..2), none outside the texture. u_keep at
+ * (pair, n): what that pair of discs in neighbour n leaves of this pixel,
+ * 1 - alpha coverage for each. */
 static const char *const dense_fs =
     "#version 130\n"
     "uniform usampler2D u_cells;\n"
     "uniform sampler2D u_keep;\n"
     "uniform vec3 u_rgb;\n"
     "uniform float u_h;\n"
+    "uniform ivec2 u_org;\n"
     "out vec4 o_col;\n"
     "void main() {\n"
-    "  ivec2 p = ivec2(int(gl_FragCoord.x), int(u_h - gl_FragCoord.y));\n"
+    "  ivec2 p = ivec2(int(gl_FragCoord.x), int(u_h - gl_FragCoord.y)) - u_org;\n"
     "  float keep = 1.0;\n"
     "  for (int n = 0; n < 9; n++) {\n"
     "    uint v = texelFetch(u_cells, p + ivec2(n - 3 * (n / 3), n / 3), 0).r;\n"
@@ -128,23 +127,24 @@ static int compile(gl_engine *e)
     e->dense_vp = glGetUniformLocation(e->dense_prog, "u_vp");
     e->dense_h = glGetUniformLocation(e->dense_prog, "u_h");
     e->dense_rgb = glGetUniformLocation(e->dense_prog, "u_rgb");
+    e->dense_org = glGetUniformLocation(e->dense_prog, "u_org");
     glUseProgram(e->dense_prog);
     glUniform1i(glGetUniformLocation(e->dense_prog, "u_cells"), 0);
     glUniform1i(glGetUniformLocation(e->dense_prog, "u_keep"), 1);
-    glGenTextures(RING + 1, e->dense_tex);
-    for (int i = 0; i <= RING; i++) {
+    glGenTextures(2, e->dense_tex);
+    for (int i = 0; i < 2; i++) {
         glBindTexture(GL_TEXTURE_2D, e->dense_tex[i]);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     }
     glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, PAIRS, 9, 0, GL_RED, GL_FLOAT, NULL);
     glBindTexture(GL_TEXTURE_2D, 0);
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &e->dense_max);
     e->dense_r = e->dense_a = -1.0;
     return 0;
 }
 
-/* The program and a cell texture for c's size; -1 when this context has
- * no GLSL 1.30 (remembered) or memory runs out. */
+/* The program; -1 when this context has no GLSL 1.30 (remembered). */
 static int ready(gl_canvas *c)
 {
     gl_engine *e = &c->gl;
@@ -152,28 +152,7 @@ static int ready(gl_canvas *c)
         e->dense_state = compile(e) == 0 ? 1 : -1;
         glGetError();       /* a context that cannot is not the canvas's error */
     }
-    if (e->dense_state < 0)
-        return -1;
-    int gw = c->base.width + 2, gh = c->base.height + 2;
-    size_t n = (size_t)gw * (size_t)gh;
-    if (e->dense_cap < n) {
-        free(e->dense_cells);
-        e->dense_cells = calloc(n, sizeof *e->dense_cells);
-        e->dense_cap = e->dense_cells ? n : 0;
-        if (!e->dense_cells)
-            return -1;
-    }
-    if (e->dense_tw != gw || e->dense_th != gh) {
-        for (int i = 0; i < RING; i++) {
-            glBindTexture(GL_TEXTURE_2D, e->dense_tex[i]);
-            glTexImage2D(GL_TEXTURE_2D, 0, GL_R16UI, gw, gh, 0, GL_RED_INTEGER,
-                         GL_UNSIGNED_SHORT, NULL);
-        }
-        glBindTexture(GL_TEXTURE_2D, 0);
-        e->dense_tw = gw;
-        e->dense_th = gh;
-    }
-    return 0;
+    return e->dense_state > 0 ? 0 : -1;
 }
 
 /* The table for radius r and alpha a (kept while they stay). */
@@ -187,7 +166,7 @@ static void table(gl_engine *e, double r, double a)
         keep[0] = 1.0;
         for (int q = 0; q < 16; q++) {
             /* a disc (qx + 1/2) / 4 into the pixel one left of (above)
-             * neighbour column (row) n % 3 (n / 3): texel p + 1 is pixel p */
+             * neighbour column (row) n % 3 (n / 3): the cells' margin */
             double fx = ((q & 3) + 0.5) / 4.0, fy = ((q >> 2) + 0.5) / 4.0;
             keep[1 + q] = 1.0 - a * disc_coverage(1.5 - n % 3 - fx, 1.5 - n / 3 - fy, r);
         }
@@ -234,33 +213,69 @@ static void box_add(box *b, float x, float y)
     b->y1 = y > b->y1 ? y : b->y1;
 }
 
-/* Whether n discs spread over box b are worth a rectangle. */
-static int dense_enough(const box *b, size_t n)
+/* Whether n discs spread over box b are worth a rectangle (and its
+ * texture is not larger than GL allows). */
+static int dense_enough(const gl_canvas *c, const box *b, size_t n)
 {
-    double area = ((double)b->x1 - b->x0 + 3.0) * ((double)b->y1 - b->y0 + 3.0);
-    return n >= DENSE_MIN_RUN && (double)n * DENSE_FILL >= area;
+    double w = (double)b->x1 - b->x0 + 3.0, h = (double)b->y1 - b->y0 + 3.0;
+    return n >= DENSE_MIN_RUN && (double)n * DENSE_FILL >= w * h &&
+           w + 3 <= c->gl.dense_max && h + 3 <= c->gl.dense_max;
+}
+
+/* Where a layer's discs go: texel (x, y) of the cells holds the discs
+ * centred in canvas pixel (x0 + x - 1, y0 + y - 1), so pixel p reads
+ * texels p - (x0, y0) + (0..2, 0..2); the pixels drawn are x0 .. x1,
+ * y0 .. y1, those the discs in box b can reach. 0 when none. */
+typedef struct region { int x0, y0, x1, y1, w, h; } region;
+
+static int region_of(const gl_canvas *c, const box *b, region *g)
+{
+    int cw = c->base.width, ch = c->base.height;
+    /* the texels of the box's corners, t = floor + 1: pixel t - 1 holds
+     * the centre, pixels t - 2 .. t are reached */
+    float fx0 = b->x0 < -1.0f ? -1.0f : b->x0, fy0 = b->y0 < -1.0f ? -1.0f : b->y0;
+    int tx0 = (int)floor_small(fx0) + 1, ty0 = (int)floor_small(fy0) + 1;
+    int tx1 = b->x1 >= (float)cw ? cw + 1 : (int)floor_small(b->x1) + 1;
+    int ty1 = b->y1 >= (float)ch ? ch + 1 : (int)floor_small(b->y1) + 1;
+    g->x0 = tx0 - 2 < 0 ? 0 : tx0 - 2;
+    g->y0 = ty0 - 2 < 0 ? 0 : ty0 - 2;
+    g->x1 = tx1 > cw - 1 ? cw - 1 : tx1;
+    g->y1 = ty1 > ch - 1 ? ch - 1 : ty1;
+    g->w = g->x1 - g->x0 + 3;
+    g->h = g->y1 - g->y0 + 3;
+    return g->x0 <= g->x1 && g->y0 <= g->y1;
 }
 
 /* The discs listed (indices into the batch, or first .. first + n when
- * list is NULL) as one rectangle, two per pixel; the others listed in
- * e->dense_more (*nmore), their box in *more. */
+ * list is NULL), in box b, as one rectangle, two per pixel; the others
+ * listed in e->dense_more (*nmore), their box in *more. */
 static int layer(gl_canvas *c, const uint32_t *list, size_t first, size_t n,
-                 size_t *nmore, box *more)
+                 const box *b, size_t *nmore, box *more)
 {
     gl_engine *e = &c->gl;
-    int gw = e->dense_tw;
-    float xmax = (float)(gw - 1), ymax = (float)(e->dense_th - 1);
-    int tx0 = gw, ty0 = e->dense_th, tx1 = -1, ty1 = -1;
+    region g;
+    if (!region_of(c, b, &g))
+        return 0;
+    size_t ncells = (size_t)g.w * (size_t)g.h;
+    if (e->dense_cap < ncells) {
+        free(e->dense_cells);
+        e->dense_cells = calloc(ncells, sizeof *e->dense_cells);
+        e->dense_cap = e->dense_cells ? ncells : 0;
+        if (!e->dense_cells)
+            return -1;
+    }
+    /* discs centred outside -1 <= x < width + 1 reach no pixel */
+    float xmax = (float)(c->base.width + 1), ymax = (float)(c->base.height + 1);
     for (size_t k = 0; k < n; k++) {
         size_t i = list ? list[k] : first + k;
         float x = c->pxy[2 * i], y = c->pxy[2 * i + 1];
         if (!(x >= -1.0f && y >= -1.0f && x < xmax && y < ymax))
-            continue;   /* a disc that cannot reach the canvas */
+            continue;
         float fx = floor_small(x), fy = floor_small(y);
-        int tx = (int)fx + 1, ty = (int)fy + 1;
+        int tx = (int)fx + 1 - g.x0, ty = (int)fy + 1 - g.y0;
         /* the stamp grid puts the centre at (q + 1/2) / 4 into its pixel */
         int code = 1 + ((int)((x - fx) * 4.0f) & 3) + 4 * ((int)((y - fy) * 4.0f) & 3);
-        uint16_t *cell = &e->dense_cells[(size_t)ty * gw + tx];
+        uint16_t *cell = &e->dense_cells[(size_t)ty * g.w + tx];
         if (*cell >= CODES) {
             if (defer(e, (uint32_t)i, nmore) != 0)
                 return -1;
@@ -268,38 +283,29 @@ static int layer(gl_canvas *c, const uint32_t *list, size_t first, size_t n,
             continue;
         }
         *cell = *cell ? (uint16_t)(*cell + CODES * code) : (uint16_t)code;
-        tx0 = tx < tx0 ? tx : tx0;
-        tx1 = tx > tx1 ? tx : tx1;
-        ty0 = ty < ty0 ? ty : ty0;
-        ty1 = ty > ty1 ? ty : ty1;
     }
-    if (tx1 < 0)
-        return 0;
-    /* the pixels reached: texel t is pixel t - 1, whose disc reaches one
-     * pixel either side; they read their neighbours, so those texels are
-     * sent too (zero outside the box: nothing is left from another run) */
-    int px0 = tx0 - 2 < 0 ? 0 : tx0 - 2, py0 = ty0 - 2 < 0 ? 0 : ty0 - 2;
-    int px1 = tx1 >= c->base.width ? c->base.width - 1 : tx1;
-    int py1 = ty1 >= c->base.height ? c->base.height - 1 : ty1;
-    if (px0 <= px1 && py0 <= py1) {
-        glBindTexture(GL_TEXTURE_2D, e->dense_tex[e->dense_next]);
-        e->dense_next = (e->dense_next + 1) % RING;
-        glPixelStorei(GL_UNPACK_ROW_LENGTH, gw);
-        glTexSubImage2D(GL_TEXTURE_2D, 0, px0, py0, px1 - px0 + 3, py1 - py0 + 3,
-                        GL_RED_INTEGER, GL_UNSIGNED_SHORT,
-                        e->dense_cells + (size_t)py0 * gw + px0);
-        glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
-        float x0 = (float)px0, y0 = (float)py0, x1 = (float)px1 + 1, y1 = (float)py1 + 1;
-        const float quad[12] = { x0, y0, x1, y0, x1, y1, x0, y0, x1, y1, x0, y1 };
-        glEnableVertexAttribArray(0);
-        glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, quad);
-        glDrawArrays(GL_TRIANGLES, 0, 6);
-        glDisableVertexAttribArray(0);
-        glBindTexture(GL_TEXTURE_2D, 0);
+    /* (llvmpipe makes this upload wait for the previous run's rectangle,
+     * which reads the texture; a texture per run measured no faster) */
+    glBindTexture(GL_TEXTURE_2D, e->dense_tex[CELLS]);
+    if (e->dense_tw < g.w || e->dense_th < g.h) {
+        int tw = e->dense_tw > g.w ? e->dense_tw : g.w;
+        int th = e->dense_th > g.h ? e->dense_th : g.h;
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_R16UI, tw, th, 0, GL_RED_INTEGER,
+                     GL_UNSIGNED_SHORT, NULL);
+        e->dense_tw = tw;
+        e->dense_th = th;
     }
-    for (int y = ty0; y <= ty1; y++)
-        memset(e->dense_cells + (size_t)y * gw + tx0, 0,
-               (size_t)(tx1 - tx0 + 1) * sizeof *e->dense_cells);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, g.w, g.h, GL_RED_INTEGER, GL_UNSIGNED_SHORT,
+                    e->dense_cells);
+    glUniform2i(e->dense_org, g.x0, g.y0);
+    float x0 = (float)g.x0, y0 = (float)g.y0, x1 = (float)g.x1 + 1, y1 = (float)g.y1 + 1;
+    const float quad[12] = { x0, y0, x1, y0, x1, y1, x0, y0, x1, y1, x0, y1 };
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, quad);
+    glDrawArrays(GL_TRIANGLES, 0, 6);
+    glDisableVertexAttribArray(0);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    memset(e->dense_cells, 0, ncells * sizeof *e->dense_cells);
     return 0;
 }
 
@@ -323,7 +329,7 @@ static void use_program(gl_canvas *c, const unsigned char *q, double r)
 /* The run first .. first + n (one colour, so the order of its discs does
  * not matter): rectangles while the discs left over are dense, then the
  * rest as points. */
-static int gather(gl_canvas *c, size_t first, size_t n)
+static int gather(gl_canvas *c, size_t first, size_t n, box b)
 {
     gl_engine *e = &c->gl;
     const unsigned char *q = c->prgba + 4 * first;
@@ -333,7 +339,7 @@ static int gather(gl_canvas *c, size_t first, size_t n)
         size_t nmore = 0;
         box more = { INFINITY, INFINITY, -INFINITY, -INFINITY };
         use_program(c, q, c->point_r);
-        rc = layer(c, list, first, n, &nmore, &more);
+        rc = layer(c, list, first, n, &b, &nmore, &more);
         if (rc != 0 || nmore == 0)
             break;
         /* the deferred become the list; the next layer defers afresh */
@@ -345,7 +351,8 @@ static int gather(gl_canvas *c, size_t first, size_t n)
         e->dense_morecap = cap;
         list = e->dense_list;
         n = nmore;
-        if (!dense_enough(&more, n)) {
+        b = more;
+        if (!dense_enough(c, &b, n)) {
             gl_draw_point_list(c, list, n);
             break;
         }
@@ -380,10 +387,10 @@ int gl_dense_flush(gl_canvas *c)
             box_add(&b, c->pxy[2 * end], c->pxy[2 * end + 1]);
             end++;
         } while (end < c->npoints && colour_of(c, end) == k);
-        if (dense_enough(&b, end - start)) {
+        if (dense_enough(c, &b, end - start)) {
             if (start > pending)
                 gl_draw_points(c, pending, start - pending);
-            if (gather(c, start, end - start) != 0) {
+            if (gather(c, start, end - start, b) != 0) {
                 c->failed = 1;
                 return 1;
             }

@@ -261,7 +261,7 @@ void gl_programs_free(gl_engine *e)
     glDeleteProgram(e->text_prog);
     glDeleteProgram(e->view3d_prog);
     glDeleteProgram(e->dense_prog);
-    glDeleteTextures(5, e->dense_tex);     /* 0 is ignored */
+    glDeleteTextures(2, e->dense_tex);     /* 0 is ignored */
     if (e->text_texture)
         glDeleteTextures(1, &e->text_texture);
     gl_fill_free(e);
