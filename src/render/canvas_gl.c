@@ -49,6 +49,10 @@ static void engine_destroy(const gl_platform *p, gl_engine *e)
 {
     if (e->ctx)
         p->destroy(e);      /* its programs and buffers with it */
+    gl_dense_release(e);
+    free(e->kept_pxy);
+    free(e->kept_prgba);
+    free(e->readback);
     memset(e, 0, sizeof *e);
 }
 
@@ -76,9 +80,16 @@ static void destroy(gl_canvas *c, int keep, int has_target)
     if (current == c || current_plat == p)
         release_current();
     gl_engine *s = &spare[p->slot];
-    if (keep && c->gl.ctx && !s->ctx)
+    if (keep && c->gl.ctx && !s->ctx) {
+        /* the point arrays go with it: a frame of 10^6 particles would
+         * otherwise grow them again from nothing, page by page */
+        c->gl.kept_pxy = c->pxy;
+        c->gl.kept_prgba = c->prgba;
+        c->gl.kept_cap = c->cappoints;
+        c->pxy = NULL;
+        c->prgba = NULL;
         *s = c->gl;
-    else
+    } else
         engine_destroy(p, &c->gl);
     free(c->verts);
     free(c->pxy);
@@ -126,6 +137,12 @@ static int engine_start(gl_canvas *c, int *fresh, char *err, size_t errlen)
     if (!*fresh) {
         c->gl = *s;
         memset(s, 0, sizeof *s);
+        c->pxy = c->gl.kept_pxy;
+        c->prgba = c->gl.kept_prgba;
+        c->cappoints = c->gl.kept_cap;
+        c->gl.kept_pxy = NULL;
+        c->gl.kept_prgba = NULL;
+        c->gl.kept_cap = 0;
         return 0;
     }
     char why[512] = "";
@@ -259,20 +276,22 @@ static unsigned char *gl_read(lr_canvas *base)
     if (c->failed || glGetError() != GL_NO_ERROR)
         return NULL;
     size_t n = 4 * (size_t)c->base.width * (size_t)c->base.height;
-    unsigned char *raw = malloc(n), *out = malloc(n);
+    if (c->gl.readcap < n) {    /* kept with the context, like the points */
+        free(c->gl.readback);
+        c->gl.readback = malloc(n);
+        c->gl.readcap = c->gl.readback ? n : 0;
+    }
+    unsigned char *raw = c->gl.readback, *out = malloc(n);
     if (!raw || !out) {
-        free(raw);
         free(out);
         return NULL;
     }
     glReadPixels(0, 0, c->base.width, c->base.height, GL_RGBA, GL_UNSIGNED_BYTE, raw);
     if (glGetError() != GL_NO_ERROR) {
-        free(raw);
         free(out);
         return NULL;
     }
     straighten(raw, out, c->base.width, c->base.height);
-    free(raw);
     return out;
 }
 

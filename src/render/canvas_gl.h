@@ -25,7 +25,8 @@
  * Small shapes are batched: consecutive lines share one draw call,
  * consecutive discs of one radius another; a call of another kind, a clip,
  * a fill, text or a read flushes the batch first, so drawing order is
- * kept. */
+ * kept. Long dense runs of discs of about a pixel's radius are gathered
+ * into rectangles instead of drawn as points (canvas_gl_dense.c). */
 #ifndef LAMINA_CANVAS_GL_H
 #define LAMINA_CANVAS_GL_H
 
@@ -33,7 +34,16 @@
 #include <GL/gl.h>
 #include <GL/glext.h>
 
+#include <math.h>
+#include <stdint.h>
+
 #include "canvas_backend.h"
+
+/* A colour channel in 8 bits, as GL normalises it back. */
+static inline unsigned char gl_to8(double v)
+{
+    return v <= 0 ? 0 : v >= 1 ? 255 : (unsigned char)lround(v * 255.0);
+}
 
 /* Shape vertex: x, y (pixels), e (across, along, half width, length, in
  * pixels), m (dash length, mode), straight RGBA. */
@@ -64,6 +74,23 @@ typedef struct gl_engine {
     /* 3D views (canvas_gl_view3d.c): compiled at the first one */
     GLuint view3d_prog;
     GLint view3d_size;
+    /* gathered discs (canvas_gl_dense.c): compiled at the first run */
+    int dense_state;            /* 0: not tried; 1: ready; -1: no GLSL 1.30 */
+    GLuint dense_prog, dense_tex[2];    /* the cells, the coverage table */
+    int dense_tw, dense_th;     /* the cells' texture size */
+    GLint dense_vp, dense_h, dense_rgb, dense_org, dense_max;
+    double dense_r, dense_a;    /* what the table is for */
+    uint16_t *dense_cells;      /* a layer's cells, zero between layers */
+    size_t dense_cap;
+    uint32_t *dense_more, *dense_list;  /* discs for the next layer */
+    size_t dense_morecap, dense_listcap;
+    /* the last canvas's point arrays (gl_canvas.pxy, prgba) and read-back
+     * buffer, for the next: a frame's worth of memory stays allocated */
+    float *kept_pxy;
+    unsigned char *kept_prgba;
+    size_t kept_cap;
+    unsigned char *readback;
+    size_t readcap;
 } gl_engine;
 
 typedef struct gl_platform gl_platform;
@@ -130,14 +157,31 @@ void gl_flush(gl_canvas *c);
 /* Room for n more shape vertices in the batch (flushing another kind
  * first); NULL on OOM (c->failed is set). */
 float *gl_shape_verts(gl_canvas *c, size_t n);
-/* Appends one point of radius r (flushing points of another radius). */
-void gl_point(gl_canvas *c, double x, double y, double r, lr_rgba k);
+/* Makes the batch one of points of radius r (flushing another kind or
+ * radius, or a full one) with room for 1 .. n more; -1 on OOM (c->failed
+ * is set). The caller appends at c->npoints. */
+int gl_points_room(gl_canvas *c, double r, size_t n);
+/* A batch of points is drawn when it gets this big, to bound its memory. */
+#define BATCH_MAX_POINTS (1u << 22)
 /* Draws n shape vertices at once as triangles, without batching (for the
  * stencil passes of fills). */
 void gl_draw_triangles(gl_canvas *c, const float *v, size_t n);
 /* One vertex of a shape. */
 void gl_vert(float *v, double x, double y, double across, double along,
              double hw, double len, double dash, enum lrgl_mode mode, lr_rgba k);
+
+/* Draws points first .. first + count of the pending batch as points. */
+void gl_draw_points(gl_canvas *c, size_t first, size_t count);
+/* Draws the pending batch's points listed (n indices) as points. */
+void gl_draw_point_list(gl_canvas *c, const uint32_t *list, size_t n);
+
+/* canvas_gl_dense.c */
+/* Draws the pending points if they are discs it gathers (then 1; short
+ * runs among them as points, in order), else 0 and draws nothing. */
+int gl_dense_flush(gl_canvas *c);
+/* Frees the engine's CPU-side buffers (its GL objects go with the
+ * context). */
+void gl_dense_release(gl_engine *e);
 
 /* canvas_gl_draw.c */
 /* A line from a to b (pixels) of half width hw as two triangles. */

@@ -10,6 +10,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 void gl_line_quad(gl_canvas *c, double ax, double ay, double bx, double by,
                       double hw, double dash, enum lrgl_mode mode, lr_rgba k)
@@ -79,6 +80,9 @@ void gl_discs(lr_canvas *base, size_t n, const double *px, const double *py,
     double reach = r + 1.0;
     double w = c->base.width, h = c->base.height;
     int stamped = r >= STAMP_MIN_RADIUS && r <= STAMP_MAX_RADIUS;
+    /* a million particles come in few colours: each converted once */
+    lr_rgba last = { -1, -1, -1, -1 };
+    unsigned char last8[4] = { 0, 0, 0, 0 };
     for (size_t i = 0; i < n && !c->failed; i++) {
         double x = px[i], y = py[i];
         if (!(x + reach >= 0 && y + reach >= 0 && x - reach <= w && y - reach <= h))
@@ -87,10 +91,25 @@ void gl_discs(lr_canvas *base, size_t n, const double *px, const double *py,
             x = stamp_position(x);
             y = stamp_position(y);
         }
-        if (r <= SPRITE_MAX_RADIUS && x >= -c->pad && y >= -c->pad &&
-            x <= w + c->pad && y <= h + c->pad)
-            gl_point(c, x, y, r, colours[i]);
-        else
+        if (!(r <= SPRITE_MAX_RADIUS && x >= -c->pad && y >= -c->pad &&
+              x <= w + c->pad && y <= h + c->pad)) {
             disc_quad(c, x, y, r, colours[i]);
+            continue;
+        }
+        if ((c->batch != LRGL_BATCH_POINTS || c->point_r != r ||
+             c->npoints >= c->cappoints) && gl_points_room(c, r, n - i) != 0)
+            return;
+        lr_rgba k = colours[i];
+        if (k.r != last.r || k.g != last.g || k.b != last.b || k.a != last.a) {
+            last = k;
+            last8[0] = gl_to8(k.r);
+            last8[1] = gl_to8(k.g);
+            last8[2] = gl_to8(k.b);
+            last8[3] = gl_to8(k.a);
+        }
+        c->pxy[2 * c->npoints] = (float)x;
+        c->pxy[2 * c->npoints + 1] = (float)y;
+        memcpy(c->prgba + 4 * c->npoints, last8, 4);
+        c->npoints++;
     }
 }
