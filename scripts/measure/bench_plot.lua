@@ -18,8 +18,14 @@ for i = 1, #t.particles do
   s.x[#s.x + 1] = math.log(t.particles[i], 10)
   s.y[#s.y + 1] = t.mps[i]
 end
-local list = {}
-for _, k in ipairs(order) do list[#list + 1] = series[k] end
-lamina.plot{ file = png, width = 760, height = 560, legend = "top", yrange = { 0, 30 },
+local list, top = {}, 0
+for _, k in ipairs(order) do
+  list[#list + 1] = series[k]
+  for _, y in ipairs(series[k].y) do top = math.max(top, y) end
+end
+-- room above the fastest curve for the legend, which would hide curves
+-- beside them
+top = 10 * math.ceil(1.6 * top / 10)
+lamina.plot{ file = png, width = 760, height = 600, legend = "top", yrange = { 0, top },
              title = "lamina bench engine: M particle-steps/s (" .. load .. ")",
              xlabel = "log10 particles", ylabel = "M particle-steps/s", series = list }
