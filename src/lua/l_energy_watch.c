@@ -88,11 +88,19 @@ void la_energy_watch_end(lua_State *L, la_sim *s, const la_energy_watch *w)
     if (!(rise > w->floor) || !(rise > WATCH_RISE * scale)) return;
     s->warned_energy = 1;
     double cn = lm_sim_courant(sim, NULL);
-    char why[400], line[1000];
-    if (sim->def.basis == LM_BASIS_LINEAR)
+    double usual = lm_basis_courant_factor(sim->def.basis) *
+                   (sim->def.scheme == LM_USL ? LM_USL_COURANT : 1);
+    char why[600], line[1200];
+    if (cn > usual)   /* the script raised lamina.sim{courant} */
+        snprintf(why, sizeof why, "a step past the stable limit (Courant number dt*c/h = %.3g, "
+                 "above the %.3g lamina allows unless lamina.sim{courant} is raised): a "
+                 "smaller dt", cn, usual);
+    else if (sim->def.basis == LM_BASIS_LINEAR)
         snprintf(why, sizeof why, "the bilinear basis' cell-crossing noise feeding a moving "
                  "body's vibration (docs/robustness.md, \"Energy growth of a moving body on the "
-                 "bilinear basis\"): basis = \"bspline2\" or \"gimp\" keeps it");
+                 "bilinear basis\"): basis = \"bspline2\" or \"gimp\" keeps it; or a step "
+                 "too near the limit for points on cell sides (Courant number %.3g; [T] Ch. 8 "
+                 "halves the limit there)", cn);
     else
         snprintf(why, sizeof why, "a step too near the stability limit (Courant number %.3g): "
                  "try a smaller dt", cn);
