@@ -44,7 +44,9 @@ static inline double radial_velocity(const lm_sim *sim, size_t q)
     const lm_grid *g = &sim->grid;
     const lm_particles *p = &sim->p;
     const int W = g->sw, NS = W * W;
-    const double *N = p->N + (size_t)NS * q;
+    lm_weights wt;
+    lm_weights_of(sim, q, &wt);
+    const double *N = wt.N;
     double u = 0;
     for (int k = 0; k < NS; k++) u += N[k] * g->vx[lm_stencil_node(g, W, p->node[q], k)];
     return u;
@@ -135,8 +137,9 @@ void lm_axisym_forces(lm_sim *sim)
         } else {
             c = -(p->m[q] / p->rho[q]) * p->szz[q] / r;
         }
-        const double *N = p->N + (size_t)NS * q;
-        for (int k = 0; k < NS; k++) g->fx[lm_stencil_node(g, W, p->node[q], k)] += c * N[k];
+        lm_weights wt;
+        lm_weights_of(sim, q, &wt);
+        for (int k = 0; k < NS; k++) g->fx[lm_stencil_node(g, W, p->node[q], k)] += c * wt.N[k];
     }
     /* the ghost nodes were emptied by the in-plane scatter's fold: this
      * folds only the hoop terms (the x image is odd across the axis) */

@@ -287,7 +287,9 @@ static LM_FORCE_INLINE void body_sums_w(lm_sim *sim, lm_contact_field *f, const 
     const int NS = W * W;
     double *const fm = f->m;
     for (size_t q = bd->first; q < bd->first + bd->count; q++) {
-        const double *N = p->N + NS * q;
+        lm_weights wt;
+        lm_weights_of(sim, q, &wt);
+        const double *N = wt.N;
         const int node = p->node[q];
         const double m = p->m[q];
         if (!lm_cbox_reaches_q(c, &c->box, q, W)) {
@@ -297,7 +299,7 @@ static LM_FORCE_INLINE void body_sums_w(lm_sim *sim, lm_contact_field *f, const 
             }
             continue;
         }
-        const double *Gx = p->Gx + NS * q, *Gy = p->Gy + NS * q;
+        const double *Gx = wt.Gx, *Gy = wt.Gy;
         const int seg = segment_point(sim, q);
         const double V = m / p->rho[q];
         for (int k = 0; k < NS; k++) {

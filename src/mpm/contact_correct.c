@@ -438,11 +438,15 @@ void lm_contact_correct(lm_sim *sim)
 }
 
 /* sum_i N_iq d_i over particle q's stencil, for two nodal arrays. */
-static void gather2(const lm_grid *g, const lm_particles *p, size_t q, const double *dx,
-                    const double *dy, double *sx, double *sy)
+static void gather2(const lm_sim *sim, size_t q, const double *dx, const double *dy,
+                    double *sx, double *sy)
 {
+    const lm_grid *g = &sim->grid;
+    const lm_particles *p = &sim->p;
     const int W = g->sw, NS = W * W;
-    const double *N = p->N + NS * q;
+    lm_weights wt;
+    lm_weights_of(sim, q, &wt);
+    const double *N = wt.N;
     double ax = 0, ay = 0;
     for (int k = 0; k < NS; k++) {
         long i = lm_stencil_node(g, W, p->node[q], k);
@@ -460,7 +464,6 @@ void lm_contact_g2p(lm_sim *sim)
 {
     lm_contact *c = sim->contact;
     if (!c || c->npairs == 0) return;
-    const lm_grid *g = &sim->grid;
     lm_particles *p = &sim->p;
     double dt = sim->def.dt, pic = sim->def.pic;
     if (lm_cbox_empty(&c->near)) return;
@@ -470,8 +473,8 @@ void lm_contact_g2p(lm_sim *sim)
         for (size_t q = bd->first; q < bd->first + bd->count; q++) {
             if (p->pin[q] || !(c->qflag[q] & 1)) continue;
             double ax, ay, ux, uy;
-            gather2(g, p, q, f->dax, f->day, &ax, &ay);
-            gather2(g, p, q, f->dvx, f->dvy, &ux, &uy);
+            gather2(sim, q, f->dax, f->day, &ax, &ay);
+            gather2(sim, q, f->dvx, f->dvy, &ux, &uy);
             p->vx[q] += (1 - pic) * dt * ax + pic * ux;
             p->vy[q] += (1 - pic) * dt * ay + pic * uy;
             p->x[q] += dt * ux;
@@ -504,7 +507,9 @@ void lm_contact_strain_velocity(lm_sim *sim)
         for (size_t q = bd->first; q < bd->first + bd->count; q++) {
             /* only where a body moved in its own field or slid */
             if (!(c->qflag[q] & 2)) continue;
-            const double *N = p->N + NS * q;
+            lm_weights wt;
+            lm_weights_of(sim, q, &wt);
+            const double *N = wt.N;
             for (int j = 0; j < NS; j++) {
                 long i = lm_stencil_node(g, W, p->node[q], j);
                 f->px[i] += p->m[q] * N[j] * p->vx[q];
@@ -573,7 +578,7 @@ void lm_contact_velocity(const lm_sim *sim, size_t q, double *ux, double *uy)
     int k = c->of_body[p->body[q]];
     if (k < 0 || lm_cbox_empty(&c->moved) || !(c->qflag[q] & 2)) return;
     double dx, dy;
-    gather2(&sim->grid, p, q, c->f[k].dvx, c->f[k].dvy, &dx, &dy);
+    gather2(sim, q, c->f[k].dvx, c->f[k].dvy, &dx, &dy);
     *ux += dx;
     *uy += dy;
 }
@@ -588,7 +593,9 @@ void lm_contact_gradient(const lm_sim *sim, size_t q, double L[4])
     const lm_contact_field *f = &c->f[k];
     const lm_grid *g = &sim->grid;
     const int W = g->sw, NS = W * W;
-    const double *Gx = p->Gx + NS * q, *Gy = p->Gy + NS * q;
+    lm_weights wt;
+    lm_weights_of(sim, q, &wt);
+    const double *Gx = wt.Gx, *Gy = wt.Gy;
     for (int j = 0; j < NS; j++) {
         long i = lm_stencil_node(g, W, p->node[q], j);
         L[0] += f->dvx[i] * Gx[j];

@@ -140,7 +140,9 @@ void lm_link_forces(lm_sim *sim)
         for (int e = 0; e < 2; e++) {
             size_t q = e ? b : a;
             double s = e ? -T : T;   /* a is pulled toward b, b toward a */
-            const double *N = p->N + (size_t)NS * q;
+            lm_weights wt;
+            lm_weights_of(sim, q, &wt);
+            const double *N = wt.N;
             for (int j = 0; j < NS; j++) {
                 long i = lm_stencil_node(g, W, p->node[q], j);
                 g->fx[i] += s * ex * N[j];

@@ -138,11 +138,14 @@ void lm_membrane_segment_hold(lm_sim *sim)
 
 /* sum_i N_iq v_i, row by row for the 3 x 3 stencils as step 4 sums (a
  * point on a fixed wall then stays put to the last bit). */
-static void remapped_velocity(const lm_grid *g, const lm_particles *p, size_t q, double *ux,
-                              double *uy)
+static void remapped_velocity(const lm_sim *sim, size_t q, double *ux, double *uy)
 {
+    const lm_grid *g = &sim->grid;
+    const lm_particles *p = &sim->p;
     const int W = g->sw;
-    const double *N = p->N + (size_t)(W * W) * q;
+    lm_weights wt;
+    lm_weights_of(sim, q, &wt);
+    const double *N = wt.N;
     double sx = 0, sy = 0;
     for (int b = 0; b < W; b++) {
         const long row = lm_stencil_row(g, p->node[q], b);
@@ -168,7 +171,7 @@ void lm_membrane_segment_move(lm_sim *sim)
         const lm_body *bd = &sim->bodies[b];
         for (size_t q = bd->first; q < bd->first + bd->count; q++) {
             double ux, uy;
-            remapped_velocity(&sim->grid, p, q, &ux, &uy);
+            remapped_velocity(sim, q, &ux, &uy);
             if (moved) lm_contact_velocity(sim, q, &ux, &uy);
             p->x[q] = p->fpx[q] + dt * ux;
             p->y[q] = p->fpy[q] + dt * uy;

@@ -146,7 +146,13 @@ typedef struct lm_particles {
      * lm_stencil_node(grid, sw, node[q], k) (step.h). */
     int ns;
     int *node;
-    double *N, *Gx, *Gy;
+    double *N, *Gx, *Gy;   /* the 3 x 3 bases (ns = 9) only */
+    /* The bilinear basis keeps the point's place in its cell instead, xi
+     * and eta in [0, 1]: its weights and gradients are a few products of
+     * them (lm_bilinear_N, lm_bilinear_G in step.h), cheaper to redo than
+     * to store and read back (issue 17 item 1: 96 bytes a particle written
+     * and read by four passes). */
+    double *xi, *eta;
     /* Membranes with segment forces (membrane_force.c): L0 is the
      * unstrained length of the segment from this point to the next in
      * curve order (0: none), and (fpx, fpy) the net tension of the point's

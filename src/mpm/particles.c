@@ -32,8 +32,10 @@ int lm_particles_reserve(lm_particles *p, size_t cap)
     /* the stencil's weights and gradients: ns per particle (lm_sim_new
      * sets it from the basis before the first particle) */
     size_t ns = p->ns > 0 ? (size_t)p->ns : 4;
-    if (grow((void **)&p->N, ns * d, cap) || grow((void **)&p->Gx, ns * d, cap) ||
-        grow((void **)&p->Gy, ns * d, cap) ||
+    if (ns > 4 && (grow((void **)&p->N, ns * d, cap) || grow((void **)&p->Gx, ns * d, cap) ||
+                   grow((void **)&p->Gy, ns * d, cap)))
+        return -1;
+    if (grow((void **)&p->xi, d, cap) || grow((void **)&p->eta, d, cap) ||
         grow((void **)&p->body, sizeof(int), cap) ||
         grow((void **)&p->mat, sizeof(int), cap) ||
         grow((void **)&p->node, sizeof(int), cap) ||
@@ -50,7 +52,7 @@ void lm_particles_free(lm_particles *p)
     free(p->et); free(p->ds); free(p->tx); free(p->ty);
     free(p->e); free(p->q); free(p->ev); free(p->lx); free(p->ly);
     free(p->L0); free(p->fpx); free(p->fpy); free(p->pin); free(p->r0);
-    free(p->N); free(p->Gx); free(p->Gy);
+    free(p->N); free(p->Gx); free(p->Gy); free(p->xi); free(p->eta);
     free(p->body); free(p->mat); free(p->node);
     memset(p, 0, sizeof *p);
 }

@@ -88,9 +88,11 @@ void lm_pin_p2g(lm_sim *sim)
         size_t first = sim->bodies[pn->body].first;
         for (size_t j = 0; j < pn->n; j++) {
             size_t q = first + pn->idx[j];
+            lm_weights wt;
+            lm_weights_of(sim, q, &wt);
             for (int c = 0; c < ns; c++) {
                 int i = lm_stencil_node(g, g->sw, p->node[q], c);
-                double w = p->N[(size_t)ns * q + c];
+                double w = wt.N[c];
                 sim->pin_w[i] += w;
                 sim->pin_vx[i] += w * pn->vx;
                 sim->pin_vy[i] += w * pn->vy;
@@ -115,9 +117,11 @@ void lm_pin_grid(lm_sim *sim)
         pn->rx = pn->ry = 0;
         for (size_t j = 0; j < pn->n; j++) {
             size_t q = first + pn->idx[j];
+            lm_weights wt;
+            lm_weights_of(sim, q, &wt);
             for (int c = 0; c < ns; c++) {
                 int i = lm_stencil_node(g, g->sw, p->node[q], c);
-                double w = p->N[(size_t)ns * q + c];
+                double w = wt.N[c];
                 if (!(w > 0)) continue;
                 double s = w / sim->pin_w[i];
                 pn->rx += s * (g->m[i] * sim->pin_vx[i] / sim->pin_w[i] - g->px[i]) / dt;

@@ -4,8 +4,8 @@
 
 #include "step.h"
 
-void lm_shape_bilinear(const lm_grid *g, double x, double y, int *node,
-                       double N[4], double Gx[4], double Gy[4])
+void lm_cell_bilinear(const lm_grid *g, double x, double y, int *node, double *xi,
+                      double *eta)
 {
     /* two divisions, then products: divisions dominate this function */
     double rx = 1.0 / g->hx, ry = 1.0 / g->hy;
@@ -19,20 +19,18 @@ void lm_shape_bilinear(const lm_grid *g, double x, double y, int *node,
     if (j >= g->ny) j = g->ny - 1;
     if (i < 0) i = 0;
     if (j < 0) j = 0;
-    double xi = fx - i, eta = fy - j;
+    *xi = fx - i;
+    *eta = fy - j;
     *node = j * (g->nx + 1) + i;
-    N[0] = (1 - xi) * (1 - eta);
-    N[1] = xi * (1 - eta);
-    N[2] = (1 - xi) * eta;
-    N[3] = xi * eta;
-    Gx[0] = -(1 - eta) * rx;
-    Gx[1] = (1 - eta) * rx;
-    Gx[2] = -eta * rx;
-    Gx[3] = eta * rx;
-    Gy[0] = -(1 - xi) * ry;
-    Gy[1] = -xi * ry;
-    Gy[2] = (1 - xi) * ry;
-    Gy[3] = xi * ry;
+}
+
+void lm_shape_bilinear(const lm_grid *g, double x, double y, int *node,
+                       double N[4], double Gx[4], double Gy[4])
+{
+    double xi, eta;
+    lm_cell_bilinear(g, x, y, node, &xi, &eta);
+    lm_bilinear_N(xi, eta, N);
+    lm_bilinear_G(g, xi, eta, Gx, Gy);
 }
 
 void lm_shape_particle(const lm_sim *sim, size_t q, int *node, double *N, double *Gx,

@@ -29,10 +29,14 @@ static void copy_particle(lm_particles *p, size_t to, size_t from)
     p->mat[to] = p->mat[from];
     p->pin[to] = p->pin[from];
     p->node[to] = p->node[from];
+    p->xi[to] = p->xi[from];
+    p->eta[to] = p->eta[from];
     size_t ns = (size_t)p->ns;
-    memcpy(&p->N[ns * to], &p->N[ns * from], ns * sizeof(double));
-    memcpy(&p->Gx[ns * to], &p->Gx[ns * from], ns * sizeof(double));
-    memcpy(&p->Gy[ns * to], &p->Gy[ns * from], ns * sizeof(double));
+    if (ns > 4) {
+        memcpy(&p->N[ns * to], &p->N[ns * from], ns * sizeof(double));
+        memcpy(&p->Gx[ns * to], &p->Gx[ns * from], ns * sizeof(double));
+        memcpy(&p->Gy[ns * to], &p->Gy[ns * from], ns * sizeof(double));
+    }
 }
 
 /* The membranes' segments binned by squares of side 2d, each segment in

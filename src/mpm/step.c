@@ -31,8 +31,7 @@ void lm_step_shape(lm_sim *sim)
     case LM_BASIS_LINEAR:
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
         for (long q = 0; q < n; q++)
-            lm_shape_bilinear(g, p->x[q], p->y[q], &p->node[q], &p->N[4 * q],
-                              &p->Gx[4 * q], &p->Gy[4 * q]);
+            lm_cell_bilinear(g, p->x[q], p->y[q], &p->node[q], &p->xi[q], &p->eta[q]);
         break;
     case LM_BASIS_GIMP:
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
@@ -90,11 +89,18 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
     double *const c2 = split && kind == SCATTER_MASS_MOMENTUM ? c[2] : NULL;
     const long lo = split ? sh->lo : 0;
     const unsigned long span = split ? (unsigned long)(sh->hi - sh->lo) : 0;
+    /* the bilinear weights are made here from the point's place in its
+     * cell (step.h), the 3 x 3 ones read */
+    const double rx = 1.0 / g->hx, ry = 1.0 / g->hy;
+    double Nl[4], Gxl[4], Gyl[4];
+    (void)rx, (void)ry;
     switch (kind) {
     case SCATTER_MASS_MOMENTUM:
         for (size_t q = a0; q < b0; q++) {
             const double m = p->m[q], vx = p->vx[q], vy = p->vy[q];
-            const double *N = p->N + NS * q;
+            const double *N = Nl;
+            if (W == 2) lm_bilinear_N(p->xi[q], p->eta[q], Nl);
+            else N = p->N + NS * q;
             for (int b = 0; b < W; b++) {
                 const long row = lm_stencil_row(g, p->node[q], b);
                 for (int a = 0; a < W; a++) {
@@ -112,7 +118,9 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
                 /* the net tension of its segments, spread with N_ip
                  * (membrane_force.c) */
                 const double fx = p->fpx[q], fy = p->fpy[q];
-                const double *N = p->N + NS * q;
+                const double *N = Nl;
+                if (W == 2) lm_bilinear_N(p->xi[q], p->eta[q], Nl);
+                else N = p->N + NS * q;
                 for (int b = 0; b < W; b++) {
                     const long row = lm_stencil_row(g, p->node[q], b);
                     for (int a = 0; a < W; a++) {
@@ -124,7 +132,13 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
             }
             const double V = p->m[q] / p->rho[q];
             const double sxx = p->sxx[q], syy = p->syy[q], sxy = p->sxy[q];
-            const double *Gx = p->Gx + NS * q, *Gy = p->Gy + NS * q;
+            const double *Gx = Gxl, *Gy = Gyl;
+            if (W == 2) {
+                lm_bilinear_G_r(rx, ry, p->xi[q], p->eta[q], Gxl, Gyl);
+            } else {
+                Gx = p->Gx + NS * q;
+                Gy = p->Gy + NS * q;
+            }
             for (int b = 0; b < W; b++) {
                 const long row = lm_stencil_row(g, p->node[q], b);
                 for (int a = 0; a < W; a++) {
@@ -138,7 +152,9 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
     case SCATTER_MOMENTUM:
         for (size_t q = a0; q < b0; q++) {
             const double m = p->m[q], vx = p->vx[q], vy = p->vy[q];
-            const double *N = p->N + NS * q;
+            const double *N = Nl;
+            if (W == 2) lm_bilinear_N(p->xi[q], p->eta[q], Nl);
+            else N = p->N + NS * q;
             for (int b = 0; b < W; b++) {
                 const long row = lm_stencil_row(g, p->node[q], b);
                 for (int a = 0; a < W; a++) {
@@ -265,7 +281,10 @@ static LM_FORCE_INLINE void g2p_particle(const lm_grid *g, lm_particles *p, long
                                          double dt, double pic, const int W)
 {
     const int NS = W * W;
-    const double *N = p->N + NS * q;
+    double Nl[4];
+    const double *N = Nl;
+    if (W == 2) lm_bilinear_N(p->xi[q], p->eta[q], Nl);
+    else N = p->N + NS * q;
     double ax = 0, ay = 0, ux = 0, uy = 0;
     if (W == 2) {
         /* one running sum over the corners: the papers' code path, to the
@@ -373,10 +392,18 @@ void lm_step_strain_velocity(lm_sim *sim)
 
 /* L = sum_i v_i (x) G_ip (L = dv/dx) at particle q, stencil W wide. */
 static LM_FORCE_INLINE void velocity_gradient_w(const lm_grid *g, const lm_particles *p,
-                                                size_t q, double L[4], const int W)
+                                                size_t q, double L[4], double rx, double ry,
+                                                const int W)
 {
     const int NS = W * W;
-    const double *Gx = p->Gx + NS * q, *Gy = p->Gy + NS * q;
+    double Gxl[4], Gyl[4];
+    const double *Gx = Gxl, *Gy = Gyl;
+    if (W == 2) {
+        lm_bilinear_G_r(rx, ry, p->xi[q], p->eta[q], Gxl, Gyl);
+    } else {
+        Gx = p->Gx + NS * q;
+        Gy = p->Gy + NS * q;
+    }
     double Lxx = 0, Lxy = 0, Lyx = 0, Lyy = 0;
     for (int b = 0; b < W; b++) {
         const long row = lm_stencil_row(g, p->node[q], b);
@@ -392,11 +419,12 @@ static LM_FORCE_INLINE void velocity_gradient_w(const lm_grid *g, const lm_parti
     L[0] = Lxx; L[1] = Lxy; L[2] = Lyx; L[3] = Lyy;
 }
 
+/* rx = 1 / hx, ry = 1 / hy: the caller's, once for all its points */
 static inline void velocity_gradient(const lm_grid *g, const lm_particles *p, size_t q,
-                                     double L[4])
+                                     double L[4], double rx, double ry)
 {
-    if (g->sw == 2) velocity_gradient_w(g, p, q, L, 2);
-    else velocity_gradient_w(g, p, q, L, 3);
+    if (g->sw == 2) velocity_gradient_w(g, p, q, L, rx, ry, 2);
+    else velocity_gradient_w(g, p, q, L, rx, ry, 3);
 }
 
 /* Phase 6c: the artificial viscosity of [F] eq 24 needs, before any gas
@@ -404,6 +432,7 @@ static inline void velocity_gradient(const lm_grid *g, const lm_particles *p, si
  * the gas of the step (0 when no gas uses it). */
 void lm_step_gas_maxima(lm_sim *sim, double *max_div, double *c_max)
 {
+    const double rx = 1.0 / sim->grid.hx, ry = 1.0 / sim->grid.hy;
     const lm_particles *p = &sim->p;
     double md = 0, cm = 0;
     long n = (long)p->n;
@@ -419,7 +448,7 @@ void lm_step_gas_maxima(lm_sim *sim, double *max_div, double *c_max)
         const lm_material *mat = sim->mats[p->mat[q]];
         if (mat->kind != LM_GAS || !mat->av) continue;
         double L[4];
-        velocity_gradient(&sim->grid, p, (size_t)q, L);
+        velocity_gradient(&sim->grid, p, (size_t)q, L, rx, ry);
         if (moved) lm_contact_gradient_near(sim, (size_t)q, L);
         double div = fabs(sim->def.axisym ? L[0] + L[3] + lm_axisym_hoop_rate(sim, (size_t)q)
                                            : L[0] + L[3]);
@@ -433,9 +462,9 @@ void lm_step_gas_maxima(lm_sim *sim, double *max_div, double *c_max)
 
 /* Step 7 at particle q: L = sum_i v_i (x) G_ip, the strain increment
  * (dt/2)(L + L^T) and the spin (1/2)(L - L^T). */
-static void rate_at(const lm_sim *sim, size_t q, lm_rate *r, int moved)
+static void rate_at(const lm_sim *sim, size_t q, lm_rate *r, int moved, double rx, double ry)
 {
-    velocity_gradient(&sim->grid, &sim->p, q, r->L);
+    velocity_gradient(&sim->grid, &sim->p, q, r->L, rx, ry);
     if (moved) lm_contact_gradient_near(sim, q, r->L);   /* contact.h */
     const double *L = r->L, dt = sim->def.dt;
     r->dexx = dt * L[0];
@@ -474,13 +503,14 @@ void lm_step_stress(lm_sim *sim, double max_div, double c_max)
 {
     const lm_grid *g = &sim->grid;
     double h = fmin(g->hx, g->hy);
+    const double rx = 1.0 / g->hx, ry = 1.0 / g->hy;
     long n = (long)sim->p.n;
     const int moved = lm_contact_moved(sim->contact);   /* bodies in own fields */
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
     for (long q = 0; q < n; q++) {
         if (segment_point(sim, (size_t)q)) continue;   /* from lengths */
         lm_rate r;
-        rate_at(sim, (size_t)q, &r, moved);
+        rate_at(sim, (size_t)q, &r, moved, rx, ry);
         r.dt = sim->def.dt;
         r.max_div = max_div;
         r.c_max = c_max;

@@ -12,6 +12,62 @@
  * inside the grid. */
 void lm_shape_bilinear(const lm_grid *g, double x, double y, int *node,
                        double N[4], double Gx[4], double Gy[4]);
+/* The same split in two: the lower-left node and the place (xi, eta) in
+ * the cell, then the weights and gradients from the place. Every bilinear
+ * weight in lamina is made by these products, so a stored place and a
+ * fresh evaluation give the same bits. */
+void lm_cell_bilinear(const lm_grid *g, double x, double y, int *node, double *xi,
+                      double *eta);
+static inline void lm_bilinear_N(double xi, double eta, double N[4])
+{
+    N[0] = (1 - xi) * (1 - eta);
+    N[1] = xi * (1 - eta);
+    N[2] = (1 - xi) * eta;
+    N[3] = xi * eta;
+}
+/* rx = 1 / hx, ry = 1 / hy, worked out by the caller once for many points
+ * (the same quotient, so the same bits) */
+static inline void lm_bilinear_G_r(double rx, double ry, double xi, double eta, double Gx[4],
+                                   double Gy[4])
+{
+    Gx[0] = -(1 - eta) * rx;
+    Gx[1] = (1 - eta) * rx;
+    Gx[2] = -eta * rx;
+    Gx[3] = eta * rx;
+    Gy[0] = -(1 - xi) * ry;
+    Gy[1] = -xi * ry;
+    Gy[2] = (1 - xi) * ry;
+    Gy[3] = xi * ry;
+}
+static inline void lm_bilinear_G(const lm_grid *g, double xi, double eta, double Gx[4],
+                                 double Gy[4])
+{
+    lm_bilinear_G_r(1.0 / g->hx, 1.0 / g->hy, xi, eta, Gx, Gy);
+}
+
+/* Particle q's weights (and gradients) at x^k as lm_step_shape left them:
+ * pointers into the 3 x 3 bases' arrays, or the bilinear ones rebuilt in
+ * the struct. */
+typedef struct lm_weights {
+    const double *N, *Gx, *Gy;
+    double n[4], gx[4], gy[4];
+} lm_weights;
+static inline void lm_weights_of(const lm_sim *sim, size_t q, lm_weights *w)
+{
+    const lm_particles *p = &sim->p;
+    if (p->ns == 4) {
+        lm_bilinear_N(p->xi[q], p->eta[q], w->n);
+        lm_bilinear_G(&sim->grid, p->xi[q], p->eta[q], w->gx, w->gy);
+        w->N = w->n;
+        w->Gx = w->gx;
+        w->Gy = w->gy;
+    } else {
+        size_t o = (size_t)p->ns * q;
+        w->N = p->N + o;
+        w->Gx = p->Gx + o;
+        w->Gy = p->Gy + o;
+    }
+}
 /* The 3 x 3 bases at (x, y): the stencil's lower-left node (one left of
  * and one below the node nearest the point, on the padded grid), then 9
  * weights and gradients row by row, x fastest. uGIMP (shape_gimp.c) takes

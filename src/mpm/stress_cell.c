@@ -50,10 +50,12 @@ void lm_stress_cell_forces(lm_sim *sim)
         int node = p->node[q];
         if (bd->membrane && bd->force == LM_MFORCE_SEGMENT) {
             static const int dx[4] = {0, 1, 0, 1}, dy[4] = {0, 0, 1, 1};
+            double N[4];
+            lm_bilinear_N(p->xi[q], p->eta[q], N);
             for (int k = 0; k < 4; k++) {
                 int i = node + dy[k] * stride + dx[k];
-                g->fx[i] += p->N[4 * q + k] * p->fpx[q];
-                g->fy[i] += p->N[4 * q + k] * p->fpy[q];
+                g->fx[i] += N[k] * p->fpx[q];
+                g->fy[i] += N[k] * p->fpy[q];
             }
             continue;
         }

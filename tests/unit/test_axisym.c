@@ -72,12 +72,14 @@ static void adjoint(lm_basis b)
     const int W = g->sw, NS = W * W;
     for (size_t q = 0; q < p->n; q++) {
         double L[4] = {0, 0, 0, 0};
+        lm_weights wt;
+        lm_weights_of(sim, q, &wt);
         for (int k = 0; k < NS; k++) {
             long i = lm_stencil_node(g, W, p->node[q], k);
-            L[0] += g->vx[i] * p->Gx[NS * q + k];
-            L[1] += g->vx[i] * p->Gy[NS * q + k];
-            L[2] += g->vy[i] * p->Gx[NS * q + k];
-            L[3] += g->vy[i] * p->Gy[NS * q + k];
+            L[0] += g->vx[i] * wt.Gx[k];
+            L[1] += g->vx[i] * wt.Gy[k];
+            L[2] += g->vy[i] * wt.Gx[k];
+            L[3] += g->vy[i] * wt.Gy[k];
         }
         double V = p->m[q] / p->rho[q];
         pp += V * (p->sxx[q] * L[0] + p->syy[q] * L[3] + p->sxy[q] * (L[1] + L[2]) +

@@ -121,9 +121,11 @@ static void points_unchanged(void)
     const lm_particles *p = &sim->p;
     for (size_t q = 0; q < p->n; q++) {
         double V = p->m[q] / p->rho[q];
+        lm_weights wt;
+        lm_weights_of(sim, q, &wt);
         for (int k = 0; k < 4; k++) {
             int i = p->node[q] + (k >> 1) * (sim->grid.nx + 1) + (k & 1);
-            double gx = p->Gx[4 * q + k], gy = p->Gy[4 * q + k];
+            double gx = wt.Gx[k], gy = wt.Gy[k];
             fx[i] -= V * (p->sxx[q] * gx + p->sxy[q] * gy);
             fy[i] -= V * (p->sxy[q] * gx + p->syy[q] * gy);
         }

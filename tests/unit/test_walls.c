@@ -67,11 +67,13 @@ static void unity_by_walls(lm_basis b, lm_bc bc)
         lm_step_forces(sim);
         double m = 0, fx = 0, fy = 0, fabs_sum = 0, ghost = 0;
         memset(gx, 0, 2 * nn * sizeof *gx);
+        lm_weights wt;
+        lm_weights_of(sim, 0, &wt);
         for (int k = 0; k < sim->p.ns; k++) {
             int i = lm_stencil_node(g, g->sw, sim->p.node[0], k);
             CHECK(i >= 0 && (size_t)i < nn);
-            gx[i] += sim->p.Gx[sim->p.ns * 0 + k];
-            gy[i] += sim->p.Gy[k];
+            gx[i] += wt.Gx[k];
+            gy[i] += wt.Gy[k];
         }
         double *const fg[2] = {gx, gy};
         static const lm_comp sc[2] = {LM_COMP_SCALAR, LM_COMP_SCALAR};
