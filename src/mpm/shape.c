@@ -8,7 +8,12 @@ void lm_cell_bilinear(const lm_grid *g, double x, double y, int *node, double *x
                       double *eta)
 {
     /* two divisions, then products: divisions dominate this function */
-    double rx = 1.0 / g->hx, ry = 1.0 / g->hy;
+    lm_cell_bilinear_r(g, 1.0 / g->hx, 1.0 / g->hy, x, y, node, xi, eta);
+}
+
+void lm_cell_bilinear_r(const lm_grid *g, double rx, double ry, double x, double y, int *node,
+                        double *xi, double *eta)
+{
     double fx = (x - g->x0) * rx, fy = (y - g->y0) * ry;
     /* truncation is floor for the non-negative values of points inside
      * the grid, and cheaper: floor() is a library call on baseline x86-64 */

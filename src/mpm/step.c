@@ -28,11 +28,13 @@ void lm_step_shape(lm_sim *sim)
     const lm_grid *g = &sim->grid;
     long n = (long)p->n;
     switch (sim->def.basis) {
-    case LM_BASIS_LINEAR:
+    case LM_BASIS_LINEAR: {
+        const double rx = 1.0 / g->hx, ry = 1.0 / g->hy;
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
         for (long q = 0; q < n; q++)
-            lm_cell_bilinear(g, p->x[q], p->y[q], &p->node[q], &p->xi[q], &p->eta[q]);
+            lm_cell_bilinear_r(g, rx, ry, p->x[q], p->y[q], &p->node[q], &p->xi[q], &p->eta[q]);
         break;
+    }
     case LM_BASIS_GIMP:
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
         for (long q = 0; q < n; q++)
@@ -59,7 +61,8 @@ static inline int segment_point(const lm_sim *sim, size_t q)
 typedef enum scatter_kind {
     SCATTER_MASS_MOMENTUM,   /* m_i, p_i (step 1) */
     SCATTER_FORCES,          /* f_i^int (step 2) */
-    SCATTER_MOMENTUM         /* the MUSL re-map of m_p v_p (step 5) */
+    SCATTER_MOMENTUM,        /* the MUSL re-map of m_p v_p (step 5) */
+    SCATTER_MASS_FORCES      /* steps 1 and 2 in one pass: m_i, p_i, f_i^int */
 } scatter_kind;
 
 /* Where a thread's sum at node j goes (threads.h): to its copy c when
@@ -83,10 +86,13 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
     const lm_grid *g = &sim->grid;
     const lm_particles *p = &sim->p;
     const int NS = W * W;
+    const int five = kind == SCATTER_MASS_FORCES;
     double *const f0 = f[0], *const f1 = f[1];
-    double *const f2 = kind == SCATTER_MASS_MOMENTUM ? f[2] : NULL;
+    double *const f2 = kind == SCATTER_MASS_MOMENTUM || five ? f[2] : NULL;
+    double *const f3 = five ? f[3] : NULL, *const f4 = five ? f[4] : NULL;
     double *const c0 = split ? c[0] : NULL, *const c1 = split ? c[1] : NULL;
-    double *const c2 = split && kind == SCATTER_MASS_MOMENTUM ? c[2] : NULL;
+    double *const c2 = split && (kind == SCATTER_MASS_MOMENTUM || five) ? c[2] : NULL;
+    double *const c3 = split && five ? c[3] : NULL, *const c4 = split && five ? c[4] : NULL;
     const long lo = split ? sh->lo : 0;
     const unsigned long span = split ? (unsigned long)(sh->hi - sh->lo) : 0;
     /* the bilinear weights are made here from the point's place in its
@@ -145,6 +151,50 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
                     double gx = Gx[b * W + a], gy = Gy[b * W + a];
                     *at(f0, c0, row + a, lo, span, split) -= V * (sxx * gx + sxy * gy);
                     *at(f1, c1, row + a, lo, span, split) -= V * (sxy * gx + syy * gy);
+                }
+            }
+        }
+        break;
+    case SCATTER_MASS_FORCES:
+        /* each field gets the same terms in the same particle order as
+         * the two passes did, so the same sums to the bit */
+        for (size_t q = a0; q < b0; q++) {
+            const double m = p->m[q], vx = p->vx[q], vy = p->vy[q];
+            const double *N = Nl, *Gx = Gxl, *Gy = Gyl;
+            if (W == 2) {
+                lm_bilinear_N(p->xi[q], p->eta[q], Nl);
+            } else {
+                N = p->N + NS * q;
+                Gx = p->Gx + NS * q;
+                Gy = p->Gy + NS * q;
+            }
+            const int seg = segment_point(sim, q);
+            double V = 0, sxx = 0, syy = 0, sxy = 0, fpx = 0, fpy = 0;
+            if (seg) {
+                fpx = p->fpx[q];
+                fpy = p->fpy[q];
+            } else {
+                V = p->m[q] / p->rho[q];
+                sxx = p->sxx[q];
+                syy = p->syy[q];
+                sxy = p->sxy[q];
+                if (W == 2) lm_bilinear_G_r(rx, ry, p->xi[q], p->eta[q], Gxl, Gyl);
+            }
+            for (int b = 0; b < W; b++) {
+                const long row = lm_stencil_row(g, p->node[q], b);
+                for (int a = 0; a < W; a++) {
+                    double w = m * N[b * W + a];
+                    *at(f0, c0, row + a, lo, span, split) += w;
+                    *at(f1, c1, row + a, lo, span, split) += w * vx;
+                    *at(f2, c2, row + a, lo, span, split) += w * vy;
+                    if (seg) {
+                        *at(f3, c3, row + a, lo, span, split) += N[b * W + a] * fpx;
+                        *at(f4, c4, row + a, lo, span, split) += N[b * W + a] * fpy;
+                    } else {
+                        double gx = Gx[b * W + a], gy = Gy[b * W + a];
+                        *at(f3, c3, row + a, lo, span, split) -= V * (sxx * gx + sxy * gy);
+                        *at(f4, c4, row + a, lo, span, split) -= V * (sxy * gx + syy * gy);
+                    }
                 }
             }
         }
@@ -238,6 +288,10 @@ void lm_step_p2g(lm_sim *sim)
     lm_pin_p2g(sim);
 }
 
+/* What step 2 adds after the particles' own forces: the hoop, tethers,
+ * gravity. */
+static void forces_rest(lm_sim *sim);
+
 /* Step 2: f_i^int = -sum_p V_p sigma_p . G_ip ([F] eq 9), f_i^ext = m_i g. */
 void lm_step_forces(lm_sim *sim)
 {
@@ -249,6 +303,31 @@ void lm_step_forces(lm_sim *sim)
         lm_stress_cell_forces(sim);   /* [T] §5.4.3, stress_cell.c; linear basis only */
     else
         scatter(sim, SCATTER_FORCES, 2, out, comp);
+    forces_rest(sim);
+}
+
+/* Steps 1 and 2 in one pass over the particles (point stresses): the
+ * particle's place, weights and stencil are read once for all five sums
+ * (issue 17 item 1). The same sums as lm_step_p2g then lm_step_forces. */
+void lm_step_p2g_forces(lm_sim *sim)
+{
+    lm_grid *g = &sim->grid;
+    if (sim->def.stress == LM_STRESS_CELL) {
+        lm_step_p2g(sim);
+        lm_step_forces(sim);
+        return;
+    }
+    lm_membrane_segment_forces(sim);   /* the segment points' net tension */
+    double *const out[5] = {g->m, g->px, g->py, g->fx, g->fy};
+    static const lm_comp comp[5] = {LM_COMP_SCALAR, LM_COMP_X, LM_COMP_Y, LM_COMP_X, LM_COMP_Y};
+    scatter(sim, SCATTER_MASS_FORCES, 5, out, comp);
+    lm_pin_p2g(sim);
+    forces_rest(sim);
+}
+
+static void forces_rest(lm_sim *sim)
+{
+    lm_grid *g = &sim->grid;
     if (sim->def.axisym) lm_axisym_forces(sim);   /* -V sigma_thth N / r (axisym.c) */
     lm_link_forces(sim);                          /* tethers (link.c) */
     size_t nn = lm_grid_nodes(g);
@@ -675,8 +754,7 @@ lm_status lm_sim_step(lm_sim *sim)
     if (st != LM_OK) return st;
     lm_step_clear(sim);                         /* 0: the grid's sums */
     lm_step_shape(sim);                         /* 0: N_ip, G_ip at x^k */
-    lm_step_p2g(sim);                           /* 1: m_i, p_i */
-    lm_step_forces(sim);                        /* 2: f_i */
+    lm_step_p2g_forces(sim);                    /* 1-2: m_i, p_i; f_i */
     if (sim->contact) {                         /* the paired bodies' own fields */
         st = lm_contact_sums(sim);
         if (st != LM_OK) return st;

@@ -18,6 +18,10 @@ void lm_shape_bilinear(const lm_grid *g, double x, double y, int *node,
  * fresh evaluation give the same bits. */
 void lm_cell_bilinear(const lm_grid *g, double x, double y, int *node, double *xi,
                       double *eta);
+/* The same with rx = 1 / hx and ry = 1 / hy given (the same quotients, so
+ * the same bits), for a loop over many points. */
+void lm_cell_bilinear_r(const lm_grid *g, double rx, double ry, double x, double y, int *node,
+                        double *xi, double *eta);
 static inline void lm_bilinear_N(double xi, double eta, double N[4])
 {
     N[0] = (1 - xi) * (1 - eta);
@@ -120,6 +124,7 @@ void lm_step_clear(lm_sim *sim);            /* 0. empty nodal sums (step 9) */
 void lm_step_shape(lm_sim *sim);            /* N_ip, G_ip at x^k */
 void lm_step_p2g(lm_sim *sim);              /* 1. m_i, p_i */
 void lm_step_forces(lm_sim *sim);           /* 2. f_i^int + f_i^ext */
+void lm_step_p2g_forces(lm_sim *sim);       /* 1 and 2 in one pass (point stresses) */
 void lm_step_grid_update(lm_sim *sim);      /* 3. p_i^L, boundary conditions */
 void lm_step_g2p(lm_sim *sim);              /* 4. v_p, x_p */
 void lm_step_strain_velocity(lm_sim *sim);  /* 5. MUSL re-map or USL */

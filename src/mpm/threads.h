@@ -31,7 +31,7 @@ static inline void lm_thread_range(size_t n, int t, int nt, size_t *a, size_t *b
 }
 /* Makes room for the per-thread copies of up to LM_SCATTER_FIELDS nodal
  * fields; LM_ERR_MEMORY (message in sim->err) if it cannot. */
-#define LM_SCATTER_FIELDS 3
+#define LM_SCATTER_FIELDS 5
 /* Loops over nodes run on threads only above this many nodes: below it the
  * fork and join cost more than the loop (the dog-bone's grid has 289). */
 #define LM_NODE_LOOP_MIN 4096
