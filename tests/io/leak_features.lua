@@ -2,7 +2,7 @@
 -- valgrind: segment forces, pins (one driven), contact-release, a recorder,
 -- VTK output, a checkpoint, a frame with phi and contact nodes, read_csv.
 local out = lamina.param("out", "out/leak_features")
-local sim = lamina.sim{domain = {0, 0, 1, 1}, cell = 0.1, dt = 2e-5, basis = "bspline2",
+local sim = lamina.sim{domain = {0, 0, 1, 1}, cell = 0.1, dt = 2e-5, basis = "gimp",
                        boundary = "free"}
 local skin = lamina.membrane{rho = 1000, E = 1e7, thickness = 0.01}
 local sheet = sim:membrane{material = skin, count = 25, force = "segment", name = "sheet",

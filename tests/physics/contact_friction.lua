@@ -11,9 +11,9 @@
 -- reached, so not asserted here but in contact_friction_linear.lua (an
 -- expected failure): the linear basis gives -5.8 % at 30/0.3, and mu = 0.6
 -- at 45 degrees -15 % with GIMP (friction about 6-10 % too strong). With
--- bspline2 a pinned plane cannot be used: its pin holds the nodes one cell
--- into the block, and the block does not move; such a run stops saying so
--- (tests/bad/contact_pin_held.lua).
+-- bspline2 contact is refused (tests/bad/contact_bspline2.lua): among its
+-- faults, a pinned plane's pin would hold the nodes one cell into the
+-- block, which would not move.
 local slide = require("contact_scenes").slide
 
 for _, c in ipairs{ {30, 0.3}, {45, 0.3}, {30, 0} } do
