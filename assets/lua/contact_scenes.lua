@@ -52,6 +52,24 @@ function M.disks_wire(o)
   return sim, wire, d1, d2, h
 end
 
+-- [T] §5.9 / A.1.6's ball and net as scripts/paper/contact_ball_net.lua
+-- reads it: a plane-stress ball of radius 1.5 at (5.625, 5), speed 1, and
+-- a straight unstressed uniaxial net at x = 7.5 held by the box's fixed
+-- walls; o.cell (0.25; dt 1e-3 scaled with it), o.law ("release"), o.mu.
+-- Returns sim, ball, net.
+function M.ball_net(o)
+  local h = o.cell or 0.25
+  local sim = lamina.sim{ basis = "linear", domain = {0, 0, 10, 10}, cell = h, dt = 1e-3 * h / 0.25 }
+  local ballm = lamina.elastic{ rho = 1, E = 1e4, nu = 0.3, plane = "stress" }
+  local netm = lamina.membrane{ rho = 0.5, E = 1e4, nu = 0, thickness = 0.0125, law = "uniaxial" }
+  local net = sim:membrane{ material = netm, curve = lamina.segment{ from = {7.5, 0}, to = {7.5, 10} },
+                            spacing = h / 3, force = "segment", name = "net" }
+  local ball = sim:body{ material = ballm, ppc = 4, velocity = {1, 0}, name = "ball",
+                         region = lamina.disk{ center = {5.625, 5}, radius = 1.5 } }
+  sim:contact{ ball, net, law = o.law or "release", mu = o.mu }
+  return sim, ball, net
+end
+
 -- o.theta (degrees), o.mu, o.basis, o.threads, o.third (a third body in a
 -- release pair with the block). Returns sim, block, g.
 function M.incline(o)

@@ -40,14 +40,7 @@ local ref_turn, ref_settle, _, ref_v, ref_t, ref_vt = require("ball_net_ref").ru
   R = 1.5, mass = math.pi * 1.5 ^ 2, EA = 1e4 * 0.0125, L = 10, xn = 7.5, x0 = 5.625, v0 = 1 }
 
 local function run(law, mu, frames)
-  local sim = lamina.sim{ basis = "linear", domain = {0, 0, 10, 10}, cell = h, dt = 1e-3 }
-  local ballm = lamina.elastic{ rho = 1, E = 1e4, nu = 0.3, plane = "stress" }
-  local netm = lamina.membrane{ rho = 0.5, E = 1e4, nu = 0, thickness = 0.0125, law = "uniaxial" }
-  local net = sim:membrane{ material = netm, curve = lamina.segment{ from = {7.5, 0}, to = {7.5, 10} },
-                            spacing = h / 3, force = "segment", name = "net" }
-  local ball = sim:body{ material = ballm, ppc = 4, velocity = {1, 0}, name = "ball",
-                         region = lamina.disk{ center = {5.625, 5}, radius = 1.5 } }
-  sim:contact{ ball, net, law = law, mu = mu }
+  local sim, ball = require("contact_scenes").ball_net{ cell = h, law = law, mu = mu }
   local t, v, e, spin = {}, {}, {}, {}
   local function omega()
     local P = ball:particles()

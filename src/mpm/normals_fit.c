@@ -443,6 +443,23 @@ void lm_nfit_grad(const lm_nfit *f, const double x[3], double g[3])
         g[a] /= f->box.hi[a] - f->box.lo[a];
 }
 
+/* The three quadratic B-splines of the centres -1/2, 1/2, 3/2 and their
+ * derivatives at xi in [0, 1] (lm_bspline2's pieces written out: the same
+ * operations, so the same bits). */
+static inline void bspline2_three_d(double xi, double v[3], double d[3])
+{
+    double t = xi - (0 - 0.5), e = 1.5 - t;
+    v[0] = 0.5 * e * e;
+    d[0] = -e;
+    t = xi - (1 - 0.5);
+    v[1] = 0.75 - t * t;
+    d[1] = -2.0 * t;
+    t = xi - (2 - 0.5);
+    e = 1.5 - (-t);
+    v[2] = 0.5 * e * e;
+    d[2] = e;
+}
+
 /* lm_nfit_normal for the 2D quadratic fit of a point inside its element
  * (the per-step normals: 200 a step on the dog-bone), in one piece: the
  * logical coordinates, the 1D pieces of beta_2 and their slopes (as
@@ -456,29 +473,9 @@ static int normal_quadratic_2d_at(const lm_nfit *f, const double x[3], double n[
     double xi = (x[0] - f->box.lo[0]) / w0, eta = (x[1] - f->box.lo[1]) / w1;
     if (!(xi >= 0.0 && xi <= 1.0 && eta >= 0.0 && eta <= 1.0))
         return 1;                      /* not inside: the general path */
-    double v0[3], d0[3], v1[3], d1[3], t, e;
-    t = xi - (0 - 0.5);
-    e = 1.5 - t;
-    v0[0] = 0.5 * e * e;
-    d0[0] = -e;
-    t = xi - (1 - 0.5);
-    v0[1] = 0.75 - t * t;
-    d0[1] = -2.0 * t;
-    t = xi - (2 - 0.5);
-    e = 1.5 - (-t);
-    v0[2] = 0.5 * e * e;
-    d0[2] = e;
-    t = eta - (0 - 0.5);
-    e = 1.5 - t;
-    v1[0] = 0.5 * e * e;
-    d1[0] = -e;
-    t = eta - (1 - 0.5);
-    v1[1] = 0.75 - t * t;
-    d1[1] = -2.0 * t;
-    t = eta - (2 - 0.5);
-    e = 1.5 - (-t);
-    v1[2] = 0.5 * e * e;
-    d1[2] = e;
+    double v0[3], d0[3], v1[3], d1[3];
+    bspline2_three_d(xi, v0, d0);
+    bspline2_three_d(eta, v1, d1);
     const double *c = f->phi;
     double gl0 = 0.0, gl1 = 0.0, scale = 1.0;
     for (int j = 0; j < 3; j++)

@@ -152,34 +152,19 @@ static int ldlt9(double T[9][9], const double b[9], double x[9])
     double diag[9], inv[9], y[9];
     for (int j = 0; j < 9; j++)
         diag[j] = T[j][j];
-    if (ldlt9_step(T, diag, inv, 0) || ldlt9_step(T, diag, inv, 1) ||
-        ldlt9_step(T, diag, inv, 2) || ldlt9_step(T, diag, inv, 3) ||
-        ldlt9_step(T, diag, inv, 4) || ldlt9_step(T, diag, inv, 5) ||
-        ldlt9_step(T, diag, inv, 6) || ldlt9_step(T, diag, inv, 7) ||
-        ldlt9_step(T, diag, inv, 8))
-        return -1;
+    for (int j = 0; j < 9; j++)
+        if (ldlt9_step(T, diag, inv, j))
+            return -1;
     /* L y = b, then z = D^-1 y, then L^T x = z; each solve right-looking
      * too: once y_i (x_i) is known, it is taken off every later entry */
     for (int i = 0; i < 9; i++)
         y[i] = b[i];
-    forward9(T, y, 0);
-    forward9(T, y, 1);
-    forward9(T, y, 2);
-    forward9(T, y, 3);
-    forward9(T, y, 4);
-    forward9(T, y, 5);
-    forward9(T, y, 6);
-    forward9(T, y, 7);
+    for (int j = 0; j < 8; j++)
+        forward9(T, y, j);
     for (int i = 0; i < 9; i++)
         x[i] = y[i] * inv[i];
-    backward9(T, x, 8);
-    backward9(T, x, 7);
-    backward9(T, x, 6);
-    backward9(T, x, 5);
-    backward9(T, x, 4);
-    backward9(T, x, 3);
-    backward9(T, x, 2);
-    backward9(T, x, 1);
+    for (int j = 8; j > 0; j--)
+        backward9(T, x, j);
     return 0;
 }
 

@@ -57,6 +57,31 @@ static inline int segment_point(const lm_sim *sim, size_t q)
     return bd->membrane && bd->force == LM_MFORCE_SEGMENT;
 }
 
+/* Particle q's weights (gradients) for a stencil W wide: the bilinear
+ * ones rebuilt into buf from its place in the cell (step.h), the 3 x 3
+ * ones where lm_step_shape stored them. */
+static LM_FORCE_INLINE const double *weights_N(const lm_particles *p, size_t q, const int W,
+                                               double buf[4])
+{
+    if (W != 2) return p->N + (size_t)(W * W) * q;
+    lm_bilinear_N(p->xi[q], p->eta[q], buf);
+    return buf;
+}
+/* rx = 1 / hx, ry = 1 / hy, the caller's for all its points */
+static LM_FORCE_INLINE void weights_G(const lm_particles *p, size_t q, const int W, double rx,
+                                      double ry, double gx[4], double gy[4],
+                                      const double **Gx, const double **Gy)
+{
+    if (W != 2) {
+        *Gx = p->Gx + (size_t)(W * W) * q;
+        *Gy = p->Gy + (size_t)(W * W) * q;
+        return;
+    }
+    lm_bilinear_G_r(rx, ry, p->xi[q], p->eta[q], gx, gy);
+    *Gx = gx;
+    *Gy = gy;
+}
+
 /* The three particle-to-grid sums of the step. */
 typedef enum scatter_kind {
     SCATTER_MASS_MOMENTUM,   /* m_i, p_i (step 1) */
@@ -85,7 +110,6 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
 {
     const lm_grid *g = &sim->grid;
     const lm_particles *p = &sim->p;
-    const int NS = W * W;
     const int five = kind == SCATTER_MASS_FORCES;
     double *const f0 = f[0], *const f1 = f[1];
     double *const f2 = kind == SCATTER_MASS_MOMENTUM || five ? f[2] : NULL;
@@ -99,14 +123,11 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
      * cell (step.h), the 3 x 3 ones read */
     const double rx = 1.0 / g->hx, ry = 1.0 / g->hy;
     double Nl[4], Gxl[4], Gyl[4];
-    (void)rx, (void)ry;
     switch (kind) {
     case SCATTER_MASS_MOMENTUM:
         for (size_t q = a0; q < b0; q++) {
             const double m = p->m[q], vx = p->vx[q], vy = p->vy[q];
-            const double *N = Nl;
-            if (W == 2) lm_bilinear_N(p->xi[q], p->eta[q], Nl);
-            else N = p->N + NS * q;
+            const double *N = weights_N(p, q, W, Nl);
             for (int b = 0; b < W; b++) {
                 const long row = lm_stencil_row(g, p->node[q], b);
                 for (int a = 0; a < W; a++) {
@@ -124,9 +145,7 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
                 /* the net tension of its segments, spread with N_ip
                  * (membrane_force.c) */
                 const double fx = p->fpx[q], fy = p->fpy[q];
-                const double *N = Nl;
-                if (W == 2) lm_bilinear_N(p->xi[q], p->eta[q], Nl);
-                else N = p->N + NS * q;
+                const double *N = weights_N(p, q, W, Nl);
                 for (int b = 0; b < W; b++) {
                     const long row = lm_stencil_row(g, p->node[q], b);
                     for (int a = 0; a < W; a++) {
@@ -138,13 +157,8 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
             }
             const double V = p->m[q] / p->rho[q];
             const double sxx = p->sxx[q], syy = p->syy[q], sxy = p->sxy[q];
-            const double *Gx = Gxl, *Gy = Gyl;
-            if (W == 2) {
-                lm_bilinear_G_r(rx, ry, p->xi[q], p->eta[q], Gxl, Gyl);
-            } else {
-                Gx = p->Gx + NS * q;
-                Gy = p->Gy + NS * q;
-            }
+            const double *Gx, *Gy;
+            weights_G(p, q, W, rx, ry, Gxl, Gyl, &Gx, &Gy);
             for (int b = 0; b < W; b++) {
                 const long row = lm_stencil_row(g, p->node[q], b);
                 for (int a = 0; a < W; a++) {
@@ -160,14 +174,7 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
          * the two passes did, so the same sums to the bit */
         for (size_t q = a0; q < b0; q++) {
             const double m = p->m[q], vx = p->vx[q], vy = p->vy[q];
-            const double *N = Nl, *Gx = Gxl, *Gy = Gyl;
-            if (W == 2) {
-                lm_bilinear_N(p->xi[q], p->eta[q], Nl);
-            } else {
-                N = p->N + NS * q;
-                Gx = p->Gx + NS * q;
-                Gy = p->Gy + NS * q;
-            }
+            const double *N = weights_N(p, q, W, Nl), *Gx = NULL, *Gy = NULL;
             const int seg = segment_point(sim, q);
             double V = 0, sxx = 0, syy = 0, sxy = 0, fpx = 0, fpy = 0;
             if (seg) {
@@ -178,7 +185,7 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
                 sxx = p->sxx[q];
                 syy = p->syy[q];
                 sxy = p->sxy[q];
-                if (W == 2) lm_bilinear_G_r(rx, ry, p->xi[q], p->eta[q], Gxl, Gyl);
+                weights_G(p, q, W, rx, ry, Gxl, Gyl, &Gx, &Gy);
             }
             for (int b = 0; b < W; b++) {
                 const long row = lm_stencil_row(g, p->node[q], b);
@@ -202,9 +209,7 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
     case SCATTER_MOMENTUM:
         for (size_t q = a0; q < b0; q++) {
             const double m = p->m[q], vx = p->vx[q], vy = p->vy[q];
-            const double *N = Nl;
-            if (W == 2) lm_bilinear_N(p->xi[q], p->eta[q], Nl);
-            else N = p->N + NS * q;
+            const double *N = weights_N(p, q, W, Nl);
             for (int b = 0; b < W; b++) {
                 const long row = lm_stencil_row(g, p->node[q], b);
                 for (int a = 0; a < W; a++) {
@@ -361,9 +366,7 @@ static LM_FORCE_INLINE void g2p_particle(const lm_grid *g, lm_particles *p, long
 {
     const int NS = W * W;
     double Nl[4];
-    const double *N = Nl;
-    if (W == 2) lm_bilinear_N(p->xi[q], p->eta[q], Nl);
-    else N = p->N + NS * q;
+    const double *N = weights_N(p, (size_t)q, W, Nl);
     double ax = 0, ay = 0, ux = 0, uy = 0;
     if (W == 2) {
         /* one running sum over the corners: the papers' code path, to the
@@ -474,15 +477,9 @@ static LM_FORCE_INLINE void velocity_gradient_w(const lm_grid *g, const lm_parti
                                                 size_t q, double L[4], double rx, double ry,
                                                 const int W)
 {
-    const int NS = W * W;
     double Gxl[4], Gyl[4];
-    const double *Gx = Gxl, *Gy = Gyl;
-    if (W == 2) {
-        lm_bilinear_G_r(rx, ry, p->xi[q], p->eta[q], Gxl, Gyl);
-    } else {
-        Gx = p->Gx + NS * q;
-        Gy = p->Gy + NS * q;
-    }
+    const double *Gx, *Gy;
+    weights_G(p, q, W, rx, ry, Gxl, Gyl, &Gx, &Gy);
     double Lxx = 0, Lxy = 0, Lyx = 0, Lyy = 0;
     for (int b = 0; b < W; b++) {
         const long row = lm_stencil_row(g, p->node[q], b);

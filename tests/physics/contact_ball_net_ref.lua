@@ -20,14 +20,7 @@ local ref = require("ball_net_ref")
 local r_turn, r_settle, _, r_v = ref.run{ R = 1.5, mass = math.pi * 1.5 ^ 2, EA = 1e4 * 0.0125,
                                           L = 10, xn = 7.5, x0 = 5.625, v0 = 1 }
 local function mpm(h)
-  local sim = lamina.sim{ basis = "linear", domain = {0, 0, 10, 10}, cell = h, dt = 1e-3 * h / 0.25 }
-  local ballm = lamina.elastic{ rho = 1, E = 1e4, nu = 0.3, plane = "stress" }
-  local netm = lamina.membrane{ rho = 0.5, E = 1e4, nu = 0, thickness = 0.0125, law = "uniaxial" }
-  local net = sim:membrane{ material = netm, curve = lamina.segment{ from = {7.5, 0}, to = {7.5, 10} },
-                            spacing = h / 3, force = "segment", name = "net" }
-  local ball = sim:body{ material = ballm, ppc = 4, velocity = {1, 0}, name = "ball",
-                         region = lamina.disk{ center = {5.625, 5}, radius = 1.5 } }
-  sim:contact{ ball, net, law = "release" }
+  local sim, ball = require("contact_scenes").ball_net{ cell = h }
   local t, v, turn = {}, {}, nil
   sim:every(0.01, function(s)
     local vx = ball:velocity()
