@@ -238,9 +238,11 @@ static int sim_at(lua_State *L)
 
 /* Runs every event that is due. Half a step of tolerance, so that an event
  * at t = 0.1 fires at the step that lands on 0.1 up to rounding. */
-static void fire_due(lua_State *L, la_sim *s)
+/* Returns how many callbacks ran. */
+static int fire_due(lua_State *L, la_sim *s)
 {
     double now = s->sim->t + 0.5 * s->sim->def.dt;
+    int fired = 0;
     for (int i = 0; i < s->nev; i++) {
         la_event *e = &s->ev[i];
         if (e->done || e->next > now) continue;
@@ -267,6 +269,7 @@ static void fire_due(lua_State *L, la_sim *s)
         lua_rawgeti(L, -1, e->ref);
         lua_remove(L, -2);
         lua_pushvalue(L, 1);
+        fired++;
         if (lua_pcall(L, 1, 0, 0) != LUA_OK) {
             s->running = 0;
             la_run(L)->active = NULL;
@@ -274,6 +277,7 @@ static void fire_due(lua_State *L, la_sim *s)
             lua_error(L);
         }
     }
+    return fired;
 }
 
 void la_sim_skip_due(la_sim *s)
@@ -385,10 +389,15 @@ static void advance(lua_State *L, la_sim *s, long nsteps, double t_end)
     la_checkpoint_due(L, 1, s);
     la_energy_watch watch;
     la_energy_watch_begin(s, &watch);
+    /* the script may have changed anything since the last step */
+    lm_sim_forget_ahead(s->sim);
     for (long n = 0; isnan(t_end) ? n < nsteps : steps_to(s, t_end) > 0; n++) {
         la_pins_update(L, 1, s);
         la_energy_watch_step(s, &watch);
-        lm_status st = lm_sim_step(s->sim);
+        /* another step follows at once unless this is the last (a callback
+         * in between makes the engine forget, below) */
+        int more = isnan(t_end) ? n + 1 < nsteps : steps_to(s, t_end) > 1;
+        lm_status st = lm_sim_step_then(s->sim, more);
         if (st != LM_OK) {
             s->running = 0;
             run->active = NULL;
@@ -396,7 +405,7 @@ static void advance(lua_State *L, la_sim *s, long nsteps, double t_end)
             la_record_flush(L, 1);   /* the history up to the failure is kept */
             la_raise_sim_failure(L, s->sim->err);
         }
-        fire_due(L, s);
+        if (fire_due(L, s)) lm_sim_forget_ahead(s->sim);   /* it may have changed the state */
         la_checkpoint_due(L, 1, s);
         if (la_progress_tick(L, s->sim)) {   /* Ctrl-C, watch: stop between steps */
             s->running = 0;

@@ -294,6 +294,8 @@ typedef struct lm_sim {
     struct lm_contact *contact;   /* pairs in contact (contact.h); NULL: none */
     struct lm_nwork *nwork;       /* the normals' scratch (normals_work.h), made
                                      by the first step that needs it; NULL: none */
+    struct lm_ahead *ahead;       /* the fused pass's nodal arrays (step_fused.c);
+                                     NULL until a plain run's first step */
     char err[512];
 } lm_sim;
 
@@ -436,6 +438,14 @@ lm_status lm_sim_set_courant(lm_sim *sim, double courant);
 
 /* One step of docs/physics.md §1. On failure sim->err says why. */
 lm_status lm_sim_step(lm_sim *sim);
+/* The same step with a promise: more != 0 says the caller's next call on
+ * this sim is lm_sim_step or lm_sim_step_then, with nothing changing the
+ * particles, bodies, materials or grid in between. A plain run may then
+ * make the next step's grid sums in this step's pass over the particles
+ * (step_fused.c); the states are the same to the bit either way. A caller
+ * that breaks the promise calls lm_sim_forget_ahead first. */
+lm_status lm_sim_step_then(lm_sim *sim, int more);
+void lm_sim_forget_ahead(lm_sim *sim);
 
 /* ---- checkpoints (checkpoint.c) ------------------------------------------
  * The state that continues a run bit for bit, as bytes (the binding writes

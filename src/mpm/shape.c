@@ -11,24 +11,6 @@ void lm_cell_bilinear(const lm_grid *g, double x, double y, int *node, double *x
     lm_cell_bilinear_r(g, 1.0 / g->hx, 1.0 / g->hy, x, y, node, xi, eta);
 }
 
-void lm_cell_bilinear_r(const lm_grid *g, double rx, double ry, double x, double y, int *node,
-                        double *xi, double *eta)
-{
-    double fx = (x - g->x0) * rx, fy = (y - g->y0) * ry;
-    /* truncation is floor for the non-negative values of points inside
-     * the grid, and cheaper: floor() is a library call on baseline x86-64 */
-    int i = fx >= 0 ? (int)fx : (int)floor(fx);
-    int j = fy >= 0 ? (int)fy : (int)floor(fy);
-    /* A point exactly on the far edge belongs to the last cell. */
-    if (i >= g->nx) i = g->nx - 1;
-    if (j >= g->ny) j = g->ny - 1;
-    if (i < 0) i = 0;
-    if (j < 0) j = 0;
-    *xi = fx - i;
-    *eta = fy - j;
-    *node = j * (g->nx + 1) + i;
-}
-
 void lm_shape_bilinear(const lm_grid *g, double x, double y, int *node,
                        double N[4], double Gx[4], double Gy[4])
 {

@@ -142,6 +142,7 @@ void lm_sim_free(lm_sim *sim)
     free(sim->pin_w);
     lm_contact_free(sim->contact);
     lm_nwork_delete(sim->nwork);
+    lm_ahead_free(sim->ahead);
     free(sim);
 }
 

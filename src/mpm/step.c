@@ -9,77 +9,16 @@
 
 #include "contact.h"
 #include "step.h"
+#include "step_kernels.h"
 #include "threads.h"
-
-/* The step's loops over a particle's stencil come in two widths, chosen
- * outside the particle loops: 2 x 2 for the linear basis (the papers' code
- * path, unchanged to the last bit) and 3 x 3 for uGIMP and the quadratic
- * B-spline. Each loop is written once for a stencil width W and inlined
- * with W a constant, so the compiler unrolls both. */
-#if defined(__GNUC__)
-#define LM_FORCE_INLINE inline __attribute__((always_inline))
-#else
-#define LM_FORCE_INLINE inline
-#endif
 
 void lm_step_shape(lm_sim *sim)
 {
     lm_particles *p = &sim->p;
-    const lm_grid *g = &sim->grid;
+    const double rx = 1.0 / sim->grid.hx, ry = 1.0 / sim->grid.hy;
     long n = (long)p->n;
-    switch (sim->def.basis) {
-    case LM_BASIS_LINEAR: {
-        const double rx = 1.0 / g->hx, ry = 1.0 / g->hy;
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
-        for (long q = 0; q < n; q++)
-            lm_cell_bilinear_r(g, rx, ry, p->x[q], p->y[q], &p->node[q], &p->xi[q], &p->eta[q]);
-        break;
-    }
-    case LM_BASIS_GIMP:
-#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
-        for (long q = 0; q < n; q++)
-            lm_shape_gimp(g, p->x[q], p->y[q], p->lx[q], p->ly[q], &p->node[q],
-                          &p->N[9 * q], &p->Gx[9 * q], &p->Gy[9 * q]);
-        break;
-    case LM_BASIS_BSPLINE2:
-#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
-        for (long q = 0; q < n; q++)
-            lm_shape_bspline2(g, p->x[q], p->y[q], &p->node[q], &p->N[9 * q],
-                              &p->Gx[9 * q], &p->Gy[9 * q]);
-        break;
-    }
-}
-
-/* Is q a point of a membrane whose tension acts along its segments? */
-static inline int segment_point(const lm_sim *sim, size_t q)
-{
-    const lm_body *bd = &sim->bodies[sim->p.body[q]];
-    return bd->membrane && bd->force == LM_MFORCE_SEGMENT;
-}
-
-/* Particle q's weights (gradients) for a stencil W wide: the bilinear
- * ones rebuilt into buf from its place in the cell (step.h), the 3 x 3
- * ones where lm_step_shape stored them. */
-static LM_FORCE_INLINE const double *weights_N(const lm_particles *p, size_t q, const int W,
-                                               double buf[4])
-{
-    if (W != 2) return p->N + (size_t)(W * W) * q;
-    lm_bilinear_N(p->xi[q], p->eta[q], buf);
-    return buf;
-}
-/* rx = 1 / hx, ry = 1 / hy, the caller's for all its points */
-static LM_FORCE_INLINE void weights_G(const lm_particles *p, size_t q, const int W, double rx,
-                                      double ry, double gx[4], double gy[4],
-                                      const double **Gx, const double **Gy)
-{
-    if (W != 2) {
-        *Gx = p->Gx + (size_t)(W * W) * q;
-        *Gy = p->Gy + (size_t)(W * W) * q;
-        return;
-    }
-    lm_bilinear_G_r(rx, ry, p->xi[q], p->eta[q], gx, gy);
-    *Gx = gx;
-    *Gy = gy;
+    for (long q = 0; q < n; q++) lm_k_shape(sim, p, (size_t)q, rx, ry);
 }
 
 /* The three particle-to-grid sums of the step. */
@@ -89,15 +28,6 @@ typedef enum scatter_kind {
     SCATTER_MOMENTUM,        /* the MUSL re-map of m_p v_p (step 5) */
     SCATTER_MASS_FORCES      /* steps 1 and 2 in one pass: m_i, p_i, f_i^int */
 } scatter_kind;
-
-/* Where a thread's sum at node j goes (threads.h): to its copy c when
- * another thread touches j too (lo <= j <= lo + span), else to the field f
- * itself. split is a constant: 0 on the plain path. */
-static LM_FORCE_INLINE double *at(double *f, double *c, long j, long lo, unsigned long span,
-                                  const int split)
-{
-    return split && (unsigned long)(j - lo) <= span ? c + j : f + j;
-}
 
 /* The loops of each sum for a stencil W nodes wide (the kind is chosen
  * outside them: a switch per corner costs a fifth of the step). The
@@ -110,13 +40,10 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
 {
     const lm_grid *g = &sim->grid;
     const lm_particles *p = &sim->p;
-    const int five = kind == SCATTER_MASS_FORCES;
     double *const f0 = f[0], *const f1 = f[1];
-    double *const f2 = kind == SCATTER_MASS_MOMENTUM || five ? f[2] : NULL;
-    double *const f3 = five ? f[3] : NULL, *const f4 = five ? f[4] : NULL;
+    double *const f2 = kind == SCATTER_MASS_MOMENTUM ? f[2] : NULL;
     double *const c0 = split ? c[0] : NULL, *const c1 = split ? c[1] : NULL;
-    double *const c2 = split && (kind == SCATTER_MASS_MOMENTUM || five) ? c[2] : NULL;
-    double *const c3 = split && five ? c[3] : NULL, *const c4 = split && five ? c[4] : NULL;
+    double *const c2 = split && kind == SCATTER_MASS_MOMENTUM ? c[2] : NULL;
     const long lo = split ? sh->lo : 0;
     const unsigned long span = split ? (unsigned long)(sh->hi - sh->lo) : 0;
     /* the bilinear weights are made here from the point's place in its
@@ -127,30 +54,30 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
     case SCATTER_MASS_MOMENTUM:
         for (size_t q = a0; q < b0; q++) {
             const double m = p->m[q], vx = p->vx[q], vy = p->vy[q];
-            const double *N = weights_N(p, q, W, Nl);
+            const double *N = lm_k_weights_N(p, q, W, Nl);
             for (int b = 0; b < W; b++) {
                 const long row = lm_stencil_row(g, p->node[q], b);
                 for (int a = 0; a < W; a++) {
                     double w = m * N[b * W + a];
-                    *at(f0, c0, row + a, lo, span, split) += w;
-                    *at(f1, c1, row + a, lo, span, split) += w * vx;
-                    *at(f2, c2, row + a, lo, span, split) += w * vy;
+                    *lm_k_at(f0, c0, row + a, lo, span, split) += w;
+                    *lm_k_at(f1, c1, row + a, lo, span, split) += w * vx;
+                    *lm_k_at(f2, c2, row + a, lo, span, split) += w * vy;
                 }
             }
         }
         break;
     case SCATTER_FORCES:
         for (size_t q = a0; q < b0; q++) {
-            if (segment_point(sim, q)) {
+            if (lm_k_segment_point(sim, q)) {
                 /* the net tension of its segments, spread with N_ip
                  * (membrane_force.c) */
                 const double fx = p->fpx[q], fy = p->fpy[q];
-                const double *N = weights_N(p, q, W, Nl);
+                const double *N = lm_k_weights_N(p, q, W, Nl);
                 for (int b = 0; b < W; b++) {
                     const long row = lm_stencil_row(g, p->node[q], b);
                     for (int a = 0; a < W; a++) {
-                        *at(f0, c0, row + a, lo, span, split) += N[b * W + a] * fx;
-                        *at(f1, c1, row + a, lo, span, split) += N[b * W + a] * fy;
+                        *lm_k_at(f0, c0, row + a, lo, span, split) += N[b * W + a] * fx;
+                        *lm_k_at(f1, c1, row + a, lo, span, split) += N[b * W + a] * fy;
                     }
                 }
                 continue;
@@ -158,13 +85,13 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
             const double V = p->m[q] / p->rho[q];
             const double sxx = p->sxx[q], syy = p->syy[q], sxy = p->sxy[q];
             const double *Gx, *Gy;
-            weights_G(p, q, W, rx, ry, Gxl, Gyl, &Gx, &Gy);
+            lm_k_weights_G(p, q, W, rx, ry, Gxl, Gyl, &Gx, &Gy);
             for (int b = 0; b < W; b++) {
                 const long row = lm_stencil_row(g, p->node[q], b);
                 for (int a = 0; a < W; a++) {
                     double gx = Gx[b * W + a], gy = Gy[b * W + a];
-                    *at(f0, c0, row + a, lo, span, split) -= V * (sxx * gx + sxy * gy);
-                    *at(f1, c1, row + a, lo, span, split) -= V * (sxy * gx + syy * gy);
+                    *lm_k_at(f0, c0, row + a, lo, span, split) -= V * (sxx * gx + sxy * gy);
+                    *lm_k_at(f1, c1, row + a, lo, span, split) -= V * (sxy * gx + syy * gy);
                 }
             }
         }
@@ -172,53 +99,11 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
     case SCATTER_MASS_FORCES:
         /* each field gets the same terms in the same particle order as
          * the two passes did, so the same sums to the bit */
-        for (size_t q = a0; q < b0; q++) {
-            const double m = p->m[q], vx = p->vx[q], vy = p->vy[q];
-            const double *N = weights_N(p, q, W, Nl), *Gx = NULL, *Gy = NULL;
-            const int seg = segment_point(sim, q);
-            double V = 0, sxx = 0, syy = 0, sxy = 0, fpx = 0, fpy = 0;
-            if (seg) {
-                fpx = p->fpx[q];
-                fpy = p->fpy[q];
-            } else {
-                V = p->m[q] / p->rho[q];
-                sxx = p->sxx[q];
-                syy = p->syy[q];
-                sxy = p->sxy[q];
-                weights_G(p, q, W, rx, ry, Gxl, Gyl, &Gx, &Gy);
-            }
-            for (int b = 0; b < W; b++) {
-                const long row = lm_stencil_row(g, p->node[q], b);
-                for (int a = 0; a < W; a++) {
-                    double w = m * N[b * W + a];
-                    *at(f0, c0, row + a, lo, span, split) += w;
-                    *at(f1, c1, row + a, lo, span, split) += w * vx;
-                    *at(f2, c2, row + a, lo, span, split) += w * vy;
-                    if (seg) {
-                        *at(f3, c3, row + a, lo, span, split) += N[b * W + a] * fpx;
-                        *at(f4, c4, row + a, lo, span, split) += N[b * W + a] * fpy;
-                    } else {
-                        double gx = Gx[b * W + a], gy = Gy[b * W + a];
-                        *at(f3, c3, row + a, lo, span, split) -= V * (sxx * gx + sxy * gy);
-                        *at(f4, c4, row + a, lo, span, split) -= V * (sxy * gx + syy * gy);
-                    }
-                }
-            }
-        }
+        for (size_t q = a0; q < b0; q++)
+            lm_k_scatter_mass_forces(sim, q, rx, ry, f, c, lo, span, W, split, 1);
         break;
     case SCATTER_MOMENTUM:
-        for (size_t q = a0; q < b0; q++) {
-            const double m = p->m[q], vx = p->vx[q], vy = p->vy[q];
-            const double *N = weights_N(p, q, W, Nl);
-            for (int b = 0; b < W; b++) {
-                const long row = lm_stencil_row(g, p->node[q], b);
-                for (int a = 0; a < W; a++) {
-                    double w = m * N[b * W + a];
-                    *at(f0, c0, row + a, lo, span, split) += w * vx;
-                    *at(f1, c1, row + a, lo, span, split) += w * vy;
-                }
-            }
-        }
+        for (size_t q = a0; q < b0; q++) lm_k_scatter_momentum(sim, q, f, c, lo, span, W, split);
         break;
     }
 }
@@ -293,9 +178,6 @@ void lm_step_p2g(lm_sim *sim)
     lm_pin_p2g(sim);
 }
 
-/* What step 2 adds after the particles' own forces: the hoop, tethers,
- * gravity. */
-static void forces_rest(lm_sim *sim);
 
 /* Step 2: f_i^int = -sum_p V_p sigma_p . G_ip ([F] eq 9), f_i^ext = m_i g. */
 void lm_step_forces(lm_sim *sim)
@@ -308,7 +190,7 @@ void lm_step_forces(lm_sim *sim)
         lm_stress_cell_forces(sim);   /* [T] §5.4.3, stress_cell.c; linear basis only */
     else
         scatter(sim, SCATTER_FORCES, 2, out, comp);
-    forces_rest(sim);
+    lm_step_forces_rest(sim);
 }
 
 /* Steps 1 and 2 in one pass over the particles (point stresses): the
@@ -327,10 +209,12 @@ void lm_step_p2g_forces(lm_sim *sim)
     static const lm_comp comp[5] = {LM_COMP_SCALAR, LM_COMP_X, LM_COMP_Y, LM_COMP_X, LM_COMP_Y};
     scatter(sim, SCATTER_MASS_FORCES, 5, out, comp);
     lm_pin_p2g(sim);
-    forces_rest(sim);
+    lm_step_forces_rest(sim);
 }
 
-static void forces_rest(lm_sim *sim)
+/* What step 2 adds after the particles' own forces: the hoop, tethers,
+ * gravity. */
+void lm_step_forces_rest(lm_sim *sim)
 {
     lm_grid *g = &sim->grid;
     if (sim->def.axisym) lm_axisym_forces(sim);   /* -V sigma_thth N / r (axisym.c) */
@@ -360,52 +244,6 @@ void lm_step_grid_update(lm_sim *sim)
     lm_grid_apply_bc(g, g->fx, g->fy);
 }
 
-/* Step 4 for particle q with a stencil W nodes wide. */
-static LM_FORCE_INLINE void g2p_particle(const lm_grid *g, lm_particles *p, long q,
-                                         double dt, double pic, const int W)
-{
-    const int NS = W * W;
-    double Nl[4];
-    const double *N = weights_N(p, (size_t)q, W, Nl);
-    double ax = 0, ay = 0, ux = 0, uy = 0;
-    if (W == 2) {
-        /* one running sum over the corners: the papers' code path, to the
-         * last bit */
-        for (int k = 0; k < NS; k++) {
-            int i = lm_stencil_node(g, W, p->node[q], k);
-            ax += N[k] * g->ax[i];
-            ay += N[k] * g->ay[i];
-            ux += N[k] * g->vx[i];
-            uy += N[k] * g->vy[i];
-        }
-    } else {
-        /* row by row, then the rows: at a point on a fixed wall the
-         * antisymmetric ghost row (or column) cancels its mirror exactly
-         * (grid_walls.c), so the point does not move by a rounding error */
-        for (int b = 0; b < W; b++) {
-            const long row = lm_stencil_row(g, p->node[q], b);
-            double rax = 0, ray = 0, rux = 0, ruy = 0;
-            for (int a = 0; a < W; a++) {
-                double w = N[b * W + a];
-                rax += w * g->ax[row + a];
-                ray += w * g->ay[row + a];
-                rux += w * g->vx[row + a];
-                ruy += w * g->vy[row + a];
-            }
-            ax += rax;
-            ay += ray;
-            ux += rux;
-            uy += ruy;
-        }
-    }
-    /* FLIP, optionally blended with the PIC velocity sum_i N_ip v_i^L
-     * (pic = 0, the papers' scheme, by default) */
-    p->vx[q] = (1 - pic) * (p->vx[q] + dt * ax) + pic * ux;
-    p->vy[q] = (1 - pic) * (p->vy[q] + dt * ay) + pic * uy;
-    p->x[q] += dt * ux;
-    p->y[q] += dt * uy;
-}
-
 /* Step 4 ([F] eq 12): FLIP velocity update from the nodal accelerations,
  * position from the Lagrangian grid velocity. Only zero-mass nodes are
  * skipped; dropping "small" ones would break momentum conservation. */
@@ -430,10 +268,10 @@ void lm_step_g2p(lm_sim *sim)
     long n = (long)p->n;
     if (g->sw == 2) {
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
-        for (long q = 0; q < n; q++) g2p_particle(g, p, q, dt, pic, 2);
+        for (long q = 0; q < n; q++) lm_k_g2p(g, p, (size_t)q, dt, pic, g->ax, g->ay, g->vx, g->vy, 2);
     } else {
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
-        for (long q = 0; q < n; q++) g2p_particle(g, p, q, dt, pic, 3);
+        for (long q = 0; q < n; q++) lm_k_g2p(g, p, (size_t)q, dt, pic, g->ax, g->ay, g->vx, g->vy, 3);
     }
     lm_pin_particles(sim);
 }
@@ -472,35 +310,12 @@ void lm_step_strain_velocity(lm_sim *sim)
     lm_grid_fill(g, 2, fill, comp);
 }
 
-/* L = sum_i v_i (x) G_ip (L = dv/dx) at particle q, stencil W wide. */
-static LM_FORCE_INLINE void velocity_gradient_w(const lm_grid *g, const lm_particles *p,
-                                                size_t q, double L[4], double rx, double ry,
-                                                const int W)
-{
-    double Gxl[4], Gyl[4];
-    const double *Gx, *Gy;
-    weights_G(p, q, W, rx, ry, Gxl, Gyl, &Gx, &Gy);
-    double Lxx = 0, Lxy = 0, Lyx = 0, Lyy = 0;
-    for (int b = 0; b < W; b++) {
-        const long row = lm_stencil_row(g, p->node[q], b);
-        for (int a = 0; a < W; a++) {
-            double gx = Gx[b * W + a], gy = Gy[b * W + a];
-            double vx = g->vx[row + a], vy = g->vy[row + a];
-            Lxx += vx * gx;
-            Lxy += vx * gy;
-            Lyx += vy * gx;
-            Lyy += vy * gy;
-        }
-    }
-    L[0] = Lxx; L[1] = Lxy; L[2] = Lyx; L[3] = Lyy;
-}
-
 /* rx = 1 / hx, ry = 1 / hy: the caller's, once for all its points */
 static inline void velocity_gradient(const lm_grid *g, const lm_particles *p, size_t q,
                                      double L[4], double rx, double ry)
 {
-    if (g->sw == 2) velocity_gradient_w(g, p, q, L, rx, ry, 2);
-    else velocity_gradient_w(g, p, q, L, rx, ry, 3);
+    if (g->sw == 2) lm_k_velocity_gradient(g, p, q, g->vx, g->vy, L, rx, ry, 2);
+    else lm_k_velocity_gradient(g, p, q, g->vx, g->vy, L, rx, ry, 3);
 }
 
 /* Phase 6c: the artificial viscosity of [F] eq 24 needs, before any gas
@@ -584,7 +399,7 @@ void lm_step_stress(lm_sim *sim, double max_div, double c_max)
     const int moved = lm_contact_moved(sim->contact);   /* bodies in own fields */
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
     for (long q = 0; q < n; q++) {
-        if (segment_point(sim, (size_t)q)) continue;   /* from lengths */
+        if (lm_k_segment_point(sim, (size_t)q)) continue;   /* from lengths */
         lm_rate r;
         rate_at(sim, (size_t)q, &r, moved, rx, ry);
         r.dt = sim->def.dt;
@@ -610,31 +425,6 @@ static lm_status fail(lm_sim *sim, lm_status st, size_t q, const char *what,
              q - sim->bodies[b].first + 1, lm_body_label(sim, b, who, sizeof who), what,
              p->x[q], p->y[q], p->vx[q], p->vy[q], cause);
     return st;
-}
-
-/* 0 if particle q is sound (a rounding stray past a wall is put back),
- * else what is wrong with it: 1 NaN, 2 no volume, 3 out of the domain. */
-static inline int check_one(lm_sim *sim, size_t q)
-{
-    lm_particles *p = &sim->p;
-    const lm_grid *g = &sim->grid;
-    double x1 = g->x0 + g->nx * g->hx, y1 = g->y0 + g->ny * g->hy;
-    /* a sum is finite unless a term is NaN or infinite (or it overflows,
-     * which is trouble too): one test where seven would do */
-    double sum = p->x[q] + p->y[q] + p->vx[q] + p->vy[q] + p->sxx[q] + p->syy[q] + p->sxy[q];
-    if (!isfinite(sum)) return 1;
-    if (!(p->rho[q] > 0) || !isfinite(p->rho[q])) return 2;
-    if (p->x[q] < g->x0 || p->x[q] > x1 || p->y[q] < g->y0 || p->y[q] > y1) {
-        /* A point on a wall or symmetry line can stray by rounding (1e-17
-         * of a cell per step); that is put back, not reported. */
-        double tx = 1e-6 * g->hx, ty = 1e-6 * g->hy;
-        if (p->x[q] < g->x0 - tx || p->x[q] > x1 + tx || p->y[q] < g->y0 - ty ||
-            p->y[q] > y1 + ty)
-            return 3;
-        p->x[q] = fmin(fmax(p->x[q], g->x0), x1);
-        p->y[q] = fmin(fmax(p->y[q], g->y0), y1);
-    }
-    return 0;
 }
 
 /* Stops the run at the first sign of trouble, naming the particle (the
@@ -665,26 +455,33 @@ static lm_status contact_held(lm_sim *sim)
 lm_status lm_step_check(lm_sim *sim)
 {
     long n = (long)sim->p.n, first = n;
+    const lm_k_box box = lm_k_box_of(&sim->grid);
 #pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) \
     reduction(min : first) if (n >= LM_PARTICLE_LOOP_MIN)
     for (long q = 0; q < n; q++)
-        if (check_one(sim, (size_t)q) && q < first) first = q;
+        if (lm_k_check(&sim->p, (size_t)q, &box) && q < first) first = q;
+    return lm_step_check_report(sim, (size_t)first);
+}
+
+lm_status lm_step_check_report(lm_sim *sim, size_t first)
+{
     if (sim->contact && sim->contact->held_body >= 0) return contact_held(sim);
-    if (first == n) return lm_membrane_check_torn(sim);
+    if (first >= sim->p.n) return lm_membrane_check_torn(sim);
     /* a membrane that tore lets its points fly: the tear is the news */
     if (lm_membrane_check_torn(sim) != LM_OK) return LM_ERR_UNSTABLE;
-    switch (check_one(sim, (size_t)first)) {
+    const lm_k_box box = lm_k_box_of(&sim->grid);
+    switch (lm_k_check(&sim->p, first, &box)) {
     case 1:
-        return fail(sim, LM_ERR_UNSTABLE, (size_t)first, "became NaN or infinite",
+        return fail(sim, LM_ERR_UNSTABLE, first, "became NaN or infinite",
                     "the time step is too large (raise stability: "
                     "lower dt) or a material parameter is extreme");
     case 2:
-        return fail(sim, LM_ERR_UNSTABLE, (size_t)first,
+        return fail(sim, LM_ERR_UNSTABLE, first,
                     "was compressed to zero or negative volume",
                     "element inversion: the time step is too large or "
                     "the material too soft for the load");
     default:
-        return fail(sim, LM_ERR_DOMAIN, (size_t)first, "left the domain",
+        return fail(sim, LM_ERR_DOMAIN, first, "left the domain",
                     "the domain is too small for the motion, or a "
                     "'free' side let the body out");
     }
@@ -739,24 +536,38 @@ static lm_status stress_phases(lm_sim *sim)
     return LM_OK;
 }
 
-/* One step: the phases of docs/physics.md §1 in order. */
-lm_status lm_sim_step(lm_sim *sim)
+/* One step: the phases of docs/physics.md §1 in order. A plain run
+ * (lm_step_fusable) does steps 4-8 and the check particle by particle,
+ * and, when the caller says another step follows at once, that step's
+ * steps 0-2 too (step_fused.c): the same states to the bit. */
+lm_status lm_sim_step_then(lm_sim *sim, int more)
 {
     if (sim->p.n == 0) {   /* nothing to move: the clock only */
+        lm_sim_forget_ahead(sim);
         advance_clock(sim);
         return LM_OK;
     }
     lm_status st = sim->prepared ? LM_OK : lm_sim_prepare(sim);
     if (st == LM_OK) st = lm_threads_reserve(sim);
     if (st != LM_OK) return st;
-    lm_step_clear(sim);                         /* 0: the grid's sums */
-    lm_step_shape(sim);                         /* 0: N_ip, G_ip at x^k */
-    lm_step_p2g_forces(sim);                    /* 1-2: m_i, p_i; f_i */
+    /* without the pass's arrays (out of memory) the step goes phase by phase */
+    const int fused = lm_step_fusable(sim) && lm_ahead_reserve(sim) == LM_OK;
+    if (!fused || !lm_step_take_ahead(sim)) {
+        lm_sim_forget_ahead(sim);
+        lm_step_clear(sim);                     /* 0: the grid's sums */
+        lm_step_shape(sim);                     /* 0: N_ip, G_ip at x^k */
+        lm_step_p2g_forces(sim);                /* 1-2: m_i, p_i; f_i */
+    }
     if (sim->contact) {                         /* the paired bodies' own fields */
         st = lm_contact_sums(sim);
         if (st != LM_OK) return st;
     }
     lm_step_grid_update(sim);                   /* 3: p_i^L, boundary conditions */
+    if (fused) {                                /* 4-8, the check (and 0-2 ahead) */
+        size_t first = lm_step_fused_particles(sim, more);
+        advance_clock(sim);
+        return lm_step_check_report(sim, first);
+    }
     if (sim->contact) lm_contact_correct(sim);
     lm_membrane_segment_hold(sim);              /* x^k of segment membranes */
     lm_step_g2p(sim);                           /* 4: v_p, x_p */
@@ -770,4 +581,9 @@ lm_status lm_sim_step(lm_sim *sim)
     st = lm_step_check(sim);                    /* blow-up, tears */
     if (st != LM_OK) return st;
     return lm_step_split(sim);                  /* gas splitting, if asked */
+}
+
+lm_status lm_sim_step(lm_sim *sim)
+{
+    return lm_sim_step_then(sim, 0);
 }

@@ -19,9 +19,25 @@ void lm_shape_bilinear(const lm_grid *g, double x, double y, int *node,
 void lm_cell_bilinear(const lm_grid *g, double x, double y, int *node, double *xi,
                       double *eta);
 /* The same with rx = 1 / hx and ry = 1 / hy given (the same quotients, so
- * the same bits), for a loop over many points. */
-void lm_cell_bilinear_r(const lm_grid *g, double rx, double ry, double x, double y, int *node,
-                        double *xi, double *eta);
+ * the same bits), for a loop over many points: inline, as the step's
+ * passes call it once a particle. */
+static inline void lm_cell_bilinear_r(const lm_grid *g, double rx, double ry, double x,
+                                      double y, int *node, double *xi, double *eta)
+{
+    double fx = (x - g->x0) * rx, fy = (y - g->y0) * ry;
+    /* truncation is floor for the non-negative values of points inside
+     * the grid, and cheaper: floor() is a library call on baseline x86-64 */
+    int i = fx >= 0 ? (int)fx : (int)floor(fx);
+    int j = fy >= 0 ? (int)fy : (int)floor(fy);
+    /* A point exactly on the far edge belongs to the last cell. */
+    if (i >= g->nx) i = g->nx - 1;
+    if (j >= g->ny) j = g->ny - 1;
+    if (i < 0) i = 0;
+    if (j < 0) j = 0;
+    *xi = fx - i;
+    *eta = fy - j;
+    *node = j * (g->nx + 1) + i;
+}
 static inline void lm_bilinear_N(double xi, double eta, double N[4])
 {
     N[0] = (1 - xi) * (1 - eta);
@@ -133,6 +149,22 @@ lm_status lm_gas_cell_density(lm_sim *sim); /* 6b. [T] eqs 4.5-4.6 (density.c) *
 void lm_step_gas_maxima(lm_sim *sim, double *max_div, double *c_max); /* 6c. [F] eq 24 */
 void lm_step_stress(lm_sim *sim, double max_div, double c_max);     /* 7-8. rate, update */
 lm_status lm_step_check(lm_sim *sim);       /* NaN, inversion, domain */
+/* The check's verdict when particle `first` is the lowest-numbered one in
+ * trouble (first >= n: none), with the contact's and the membranes' own. */
+lm_status lm_step_check_report(lm_sim *sim, size_t first);
+/* Step 2 after the particles' own forces: the hoop, tethers, gravity. */
+void lm_step_forces_rest(lm_sim *sim);
+
+/* step_fused.c: steps 4-8 and the check particle by particle, and the
+ * next step's 0-2 in the same pass, for a plain run. */
+int lm_step_fusable(const lm_sim *sim);     /* one thread, nothing but solids */
+lm_status lm_ahead_reserve(lm_sim *sim);    /* the pass's nodal arrays */
+void lm_ahead_free(struct lm_ahead *a);
+/* Steps 0-2 from the sums the last pass made ahead, if it did: 1, else 0. */
+int lm_step_take_ahead(lm_sim *sim);
+/* After step 3: steps 4-8 and the check; ahead: the next step's 0-2 too.
+ * Returns the lowest-numbered particle in trouble, or n. */
+size_t lm_step_fused_particles(lm_sim *sim, int ahead);
 lm_status lm_step_split(lm_sim *sim);       /* thinned gas points into four */
 
 /* Zeroes the boundary-constrained components of a nodal vector field. */

@@ -1,0 +1,225 @@
+/* step_fused.c - the step's particle phases in one pass (issue 17 item 1).
+ *
+ * In a plain run (elastic solids or linear fluids, one thread; no
+ * membrane, contact, pin, link, gas, axisymmetric form or cell stresses)
+ * all the step does at a particle after the grid update needs only that
+ * particle and the grid: step 4 (velocity, position), the MUSL re-map
+ * (step 5), the rate and the stress (steps 7-8), the check; and, when the
+ * caller promises that the next step follows at once (lm_sim_step_then),
+ * the next step's shape and its scatter (steps 0-2 at x^{k+1}) into a
+ * second set of nodal sums, taken up by that step instead of its own
+ * passes. A USL step then reads each particle once, a MUSL step twice
+ * (the re-map must be complete before any strain rate, [M] eqs 12-13),
+ * where the phase-by-phase step reads it six times.
+ *
+ * Each nodal sum receives the same terms in the same particle order as in
+ * step.c and each particle the same operations (step_kernels.h): the
+ * states are the same to the bit (tests/unit/test_step_fused.c). */
+#include <stdlib.h>
+#include <string.h>
+
+#include "step.h"
+#include "step_kernels.h"
+#include "threads.h"
+
+struct lm_ahead {
+    double *f[5];     /* the next step's m, px, py, fx, fy, scattered ahead */
+    double *ux, *uy;  /* step 4's v_i^L = p_i^L (1 / m_i): not the same bits as
+                         the USL strain velocity p_i^L / m_i, so kept apart */
+    size_t nn;        /* nodes of the arrays */
+    size_t n;         /* particles when the sums were made */
+    int valid;        /* f holds the sums of the particles as they are now */
+};
+
+int lm_step_fusable(const lm_sim *sim)
+{
+    if (lm_sim_threads(sim) != 1 || sim->contact || sim->npins || sim->nlinks ||
+        sim->def.axisym || sim->def.stress == LM_STRESS_CELL)
+        return 0;
+    for (int m = 0; m < sim->nmats; m++)
+        if (sim->mats[m]->kind != LM_ELASTIC && sim->mats[m]->kind != LM_LINEAR_FLUID) return 0;
+    for (int b = 0; b < sim->nbodies; b++)
+        if (sim->bodies[b].membrane) return 0;
+    return 1;
+}
+
+void lm_ahead_free(struct lm_ahead *a)
+{
+    if (!a) return;
+    for (int k = 0; k < 5; k++) free(a->f[k]);
+    free(a->ux);
+    free(a->uy);
+    free(a);
+}
+
+void lm_sim_forget_ahead(lm_sim *sim)
+{
+    if (sim->ahead) sim->ahead->valid = 0;
+}
+
+/* The arrays for the grid as it is: made once (seven nodal fields, as
+ * bounded as the grid's own nine). */
+lm_status lm_ahead_reserve(lm_sim *sim)
+{
+    size_t nn = lm_grid_nodes(&sim->grid);
+    struct lm_ahead *a = sim->ahead;
+    if (a && a->nn == nn) return LM_OK;
+    lm_ahead_free(a);
+    sim->ahead = a = calloc(1, sizeof *a);
+    if (!a) return LM_ERR_MEMORY;
+    a->nn = nn;
+    int ok = 1;
+    for (int k = 0; k < 5; k++) ok &= (a->f[k] = calloc(nn, sizeof(double))) != NULL;
+    ok &= (a->ux = calloc(nn, sizeof(double))) != NULL;
+    ok &= (a->uy = calloc(nn, sizeof(double))) != NULL;
+    if (ok) return LM_OK;
+    lm_ahead_free(a);
+    sim->ahead = NULL;
+    return LM_ERR_MEMORY;
+}
+
+/* Steps 0-2 from the last pass's sums, when it made them for these
+ * particles: the arrays trade places with the grid's (the grid's old ones
+ * are the next pass's to fill), then what lm_step_p2g_forces does after
+ * its scatter. 0: the step must make its own. */
+int lm_step_take_ahead(lm_sim *sim)
+{
+    struct lm_ahead *a = sim->ahead;
+    lm_grid *g = &sim->grid;
+    if (!a || !a->valid || a->n != sim->p.n || a->nn != lm_grid_nodes(g)) return 0;
+    a->valid = 0;
+    double **own[5] = {&g->m, &g->px, &g->py, &g->fx, &g->fy};
+    for (int k = 0; k < 5; k++) {
+        double *t = *own[k];
+        *own[k] = a->f[k];
+        a->f[k] = t;
+    }
+    double *const out[5] = {g->m, g->px, g->py, g->fx, g->fy};
+    static const lm_comp comp[5] = {LM_COMP_SCALAR, LM_COMP_X, LM_COMP_Y, LM_COMP_X, LM_COMP_Y};
+    lm_grid_fold(g, 5, out, comp);
+    lm_step_forces_rest(sim);
+    return 1;
+}
+
+/* Step 4's nodal values once per node (as lm_step_g2p): a_i = f_i / m_i
+ * and v_i^L, the latter into the pass's own pair (ux, uy). */
+static void nodal_g2p(lm_sim *sim, double *ux, double *uy)
+{
+    lm_grid *g = &sim->grid;
+    size_t nn = lm_grid_nodes(g);
+    for (size_t i = 0; i < nn; i++) {
+        double r = g->m[i] > 0 ? 1.0 / g->m[i] : 0;
+        g->ax[i] = g->fx[i] * r;
+        g->ay[i] = g->fy[i] * r;
+        ux[i] = g->px[i] * r;
+        uy[i] = g->py[i] * r;
+    }
+    double *const fill[4] = {g->ax, g->ay, ux, uy};
+    static const lm_comp comp[4] = {LM_COMP_X, LM_COMP_Y, LM_COMP_X, LM_COMP_Y};
+    lm_grid_fill(g, 4, fill, comp);
+}
+
+/* The strain velocity's boundary conditions and ghost nodes (the end of
+ * lm_step_strain_velocity). */
+static void strain_velocity_bc(lm_grid *g)
+{
+    lm_grid_apply_bc(g, g->vx, g->vy);
+    double *const fill[2] = {g->vx, g->vy};
+    static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
+    lm_grid_fill(g, 2, fill, comp);
+}
+
+/* Steps 7-8 at particle q (lm_step_stress's rate and update for the
+ * materials lm_step_fusable admits; no gas: the viscosity's maxima are 0). */
+static LM_FORCE_INLINE void stress_at(lm_sim *sim, size_t q, double rx, double ry, double h,
+                                      const int W)
+{
+    lm_rate r;
+    lm_k_velocity_gradient(&sim->grid, &sim->p, q, sim->grid.vx, sim->grid.vy, r.L, rx, ry, W);
+    const double *L = r.L, dt = sim->def.dt;
+    r.dexx = dt * L[0];
+    r.deyy = dt * L[3];
+    r.dexy = 0.5 * dt * (L[1] + L[2]);
+    r.w = 0.5 * (L[1] - L[2]);
+    r.hoop = 0;
+    r.dt = dt;
+    r.max_div = 0;
+    r.c_max = 0;
+    r.h = h;
+    if (sim->mats[sim->p.mat[q]]->kind == LM_ELASTIC) lm_elastic_update_at(sim, q, &r);
+    else lm_linear_fluid_update_at(sim, q, &r);
+}
+
+/* After the stress at particle q: the check, then (ahead) its shape at
+ * x^{k+1} and the next step's sums. Returns the check's verdict. */
+static LM_FORCE_INLINE int finish_at(lm_sim *sim, size_t q, double rx, double ry,
+                                     const lm_k_box *box, double *const *next, const int W)
+{
+    int bad = lm_k_check(&sim->p, q, box);
+    if (next) {   /* no membranes here: no segment points */
+        lm_k_shape(sim, &sim->p, q, rx, ry);
+        lm_k_scatter_mass_forces(sim, q, rx, ry, next, NULL, 0, 0, W, 0, 0);
+    }
+    return bad;
+}
+
+static LM_FORCE_INLINE size_t pass_w(lm_sim *sim, int ahead, const int W)
+{
+    lm_grid *g = &sim->grid;
+    lm_particles *p = &sim->p;
+    struct lm_ahead *a = sim->ahead;
+    const size_t n = p->n, nn = lm_grid_nodes(g);
+    const double dt = sim->def.dt, pic = sim->def.pic;
+    const double rx = 1.0 / g->hx, ry = 1.0 / g->hy, h = fmin(g->hx, g->hy);
+    double *const *next = ahead ? a->f : NULL;
+    const lm_k_box box = lm_k_box_of(g);
+    size_t first = n;
+    if (ahead)
+        for (int k = 0; k < 5; k++) memset(a->f[k], 0, nn * sizeof(double));
+    nodal_g2p(sim, a->ux, a->uy);
+    if (sim->def.scheme == LM_USL) {
+        /* [N] §7: the strain from v_i^L = p_i^L / m_i */
+        for (size_t i = 0; i < nn; i++) {
+            g->vx[i] = g->m[i] > 0 ? g->px[i] / g->m[i] : 0;
+            g->vy[i] = g->m[i] > 0 ? g->py[i] / g->m[i] : 0;
+        }
+        strain_velocity_bc(g);
+        for (size_t q = 0; q < n; q++) {
+            lm_k_g2p(g, p, q, dt, pic, g->ax, g->ay, a->ux, a->uy, W);
+            stress_at(sim, q, rx, ry, h, W);
+            if (finish_at(sim, q, rx, ry, &box, next, W) && q < first) first = q;
+        }
+        return first;
+    }
+    /* MUSL: step 4 and the re-map of m_p v_p in one pass, the strain and
+     * the rest in a second */
+    memset(g->vx, 0, nn * sizeof(double));
+    memset(g->vy, 0, nn * sizeof(double));
+    double *const remap[2] = {g->vx, g->vy};
+    for (size_t q = 0; q < n; q++) {
+        lm_k_g2p(g, p, q, dt, pic, g->ax, g->ay, a->ux, a->uy, W);
+        lm_k_scatter_momentum(sim, q, remap, NULL, 0, 0, W, 0);
+    }
+    static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
+    lm_grid_fold(g, 2, remap, comp);
+    for (size_t i = 0; i < nn; i++) {
+        if (g->m[i] > 0) {
+            g->vx[i] /= g->m[i];
+            g->vy[i] /= g->m[i];
+        }
+    }
+    strain_velocity_bc(g);
+    for (size_t q = 0; q < n; q++) {
+        stress_at(sim, q, rx, ry, h, W);
+        if (finish_at(sim, q, rx, ry, &box, next, W) && q < first) first = q;
+    }
+    return first;
+}
+
+size_t lm_step_fused_particles(lm_sim *sim, int ahead)
+{
+    size_t first = sim->grid.sw == 2 ? pass_w(sim, ahead, 2) : pass_w(sim, ahead, 3);
+    sim->ahead->n = sim->p.n;
+    sim->ahead->valid = ahead && first == sim->p.n;
+    return first;
+}

@@ -1,0 +1,172 @@
+/* test_step_fused.c - the fused particle pass (step_fused.c, issue 17
+ * item 1) against the step made phase by phase (the order of
+ * docs/physics.md §1, called here one function at a time):
+ *   - the same particle states and nodal fields to the bit, for each basis,
+ *     USL and MUSL, fixed, symmetry and free walls, gravity, a PIC blend,
+ *     an elastic solid beside a linear fluid, whether the pass makes the
+ *     next step's sums ahead (lm_sim_step_then(sim, 1)) or not;
+ *   - a state changed between steps after lm_sim_forget_ahead, or a
+ *     particle added, is stepped from the new state;
+ *   - a run that blows up stops at the same step naming the same particle
+ *     with the same words. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "sim_fixture.h"
+#include "step.h"
+
+typedef struct setup {
+    lm_basis basis;
+    lm_scheme scheme;
+    lm_bc bc[4];
+    double pic, dt;
+} setup;
+
+static lm_material solid = {.kind = LM_ELASTIC, .rho = 10, .E = 1e4, .nu = 0.3};
+static lm_material fluid = {.kind = LM_LINEAR_FLUID, .rho = 5, .beta = 2e3};
+
+static lm_sim *build(const setup *s)
+{
+    lm_sim_def d;
+    lm_sim_def_default(&d);
+    d.x0 = 0; d.x1 = 1; d.y0 = 0; d.y1 = 1;
+    d.hx = d.hy = 0.0625;
+    d.dt = s->dt;
+    d.basis = s->basis;
+    d.scheme = s->scheme;
+    d.pic = s->pic;
+    d.gy = -9.81;
+    memcpy(d.bc, s->bc, sizeof d.bc);
+    char err[256];
+    lm_sim *sim = lm_sim_new(&d, err, sizeof err);
+    CHECK(sim != NULL);
+    if (!sim) return NULL;
+    /* a block moving into the lower-left corner, a fluid column beside it */
+    CHECK(fixture_block(sim, &solid, 0.02, 0.03, 0.45, 0.4, 2, -0.6, -0.4, 0.3, 7) >= 0);
+    CHECK(fixture_block(sim, &fluid, 0.55, 0.01, 0.9, 0.5, 2, 0.2, 0.1, 0.2, 11) >= 0);
+    return sim;
+}
+
+/* The step phase by phase, as lm_sim_step made it before the fused pass. */
+static lm_status reference_step(lm_sim *sim)
+{
+    lm_step_clear(sim);
+    lm_step_shape(sim);
+    lm_step_p2g_forces(sim);
+    lm_step_grid_update(sim);
+    lm_step_g2p(sim);
+    lm_step_strain_velocity(sim);
+    double md, cm;
+    lm_step_gas_maxima(sim, &md, &cm);
+    lm_step_stress(sim, md, cm);
+    sim->step++;
+    sim->t = sim->t_base + (double)(sim->step - sim->step_base) * sim->def.dt;
+    return lm_step_check(sim);
+}
+
+static int same_fields(const lm_sim *a, const lm_sim *b)
+{
+    size_t nn = lm_grid_nodes(&a->grid);
+    const lm_grid *ga = &a->grid, *gb = &b->grid;
+    const double *fa[] = {ga->m, ga->px, ga->py, ga->fx, ga->fy, ga->vx, ga->vy, ga->ax, ga->ay};
+    const double *fb[] = {gb->m, gb->px, gb->py, gb->fx, gb->fy, gb->vx, gb->vy, gb->ax, gb->ay};
+    for (int k = 0; k < 9; k++)
+        if (memcmp(fa[k], fb[k], nn * sizeof(double)) != 0) return 0;
+    return 1;
+}
+
+/* steps by the reference, by lm_sim_step, and by lm_sim_step_then ahead */
+static void compare(const setup *s, int steps)
+{
+    lm_sim *ref = build(s), *plain = build(s), *ahead = build(s);
+    if (!ref || !plain || !ahead) return;
+    CHECK(lm_step_fusable(plain));
+    for (int k = 0; k < steps; k++) {
+        CHECK(reference_step(ref) == LM_OK);
+        CHECK(lm_sim_step(plain) == LM_OK);
+        CHECK(lm_sim_step_then(ahead, k + 1 < steps) == LM_OK);
+    }
+    CHECK(lm_sim_hash(plain) == lm_sim_hash(ref));
+    CHECK(lm_sim_hash(ahead) == lm_sim_hash(ref));
+    CHECK(same_fields(plain, ref));
+    CHECK(same_fields(ahead, ref));
+    if (lm_sim_hash(ahead) != lm_sim_hash(ref))
+        fprintf(stderr, "  basis %d scheme %d bc %d%d%d%d pic %g: states differ\n", s->basis,
+                s->scheme, s->bc[0], s->bc[1], s->bc[2], s->bc[3], s->pic);
+    lm_sim_free(ref);
+    lm_sim_free(plain);
+    lm_sim_free(ahead);
+}
+
+/* A promise broken after lm_sim_forget_ahead, and a particle added without
+ * it: each steps from the state as it is. */
+static void edits_between_steps(void)
+{
+    setup s = {LM_BASIS_LINEAR, LM_USL, {LM_BC_FIXED, LM_BC_FIXED, LM_BC_FIXED, LM_BC_FIXED},
+               0, 1e-4};
+    lm_sim *ref = build(&s), *ahead = build(&s);
+    for (int k = 0; k < 20; k++) {
+        CHECK(reference_step(ref) == LM_OK);
+        CHECK(lm_sim_step_then(ahead, 1) == LM_OK);
+    }
+    ref->p.vx[5] = ahead->p.vx[5] = 1.5;
+    lm_sim_forget_ahead(ahead);
+    for (int k = 0; k < 20; k++) {
+        CHECK(reference_step(ref) == LM_OK);
+        CHECK(lm_sim_step_then(ahead, 1) == LM_OK);
+    }
+    CHECK(lm_sim_hash(ahead) == lm_sim_hash(ref));
+    int b = ref->nbodies - 1;
+    CHECK(lm_sim_add_particle(ref, b, 0.7, 0.7, 0, 0, 0.01, fluid.rho) == LM_OK);
+    CHECK(lm_sim_add_particle(ahead, b, 0.7, 0.7, 0, 0, 0.01, fluid.rho) == LM_OK);
+    for (int k = 0; k < 20; k++) {
+        CHECK(reference_step(ref) == LM_OK);
+        CHECK(lm_sim_step_then(ahead, 1) == LM_OK);
+    }
+    CHECK(lm_sim_hash(ahead) == lm_sim_hash(ref));
+    lm_sim_free(ref);
+    lm_sim_free(ahead);
+}
+
+/* dt far past the Courant limit: the same step, particle and words. */
+static void blow_up(lm_scheme scheme)
+{
+    setup s = {LM_BASIS_LINEAR, scheme, {LM_BC_FIXED, LM_BC_FIXED, LM_BC_FIXED, LM_BC_FIXED},
+               0, 0.05};
+    lm_sim *ref = build(&s), *ahead = build(&s);
+    lm_status a = LM_OK, b = LM_OK;
+    int ka = -1, kb = -1;
+    for (int k = 0; k < 400 && (a == LM_OK || b == LM_OK); k++) {
+        if (a == LM_OK && (a = reference_step(ref)) != LM_OK) ka = k;
+        if (b == LM_OK && (b = lm_sim_step_then(ahead, 1)) != LM_OK) kb = k;
+    }
+    CHECK(a != LM_OK);
+    CHECK(a == b);
+    CHECK(ka == kb);
+    CHECK(strcmp(ref->err, ahead->err) == 0);
+    if (strcmp(ref->err, ahead->err) != 0) fprintf(stderr, "  %s\n  %s\n", ref->err, ahead->err);
+    lm_sim_free(ref);
+    lm_sim_free(ahead);
+}
+
+int main(void)
+{
+    const lm_basis bases[3] = {LM_BASIS_LINEAR, LM_BASIS_GIMP, LM_BASIS_BSPLINE2};
+    const lm_bc walls[3][4] = {
+        {LM_BC_FIXED, LM_BC_FIXED, LM_BC_FIXED, LM_BC_FIXED},
+        {LM_BC_SYMMETRY, LM_BC_FREE, LM_BC_SYMMETRY, LM_BC_FREE},
+        {LM_BC_FREE, LM_BC_SYMMETRY, LM_BC_FIXED, LM_BC_FREE},
+    };
+    for (int b = 0; b < 3; b++)
+        for (int sc = 0; sc < 2; sc++)
+            for (int w = 0; w < 3; w++) {
+                setup s = {bases[b], sc ? LM_USL : LM_MUSL, {0}, w == 2 ? 0.3 : 0, 1e-4};
+                memcpy(s.bc, walls[w], sizeof s.bc);
+                compare(&s, 150);
+            }
+    edits_between_steps();
+    blow_up(LM_USL);
+    blow_up(LM_MUSL);
+    return CHECK_DONE();
+}
