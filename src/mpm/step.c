@@ -564,9 +564,9 @@ lm_status lm_sim_step_then(lm_sim *sim, int more)
     }
     lm_step_grid_update(sim);                   /* 3: p_i^L, boundary conditions */
     if (fused) {                                /* 4-8, the check (and 0-2 ahead) */
-        size_t first = lm_step_fused_particles(sim, more);
+        size_t first = lm_step_fused_particles(sim, more, &st);
         advance_clock(sim);
-        return lm_step_check_report(sim, first);
+        return st != LM_OK ? st : lm_step_check_report(sim, first);
     }
     if (sim->contact) lm_contact_correct(sim);
     lm_membrane_segment_hold(sim);              /* x^k of segment membranes */

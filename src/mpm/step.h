@@ -157,14 +157,15 @@ void lm_step_forces_rest(lm_sim *sim);
 
 /* step_fused.c: steps 4-8 and the check particle by particle, and the
  * next step's 0-2 in the same pass, for a plain run. */
-int lm_step_fusable(const lm_sim *sim);     /* one thread, nothing but solids */
+int lm_step_fusable(const lm_sim *sim);     /* one thread, no pins, contact, ... */
 lm_status lm_ahead_reserve(lm_sim *sim);    /* the pass's nodal arrays */
 void lm_ahead_free(struct lm_ahead *a);
 /* Steps 0-2 from the sums the last pass made ahead, if it did: 1, else 0. */
 int lm_step_take_ahead(lm_sim *sim);
 /* After step 3: steps 4-8 and the check; ahead: the next step's 0-2 too.
- * Returns the lowest-numbered particle in trouble, or n. */
-size_t lm_step_fused_particles(lm_sim *sim, int ahead);
+ * Returns the lowest-numbered particle in trouble, or n; *st the status
+ * of what runs between its passes (membrane tangents, cell densities). */
+size_t lm_step_fused_particles(lm_sim *sim, int ahead, lm_status *st);
 lm_status lm_step_split(lm_sim *sim);       /* thinned gas points into four */
 
 /* Zeroes the boundary-constrained components of a nodal vector field. */

@@ -1,16 +1,22 @@
-/* step_fused.c - the step's particle phases in one pass (issue 17 item 1).
+/* step_fused.c - the step's particle phases in one or two passes (issue 17
+ * item 1).
  *
- * In a plain run (elastic solids or linear fluids, one thread; no
- * membrane, contact, pin, link, gas, axisymmetric form or cell stresses)
- * all the step does at a particle after the grid update needs only that
- * particle and the grid: step 4 (velocity, position), the MUSL re-map
- * (step 5), the rate and the stress (steps 7-8), the check; and, when the
- * caller promises that the next step follows at once (lm_sim_step_then),
- * the next step's shape and its scatter (steps 0-2 at x^{k+1}) into a
- * second set of nodal sums, taken up by that step instead of its own
- * passes. A USL step then reads each particle once, a MUSL step twice
- * (the re-map must be complete before any strain rate, [M] eqs 12-13),
- * where the phase-by-phase step reads it six times.
+ * In a plain run (one thread; no contact, pin, link, axisymmetric form,
+ * cell stresses, gas splitting or membrane with segment forces) what the
+ * step does at a particle after the grid update needs only that particle
+ * and the grid, apart from what needs all particles moved first: the
+ * MUSL re-map ([M] eqs 12-13), the membranes' tangents (from their
+ * neighbours at x^{k+1}), the gas's cell densities and its artificial
+ * viscosity's maxima ([F] eq 24). So the step makes
+ *   - one pass (USL, no membrane, no gas that needs those): step 4, the
+ *     rate and the stress (7-8), the check;
+ *   - else two: step 4 (with the MUSL re-map), then those, then the rate,
+ *     the stress and the check;
+ * and, when the caller promises that the next step follows at once
+ * (lm_sim_step_then), its last pass adds each particle's shape at x^{k+1}
+ * and its share of the next step's mass, momentum and force (steps 0-2)
+ * into a second set of nodal sums, taken up by that step instead of its
+ * own passes. The phase-by-phase step reads a particle six times a step.
  *
  * Each nodal sum receives the same terms in the same particle order as in
  * step.c and each particle the same operations (step_kernels.h): the
@@ -37,7 +43,21 @@ int lm_step_fusable(const lm_sim *sim)
         sim->def.axisym || sim->def.stress == LM_STRESS_CELL)
         return 0;
     for (int m = 0; m < sim->nmats; m++)
-        if (sim->mats[m]->kind != LM_ELASTIC && sim->mats[m]->kind != LM_LINEAR_FLUID) return 0;
+        if (sim->mats[m]->kind == LM_GAS && sim->mats[m]->split > 0) return 0;
+    for (int b = 0; b < sim->nbodies; b++)
+        if (sim->bodies[b].membrane && sim->bodies[b].force == LM_MFORCE_SEGMENT) return 0;
+    return 1;
+}
+
+/* Can steps 4-8 go in one pass: nothing needs all particles moved before
+ * a rate? */
+static int one_pass(const lm_sim *sim)
+{
+    if (sim->def.scheme != LM_USL) return 0;
+    for (int m = 0; m < sim->nmats; m++) {
+        const lm_material *mat = sim->mats[m];
+        if (mat->kind == LM_GAS && (mat->av || mat->density != LM_DENSITY_CONTINUITY)) return 0;
+    }
     for (int b = 0; b < sim->nbodies; b++)
         if (sim->bodies[b].membrane) return 0;
     return 1;
@@ -129,10 +149,10 @@ static void strain_velocity_bc(lm_grid *g)
     lm_grid_fill(g, 2, fill, comp);
 }
 
-/* Steps 7-8 at particle q (lm_step_stress's rate and update for the
- * materials lm_step_fusable admits; no gas: the viscosity's maxima are 0). */
+/* Steps 7-8 at particle q: lm_step_stress's rate and update in the plane
+ * (no contact here), with the gas's maxima of the step (md, cm). */
 static LM_FORCE_INLINE void stress_at(lm_sim *sim, size_t q, double rx, double ry, double h,
-                                      const int W)
+                                      double md, double cm, const int W)
 {
     lm_rate r;
     lm_k_velocity_gradient(&sim->grid, &sim->p, q, sim->grid.vx, sim->grid.vy, r.L, rx, ry, W);
@@ -143,11 +163,15 @@ static LM_FORCE_INLINE void stress_at(lm_sim *sim, size_t q, double rx, double r
     r.w = 0.5 * (L[1] - L[2]);
     r.hoop = 0;
     r.dt = dt;
-    r.max_div = 0;
-    r.c_max = 0;
+    r.max_div = md;
+    r.c_max = cm;
     r.h = h;
-    if (sim->mats[sim->p.mat[q]]->kind == LM_ELASTIC) lm_elastic_update_at(sim, q, &r);
-    else lm_linear_fluid_update_at(sim, q, &r);
+    switch (sim->mats[sim->p.mat[q]]->kind) {
+    case LM_ELASTIC: lm_elastic_update_at(sim, q, &r); break;
+    case LM_MEMBRANE: lm_membrane_update_at(sim, q, &r); break;
+    case LM_GAS: lm_gas_update_at(sim, q, &r); break;
+    case LM_LINEAR_FLUID: lm_linear_fluid_update_at(sim, q, &r); break;
+    }
 }
 
 /* After the stress at particle q: the check, then (ahead) its shape at
@@ -163,7 +187,21 @@ static LM_FORCE_INLINE int finish_at(lm_sim *sim, size_t q, double rx, double ry
     return bad;
 }
 
-static LM_FORCE_INLINE size_t pass_w(lm_sim *sim, int ahead, const int W)
+/* What lm_sim_step does between step 4 and the stresses when it needs
+ * all particles moved (stress_phases, step.c): tangents, cell densities,
+ * the viscosity's maxima. */
+static lm_status between_passes(lm_sim *sim, double *md, double *cm)
+{
+    lm_status st = lm_membrane_tangents(sim);
+    if (st == LM_OK) st = lm_gas_cell_density(sim);
+    if (st == LM_OK) lm_step_gas_maxima(sim, md, cm);
+    return st;
+}
+
+/* Steps 4-8 and the check for a stencil W wide; *st says whether what
+ * runs between the passes failed. Returns the lowest-numbered particle in
+ * trouble, or n. */
+static LM_FORCE_INLINE size_t pass_w(lm_sim *sim, int ahead, lm_status *st, const int W)
 {
     lm_grid *g = &sim->grid;
     lm_particles *p = &sim->p;
@@ -174,6 +212,7 @@ static LM_FORCE_INLINE size_t pass_w(lm_sim *sim, int ahead, const int W)
     double *const *next = ahead ? a->f : NULL;
     const lm_k_box box = lm_k_box_of(g);
     size_t first = n;
+    *st = LM_OK;
     if (ahead)
         for (int k = 0; k < 5; k++) memset(a->f[k], 0, nn * sizeof(double));
     nodal_g2p(sim, a->ux, a->uy);
@@ -184,42 +223,47 @@ static LM_FORCE_INLINE size_t pass_w(lm_sim *sim, int ahead, const int W)
             g->vy[i] = g->m[i] > 0 ? g->py[i] / g->m[i] : 0;
         }
         strain_velocity_bc(g);
+        if (one_pass(sim)) {
+            for (size_t q = 0; q < n; q++) {
+                lm_k_g2p(g, p, q, dt, pic, g->ax, g->ay, a->ux, a->uy, W);
+                stress_at(sim, q, rx, ry, h, 0, 0, W);
+                if (finish_at(sim, q, rx, ry, &box, next, W) && q < first) first = q;
+            }
+            return first;
+        }
+        for (size_t q = 0; q < n; q++) lm_k_g2p(g, p, q, dt, pic, g->ax, g->ay, a->ux, a->uy, W);
+    } else {
+        /* MUSL: step 4 and the re-map of m_p v_p in one pass */
+        memset(g->vx, 0, nn * sizeof(double));
+        memset(g->vy, 0, nn * sizeof(double));
+        double *const remap[2] = {g->vx, g->vy};
         for (size_t q = 0; q < n; q++) {
             lm_k_g2p(g, p, q, dt, pic, g->ax, g->ay, a->ux, a->uy, W);
-            stress_at(sim, q, rx, ry, h, W);
-            if (finish_at(sim, q, rx, ry, &box, next, W) && q < first) first = q;
+            lm_k_scatter_momentum(sim, q, remap, NULL, 0, 0, W, 0);
         }
-        return first;
-    }
-    /* MUSL: step 4 and the re-map of m_p v_p in one pass, the strain and
-     * the rest in a second */
-    memset(g->vx, 0, nn * sizeof(double));
-    memset(g->vy, 0, nn * sizeof(double));
-    double *const remap[2] = {g->vx, g->vy};
-    for (size_t q = 0; q < n; q++) {
-        lm_k_g2p(g, p, q, dt, pic, g->ax, g->ay, a->ux, a->uy, W);
-        lm_k_scatter_momentum(sim, q, remap, NULL, 0, 0, W, 0);
-    }
-    static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
-    lm_grid_fold(g, 2, remap, comp);
-    for (size_t i = 0; i < nn; i++) {
-        if (g->m[i] > 0) {
-            g->vx[i] /= g->m[i];
-            g->vy[i] /= g->m[i];
+        static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
+        lm_grid_fold(g, 2, remap, comp);
+        for (size_t i = 0; i < nn; i++) {
+            if (g->m[i] > 0) {
+                g->vx[i] /= g->m[i];
+                g->vy[i] /= g->m[i];
+            }
         }
+        strain_velocity_bc(g);
     }
-    strain_velocity_bc(g);
+    double md = 0, cm = 0;
+    if ((*st = between_passes(sim, &md, &cm)) != LM_OK) return n;
     for (size_t q = 0; q < n; q++) {
-        stress_at(sim, q, rx, ry, h, W);
+        stress_at(sim, q, rx, ry, h, md, cm, W);
         if (finish_at(sim, q, rx, ry, &box, next, W) && q < first) first = q;
     }
     return first;
 }
 
-size_t lm_step_fused_particles(lm_sim *sim, int ahead)
+size_t lm_step_fused_particles(lm_sim *sim, int ahead, lm_status *st)
 {
-    size_t first = sim->grid.sw == 2 ? pass_w(sim, ahead, 2) : pass_w(sim, ahead, 3);
+    size_t first = sim->grid.sw == 2 ? pass_w(sim, ahead, st, 2) : pass_w(sim, ahead, st, 3);
     sim->ahead->n = sim->p.n;
-    sim->ahead->valid = ahead && first == sim->p.n;
+    sim->ahead->valid = ahead && first == sim->p.n && *st == LM_OK;
     return first;
 }
