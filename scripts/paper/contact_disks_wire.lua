@@ -3,9 +3,12 @@
 -- look: disk I (left, v = 1.0) dents the wire until about t = 1; disk II
 --   (right, v = -1.1) arrives at the dent, pinches the wire against disk I
 --   and sends disk I back to the left; disk I is clear of the wire by
---   t = 2.2 and moves off to the left, disk II stays on the right of the
---   wire as in Fig 22's last frames but, nearly at rest, does not get more
---   than a cell clear of it by t = 5 (the paper: both part by t = 3-5)
+--   t = 2.2 and moves off to the left; disk II stays on the right of the
+--   wire as in Fig 22's last frames, more than a cell from it from t = 1.4
+--   on (the paper: both part by t = 3-5), but so slow (-0.33) that the
+--   wire, swinging back, catches it near t = 2.5 and pushes it gently to
+--   the right (0.15 at t = 5) from 1.2-1.5 cells away, where their stencils
+--   still share nodes
 -- checks: the time disk I's dent is deepest (its velocity crosses zero) and
 --   the time each disk is more than a cell clear of the wire for good,
 --   against the paper's t = 1 and 3-5; the final disk velocities

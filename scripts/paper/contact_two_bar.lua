@@ -12,7 +12,7 @@
 --   2.5 times their usual length) point out of each bar at the nodes the
 --   bars share (grey marks: they moved together there)
 -- checks: bar velocities at t = 0.5 against the paper's 0.3 and 1.7 (not
---   reached: lamina's bars part more cleanly, 0.12 / 1.88) and against ours,
+--   reached: lamina's bars part more cleanly, 0.13 / 1.87) and against ours,
 --   a finite-element bar on a rigid frictionless wall (the same problem in
 --   the frame of the centre of mass, assets/lua/bar_wall_fem.lua), which
 --   converges to e = 0.95, not the paper's 0.7; their sum v0 = 2

@@ -86,16 +86,17 @@ int lm_sim_add_contact(lm_sim *sim, int a, int b, lm_contact_law law, double mu)
     }
     /* The quadratic B-spline's stencil (1.5 cells) reaches past the layer
      * where two bodies meet, and the release test then misjudges: the
-     * two-bar impact of [M] §4.2 parts with e = 0.46 / 0.31 at cells 0.25 /
-     * 0.125 where uGIMP gives 0.87 / 0.90 and the bilinear basis 0.88 /
-     * 0.91 (our finite-element reference 0.89 / 0.915; no setting of the
-     * grazing share THIN between 0.05 and 0.4 brings it there), and a
-     * pinned plane holds a block lying on it. Refused, not run wrong. */
+     * two-bar impact of [M] §4.2 parts with e = 0.815 / 0.875 at cells
+     * 0.25 / 0.125 where uGIMP gives 0.87 / 0.90 and the bilinear basis
+     * 0.874 / 0.905 (our finite-element reference 0.889 / 0.915: 0.07 and
+     * 0.04 short, outside the test's 0.02; 0.46 / 0.31 before both-tails
+     * grazing, contact_correct.c), and the pins of a pinned plane hold the
+     * nodes one cell into a block lying on it. Refused, not run wrong. */
     if (sim->def.basis == LM_BASIS_BSPLINE2) {
         snprintf(sim->err, sizeof sim->err,
                  "basis = \"bspline2\" (the default) is not supported with contact: its "
                  "stencil, 1.5 cells wide, reaches past the contact layer and the release test "
-                 "misjudges it (the two-bar impact parts with e = 0.31 at cell 0.125 where "
+                 "misjudges it (the two-bar impact parts with e = 0.875 at cell 0.125 where "
                  "\"gimp\" gives 0.90 and a finite-element reference 0.915); use "
                  "lamina.sim{basis = \"gimp\"} or \"linear\"");
         return -1;

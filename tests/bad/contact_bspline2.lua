@@ -4,8 +4,9 @@
 -- Contact on the default quadratic B-spline is refused by name (issue 14
 -- item 1: "works with every basis lamina offers or refuses the others by
 -- name"): its 1.5-cell stencil reaches past the contact layer, so the
--- two-bar impact parts with e = 0.31 at cell 0.125 (uGIMP 0.90, our FEM
--- 0.915: tests/physics/contact_two_bar_fem.lua) and a pinned plane would
+-- two-bar impact parts with e = 0.875 at cell 0.125 (uGIMP 0.90, our FEM
+-- 0.915: tests/physics/contact_two_bar_fem.lua; 0.31 before the both-tails
+-- grazing rule of src/mpm/contact_correct.c) and a pinned plane would
 -- hold a block lying on it still (a = -0.003 where 2.40). Here the block on
 -- the pinned plane, as it was run before the refusal.
 local g, th = 10, math.rad(30)
