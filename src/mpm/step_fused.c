@@ -39,8 +39,8 @@ struct lm_ahead {
 
 int lm_step_fusable(const lm_sim *sim)
 {
-    if (lm_sim_threads(sim) != 1 || sim->contact || sim->npins || sim->nlinks ||
-        sim->def.axisym || sim->def.stress == LM_STRESS_CELL)
+    if (sim->contact || sim->npins || sim->nlinks || sim->def.axisym ||
+        sim->def.stress == LM_STRESS_CELL)
         return 0;
     for (int m = 0; m < sim->nmats; m++)
         if (sim->mats[m]->kind == LM_GAS && sim->mats[m]->split > 0) return 0;
@@ -126,8 +126,9 @@ int lm_step_take_ahead(lm_sim *sim)
 static void nodal_g2p(lm_sim *sim, double *ux, double *uy)
 {
     lm_grid *g = &sim->grid;
-    size_t nn = lm_grid_nodes(g);
-    for (size_t i = 0; i < nn; i++) {
+    long nn = (long)lm_grid_nodes(g);
+#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
+    for (long i = 0; i < nn; i++) {
         double r = g->m[i] > 0 ? 1.0 / g->m[i] : 0;
         g->ax[i] = g->fx[i] * r;
         g->ay[i] = g->fy[i] * r;
@@ -198,42 +199,79 @@ static lm_status between_passes(lm_sim *sim, double *md, double *cm)
     return st;
 }
 
-/* Steps 4-8 and the check for a stencil W wide; *st says whether what
- * runs between the passes failed. Returns the lowest-numbered particle in
- * trouble, or n. */
-static LM_FORCE_INLINE size_t pass_w(lm_sim *sim, int ahead, lm_status *st, const int W)
+/* The passes on more than one thread: each a parallel loop over the
+ * particles, one loop per stencil width with the width a constant (GCC
+ * outlines an OpenMP loop before it inlines, so inside pass_w the width
+ * would be a variable there and nothing unrolled). */
+typedef enum mt_kind {
+    MT_USL,      /* step 4, the rate and stress, the check */
+    MT_G2P,      /* step 4 */
+    MT_STRESS    /* the rate and stress, the check */
+} mt_kind;
+typedef struct mt_ctx {
+    double dt, pic, rx, ry, h, md, cm;
+    const double *ux, *uy;
+    lm_k_box box;
+} mt_ctx;
+
+static LM_FORCE_INLINE int mt_particle(lm_sim *sim, mt_kind k, const mt_ctx *c, size_t q,
+                                       const int W)
+{
+    if (k != MT_STRESS)
+        lm_k_g2p(&sim->grid, &sim->p, q, c->dt, c->pic, sim->grid.ax, sim->grid.ay, c->ux,
+                 c->uy, W);
+    if (k == MT_G2P) return 0;
+    stress_at(sim, q, c->rx, c->ry, c->h, c->md, c->cm, W);
+    return lm_k_check(&sim->p, q, &c->box);
+}
+
+/* Returns the lowest-numbered particle in trouble, or n. */
+static size_t mt_pass(lm_sim *sim, mt_kind k, const mt_ctx *c)
+{
+    long n = (long)sim->p.n, first = n;
+    int nt = lm_sim_threads(sim);
+    if (sim->grid.sw == 2) {
+#pragma omp parallel for num_threads(nt) schedule(static) reduction(min : first) \
+    if (n >= LM_PARTICLE_LOOP_MIN)
+        for (long q = 0; q < n; q++)
+            if (mt_particle(sim, k, c, (size_t)q, 2) && q < first) first = q;
+    } else {
+#pragma omp parallel for num_threads(nt) schedule(static) reduction(min : first) \
+    if (n >= LM_PARTICLE_LOOP_MIN)
+        for (long q = 0; q < n; q++)
+            if (mt_particle(sim, k, c, (size_t)q, 3) && q < first) first = q;
+    }
+    return (size_t)first;
+}
+
+/* Steps 4-8 and the check on one thread for a stencil W wide (the last
+ * pass making the next step's sums when next is not NULL); *st says
+ * whether what runs between the passes failed. Returns the
+ * lowest-numbered particle in trouble, or n. */
+static LM_FORCE_INLINE size_t pass_w(lm_sim *sim, double *const *next, lm_status *st,
+                                     const int W)
 {
     lm_grid *g = &sim->grid;
     lm_particles *p = &sim->p;
-    struct lm_ahead *a = sim->ahead;
+    const struct lm_ahead *a = sim->ahead;
     const size_t n = p->n, nn = lm_grid_nodes(g);
     const double dt = sim->def.dt, pic = sim->def.pic;
     const double rx = 1.0 / g->hx, ry = 1.0 / g->hy, h = fmin(g->hx, g->hy);
-    double *const *next = ahead ? a->f : NULL;
     const lm_k_box box = lm_k_box_of(g);
     size_t first = n;
-    *st = LM_OK;
-    if (ahead)
-        for (int k = 0; k < 5; k++) memset(a->f[k], 0, nn * sizeof(double));
-    nodal_g2p(sim, a->ux, a->uy);
+    if (sim->def.scheme == LM_USL && one_pass(sim)) {
+        for (size_t q = 0; q < n; q++) {
+            lm_k_g2p(g, p, q, dt, pic, g->ax, g->ay, a->ux, a->uy, W);
+            stress_at(sim, q, rx, ry, h, 0, 0, W);
+            if (finish_at(sim, q, rx, ry, &box, next, W) && q < first) first = q;
+        }
+        return first;
+    }
     if (sim->def.scheme == LM_USL) {
-        /* [N] §7: the strain from v_i^L = p_i^L / m_i */
-        for (size_t i = 0; i < nn; i++) {
-            g->vx[i] = g->m[i] > 0 ? g->px[i] / g->m[i] : 0;
-            g->vy[i] = g->m[i] > 0 ? g->py[i] / g->m[i] : 0;
-        }
-        strain_velocity_bc(g);
-        if (one_pass(sim)) {
-            for (size_t q = 0; q < n; q++) {
-                lm_k_g2p(g, p, q, dt, pic, g->ax, g->ay, a->ux, a->uy, W);
-                stress_at(sim, q, rx, ry, h, 0, 0, W);
-                if (finish_at(sim, q, rx, ry, &box, next, W) && q < first) first = q;
-            }
-            return first;
-        }
         for (size_t q = 0; q < n; q++) lm_k_g2p(g, p, q, dt, pic, g->ax, g->ay, a->ux, a->uy, W);
     } else {
-        /* MUSL: step 4 and the re-map of m_p v_p in one pass */
+        /* step 4 and the re-map of m_p v_p in one pass, then as
+         * lm_step_strain_velocity after its scatter */
         memset(g->vx, 0, nn * sizeof(double));
         memset(g->vy, 0, nn * sizeof(double));
         double *const remap[2] = {g->vx, g->vy};
@@ -260,10 +298,33 @@ static LM_FORCE_INLINE size_t pass_w(lm_sim *sim, int ahead, lm_status *st, cons
     return first;
 }
 
+/* The same on more threads, pass by pass (nothing made ahead). */
+static size_t passes_mt(lm_sim *sim, lm_status *st)
+{
+    const lm_grid *g = &sim->grid;
+    mt_ctx c = {sim->def.dt, sim->def.pic, 1.0 / g->hx, 1.0 / g->hy, fmin(g->hx, g->hy), 0, 0,
+                sim->ahead->ux, sim->ahead->uy, lm_k_box_of(g)};
+    if (sim->def.scheme == LM_USL && one_pass(sim)) return mt_pass(sim, MT_USL, &c);
+    mt_pass(sim, MT_G2P, &c);
+    if (sim->def.scheme == LM_MUSL) lm_step_strain_velocity(sim);   /* the re-map */
+    if ((*st = between_passes(sim, &c.md, &c.cm)) != LM_OK) return sim->p.n;
+    return mt_pass(sim, MT_STRESS, &c);
+}
+
 size_t lm_step_fused_particles(lm_sim *sim, int ahead, lm_status *st)
 {
-    size_t first = sim->grid.sw == 2 ? pass_w(sim, ahead, st, 2) : pass_w(sim, ahead, st, 3);
-    sim->ahead->n = sim->p.n;
-    sim->ahead->valid = ahead && first == sim->p.n && *st == LM_OK;
+    struct lm_ahead *a = sim->ahead;
+    const int one = lm_sim_threads(sim) == 1;
+    double *const *next = ahead && one ? a->f : NULL;
+    *st = LM_OK;
+    if (next)
+        for (int k = 0; k < 5; k++) memset(a->f[k], 0, a->nn * sizeof(double));
+    nodal_g2p(sim, a->ux, a->uy);
+    /* [N] §7: the USL strain from v_i^L = p_i^L / m_i, before any pass */
+    if (sim->def.scheme == LM_USL) lm_step_strain_velocity(sim);
+    size_t first = !one ? passes_mt(sim, st)
+                   : sim->grid.sw == 2 ? pass_w(sim, next, st, 2) : pass_w(sim, next, st, 3);
+    a->n = sim->p.n;
+    a->valid = next && first == sim->p.n && *st == LM_OK;
     return first;
 }

@@ -18,15 +18,18 @@
 #include "check.h"
 #include "sim_fixture.h"
 #include "step.h"
+#include "threads.h"
 
 typedef struct setup {
     lm_basis basis;
     lm_scheme scheme;
     lm_bc bc[4];
     double pic, dt;
+    int threads;
     int scene;   /* 0 solid and fluid; 1 gas (viscosity) in a membrane
                     (connectivity); 2 the same with cell densities and
                     isosurface normals */
+    double cell;   /* 0: 1/16 */
 } setup;
 
 static lm_material solid = {.kind = LM_ELASTIC, .rho = 10, .E = 1e4, .nu = 0.3};
@@ -62,11 +65,12 @@ static lm_sim *build(const setup *s)
     lm_sim_def d;
     lm_sim_def_default(&d);
     d.x0 = 0; d.x1 = 1; d.y0 = 0; d.y1 = 1;
-    d.hx = d.hy = 0.0625;
+    d.hx = d.hy = s->cell > 0 ? s->cell : 0.0625;
     d.dt = s->dt;
     d.basis = s->basis;
     d.scheme = s->scheme;
     d.pic = s->pic;
+    d.threads = s->threads;
     d.gy = -9.81;
     memcpy(d.bc, s->bc, sizeof d.bc);
     char err[256];
@@ -92,6 +96,7 @@ static lm_sim *build(const setup *s)
 /* The step phase by phase, as lm_sim_step makes it without the pass. */
 static lm_status reference_step(lm_sim *sim)
 {
+    if (lm_threads_reserve(sim) != LM_OK) return LM_ERR_MEMORY;   /* the threads' copies */
     lm_step_clear(sim);
     lm_step_shape(sim);
     lm_step_p2g_forces(sim);
@@ -132,6 +137,7 @@ static void compare(const setup *s, int steps)
     lm_sim *ref = build(s), *plain = build(s), *ahead = build(s);
     if (!ref || !plain || !ahead) return;
     CHECK(lm_step_fusable(plain));
+    CHECK(s->threads == 1 || ref->p.n >= 4096);   /* split among the threads */
     uint64_t h0 = lm_sim_hash(ref);
     for (int k = 0; k < steps; k++) {
         lm_status a = reference_step(ref), b = lm_sim_step(plain),
@@ -160,7 +166,7 @@ static void compare(const setup *s, int steps)
 static void edits_between_steps(void)
 {
     setup s = {LM_BASIS_LINEAR, LM_USL, {LM_BC_FIXED, LM_BC_FIXED, LM_BC_FIXED, LM_BC_FIXED},
-               0, 1e-4, 0};
+               0, 1e-4, 1, 0, 0};
     lm_sim *ref = build(&s), *ahead = build(&s);
     for (int k = 0; k < 20; k++) {
         CHECK(reference_step(ref) == LM_OK);
@@ -189,7 +195,7 @@ static void edits_between_steps(void)
 static void blow_up(lm_scheme scheme)
 {
     setup s = {LM_BASIS_LINEAR, scheme, {LM_BC_FIXED, LM_BC_FIXED, LM_BC_FIXED, LM_BC_FIXED},
-               0, 0.05, 0};
+               0, 0.05, 1, 0, 0};
     lm_sim *ref = build(&s), *ahead = build(&s);
     lm_status a = LM_OK, b = LM_OK;
     int ka = -1, kb = -1;
@@ -217,16 +223,26 @@ int main(void)
     for (int b = 0; b < 3; b++)
         for (int sc = 0; sc < 2; sc++)
             for (int w = 0; w < 3; w++) {
-                setup s = {bases[b], sc ? LM_USL : LM_MUSL, {0}, w == 2 ? 0.3 : 0, 1e-4, 0};
+                setup s = {bases[b], sc ? LM_USL : LM_MUSL, {0}, w == 2 ? 0.3 : 0, 1e-4, 1, 0, 0};
                 memcpy(s.bc, walls[w], sizeof s.bc);
                 compare(&s, 150);
             }
     for (int scene = 1; scene <= 2; scene++)
         for (int b = 0; b < 3; b++)
             for (int sc = 0; sc < 2; sc++) {
-                setup s = {bases[b], sc ? LM_USL : LM_MUSL, {0}, 0, 5e-5, scene};
+                setup s = {bases[b], sc ? LM_USL : LM_MUSL, {0}, 0, 5e-5, 1, scene, 0};
                 memcpy(s.bc, walls[b], sizeof s.bc);
                 compare(&s, 60);
+            }
+    /* two and three threads: each pass a parallel loop, nothing ahead; the
+     * scenes large enough to be split (LM_PARTICLE_LOOP_MIN) */
+    for (int nt = 2; nt <= 3; nt++)
+        for (int scene = 0; scene <= 2; scene++)
+            for (int sc = 0; sc < 2; sc++) {
+                setup s = {bases[(scene + sc) % 3], sc ? LM_USL : LM_MUSL, {0}, 0, 5e-5, nt,
+                           scene, 0.015625};
+                memcpy(s.bc, walls[scene], sizeof s.bc);
+                compare(&s, 30);
             }
     edits_between_steps();
     blow_up(LM_USL);
