@@ -64,15 +64,19 @@ void la_energy_watch_begin(const la_sim *s, la_energy_watch *w)
     w->scale = energy_scale(e);
     w->t0 = s->sim->t;
     w->step0 = s->sim->step;
+    w->gx = s->sim->def.gx;
+    w->gy = s->sim->def.gy;
     w->driven = 0;
 }
 
-/* After the pins' velocities are set for the step: a driven pin does work. */
+/* After the pins' velocities are set for the step: a driven pin does work,
+ * and so does a callback that changed gravity (the energy's datum moved). */
 void la_energy_watch_step(const la_sim *s, la_energy_watch *w)
 {
     const lm_sim *sim = s->sim;
     for (int k = 0; k < sim->npins && !w->driven; k++)
         w->driven = sim->pins[k].vx != 0 || sim->pins[k].vy != 0;
+    if (sim->def.gx != w->gx || sim->def.gy != w->gy) w->driven = 1;
     if ((sim->step - w->step0) % WATCH_EVERY == 0)
         w->scale = fmax(w->scale, energy_scale(lm_sim_energy(sim)));
 }
@@ -80,7 +84,9 @@ void la_energy_watch_step(const la_sim *s, la_energy_watch *w)
 void la_energy_watch_end(lua_State *L, la_sim *s, const la_energy_watch *w)
 {
     const lm_sim *sim = s->sim;
-    if (s->warned_energy || w->driven || sim->step - w->step0 < WATCH_MIN_STEPS) return;
+    if (s->warned_energy || w->driven || sim->step - w->step0 < WATCH_MIN_STEPS ||
+        sim->def.gx != w->gx || sim->def.gy != w->gy)
+        return;
     lm_energy e1 = lm_sim_energy(sim);
     double seen1 = seen_energy(sim, e1);
     double scale = fmax(w->scale, energy_scale(e1));

@@ -130,6 +130,8 @@ typedef struct la_energy_watch {
     double floor;               /* rounding: M c_max^2 x 1e-12 */
     double t0;
     long step0;
+    double gx, gy;              /* gravity at the start: a callback that
+                                   changes it does work, as a driven pin */
     int driven;
 } la_energy_watch;
 void la_energy_watch_begin(const la_sim *s, la_energy_watch *w);
