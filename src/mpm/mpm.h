@@ -296,6 +296,12 @@ typedef struct lm_sim {
                                      by the first step that needs it; NULL: none */
     struct lm_ahead *ahead;       /* the fused pass's nodal arrays (step_fused.c);
                                      NULL until a plain run's first step */
+    struct {                      /* the OS threads of the loops (threads.c) */
+        int team;                 /* now; 0: not yet chosen */
+        int fixed;                /* > 0: held there (lm_sim_fix_team) */
+        int left;                 /* steps left of the probe or the hold */
+        double wall0, cpu0;       /* clocks at the probe's start */
+    } pace;
     char err[512];
 } lm_sim;
 

@@ -17,7 +17,7 @@ void lm_step_shape(lm_sim *sim)
     lm_particles *p = &sim->p;
     const double rx = 1.0 / sim->grid.hx, ry = 1.0 / sim->grid.hy;
     long n = (long)p->n;
-#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
+#pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
     for (long q = 0; q < n; q++) lm_k_shape(sim, p, (size_t)q, rx, ry);
 }
 
@@ -138,7 +138,7 @@ static void scatter(lm_sim *sim, scatter_kind kind, int nf, double *const *out,
         return;
     }
     /* split as nt threads; few particles: all of them on one OS thread */
-#pragma omp parallel num_threads(nt) if (sim->p.n >= LM_PARTICLE_LOOP_MIN)
+#pragma omp parallel num_threads(lm_sim_team(sim)) if (sim->p.n >= LM_PARTICLE_LOOP_MIN)
     {
         int team = LM_TEAM_SIZE();
         for (int t = LM_THREAD_ID(); t < nt; t += team) {
@@ -220,7 +220,7 @@ void lm_step_forces_rest(lm_sim *sim)
     if (sim->def.axisym) lm_axisym_forces(sim);   /* -V sigma_thth N / r (axisym.c) */
     lm_link_forces(sim);                          /* tethers (link.c) */
     size_t nn = lm_grid_nodes(g);
-#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
+#pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
     for (long i = 0; i < (long)nn; i++) {
         g->fx[i] += g->m[i] * sim->def.gx;
         g->fy[i] += g->m[i] * sim->def.gy;
@@ -234,7 +234,7 @@ void lm_step_grid_update(lm_sim *sim)
     lm_grid *g = &sim->grid;
     size_t nn = lm_grid_nodes(g);
     double dt = sim->def.dt;
-#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
+#pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
     for (long i = 0; i < (long)nn; i++) {
         g->px[i] += dt * g->fx[i];
         g->py[i] += dt * g->fy[i];
@@ -254,7 +254,7 @@ void lm_step_g2p(lm_sim *sim)
     double dt = sim->def.dt, pic = sim->def.pic;
     /* per node once, not per particle corner: a_i = f_i / m_i, v_i^L */
     long nn = (long)lm_grid_nodes(g);
-#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
+#pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
     for (long i = 0; i < nn; i++) {
         double r = g->m[i] > 0 ? 1.0 / g->m[i] : 0;
         g->ax[i] = g->fx[i] * r;
@@ -267,10 +267,10 @@ void lm_step_g2p(lm_sim *sim)
     lm_grid_fill(g, 4, fill, comp);
     long n = (long)p->n;
     if (g->sw == 2) {
-#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
+#pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
         for (long q = 0; q < n; q++) lm_k_g2p(g, p, (size_t)q, dt, pic, g->ax, g->ay, g->vx, g->vy, 2);
     } else {
-#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
+#pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
         for (long q = 0; q < n; q++) lm_k_g2p(g, p, (size_t)q, dt, pic, g->ax, g->ay, g->vx, g->vy, 3);
     }
     lm_pin_particles(sim);
@@ -285,11 +285,11 @@ void lm_step_strain_velocity(lm_sim *sim)
     size_t nn = lm_grid_nodes(g);
     if (sim->def.scheme == LM_MUSL) {
         double *const out[2] = {g->vx, g->vy};
-#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
+#pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
         for (long i = 0; i < (long)nn; i++) g->vx[i] = g->vy[i] = 0;
         static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
         scatter(sim, SCATTER_MOMENTUM, 2, out, comp);
-#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
+#pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
         for (long i = 0; i < (long)nn; i++) {
             if (g->m[i] > 0) {
                 g->vx[i] /= g->m[i];
@@ -297,7 +297,7 @@ void lm_step_strain_velocity(lm_sim *sim)
             }
         }
     } else {
-#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
+#pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
         for (long i = 0; i < (long)nn; i++) {
             g->vx[i] = g->m[i] > 0 ? g->px[i] / g->m[i] : 0;
             g->vy[i] = g->m[i] > 0 ? g->py[i] / g->m[i] : 0;
@@ -333,7 +333,7 @@ void lm_step_gas_maxima(lm_sim *sim, double *max_div, double *c_max)
     if (m == sim->nmats) n = 0;
     const int moved = lm_contact_moved(sim->contact);   /* bodies in own fields */
     /* maxima do not depend on the order they are taken in */
-#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) \
+#pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) \
     reduction(max : md, cm) if (n >= LM_PARTICLE_LOOP_MIN)
     for (long q = 0; q < n; q++) {
         const lm_material *mat = sim->mats[p->mat[q]];
@@ -397,7 +397,7 @@ void lm_step_stress(lm_sim *sim, double max_div, double c_max)
     const double rx = 1.0 / g->hx, ry = 1.0 / g->hy;
     long n = (long)sim->p.n;
     const int moved = lm_contact_moved(sim->contact);   /* bodies in own fields */
-#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
+#pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
     for (long q = 0; q < n; q++) {
         if (lm_k_segment_point(sim, (size_t)q)) continue;   /* from lengths */
         lm_rate r;
@@ -456,7 +456,7 @@ lm_status lm_step_check(lm_sim *sim)
 {
     long n = (long)sim->p.n, first = n;
     const lm_k_box box = lm_k_box_of(&sim->grid);
-#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) \
+#pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) \
     reduction(min : first) if (n >= LM_PARTICLE_LOOP_MIN)
     for (long q = 0; q < n; q++)
         if (lm_k_check(&sim->p, (size_t)q, &box) && q < first) first = q;
@@ -508,7 +508,7 @@ void lm_step_clear(lm_sim *sim)
 {
     lm_grid *g = &sim->grid;
     long nn = (long)lm_grid_nodes(g);
-#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
+#pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
     for (long i = 0; i < nn; i++)
         g->m[i] = g->px[i] = g->py[i] = g->fx[i] = g->fy[i] = 0;
 }
@@ -550,6 +550,7 @@ lm_status lm_sim_step_then(lm_sim *sim, int more)
     lm_status st = sim->prepared ? LM_OK : lm_sim_prepare(sim);
     if (st == LM_OK) st = lm_threads_reserve(sim);
     if (st != LM_OK) return st;
+    lm_pace_step(sim);                          /* the OS threads for this step */
     /* without the pass's arrays (out of memory) the step goes phase by phase */
     const int fused = lm_step_fusable(sim) && lm_ahead_reserve(sim) == LM_OK;
     if (!fused || !lm_step_take_ahead(sim)) {

@@ -127,7 +127,7 @@ static void nodal_g2p(lm_sim *sim, double *ux, double *uy)
 {
     lm_grid *g = &sim->grid;
     long nn = (long)lm_grid_nodes(g);
-#pragma omp parallel for num_threads(lm_sim_threads(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
+#pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
     for (long i = 0; i < nn; i++) {
         double r = g->m[i] > 0 ? 1.0 / g->m[i] : 0;
         g->ax[i] = g->fx[i] * r;
@@ -229,14 +229,13 @@ static LM_FORCE_INLINE int mt_particle(lm_sim *sim, mt_kind k, const mt_ctx *c, 
 static size_t mt_pass(lm_sim *sim, mt_kind k, const mt_ctx *c)
 {
     long n = (long)sim->p.n, first = n;
-    int nt = lm_sim_threads(sim);
     if (sim->grid.sw == 2) {
-#pragma omp parallel for num_threads(nt) schedule(static) reduction(min : first) \
+#pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) reduction(min : first) \
     if (n >= LM_PARTICLE_LOOP_MIN)
         for (long q = 0; q < n; q++)
             if (mt_particle(sim, k, c, (size_t)q, 2) && q < first) first = q;
     } else {
-#pragma omp parallel for num_threads(nt) schedule(static) reduction(min : first) \
+#pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) reduction(min : first) \
     if (n >= LM_PARTICLE_LOOP_MIN)
         for (long q = 0; q < n; q++)
             if (mt_particle(sim, k, c, (size_t)q, 3) && q < first) first = q;

@@ -2,9 +2,11 @@
  * step, where threads meet (threads.h says why the results stay
  * deterministic). */
 #include <limits.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "step.h"
 #include "threads.h"
@@ -18,6 +20,58 @@ int lm_sim_threads(const lm_sim *sim)
     (void)sim;
     return 1;
 #endif
+}
+
+int lm_sim_team(const lm_sim *sim)
+{
+    int nt = lm_sim_threads(sim);
+    if (sim->pace.fixed > 0) return sim->pace.fixed < nt ? sim->pace.fixed : nt;
+    return sim->pace.team >= 1 && sim->pace.team < nt ? sim->pace.team : nt;
+}
+
+void lm_sim_fix_team(lm_sim *sim, int team)
+{
+    sim->pace.fixed = team > 0 ? team : 0;
+}
+
+static double clock_of(clockid_t id)
+{
+    struct timespec ts;
+    if (clock_gettime(id, &ts) != 0) return 0;
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static void probe(lm_sim *sim, int nt)
+{
+    sim->pace.team = nt;
+    sim->pace.left = LM_PACE_PROBE;
+    sim->pace.wall0 = clock_of(CLOCK_MONOTONIC);
+    sim->pace.cpu0 = clock_of(CLOCK_PROCESS_CPUTIME_ID);
+}
+
+void lm_pace_step(lm_sim *sim)
+{
+    int nt = lm_sim_threads(sim);
+    if (nt == 1 || sim->pace.fixed > 0 || sim->p.n < LM_PARTICLE_LOOP_MIN) return;
+    if (sim->pace.team == 0) {
+        probe(sim, nt);
+        return;
+    }
+    if (--sim->pace.left > 0) return;
+    if (sim->pace.team < nt) {   /* the hold is over: try the whole team */
+        probe(sim, nt);
+        return;
+    }
+    double wall = clock_of(CLOCK_MONOTONIC) - sim->pace.wall0;
+    double cpu = clock_of(CLOCK_PROCESS_CPUTIME_ID) - sim->pace.cpu0;
+    /* idle, two threads get ~1.9 cores; beside one busy process ~1.4 */
+    int got = wall > 0 ? (int)floor(cpu / wall + 0.25) : nt;
+    if (got >= nt) {
+        probe(sim, nt);
+        return;
+    }
+    sim->pace.team = got < 1 ? 1 : got;
+    sim->pace.left = LM_PACE_HOLD;
 }
 
 lm_status lm_threads_reserve(lm_sim *sim)
@@ -95,7 +149,7 @@ void lm_threads_reduce(lm_sim *sim, int nt, int nf, double *const *out)
         if (g->thi[t] > hi) hi = g->thi[t];
     }
     if (lo > hi) return;   /* no thread met another */
-#pragma omp parallel for num_threads(nt) schedule(static) if (hi - lo > LM_NODE_LOOP_MIN)
+#pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) if (hi - lo > LM_NODE_LOOP_MIN)
     for (long i = lo; i <= hi; i++)
         for (int t = 1; t < nt; t++)
             if (i >= g->tlo[t] && i <= g->thi[t])

@@ -21,8 +21,24 @@
 #define LM_TEAM_SIZE() 1
 #endif
 
-/* Threads the step uses (1 without OpenMP). */
+/* Threads the step's work is split for (1 without OpenMP): the state
+ * depends on this number only. */
 int lm_sim_threads(const lm_sim *sim);
+/* OS threads its parallel loops run on now, 1 <= team <= threads: fewer
+ * while other processes hold the cores (lm_pace_step). A split part is
+ * then done by another OS thread of the team, so the state is the same
+ * (one OS thread may do several of a scatter's parts, in order). */
+int lm_sim_team(const lm_sim *sim);
+/* Before each step: the team for it (issue 17 item 2). A team of
+ * `threads` runs LM_PACE_PROBE steps; if the process had less than its
+ * share of the cores over them (processor time / wall time below
+ * team - 3/4: a waiting partner held up by another process's thread), the
+ * team shrinks to what it got, for LM_PACE_HOLD steps, then tries again. */
+#define LM_PACE_PROBE 32
+#define LM_PACE_HOLD 256
+void lm_pace_step(lm_sim *sim);
+/* Holds the team at `team` threads (0: adapt again); for tests. */
+void lm_sim_fix_team(lm_sim *sim, int team);
 /* Particle range [a, b) of thread t of nt. */
 static inline void lm_thread_range(size_t n, int t, int nt, size_t *a, size_t *b)
 {
