@@ -41,9 +41,7 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
     const lm_grid *g = &sim->grid;
     const lm_particles *p = &sim->p;
     double *const f0 = f[0], *const f1 = f[1];
-    double *const f2 = kind == SCATTER_MASS_MOMENTUM ? f[2] : NULL;
     double *const c0 = split ? c[0] : NULL, *const c1 = split ? c[1] : NULL;
-    double *const c2 = split && kind == SCATTER_MASS_MOMENTUM ? c[2] : NULL;
     const long lo = split ? sh->lo : 0;
     const unsigned long span = split ? (unsigned long)(sh->hi - sh->lo) : 0;
     /* the bilinear weights are made here from the point's place in its
@@ -52,19 +50,8 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
     double Nl[4], Gxl[4], Gyl[4];
     switch (kind) {
     case SCATTER_MASS_MOMENTUM:
-        for (size_t q = a0; q < b0; q++) {
-            const double m = p->m[q], vx = p->vx[q], vy = p->vy[q];
-            const double *N = lm_k_weights_N(p, q, W, Nl);
-            for (int b = 0; b < W; b++) {
-                const long row = lm_stencil_row(g, p->node[q], b);
-                for (int a = 0; a < W; a++) {
-                    double w = m * N[b * W + a];
-                    *lm_k_at(f0, c0, row + a, lo, span, split) += w;
-                    *lm_k_at(f1, c1, row + a, lo, span, split) += w * vx;
-                    *lm_k_at(f2, c2, row + a, lo, span, split) += w * vy;
-                }
-            }
-        }
+        for (size_t q = a0; q < b0; q++)
+            lm_k_scatter_momentum(sim, q, f, c, lo, span, W, split, 1);
         break;
     case SCATTER_FORCES:
         for (size_t q = a0; q < b0; q++) {
@@ -103,7 +90,7 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
             lm_k_scatter_mass_forces(sim, q, rx, ry, f, c, lo, span, W, split, 1);
         break;
     case SCATTER_MOMENTUM:
-        for (size_t q = a0; q < b0; q++) lm_k_scatter_momentum(sim, q, f, c, lo, span, W, split);
+        for (size_t q = a0; q < b0; q++) lm_k_scatter_momentum(sim, q, f, c, lo, span, W, split, 0);
         break;
     }
 }
@@ -244,6 +231,26 @@ void lm_step_grid_update(lm_sim *sim)
     lm_grid_apply_bc(g, g->fx, g->fy);
 }
 
+/* Step 4's nodal values, per node once, not per particle corner:
+ * a_i = f_i / m_i into (ax, ay) and v_i^L = p_i^L (1 / m_i) into (ux, uy),
+ * ghost nodes filled. */
+void lm_step_g2p_nodes(lm_sim *sim, double *ux, double *uy)
+{
+    lm_grid *g = &sim->grid;
+    long nn = (long)lm_grid_nodes(g);
+#pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
+    for (long i = 0; i < nn; i++) {
+        double r = g->m[i] > 0 ? 1.0 / g->m[i] : 0;
+        g->ax[i] = g->fx[i] * r;
+        g->ay[i] = g->fy[i] * r;
+        ux[i] = g->px[i] * r;
+        uy[i] = g->py[i] * r;
+    }
+    double *const fill[4] = {g->ax, g->ay, ux, uy};
+    static const lm_comp comp[4] = {LM_COMP_X, LM_COMP_Y, LM_COMP_X, LM_COMP_Y};
+    lm_grid_fill(g, 4, fill, comp);
+}
+
 /* Step 4 ([F] eq 12): FLIP velocity update from the nodal accelerations,
  * position from the Lagrangian grid velocity. Only zero-mass nodes are
  * skipped; dropping "small" ones would break momentum conservation. */
@@ -252,19 +259,7 @@ void lm_step_g2p(lm_sim *sim)
     lm_grid *g = &sim->grid;
     lm_particles *p = &sim->p;
     double dt = sim->def.dt, pic = sim->def.pic;
-    /* per node once, not per particle corner: a_i = f_i / m_i, v_i^L */
-    long nn = (long)lm_grid_nodes(g);
-#pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
-    for (long i = 0; i < nn; i++) {
-        double r = g->m[i] > 0 ? 1.0 / g->m[i] : 0;
-        g->ax[i] = g->fx[i] * r;
-        g->ay[i] = g->fy[i] * r;
-        g->vx[i] = g->px[i] * r;
-        g->vy[i] = g->py[i] * r;
-    }
-    double *const fill[4] = {g->ax, g->ay, g->vx, g->vy};
-    static const lm_comp comp[4] = {LM_COMP_X, LM_COMP_Y, LM_COMP_X, LM_COMP_Y};
-    lm_grid_fill(g, 4, fill, comp);
+    lm_step_g2p_nodes(sim, g->vx, g->vy);
     long n = (long)p->n;
     if (g->sw == 2) {
 #pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)

@@ -121,25 +121,6 @@ int lm_step_take_ahead(lm_sim *sim)
     return 1;
 }
 
-/* Step 4's nodal values once per node (as lm_step_g2p): a_i = f_i / m_i
- * and v_i^L, the latter into the pass's own pair (ux, uy). */
-static void nodal_g2p(lm_sim *sim, double *ux, double *uy)
-{
-    lm_grid *g = &sim->grid;
-    long nn = (long)lm_grid_nodes(g);
-#pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
-    for (long i = 0; i < nn; i++) {
-        double r = g->m[i] > 0 ? 1.0 / g->m[i] : 0;
-        g->ax[i] = g->fx[i] * r;
-        g->ay[i] = g->fy[i] * r;
-        ux[i] = g->px[i] * r;
-        uy[i] = g->py[i] * r;
-    }
-    double *const fill[4] = {g->ax, g->ay, ux, uy};
-    static const lm_comp comp[4] = {LM_COMP_X, LM_COMP_Y, LM_COMP_X, LM_COMP_Y};
-    lm_grid_fill(g, 4, fill, comp);
-}
-
 /* The strain velocity's boundary conditions and ghost nodes (the end of
  * lm_step_strain_velocity). */
 static void strain_velocity_bc(lm_grid *g)
@@ -276,7 +257,7 @@ static LM_FORCE_INLINE size_t pass_w(lm_sim *sim, double *const *next, lm_status
         double *const remap[2] = {g->vx, g->vy};
         for (size_t q = 0; q < n; q++) {
             lm_k_g2p(g, p, q, dt, pic, g->ax, g->ay, a->ux, a->uy, W);
-            lm_k_scatter_momentum(sim, q, remap, NULL, 0, 0, W, 0);
+            lm_k_scatter_momentum(sim, q, remap, NULL, 0, 0, W, 0, 0);
         }
         static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
         lm_grid_fold(g, 2, remap, comp);
@@ -318,7 +299,7 @@ size_t lm_step_fused_particles(lm_sim *sim, int ahead, lm_status *st)
     *st = LM_OK;
     if (next)
         for (int k = 0; k < 5; k++) memset(a->f[k], 0, a->nn * sizeof(double));
-    nodal_g2p(sim, a->ux, a->uy);
+    lm_step_g2p_nodes(sim, a->ux, a->uy);
     /* [N] §7: the USL strain from v_i^L = p_i^L / m_i, before any pass */
     if (sim->def.scheme == LM_USL) lm_step_strain_velocity(sim);
     size_t first = !one ? passes_mt(sim, st)

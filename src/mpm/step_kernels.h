@@ -138,24 +138,28 @@ static LM_FORCE_INLINE void lm_k_scatter_mass_forces(const lm_sim *sim, size_t q
     }
 }
 
-/* The MUSL re-map at particle q ([M] eqs 12-13): m_p v_p N_ip added
- * into (f[0], f[1]), or the copies c where another thread shares the node. */
+/* Step 1 at particle q (mass = 1): m_p N_ip and m_p v_p N_ip added into
+ * (f[0], f[1], f[2]); the MUSL re-map (mass = 0, [M] eqs 12-13): m_p v_p
+ * N_ip into (f[0], f[1]); or into the copies c where another thread
+ * shares the node. */
 static LM_FORCE_INLINE void lm_k_scatter_momentum(const lm_sim *sim, size_t q,
                                                   double *const *f, double *const *c, long lo,
                                                   unsigned long span, const int W,
-                                                  const int split)
+                                                  const int split, const int mass)
 {
     const lm_grid *g = &sim->grid;
     const lm_particles *p = &sim->p;
     double Nl[4];
     const double m = p->m[q], vx = p->vx[q], vy = p->vy[q];
     const double *N = lm_k_weights_N(p, q, W, Nl);
+    double *const *fp = mass ? f + 1 : f, *const *cp = split && mass ? c + 1 : c;
     for (int b = 0; b < W; b++) {
         const long row = lm_stencil_row(g, p->node[q], b);
         for (int a = 0; a < W; a++) {
             double w = m * N[b * W + a];
-            *lm_k_at(f[0], split ? c[0] : NULL, row + a, lo, span, split) += w * vx;
-            *lm_k_at(f[1], split ? c[1] : NULL, row + a, lo, span, split) += w * vy;
+            if (mass) *lm_k_at(f[0], split ? c[0] : NULL, row + a, lo, span, split) += w;
+            *lm_k_at(fp[0], split ? cp[0] : NULL, row + a, lo, span, split) += w * vx;
+            *lm_k_at(fp[1], split ? cp[1] : NULL, row + a, lo, span, split) += w * vy;
         }
     }
 }
