@@ -106,7 +106,10 @@ int lm_step_take_ahead(lm_sim *sim)
 {
     struct lm_ahead *a = sim->ahead;
     lm_grid *g = &sim->grid;
-    if (!a || !a->valid || a->n != sim->p.n || a->nn != lm_grid_nodes(g)) return 0;
+    /* made on one thread (a split scatter would sum in another order) */
+    if (!a || !a->valid || a->n != sim->p.n || a->nn != lm_grid_nodes(g) ||
+        lm_sim_threads(sim) != 1)
+        return 0;
     a->valid = 0;
     double **own[5] = {&g->m, &g->px, &g->py, &g->fx, &g->fy};
     for (int k = 0; k < 5; k++) {
