@@ -1,8 +1,8 @@
 /* step_fused.c - the step's particle phases in one or two passes (issue 17
  * item 1).
  *
- * In a plain run (one thread; no contact, pin, link, axisymmetric form,
- * cell stresses, gas splitting or membrane with segment forces) what the
+ * In a plain run (no contact, pin, link, axisymmetric form, cell
+ * stresses, gas splitting or membrane with segment forces) what the
  * step does at a particle after the grid update needs only that particle
  * and the grid, apart from what needs all particles moved first: the
  * MUSL re-map ([M] eqs 12-13), the membranes' tangents (from their
@@ -12,7 +12,8 @@
  *     rate and the stress (7-8), the check;
  *   - else two: step 4 (with the MUSL re-map), then those, then the rate,
  *     the stress and the check;
- * and, when the caller promises that the next step follows at once
+ * each pass one parallel loop on more threads; and on one thread, when
+ * the caller promises that the next step follows at once
  * (lm_sim_step_then), its last pass adds each particle's shape at x^{k+1}
  * and its share of the next step's mass, momentum and force (steps 0-2)
  * into a second set of nodal sums, taken up by that step instead of its
