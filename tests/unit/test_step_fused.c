@@ -79,6 +79,21 @@ static lm_sim *build(const setup *s)
     lm_sim *sim = lm_sim_new(&d, err, sizeof err);
     CHECK(sim != NULL);
     if (!sim) return NULL;
+    if (s->scene >= 3) {
+        /* elastic solids only: two moduli, plane strain (3) or plane
+         * stress (4) */
+        static lm_material hard[2] = {{.kind = LM_ELASTIC, .rho = 10, .E = 2e4, .nu = 0.25},
+                                      {.kind = LM_ELASTIC, .rho = 10, .E = 2e4, .nu = 0.25,
+                                       .plane = LM_PLANE_STRESS}};
+        static lm_material soft[2] = {{.kind = LM_ELASTIC, .rho = 8, .E = 5e3, .nu = 0.35},
+                                      {.kind = LM_ELASTIC, .rho = 8, .E = 5e3, .nu = 0.35,
+                                       .plane = LM_PLANE_STRESS}};
+        int k = s->scene - 3;
+        CHECK(fixture_block(sim, &hard[k], 0.02, 0.03, 0.45, 0.4, 2, -0.6, -0.4, 0.3, 5) >= 0);
+        CHECK(fixture_block(sim, &soft[k], 0.5, 0.05, 0.93, 0.52, 2, 0.3, 0.2, 0.3, 9) >= 0);
+        CHECK(lm_sim_add_particle(sim, sim->nbodies - 1, 0.7, 0.7, 0.1, 0, 0.01, 8) == LM_OK);
+        return sim;
+    }
     if (s->scene == 0) {
         /* a block moving into the lower-left corner, a fluid column beside it */
         CHECK(fixture_block(sim, &solid, 0.02, 0.03, 0.45, 0.4, 2, -0.6, -0.4, 0.3, 7) >= 0);
@@ -238,6 +253,14 @@ int main(void)
                 setup s = {bases[b], sc ? LM_USL : LM_MUSL, {0}, 0, 5e-5, 1, scene, 0};
                 memcpy(s.bc, walls[b], sizeof s.bc);
                 compare(&s, 60);
+            }
+    for (int scene = 3; scene <= 4; scene++)
+        for (int b = 0; b < 3; b++)
+            for (int sc = 0; sc < 2; sc++) {
+                setup s = {bases[b], sc ? LM_USL : LM_MUSL, {0}, scene == 3 ? 0.2 : 0, 1e-4, 1,
+                           scene, 0};
+                memcpy(s.bc, walls[scene - 3], sizeof s.bc);
+                compare(&s, 100);
             }
     /* two and three threads: each pass a parallel loop, nothing ahead; the
      * scenes large enough to be split (LM_PARTICLE_LOOP_MIN) */
