@@ -299,8 +299,10 @@ typedef struct lm_sim {
     struct {                      /* the OS threads of the loops (threads.c) */
         int team;                 /* now; 0: not yet chosen */
         int fixed;                /* > 0: held there (lm_sim_fix_team) */
-        int left;                 /* steps left of the probe or the hold */
-        double wall0, cpu0;       /* clocks at the probe's start */
+        int phase;                /* timing the whole team, one thread, or holding */
+        int left;                 /* steps left of the window or the hold */
+        double wall0, cpu0;       /* the clocks at the window's start */
+        double t_full;            /* the whole team's wall time a step */
     } pace;
     char err[512];
 } lm_sim;

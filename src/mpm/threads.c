@@ -2,7 +2,6 @@
  * step, where threads meet (threads.h says why the results stay
  * deterministic). */
 #include <limits.h>
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -41,10 +40,12 @@ static double clock_of(clockid_t id)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-static void probe(lm_sim *sim, int nt)
+/* A window of `steps` steps on `team` OS threads, timed. */
+static void window(lm_sim *sim, int team, int phase, int steps)
 {
-    sim->pace.team = nt;
-    sim->pace.left = LM_PACE_PROBE;
+    sim->pace.team = team;
+    sim->pace.phase = phase;
+    sim->pace.left = steps;
     sim->pace.wall0 = clock_of(CLOCK_MONOTONIC);
     sim->pace.cpu0 = clock_of(CLOCK_PROCESS_CPUTIME_ID);
 }
@@ -54,24 +55,33 @@ void lm_pace_step(lm_sim *sim)
     int nt = lm_sim_threads(sim);
     if (nt == 1 || sim->pace.fixed > 0 || sim->p.n < LM_PARTICLE_LOOP_MIN) return;
     if (sim->pace.team == 0) {
-        probe(sim, nt);
+        window(sim, nt, LM_PACE_FULL, LM_PACE_PROBE);
         return;
     }
     if (--sim->pace.left > 0) return;
-    if (sim->pace.team < nt) {   /* the hold is over: try the whole team */
-        probe(sim, nt);
-        return;
-    }
     double wall = clock_of(CLOCK_MONOTONIC) - sim->pace.wall0;
     double cpu = clock_of(CLOCK_PROCESS_CPUTIME_ID) - sim->pace.cpu0;
-    /* idle, two threads get ~1.9 cores; beside one busy process ~1.4 */
-    int got = wall > 0 ? (int)floor(cpu / wall + 0.25) : nt;
-    if (got >= nt) {
-        probe(sim, nt);
-        return;
+    switch (sim->pace.phase) {
+    case LM_PACE_FULL:
+        /* the team got its cores (idle: two threads ~1.9 of 2): go on;
+         * else (beside a busy process ~1.4, or a step with long serial
+         * parts) time one OS thread too */
+        if (!(cpu < (nt - 0.25) * wall)) {
+            window(sim, nt, LM_PACE_FULL, LM_PACE_PROBE);
+        } else {
+            sim->pace.t_full = wall / LM_PACE_PROBE;
+            window(sim, 1, LM_PACE_ONE, LM_PACE_PROBE_ONE);
+        }
+        break;
+    case LM_PACE_ONE:   /* keep the faster, one thread only if clearly so */
+        sim->pace.team = wall / LM_PACE_PROBE_ONE < 0.95 * sim->pace.t_full ? 1 : nt;
+        sim->pace.phase = LM_PACE_HOLD;
+        sim->pace.left = LM_PACE_HOLD_STEPS;
+        break;
+    default:            /* the hold is over: time the whole team again */
+        window(sim, nt, LM_PACE_FULL, LM_PACE_PROBE);
+        break;
     }
-    sim->pace.team = got < 1 ? 1 : got;
-    sim->pace.left = LM_PACE_HOLD;
 }
 
 lm_status lm_threads_reserve(lm_sim *sim)

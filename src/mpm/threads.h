@@ -29,13 +29,18 @@ int lm_sim_threads(const lm_sim *sim);
  * then done by another OS thread of the team, so the state is the same
  * (one OS thread may do several of a scatter's parts, in order). */
 int lm_sim_team(const lm_sim *sim);
-/* Before each step: the team for it (issue 17 item 2). A team of
- * `threads` runs LM_PACE_PROBE steps; if the process had less than its
- * share of the cores over them (processor time / wall time below
- * team - 3/4: a waiting partner held up by another process's thread), the
- * team shrinks to what it got, for LM_PACE_HOLD steps, then tries again. */
+/* Before each step: the team for it (issue 17 item 2). The whole team's
+ * steps are timed in windows of LM_PACE_PROBE; while the process gets its
+ * cores (processor time at least threads - 1/4 times the wall time: idle,
+ * two threads get ~1.9 of 2) it stays. Otherwise (beside a busy process
+ * ~1.4: the team waits at every barrier for its thread that shares a
+ * core; or a step with long serial parts) LM_PACE_PROBE_ONE steps are
+ * timed on one OS thread, and the faster (one thread only if 5 % faster)
+ * runs the next LM_PACE_HOLD_STEPS steps. */
 #define LM_PACE_PROBE 32
-#define LM_PACE_HOLD 256
+#define LM_PACE_PROBE_ONE 16
+#define LM_PACE_HOLD_STEPS 256
+enum { LM_PACE_FULL = 0, LM_PACE_ONE = 1, LM_PACE_HOLD = 2 };
 void lm_pace_step(lm_sim *sim);
 /* Holds the team at `team` threads (0: adapt again); for tests. */
 void lm_sim_fix_team(lm_sim *sim, int team);
