@@ -200,9 +200,12 @@ static lm_status reserve(lm_sim *sim)
         c->of_body = ob;
         c->nbodies_alloc = sim->nbodies;
     }
-    unsigned char *fl = realloc(c->flag, (size_t)c->nf);
-    if (!fl) goto oom;
-    c->flag = fl;
+    if (c->nflag != c->nf) {   /* not every step: no allocation in a step */
+        unsigned char *fl = realloc(c->flag, (size_t)c->nf);
+        if (!fl) goto oom;
+        c->flag = fl;
+        c->nflag = c->nf;
+    }
     if (c->nq != sim->p.n) {
         size_t n = sim->p.n ? sim->p.n : 1;
         unsigned char *qf = realloc(c->qflag, n);

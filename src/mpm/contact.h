@@ -79,6 +79,7 @@ typedef struct lm_contact {
     int *of_body;          /* field of each body, -1: none (nbodies_alloc) */
     int nbodies_alloc;
     unsigned char *flag;   /* per field, scratch of the correction */
+    int nflag;             /* fields it has room for */
     size_t nn;             /* nodes the fields were made for */
     unsigned char *state;  /* LM_CNODE_* per node, last step */
     int sx, sy;            /* the grid's storage: sx nodes a row, sy rows */
