@@ -69,14 +69,21 @@ void la_energy_watch_begin(const la_sim *s, la_energy_watch *w)
     w->driven = 0;
 }
 
+/* Has a callback changed gravity since the run began? It did work on the
+ * run: the potential energy's datum moved. */
+static int gravity_changed(const lm_sim *sim, const la_energy_watch *w)
+{
+    return sim->def.gx != w->gx || sim->def.gy != w->gy;
+}
+
 /* After the pins' velocities are set for the step: a driven pin does work,
- * and so does a callback that changed gravity (the energy's datum moved). */
+ * and so does a change of gravity. */
 void la_energy_watch_step(const la_sim *s, la_energy_watch *w)
 {
     const lm_sim *sim = s->sim;
     for (int k = 0; k < sim->npins && !w->driven; k++)
         w->driven = sim->pins[k].vx != 0 || sim->pins[k].vy != 0;
-    if (sim->def.gx != w->gx || sim->def.gy != w->gy) w->driven = 1;
+    if (gravity_changed(sim, w)) w->driven = 1;
     if ((sim->step - w->step0) % WATCH_EVERY == 0)
         w->scale = fmax(w->scale, energy_scale(lm_sim_energy(sim)));
 }
@@ -84,8 +91,8 @@ void la_energy_watch_step(const la_sim *s, la_energy_watch *w)
 void la_energy_watch_end(lua_State *L, la_sim *s, const la_energy_watch *w)
 {
     const lm_sim *sim = s->sim;
-    if (s->warned_energy || w->driven || sim->step - w->step0 < WATCH_MIN_STEPS ||
-        sim->def.gx != w->gx || sim->def.gy != w->gy)
+    if (s->warned_energy || w->driven || gravity_changed(sim, w) ||
+        sim->step - w->step0 < WATCH_MIN_STEPS)
         return;
     lm_energy e1 = lm_sim_energy(sim);
     double seen1 = seen_energy(sim, e1);

@@ -271,19 +271,14 @@ void lm_step_g2p(lm_sim *sim)
     lm_pin_particles(sim);
 }
 
-/* Step 5. MUSL ([M] eqs 12-13, [F] eq 13): re-map the updated particle
- * velocities to the grid with the same N_ip and constrain them again.
- * USL ([N] §7): use v_i^L = p_i^L / m_i. */
-void lm_step_strain_velocity(lm_sim *sim)
+/* The end of step 5 once (g->vx, g->vy) hold the strain velocities or,
+ * remap, the re-mapped momenta m_i v_i (folded at the walls): divided by
+ * m_i, then held nodes and boundary conditions, then the ghost nodes. */
+void lm_step_strain_velocity_end(lm_sim *sim, int remap)
 {
     lm_grid *g = &sim->grid;
     size_t nn = lm_grid_nodes(g);
-    if (sim->def.scheme == LM_MUSL) {
-        double *const out[2] = {g->vx, g->vy};
-#pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
-        for (long i = 0; i < (long)nn; i++) g->vx[i] = g->vy[i] = 0;
-        static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
-        scatter(sim, SCATTER_MOMENTUM, 2, out, comp);
+    if (remap) {
 #pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
         for (long i = 0; i < (long)nn; i++) {
             if (g->m[i] > 0) {
@@ -291,6 +286,28 @@ void lm_step_strain_velocity(lm_sim *sim)
                 g->vy[i] /= g->m[i];
             }
         }
+    }
+    lm_pin_velocity(sim);
+    lm_grid_apply_bc(g, g->vx, g->vy);
+    double *const fill[2] = {g->vx, g->vy};
+    static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
+    lm_grid_fill(g, 2, fill, comp);
+}
+
+/* Step 5. MUSL ([M] eqs 12-13, [F] eq 13): re-map the updated particle
+ * velocities to the grid with the same N_ip and constrain them again.
+ * USL ([N] §7): use v_i^L = p_i^L / m_i. */
+void lm_step_strain_velocity(lm_sim *sim)
+{
+    lm_grid *g = &sim->grid;
+    size_t nn = lm_grid_nodes(g);
+    const int remap = sim->def.scheme == LM_MUSL;
+    if (remap) {
+        double *const out[2] = {g->vx, g->vy};
+#pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
+        for (long i = 0; i < (long)nn; i++) g->vx[i] = g->vy[i] = 0;
+        static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
+        scatter(sim, SCATTER_MOMENTUM, 2, out, comp);
     } else {
 #pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
         for (long i = 0; i < (long)nn; i++) {
@@ -298,11 +315,7 @@ void lm_step_strain_velocity(lm_sim *sim)
             g->vy[i] = g->m[i] > 0 ? g->py[i] / g->m[i] : 0;
         }
     }
-    lm_pin_velocity(sim);
-    lm_grid_apply_bc(g, g->vx, g->vy);
-    double *const fill[2] = {g->vx, g->vy};
-    static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
-    lm_grid_fill(g, 2, fill, comp);
+    lm_step_strain_velocity_end(sim, remap);
 }
 
 /* rx = 1 / hx, ry = 1 / hy: the caller's, once for all its points */

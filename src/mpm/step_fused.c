@@ -125,16 +125,6 @@ int lm_step_take_ahead(lm_sim *sim)
     return 1;
 }
 
-/* The strain velocity's boundary conditions and ghost nodes (the end of
- * lm_step_strain_velocity). */
-static void strain_velocity_bc(lm_grid *g)
-{
-    lm_grid_apply_bc(g, g->vx, g->vy);
-    double *const fill[2] = {g->vx, g->vy};
-    static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
-    lm_grid_fill(g, 2, fill, comp);
-}
-
 /* Steps 7-8 at particle q: lm_step_stress's rate and update in the plane
  * (no contact here), with the gas's maxima of the step (md, cm). */
 static LM_FORCE_INLINE void stress_at(lm_sim *sim, size_t q, double rx, double ry, double h,
@@ -265,13 +255,7 @@ static LM_FORCE_INLINE size_t pass_w(lm_sim *sim, double *const *next, lm_status
         }
         static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
         lm_grid_fold(g, 2, remap, comp);
-        for (size_t i = 0; i < nn; i++) {
-            if (g->m[i] > 0) {
-                g->vx[i] /= g->m[i];
-                g->vy[i] /= g->m[i];
-            }
-        }
-        strain_velocity_bc(g);
+        lm_step_strain_velocity_end(sim, 1);
     }
     double md = 0, cm = 0;
     if ((*st = between_passes(sim, &md, &cm)) != LM_OK) return n;
