@@ -306,17 +306,31 @@ lm_nerr lm_normals_centred(const lm_ngrid *g, const lm_nbins *b, size_t n,
             double c = a < g->dim ? 0.5 * (box.lo[a] + box.hi[a]) : 0.0;
             el.cell[a] = a < g->dim ? floor_int((c - g->x0[a]) / g->h[a]) : 0;
         }
-        /* step 5 */
-        for (size_t q = a0; q < a1; q++) {
-            size_t i = sp[q].i;
-            double p[3] = {x[0][i], x[1][i], g->dim == 3 ? x[2][i] : 0.0}, nv[3];
-            int bad = lm_nfit_normal(&el.fit, p, nv);
-            for (int a = 0; a < g->dim; a++)
-                nrm[a][i] = nv[a];
-            *undefined += bad != 0;
-            if (flags)
-                flags[i] = (unsigned char)((el.fit.flags & ~LM_NF_UNDEFINED) |
-                                           (bad ? LM_NF_UNDEFINED : 0));
+        /* step 5, two points at a time (lm_nfit_normal2: the two chains
+         * of divisions and square roots side by side) */
+        for (size_t q = a0; q < a1; q += 2) {
+            size_t m = q + 1 < a1 ? 2 : 1, is[2] = {sp[q].i, sp[q + m - 1].i};
+            double p[2][3], nv[2][3];
+            int bad[2];
+            for (size_t l = 0; l < m; l++) {
+                size_t i = is[l];
+                p[l][0] = x[0][i];
+                p[l][1] = x[1][i];
+                p[l][2] = g->dim == 3 ? x[2][i] : 0.0;
+            }
+            if (m == 2)
+                lm_nfit_normal2(&el.fit, p[0], p[1], nv[0], nv[1], bad);
+            else
+                bad[0] = lm_nfit_normal(&el.fit, p[0], nv[0]);
+            for (size_t l = 0; l < m; l++) {
+                size_t i = is[l];
+                for (int a = 0; a < g->dim; a++)
+                    nrm[a][i] = nv[l][a];
+                *undefined += bad[l] != 0;
+                if (flags)
+                    flags[i] = (unsigned char)((el.fit.flags & ~LM_NF_UNDEFINED) |
+                                               (bad[l] ? LM_NF_UNDEFINED : 0));
+            }
         }
         if (els && push_elem(els, nel, &cap, &el)) {
             snprintf(err, errlen, "out of memory (report)");

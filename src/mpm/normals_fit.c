@@ -20,6 +20,7 @@
 
 #include "normals.h"
 #include "normals_work.h"
+#include "simd2.h"
 #include "util.h"
 
 /* A random point closer than this (relative to the element) to a membrane
@@ -192,21 +193,34 @@ static void draw_point(const lm_nbox *b, lm_nrng *rng, const double *const x[3],
         lm_nbox_to_world(b, xi, q);
         int clear = 1;
         double dmin = INFINITY;
-        for (size_t i = 0; i < k && clear; i++) {
-            size_t pi = idx ? idx[i] : i;
-            int near = 1;
-            double d = 0;
-            for (int a = 0; a < b->dim; a++) {
-                double e = x[a][pi] - q[a];
-                near &= !(fabs(e) > tol[a]);
-                if (clearance > 0) {
-                    double t = e / size[a];
-                    d += t * t;
-                }
-            }
-            clear = !near;
-            if (clearance > 0)
+        if (b->dim == 2 && clearance > 0) {
+            /* the general loop's tests and sums, the two axes side by
+             * side (one division for both) */
+            lm_v2d qq = {q[0], q[1]}, sz = {size[0], size[1]};
+            for (size_t i = 0; i < k && clear; i++) {
+                size_t pi = idx ? idx[i] : i;
+                lm_v2d e = (lm_v2d){x[0][pi], x[1][pi]} - qq, t = e / sz;
+                clear = fabs(e[0]) > tol[0] || fabs(e[1]) > tol[1];
+                double d = t[0] * t[0] + t[1] * t[1];
                 dmin = d < dmin ? d : dmin;
+            }
+        } else {
+            for (size_t i = 0; i < k && clear; i++) {
+                size_t pi = idx ? idx[i] : i;
+                int near = 1;
+                double d = 0;
+                for (int a = 0; a < b->dim; a++) {
+                    double e = x[a][pi] - q[a];
+                    near &= !(fabs(e) > tol[a]);
+                    if (clearance > 0) {
+                        double t = e / size[a];
+                        d += t * t;
+                    }
+                }
+                clear = !near;
+                if (clearance > 0)
+                    dmin = d < dmin ? d : dmin;
+            }
         }
         if (!(clearance > 0)) {
             if (clear)
@@ -466,34 +480,41 @@ static inline void bspline2_three_d(double xi, double v[3], double d[3])
  * lm_nbasis_grad_quadratic_2d takes them there), grad phi summed in the
  * order of I, and the checks and scalings of lm_nfit_normal - the same
  * operations in the same order, so the same bits, without the calls and
- * the general loops. */
+ * the general loops. The two axes go side by side (one division for xi
+ * and eta, one for the two scalings, one for the two components, one
+ * square root for both lengths). */
 static int normal_quadratic_2d_at(const lm_nfit *f, const double x[3], double n[3])
 {
     double w0 = f->box.hi[0] - f->box.lo[0], w1 = f->box.hi[1] - f->box.lo[1];
     double xi = (x[0] - f->box.lo[0]) / w0, eta = (x[1] - f->box.lo[1]) / w1;
+    lm_v2d w = {w0, w1};
     if (!(xi >= 0.0 && xi <= 1.0 && eta >= 0.0 && eta <= 1.0))
         return 1;                      /* not inside: the general path */
     double v0[3], d0[3], v1[3], d1[3];
     bspline2_three_d(xi, v0, d0);
     bspline2_three_d(eta, v1, d1);
     const double *c = f->phi;
-    double gl0 = 0.0, gl1 = 0.0, scale = 1.0;
+    lm_v2d gl = {0.0, 0.0};
+    double scale = 1.0;
     for (int j = 0; j < 3; j++)
         for (int i = 0; i < 3; i++) {
-            gl0 += c[i + 3 * j] * (d0[i] * v1[j]);
-            gl1 += c[i + 3 * j] * (v0[i] * d1[j]);
+            lm_v2d cc = {c[i + 3 * j], c[i + 3 * j]};
+            gl += cc * ((lm_v2d){d0[i], v0[i]} * (lm_v2d){v1[j], d1[j]});
         }
     for (int I = 0; I < 9; I++)
         if (fabs(c[I]) > scale)
             scale = fabs(c[I]);
-    double g0 = gl0 / w0, g1 = gl1 / w1;
-    double len = sqrt(g0 * g0 + g1 * g1);
-    double llen = sqrt(gl0 * gl0 + gl1 * gl1);
+    lm_v2d g = gl / w;
+    lm_v2d gg = g * g, ll = gl * gl;
+    lm_v2d sq = {gg[0] + gg[1], ll[0] + ll[1]};
+    sq = lm_v2d_sqrt(sq);
+    double len = sq[0], llen = sq[1];
     n[0] = n[1] = n[2] = 0.0;
     if (!(llen > 1e-10 * scale) || !isfinite(len))
         return -1;
-    n[0] = g0 / len;
-    n[1] = g1 / len;
+    lm_v2d nn = g / (lm_v2d){len, len};
+    n[0] = nn[0];
+    n[1] = nn[1];
     return 0;
 }
 
@@ -522,4 +543,75 @@ int lm_nfit_normal(const lm_nfit *f, const double x[3], double n[3])
     for (int a = 0; a < f->dim; a++)
         n[a] = g[a] / len;
     return 0;
+}
+
+/* The 2D quadratic normal at two points of one element, each in a lane:
+ * normal_quadratic_2d_at's operations lane by lane (so the bits of one
+ * point at a time), the two chains of divisions and square roots side by
+ * side. 1 when a point is not inside the element (nothing written). */
+static int normal_quadratic_2d_pair(const lm_nfit *f, const double a[3], const double b[3],
+                                    double na[3], double nb[3], int bad[2])
+{
+    double w0 = f->box.hi[0] - f->box.lo[0], w1 = f->box.hi[1] - f->box.lo[1];
+    lm_v2d W0 = {w0, w0}, W1 = {w1, w1};
+    lm_v2d xi = ((lm_v2d){a[0], b[0]} - f->box.lo[0]) / W0;
+    lm_v2d eta = ((lm_v2d){a[1], b[1]} - f->box.lo[1]) / W1;
+    for (int l = 0; l < 2; l++)
+        if (!(xi[l] >= 0.0 && xi[l] <= 1.0 && eta[l] >= 0.0 && eta[l] <= 1.0))
+            return 1;
+    /* bspline2_three_d lane by lane */
+    const lm_v2d m05 = {0 - 0.5, 0 - 0.5}, p05 = {1 - 0.5, 1 - 0.5}, p15 = {2 - 0.5, 2 - 0.5};
+    const lm_v2d c15 = {1.5, 1.5}, h = {0.5, 0.5}, q34 = {0.75, 0.75}, two = {2.0, 2.0};
+    lm_v2d v0[3], d0[3], v1[3], d1[3];
+    for (int ax = 0; ax < 2; ax++) {
+        lm_v2d u = ax ? eta : xi, *v = ax ? v1 : v0, *d = ax ? d1 : d0;
+        lm_v2d t = u - m05, e = c15 - t;
+        v[0] = h * e * e;
+        d[0] = -e;
+        t = u - p05;
+        v[1] = q34 - t * t;
+        d[1] = -two * t;
+        t = u - p15;
+        e = c15 - (-t);
+        v[2] = h * e * e;
+        d[2] = e;
+    }
+    const double *c = f->phi;
+    lm_v2d gl0 = {0.0, 0.0}, gl1 = {0.0, 0.0};
+    double scale = 1.0;
+    for (int j = 0; j < 3; j++)
+        for (int i = 0; i < 3; i++) {
+            lm_v2d cc = {c[i + 3 * j], c[i + 3 * j]};
+            gl0 += cc * (d0[i] * v1[j]);
+            gl1 += cc * (v0[i] * d1[j]);
+        }
+    for (int I = 0; I < 9; I++)
+        if (fabs(c[I]) > scale)
+            scale = fabs(c[I]);
+    lm_v2d g0 = gl0 / W0, g1 = gl1 / W1;
+    lm_v2d len = lm_v2d_sqrt(g0 * g0 + g1 * g1), llen = lm_v2d_sqrt(gl0 * gl0 + gl1 * gl1);
+    lm_v2d n0 = g0 / len, n1 = g1 / len;
+    double *n[2] = {na, nb};
+    for (int l = 0; l < 2; l++) {
+        n[l][0] = n[l][1] = n[l][2] = 0.0;
+        bad[l] = !(llen[l] > 1e-10 * scale) || !isfinite(len[l]);
+        if (bad[l])
+            continue;
+        n[l][0] = n0[l];
+        n[l][1] = n1[l];
+    }
+    return 0;
+}
+
+void lm_nfit_normal2(const lm_nfit *f, const double a[3], const double b[3],
+                     double na[3], double nb[3], int bad[2])
+{
+    if (f->basis == LM_NB_QUADRATIC && f->dim == 2 &&
+        normal_quadratic_2d_pair(f, a, b, na, nb, bad) == 0) {
+        bad[0] = -bad[0];
+        bad[1] = -bad[1];
+        return;
+    }
+    bad[0] = lm_nfit_normal(f, a, na);
+    bad[1] = lm_nfit_normal(f, b, nb);
 }

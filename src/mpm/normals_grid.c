@@ -74,7 +74,8 @@ long lm_ngrid_cell(const lm_ngrid *g, const double x[3], int c[3])
         double t = 1e-9 * g->n[a];
         if (!(f >= -t && f <= g->n[a] + t))
             return -1;
-        int i = (int)floor(f);
+        int i = (int)f;
+        i -= f < i;                 /* floor(f): f is within int's range */
         if (i >= g->n[a])
             i = g->n[a] - 1;
         if (i < 0)

@@ -91,6 +91,10 @@ lm_nerr lm_nfit_element_ws(const lm_nbox *box, const double *const x[3],
  * near singular (f->phi untouched: solve by the QR instead). */
 int lm_nfit_quadratic_2d_ne(lm_nfit *f, const double *const x[3], const size_t *idx,
                             size_t k, lm_nfit_scratch *sc, double smooth);
+/* lm_nfit_normal at two points of the same fit (bad[l] its return value
+ * for each), the two side by side: the same bits as two calls. */
+void lm_nfit_normal2(const lm_nfit *f, const double a[3], const double b[3],
+                     double na[3], double nb[3], int bad[2]);
 /* lm_lsq_qr_cond for n <= LM_NMAX with C (m n entries) given: no
  * allocation. */
 lm_nerr lm_lsq_qr_ws(int m, int n, double *A, double *b, double *x,
