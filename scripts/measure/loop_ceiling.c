@@ -14,7 +14,12 @@
  *            their scatter;
  *   lanes  - the fused pass four particles at a time in GCC vector
  *            extensions (SSE2 pairs on baseline x86-64, AVX with
- *            -march=x86-64-v3); the scatter stays in particle order.
+ *            -march=x86-64-v3); the scatter stays in particle order;
+ *   cells  - two passes over runs of particles in one cell (the disks are
+ *            seeded cell by cell): a run's nodal sums in registers, one
+ *            update of each node per run, its nodal values loaded once
+ *            (reassociated sums: not the same bits; it prints how far its
+ *            positions and stresses are from the first form's).
  * Not part of lamina's build. Build and run, beside lamina's bench:
  *   gcc -O3 -ffp-contract=off -o /tmp/loop_ceiling scripts/measure/loop_ceiling.c -lm
  *   /tmp/loop_ceiling 0.005 300
@@ -240,6 +245,82 @@ static void step_lanes(prob *G)
     *G = L;
 }
 
+/* two passes as ref_usl, each over runs of particles in one cell: the
+ * run's 20 nodal sums in registers and one read-modify-write of each node
+ * per run (the scatter); the run's 16 nodal values loaded once (the
+ * gather). The sums are reassociated: not the same bits. */
+static inline long cell_of(const prob *P, size_t q)
+{
+    int i = (int)(P->x[q] * P->ih), j = (int)(P->y[q] * P->ih);
+    return (long)j * (P->nx + 1) + i;
+}
+
+static void step_cells(prob *G)
+{
+    prob L = *G, *P = &L;
+    const double ih = P->ih, dt = P->dt, lam = P->lam, mu = P->mu;
+    const long sx = P->nx + 1;
+    for (int k = 0; k < 5; k++) memset(P->f[k], 0, P->nn * sizeof(double));
+    double *f0 = P->f[0], *f1 = P->f[1], *f2 = P->f[2], *f3 = P->f[3], *f4 = P->f[4];
+    for (size_t q = 0; q < P->n;) {
+        long k = cell_of(P, q);
+        size_t e = q + 1;
+        while (e < P->n && cell_of(P, e) == k) e++;
+        double x0 = (double)(k % sx), y0 = (double)(k / sx);
+        double s[5][4] = {{0}};
+        for (; q < e; q++) {
+            double rx = P->x[q] * ih - x0, ry = P->y[q] * ih - y0;
+            double N[4] = {(1 - rx) * (1 - ry), rx * (1 - ry), (1 - rx) * ry, rx * ry};
+            double Gx[4] = {-(1 - ry) * ih, (1 - ry) * ih, -ry * ih, ry * ih};
+            double Gy[4] = {-(1 - rx) * ih, -rx * ih, (1 - rx) * ih, rx * ih};
+            double m = P->m[q], V = P->V[q], s1 = P->sxx[q], s2 = P->syy[q], s3 = P->sxy[q];
+            double vx = P->vx[q], vy = P->vy[q];
+            for (int a = 0; a < 4; a++) {
+                double w = m * N[a];
+                s[0][a] += w; s[1][a] += w * vx; s[2][a] += w * vy;
+                s[3][a] -= V * (s1 * Gx[a] + s3 * Gy[a]);
+                s[4][a] -= V * (s3 * Gx[a] + s2 * Gy[a]);
+            }
+        }
+        long c[4] = {k, k + 1, k + sx, k + sx + 1};
+        for (int a = 0; a < 4; a++) {
+            f0[c[a]] += s[0][a]; f1[c[a]] += s[1][a]; f2[c[a]] += s[2][a];
+            f3[c[a]] += s[3][a]; f4[c[a]] += s[4][a];
+        }
+    }
+    nodes(P);
+    for (size_t q = 0; q < P->n;) {
+        long k = cell_of(P, q);
+        size_t e = q + 1;
+        while (e < P->n && cell_of(P, e) == k) e++;
+        double x0 = (double)(k % sx), y0 = (double)(k / sx);
+        long c[4] = {k, k + 1, k + sx, k + sx + 1};
+        double wx[4], wy[4], gx[4], gy[4];
+        for (int a = 0; a < 4; a++) {
+            wx[a] = P->gvx[c[a]]; wy[a] = P->gvy[c[a]]; gx[a] = P->gax[c[a]]; gy[a] = P->gay[c[a]];
+        }
+        for (; q < e; q++) {
+            double rx = P->x[q] * ih - x0, ry = P->y[q] * ih - y0;
+            double N[4] = {(1 - rx) * (1 - ry), rx * (1 - ry), (1 - rx) * ry, rx * ry};
+            double Gx[4] = {-(1 - ry) * ih, (1 - ry) * ih, -ry * ih, ry * ih};
+            double Gy[4] = {-(1 - rx) * ih, -rx * ih, (1 - rx) * ih, rx * ih};
+            double ax = 0, ay = 0, ux = 0, uy = 0, l11 = 0, l12 = 0, l21 = 0, l22 = 0;
+            for (int a = 0; a < 4; a++) {
+                ax += N[a] * gx[a]; ay += N[a] * gy[a];
+                ux += N[a] * wx[a]; uy += N[a] * wy[a];
+                l11 += wx[a] * Gx[a]; l12 += wx[a] * Gy[a]; l21 += wy[a] * Gx[a]; l22 += wy[a] * Gy[a];
+            }
+            P->vx[q] += dt * ax; P->vy[q] += dt * ay;
+            P->x[q] += dt * ux; P->y[q] += dt * uy;
+            double exx = dt * l11, eyy = dt * l22, exy = 0.5 * dt * (l12 + l21);
+            P->sxx[q] += lam * (exx + eyy) + 2 * mu * exx;
+            P->syy[q] += lam * (exx + eyy) + 2 * mu * eyy;
+            P->sxy[q] += 2 * mu * exy;
+            P->V[q] *= 1 + exx + eyy;
+        }
+    }
+}
+
 static uint64_t hash(const prob *P)
 {
     uint64_t h = 1469598103934665603ull;
@@ -255,19 +336,30 @@ int main(int argc, char **argv)
 {
     double h = argc > 1 ? atof(argv[1]) : 0.005;
     int steps = argc > 2 ? atoi(argv[2]) : 300;
-    const char *names[4] = {"passes", "fused", "blocks", "lanes"};
-    void (*fn[4])(prob *) = {step_passes, step_fused, step_blocks, step_lanes};
-    for (int v = 0; v < 4; v++) {
+    const char *names[5] = {"passes", "fused", "blocks", "lanes", "cells"};
+    void (*fn[5])(prob *) = {step_passes, step_fused, step_blocks, step_lanes, step_cells};
+    double *x0 = NULL, *s0 = NULL;   /* the first form's positions and stresses */
+    for (int v = 0; v < 5; v++) {
         prob P;
         setup(&P, h);
-        if (v > 0)   /* the first step's sums, for the fused passes to take up */
+        if (v > 0 && v < 4)   /* the first step's sums, for the fused passes to take up */
             for (size_t q = 0; q < P.n; q++) scatter_one(&P, q, P.f);
         double t0 = now();
         for (int s = 0; s < steps; s++) fn[v](&P);
         double t1 = now();
-        printf("%-7s %zu particles %d steps: %.2f M particle-steps/s, state %016llx\n", names[v],
-               P.n, steps, (double)P.n * steps / (t1 - t0) / 1e6,
-               (unsigned long long)hash(&P));
+        double dx = 0, ds = 0, smax = 0;
+        if (!x0) {
+            x0 = P.x;
+            s0 = P.sxx;
+        }
+        for (size_t q = 0; q < P.n; q++) {
+            dx = fmax(dx, fabs(P.x[q] - x0[q]));
+            ds = fmax(ds, fabs(P.sxx[q] - s0[q]));
+            smax = fmax(smax, fabs(s0[q]));
+        }
+        printf("%-7s %zu particles %d steps: %.2f M particle-steps/s, state %016llx, "
+               "from passes' |dx| %.0e |dsxx| %.0e of %.2g\n", names[v], P.n, steps,
+               (double)P.n * steps / (t1 - t0) / 1e6, (unsigned long long)hash(&P), dx, ds, smax);
     }
     return 0;
 }
