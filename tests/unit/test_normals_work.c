@@ -6,7 +6,10 @@
  *    before (one column at a time): the same solution, bit for bit;
  *  - lm_lsq_qr_ws (stack and caller's buffer) against lm_lsq_qr_cond;
  *  - one workspace reused over membranes of several sizes (growing and
- *    shrinking, every orientation) against a fresh lm_normals_grid. */
+ *    shrinking, every orientation) against a fresh lm_normals_grid;
+ *  - the normals of two points at a time (lm_nfit_normal2, SSE2 lanes)
+ *    against two calls of lm_nfit_normal: the same bits and flags, points
+ *    on and a rounding outside the element, flat and NaN fits included. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -221,10 +224,60 @@ static void test_workspace_reuse(void)
     CHECK(w.cap == 0 && w.idx == NULL);
 }
 
+/* lm_nfit_normal2 = two lm_nfit_normal, bit for bit: random quadratic
+ * fits on boxes of random size and aspect, points inside, on the edges
+ * and a little outside (the general path), fits flat enough to leave the
+ * normal undefined, and a NaN coefficient. */
+static void test_normal_pair_bits(void)
+{
+    unsigned seed = 12345;
+    int tried = 0, same = 0, undefined = 0, outside = 0;
+    for (int t = 0; t < 2000; t++) {
+        lm_nfit f;
+        memset(&f, 0, sizeof f);
+        f.dim = 2;
+        f.basis = LM_NB_QUADRATIC;
+        f.n = 9;
+        double x0 = urand(&seed) - 0.5, y0 = urand(&seed) - 0.5;
+        double w = 0.01 + urand(&seed), hgt = w * (0.25 + 4 * urand(&seed));
+        f.box = (lm_nbox){2, {x0, y0, 0}, {x0 + w, y0 + hgt, 0}};
+        int flat = t % 7 == 0;          /* phi = 1 within 1e-13: no gradient */
+        for (int I = 0; I < 9; I++)
+            f.phi[I] = flat ? 1.0 + 1e-13 * urand(&seed) : 2 * urand(&seed) - 1;
+        if (t % 97 == 0)
+            f.phi[3] = NAN;
+        double p[2][3];
+        for (int l = 0; l < 2; l++) {
+            double u = urand(&seed), v = urand(&seed);
+            int k = (int)(urand(&seed) * 8);
+            if (k == 0) u = 0.0;                        /* on an edge */
+            if (k == 1) v = 1.0;
+            if (k == 2) u = 1.0 + 1e-12;                /* a rounding outside */
+            if (k == 3) v = -1e-9;
+            p[l][0] = x0 + u * w;
+            p[l][1] = y0 + v * hgt;
+            p[l][2] = 0.0;
+            outside += k == 2 || k == 3;
+        }
+        double na[3], nb[3], ra[3], rb[3];
+        int bad[2];
+        lm_nfit_normal2(&f, p[0], p[1], na, nb, bad);
+        int ba = lm_nfit_normal(&f, p[0], ra), bb = lm_nfit_normal(&f, p[1], rb);
+        tried++;
+        same += memcmp(na, ra, sizeof na) == 0 && memcmp(nb, rb, sizeof nb) == 0 &&
+                bad[0] == ba && bad[1] == bb;
+        undefined += (ba != 0) + (bb != 0);
+    }
+    CHECK(same == tried);
+    CHECK(undefined > 100);     /* the flat and NaN fits were reached */
+    CHECK(outside > 100);       /* and the general path */
+}
+
 int main(void)
 {
     test_qr_bits();
     test_qr_ws_deficient();
     test_workspace_reuse();
+    test_normal_pair_bits();
     return CHECK_DONE();
 }
