@@ -478,16 +478,34 @@ lm_status lm_step_check_report(lm_sim *sim, size_t first)
     /* a membrane that tore lets its points fly: the tear is the news */
     if (lm_membrane_check_torn(sim) != LM_OK) return LM_ERR_UNSTABLE;
     const lm_k_box box = lm_k_box_of(&sim->grid);
+    /* USL divides a node's momentum and force by its own mass: a surface
+     * particle on or a rounding past a cell edge gives a node a mass of
+     * 1e-16 of its own and the velocity gradient a force divided by it,
+     * at any dt ([T] §8.1, the dissertation's "division by a very small
+     * grid mass", cured by the momentum form, MUSL). Measured: a disk at
+     * cell 0.005 stepping h/60 a step lands on the edges and fails at step
+     * 46 (docs/robustness.md, the 1-D bar's USL paragraphs). */
+    const int usl = sim->def.scheme == LM_USL;
     switch (lm_k_check(&sim->p, first, &box)) {
     case 1:
         return fail(sim, LM_ERR_UNSTABLE, first, "became NaN or infinite",
-                    "the time step is too large (raise stability: "
-                    "lower dt) or a material parameter is extreme");
+                    usl ? "the time step is too large (raise stability: lower dt), "
+                          "a material parameter is extreme, or, with scheme = \"usl\", "
+                          "a node of tiny mass (a surface particle on or just past a "
+                          "cell edge) whose force USL divides by that mass: "
+                          "scheme = \"musl\" does not"
+                        : "the time step is too large (raise stability: "
+                          "lower dt) or a material parameter is extreme");
     case 2:
         return fail(sim, LM_ERR_UNSTABLE, first,
                     "was compressed to zero or negative volume",
-                    "element inversion: the time step is too large or "
-                    "the material too soft for the load");
+                    usl ? "element inversion: the time step is too large or the "
+                          "material too soft for the load, or, with scheme = \"usl\", "
+                          "a node of tiny mass (a surface particle on or just past a "
+                          "cell edge) whose force USL divides by that mass: "
+                          "scheme = \"musl\" does not"
+                        : "element inversion: the time step is too large or "
+                          "the material too soft for the load");
     default:
         return fail(sim, LM_ERR_DOMAIN, first, "left the domain",
                     "the domain is too small for the motion, or a "
