@@ -2,23 +2,22 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "arrays.h"
 #include "mpm.h"
 #include "particles.h"
 
-/* Grows every array together; on failure nothing is lost (realloc keeps the
- * old block) and the capacity is unchanged. */
-static int grow(void **a, size_t size, size_t cap)
-{
-    void *q = realloc(*a, size * cap);
-    if (!q) return -1;
-    *a = q;
-    return 0;
-}
+/* Every array, with its element size: its place in the list is its
+ * offset in the page (arrays.h). The stencil's weights and gradients (N,
+ * Gx, Gy) hold ns per particle and exist for the 3 x 3 bases only (lm_sim_new
+ * sets ns from the basis before the first particle). */
+typedef struct field {
+    void **a;
+    size_t size;
+} field;
 
-int lm_particles_reserve(lm_particles *p, size_t cap)
+static int fields(lm_particles *p, field f[32])
 {
-    if (cap <= p->cap) return 0;
-    size_t d = sizeof(double);
+    size_t d = sizeof(double), ns = p->ns > 4 ? (size_t)p->ns : 0;
     void **dbl[] = {(void **)&p->x, (void **)&p->y, (void **)&p->vx,
                     (void **)&p->vy, (void **)&p->m, (void **)&p->rho,
                     (void **)&p->sxx, (void **)&p->syy, (void **)&p->sxy,
@@ -26,33 +25,43 @@ int lm_particles_reserve(lm_particles *p, size_t cap)
                     (void **)&p->tx, (void **)&p->ty, (void **)&p->e,
                     (void **)&p->q, (void **)&p->ev, (void **)&p->L0,
                     (void **)&p->fpx, (void **)&p->fpy, (void **)&p->lx,
-                    (void **)&p->ly, (void **)&p->r0};
-    for (size_t k = 0; k < sizeof dbl / sizeof dbl[0]; k++)
-        if (grow(dbl[k], d, cap)) return -1;
-    /* the stencil's weights and gradients: ns per particle (lm_sim_new
-     * sets it from the basis before the first particle) */
-    size_t ns = p->ns > 0 ? (size_t)p->ns : 4;
-    if (ns > 4 && (grow((void **)&p->N, ns * d, cap) || grow((void **)&p->Gx, ns * d, cap) ||
-                   grow((void **)&p->Gy, ns * d, cap)))
-        return -1;
-    if (grow((void **)&p->xi, d, cap) || grow((void **)&p->eta, d, cap) ||
-        grow((void **)&p->body, sizeof(int), cap) ||
-        grow((void **)&p->mat, sizeof(int), cap) ||
-        grow((void **)&p->node, sizeof(int), cap) ||
-        grow((void **)&p->pin, sizeof(int), cap))
-        return -1;
+                    (void **)&p->ly, (void **)&p->r0, (void **)&p->xi,
+                    (void **)&p->eta};
+    int n = 0;
+    for (size_t k = 0; k < sizeof dbl / sizeof dbl[0]; k++) f[n++] = (field){dbl[k], d};
+    f[n++] = (field){(void **)&p->body, sizeof(int)};
+    f[n++] = (field){(void **)&p->mat, sizeof(int)};
+    f[n++] = (field){(void **)&p->node, sizeof(int)};
+    f[n++] = (field){(void **)&p->pin, sizeof(int)};
+    if (ns) {
+        f[n++] = (field){(void **)&p->N, ns * d};
+        f[n++] = (field){(void **)&p->Gx, ns * d};
+        f[n++] = (field){(void **)&p->Gy, ns * d};
+    }
+    return n;
+}
+
+/* Grows every array together; on failure nothing is lost (the arrays
+ * already grown keep the old contents in the larger block) and the
+ * capacity is unchanged. */
+int lm_particles_reserve(lm_particles *p, size_t cap)
+{
+    if (cap <= p->cap) return 0;
+    field f[32];
+    int n = fields(p, f);
+    for (int k = 0; k < n; k++) {
+        void *b = lm_arr_grow(*f[k].a, p->cap, cap, f[k].size, k);
+        if (!b) return -1;
+        *f[k].a = b;
+    }
     p->cap = cap;
     return 0;
 }
 
 void lm_particles_free(lm_particles *p)
 {
-    free(p->x); free(p->y); free(p->vx); free(p->vy); free(p->m);
-    free(p->rho); free(p->sxx); free(p->syy); free(p->sxy); free(p->szz);
-    free(p->et); free(p->ds); free(p->tx); free(p->ty);
-    free(p->e); free(p->q); free(p->ev); free(p->lx); free(p->ly);
-    free(p->L0); free(p->fpx); free(p->fpy); free(p->pin); free(p->r0);
-    free(p->N); free(p->Gx); free(p->Gy); free(p->xi); free(p->eta);
-    free(p->body); free(p->mat); free(p->node);
+    field f[32];
+    int n = fields(p, f);
+    for (int k = 0; k < n; k++) lm_arr_free(*f[k].a);
     memset(p, 0, sizeof *p);
 }

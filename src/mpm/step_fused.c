@@ -25,6 +25,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "arrays.h"
 #include "step.h"
 #include "step_kernels.h"
 #include "threads.h"
@@ -67,9 +68,9 @@ static int one_pass(const lm_sim *sim)
 void lm_ahead_free(struct lm_ahead *a)
 {
     if (!a) return;
-    for (int k = 0; k < 5; k++) free(a->f[k]);
-    free(a->ux);
-    free(a->uy);
+    for (int k = 0; k < 5; k++) lm_arr_free(a->f[k]);
+    lm_arr_free(a->ux);
+    lm_arr_free(a->uy);
     free(a);
 }
 
@@ -90,9 +91,11 @@ lm_status lm_ahead_reserve(lm_sim *sim)
     if (!a) return LM_ERR_MEMORY;
     a->nn = nn;
     int ok = 1;
-    for (int k = 0; k < 5; k++) ok &= (a->f[k] = calloc(nn, sizeof(double))) != NULL;
-    ok &= (a->ux = calloc(nn, sizeof(double))) != NULL;
-    ok &= (a->uy = calloc(nn, sizeof(double))) != NULL;
+    /* offsets 9..15, after the grid's nine (sim.c, grid_alloc): the two
+     * sets trade places step by step and stay apart */
+    for (int k = 0; k < 5; k++) ok &= (a->f[k] = lm_arr_alloc(nn, sizeof(double), 9 + k, 1)) != NULL;
+    ok &= (a->ux = lm_arr_alloc(nn, sizeof(double), 14, 1)) != NULL;
+    ok &= (a->uy = lm_arr_alloc(nn, sizeof(double), 15, 1)) != NULL;
     if (ok) return LM_OK;
     lm_ahead_free(a);
     sim->ahead = NULL;
