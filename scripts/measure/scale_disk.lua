@@ -4,9 +4,9 @@
 --   /usr/bin/time -v lamina run scripts/measure/scale_disk.lua --set n=1e7
 -- prints the particle count, the seeding and stepping times; the maximum
 -- resident set size of `time -v` over the count is the memory per particle
--- (grid included). Measured 2026-12-02 (load 8 on 2 cores): 10 000 019
--- particles, grid 1788 x 1788, 3.17 GB (317 bytes a particle), seeding
--- 6.3 s, 3 steps 24.5 s; 10^6: 367 MB (367 bytes).
+-- (grid included). Measured 2026-12-03 (idle): 10 000 019 particles,
+-- grid 1788 x 1788, 2.57 GB (257 bytes a particle), seeding 0.8 s, 3 steps
+-- 1.9 s; 10^6: 307 MB (307 bytes) - docs/performance.md "Scale and memory".
 local n_target = lamina.param("n", 1e7)
 local steps = lamina.param("steps", 3)
 local ppc = 4

@@ -9,35 +9,57 @@
 
 #define PAGE 4096u
 
-void *lm_arr_alloc(size_t n, size_t size, int k, int zero)
+/* Where array k goes in a block at raw: the first page start past room
+ * for the block's address, then the array's offset in the page. */
+static unsigned char *place(unsigned char *raw, int k)
 {
-    if (size && n > (SIZE_MAX - 2 * PAGE) / size) return NULL;
-    size_t bytes = n * size;
-    unsigned char *raw = malloc(bytes + 2 * PAGE);
-    if (!raw) return NULL;
-    /* the first page start past room for the block's address, then the
-     * array's offset in it */
     uintptr_t at = ((uintptr_t)raw + sizeof(void *) + PAGE - 1) & ~(uintptr_t)(PAGE - 1);
     at += ((size_t)k * LM_ARR_STAGGER) % PAGE;
-    unsigned char *a = raw + (at - (uintptr_t)raw);
+    return raw + (at - (uintptr_t)raw);
+}
+
+static unsigned char *raw_of(void *a)
+{
+    unsigned char *raw;
+    memcpy(&raw, (unsigned char *)a - sizeof(void *), sizeof raw);
+    return raw;
+}
+
+static int too_big(size_t n, size_t size)
+{
+    return size && n > (SIZE_MAX - 2 * PAGE) / size;
+}
+
+void *lm_arr_alloc(size_t n, size_t size, int k, int zero)
+{
+    if (too_big(n, size)) return NULL;
+    unsigned char *raw = malloc(n * size + 2 * PAGE);
+    if (!raw) return NULL;
+    unsigned char *a = place(raw, k);
     memcpy(a - sizeof(void *), &raw, sizeof raw);
-    if (zero) memset(a, 0, bytes);
+    if (zero) memset(a, 0, n * size);
     return a;
 }
 
+/* By realloc, so that a large block grows in place (mremap: no copy and
+ * no second block at once - a 10^7-particle run's peak memory); the
+ * contents move only if the block's new address puts the array's page
+ * offset elsewhere. */
 void *lm_arr_grow(void *a, size_t old_n, size_t n, size_t size, int k)
 {
-    void *b = lm_arr_alloc(n, size, k, 0);
-    if (!b) return NULL;
-    if (a) memcpy(b, a, (old_n < n ? old_n : n) * size);
-    lm_arr_free(a);
+    if (!a) return lm_arr_alloc(n, size, k, 0);
+    if (too_big(n, size)) return NULL;
+    unsigned char *raw = raw_of(a);
+    size_t off = (size_t)((unsigned char *)a - raw);
+    unsigned char *nr = realloc(raw, n * size + 2 * PAGE);
+    if (!nr) return NULL;
+    unsigned char *b = place(nr, k);
+    if (b != nr + off) memmove(b, nr + off, (old_n < n ? old_n : n) * size);
+    memcpy(b - sizeof(void *), &nr, sizeof nr);
     return b;
 }
 
 void lm_arr_free(void *a)
 {
-    if (!a) return;
-    void *raw;
-    memcpy(&raw, (unsigned char *)a - sizeof(void *), sizeof raw);
-    free(raw);
+    if (a) free(raw_of(a));
 }

@@ -28,8 +28,9 @@
  * 4096) into a page; zeroed when `zero`. NULL when out of memory or n *
  * size overflows. */
 void *lm_arr_alloc(size_t n, size_t size, int k, int zero);
-/* A new array of n elements at the same offset with old_n elements of `a`
- * copied (the rest unset), `a` freed; NULL with `a` untouched on failure. */
+/* `a` (old_n elements; NULL: none) grown to n elements at the same page
+ * offset, its contents kept (the rest unset); NULL with `a` untouched on
+ * failure. */
 void *lm_arr_grow(void *a, size_t old_n, size_t n, size_t size, int k);
 /* Frees an array of lm_arr_alloc / lm_arr_grow (NULL: nothing). */
 void lm_arr_free(void *a);
