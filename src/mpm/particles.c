@@ -15,7 +15,10 @@ typedef struct field {
     size_t size;
 } field;
 
-static int fields(lm_particles *p, field f[32])
+/* 25 arrays of doubles, 4 of ints, 3 of stencils: 32, a page's offsets */
+enum { FIELDS_MAX = 32 };
+
+static int fields(lm_particles *p, field f[FIELDS_MAX])
 {
     size_t d = sizeof(double), ns = p->ns > 4 ? (size_t)p->ns : 0;
     void **dbl[] = {(void **)&p->x, (void **)&p->y, (void **)&p->vx,
@@ -47,7 +50,7 @@ static int fields(lm_particles *p, field f[32])
 int lm_particles_reserve(lm_particles *p, size_t cap)
 {
     if (cap <= p->cap) return 0;
-    field f[32];
+    field f[FIELDS_MAX];
     int n = fields(p, f);
     for (int k = 0; k < n; k++) {
         void *b = lm_arr_grow(*f[k].a, p->cap, cap, f[k].size, k);
@@ -60,7 +63,7 @@ int lm_particles_reserve(lm_particles *p, size_t cap)
 
 void lm_particles_free(lm_particles *p)
 {
-    field f[32];
+    field f[FIELDS_MAX];
     int n = fields(p, f);
     for (int k = 0; k < n; k++) lm_arr_free(*f[k].a);
     memset(p, 0, sizeof *p);

@@ -485,27 +485,22 @@ lm_status lm_step_check_report(lm_sim *sim, size_t first)
      * grid mass", cured by the momentum form, MUSL). Measured: a disk at
      * cell 0.005 stepping h/60 a step lands on the edges and fails at step
      * 46 (docs/robustness.md, the 1-D bar's USL paragraphs). */
-    const int usl = sim->def.scheme == LM_USL;
+    const char *usl = sim->def.scheme == LM_USL
+                          ? ", or, with scheme = \"usl\", a node of tiny mass (a surface "
+                            "particle on or just past a cell edge) whose force USL divides "
+                            "by that mass: scheme = \"musl\" does not"
+                          : "";
+    char cause[320];
     switch (lm_k_check(&sim->p, first, &box)) {
     case 1:
-        return fail(sim, LM_ERR_UNSTABLE, first, "became NaN or infinite",
-                    usl ? "the time step is too large (raise stability: lower dt), "
-                          "a material parameter is extreme, or, with scheme = \"usl\", "
-                          "a node of tiny mass (a surface particle on or just past a "
-                          "cell edge) whose force USL divides by that mass: "
-                          "scheme = \"musl\" does not"
-                        : "the time step is too large (raise stability: "
-                          "lower dt) or a material parameter is extreme");
+        snprintf(cause, sizeof cause, "the time step is too large (raise stability: "
+                 "lower dt)%s a material parameter is extreme%s", *usl ? "," : " or", usl);
+        return fail(sim, LM_ERR_UNSTABLE, first, "became NaN or infinite", cause);
     case 2:
+        snprintf(cause, sizeof cause, "element inversion: the time step is too large or "
+                 "the material too soft for the load%s", usl);
         return fail(sim, LM_ERR_UNSTABLE, first,
-                    "was compressed to zero or negative volume",
-                    usl ? "element inversion: the time step is too large or the "
-                          "material too soft for the load, or, with scheme = \"usl\", "
-                          "a node of tiny mass (a surface particle on or just past a "
-                          "cell edge) whose force USL divides by that mass: "
-                          "scheme = \"musl\" does not"
-                        : "element inversion: the time step is too large or "
-                          "the material too soft for the load");
+                    "was compressed to zero or negative volume", cause);
     default:
         return fail(sim, LM_ERR_DOMAIN, first, "left the domain",
                     "the domain is too small for the motion, or a "
