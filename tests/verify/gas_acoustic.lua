@@ -7,7 +7,7 @@
 -- c = sqrt(gamma p / rho) = 1.18322; the mode sin(pi x / L) cos(omega t)
 -- with omega = pi c / L, period 2 L / c = 1.69031. The mean velocity of the
 -- left half follows cos(omega t). Measured: the period from its upward zero
--- crossings over 3 periods. Resolution: level 1, 2, 3 = 10, 20, 40 cells.
+-- crossings over 4 periods. Resolution: level 1, 2, 3 = 10, 20, 40 cells.
 local V = require("lib.vcase")
 local L, rho, p, g = 1.0, 1, 1, 1.4
 local c = math.sqrt(g * p / rho)
@@ -27,6 +27,6 @@ local rec = sim:record{ every = P / 100, values = { v = function()
   end
   return mv / m
 end } }
-sim:run{ t_end = 3.05 * P }
+sim:run{ t_end = 4.05 * P }
 local period = V.period(rec:column("t"), rec:column("v"), 0)
 V.result{ quantity = "period", value = period, exact = P, h = h }
