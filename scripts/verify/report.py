@@ -290,7 +290,7 @@ def main():
                 L.append("| %s | %s | %s |" % (cfg_name(k), " | ".join(cells),
                                                order(rs[0], rs[1]) if len(rs) > 1 else ""))
             L.append("")
-    open(os.path.join("docs", "verification.md"), "w").write("\n".join(L) + "\n")
+    open("docs/verification.md", "w").write("\n".join(L) + "\n")
     # README table: one row per case, its worst quantity on the default at the coarse level
     R = ["| case | quantity (the default's worst) | default, coarse | default, fine | papers', coarse | papers', fine |",
          "| --- | --- | --- | --- | --- | --- |"]
