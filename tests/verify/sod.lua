@@ -1,0 +1,48 @@
+-- Verification case (issue 30 item 1): Sod's shock tube, both plateaus
+-- ([F] §4.1's tube: left rho 1, p 1; right rho 0.125, p 0.1; gamma 1.4, at
+-- rest, the diaphragm at x = 0.5; the paper's artificial viscosity; a tube
+-- one cell tall between symmetry walls, {3, 1} points a cell; t = 0.143).
+-- Exact: the Riemann problem's solution (Toro, Riemann Solvers §4.2-4.3):
+-- the star pressure p* is the root of f_L(p) + f_R(p) = 0 (a rarefaction
+-- to the left, a shock to the right), found by Newton's method at run time
+-- (assets/lua/riemann.lua: computed here, not tabulated); the left plateau
+-- (between the fan's tail and the contact) has p* and
+-- rho*_L = rho_L (p*/p_L)^(1/gamma), the right one (contact to shock) p*
+-- and rho*_R from the shock's Rankine-Hugoniot relation. Measured: the mean
+-- pressure and density of the particles on each plateau, a fifth of each
+-- plateau kept clear at both ends. Resolution: level 1, 2, 3 = cell 0.01,
+-- 0.005 ([F]'s), 0.0025.
+local V = require("lib.vcase")
+local riemann = require("riemann")
+local g = 1.4
+local ex = riemann.solve{ left = {1, 0, 1}, right = {0.125, 0, 0.1}, gamma = g }
+local dx = 0.02 / 2 ^ V.level
+local sim = V.sim{ domain = {0, 0, 1, dx}, cell = dx, dt = 1e-4 * math.min(1, dx / 0.005),
+                   boundary = { left = "fixed", right = "fixed", bottom = "symmetry", top = "symmetry" } }
+local hi = lamina.gas{ rho = 1, p = 1, gamma = g, av = true }
+local lo = lamina.gas{ rho = 0.125, p = 0.1, gamma = g, av = true }
+local bodies = {
+  sim:body{ material = hi, ppc = {3, 1}, region = lamina.rect{ x0 = 0, y0 = 0, x1 = 0.5, y1 = dx } },
+  sim:body{ material = lo, ppc = {3, 1}, region = lamina.rect{ x0 = 0.5, y0 = 0, x1 = 1, y1 = dx } } }
+sim:run{ t_end = 0.143 }
+local t = sim.t
+local cl = math.sqrt(g * 1 / 1)
+local xt = 0.5 + (ex.u_star - cl * (ex.p_star / 1) ^ ((g - 1) / (2 * g))) * t   -- fan tail
+local xc = 0.5 + ex.u_star * t                                                  -- contact
+local xs = 0.5 + ex.shock_speed * t                                             -- shock
+local function mean(a, b, field)
+  local lo_, hi_ = a + 0.2 * (b - a), b - 0.2 * (b - a)
+  local s, n = 0, 0
+  for _, body in ipairs(bodies) do
+    local q = body:particles()
+    for i = 1, q.n do
+      if q.x[i] > lo_ and q.x[i] < hi_ then s, n = s + q[field][i], n + 1 end
+    end
+  end
+  assert(n > 0, "no particle on the plateau")
+  return s / n
+end
+V.result{ quantity = "p_left_plateau", value = mean(xt, xc, "p"), exact = ex.p_star, h = dx }
+V.result{ quantity = "p_right_plateau", value = mean(xc, xs, "p"), exact = ex.p_star, h = dx }
+V.result{ quantity = "rho_left_plateau", value = mean(xt, xc, "rho"), exact = ex.rho_star_left, h = dx }
+V.result{ quantity = "rho_right_plateau", value = mean(xc, xs, "rho"), exact = ex.rho_star_right, h = dx }
