@@ -275,7 +275,8 @@ static void index_markdown(FILE *f, const g_options *o, const row *rows, size_t 
                "`lamina gallery`. A thumbnail leads to the figure's page: what to look "
                "for, the numbers measured beside the paper's, the full-size images. "
                "How to add a figure: `docs/gallery.md`. The same "
-               "table as a web page: [index.html](index.html).\n\n", o->scripts);
+               "figures as a grid of cards, each with at most three headline checks: "
+               "[index.html](index.html).\n\n", o->scripts);
     if (n == 0) {
         fprintf(f, "No figures yet: `%s/` has no scripts.\n", o->scripts);
         return;
@@ -302,54 +303,161 @@ static void index_markdown(FILE *f, const g_options *o, const row *rows, size_t 
     g_coverage_markdown(f, o);
 }
 
+/* ---- the web page: a grid of cards ------------------------------------ */
+
+#define HEADLINES 3
+
+/* The values a card shows (issue 32 item 9: at most three, the full list
+ * on the figure's page): first those beside the paper's number with a
+ * tolerance (a ✓ or ✗), then those beside lamina's own reference with one,
+ * then the paper's numbers without; each pass in the report's order. */
+static size_t headlines(const lu_json *meta, const lu_json *out[HEADLINES])
+{
+    const lu_json *vals = values_of(meta);
+    size_t n = 0;
+    for (int pass = 0; pass < 3 && vals; pass++)
+        for (size_t k = 0; k < vals->n && n < HEADLINES; k++) {
+            const lu_json *e = &vals->kids[k];
+            int paper = lu_json_get(e, "paper") != NULL, ref = lu_json_get(e, "ref") != NULL;
+            int tol = lu_json_get(e, "tol") != NULL;
+            if ((pass == 0 && paper && tol) || (pass == 1 && !paper && ref && tol) ||
+                (pass == 2 && paper && !tol))
+                out[n++] = e;
+        }
+    return n;
+}
+
+/* One headline: name (its unit as the tooltip), the paper's number (or
+ * "ours" and lamina's reference) with its tolerance, lamina's value, the
+ * mark. */
+static void headline_row(FILE *f, const lu_json *e)
+{
+    int is_paper = lu_json_get(e, "paper") != NULL;
+    char *v = show(lu_json_get(e, "value")), *p = show(target(e)),
+         *t = show(lu_json_get(e, "tol"));
+    const char *m = mark(e);
+    fputs("<tr><td", f);
+    const char *unit = lu_json_string(e, "unit");
+    if (unit) {
+        fputs(" title=\"", f);
+        g_html(f, unit);
+        fputc('"', f);
+    }
+    fputc('>', f);
+    g_html(f, lu_json_string(e, "name"));
+    fputs("</td><td>", f);
+    if (!is_paper)
+        fputs("ours ", f);
+    g_html(f, p);
+    if (t) {
+        fputs(" ± ", f);
+        g_html(f, t);
+    }
+    fputs("</td><td>", f);
+    g_html(f, v);
+    fprintf(f, "</td><td class=\"%s\">%s</td></tr>\n",
+            strstr(m, "✓") ? "ok" : strstr(m, "✗") ? "miss" : "", m);
+    free(v);
+    free(p);
+    free(t);
+}
+
+static void card(FILE *f, const row *r)
+{
+    const g_script *s = r->s;
+    fputs("<div class=\"card\">\n", f);
+    if (r->has_thumb) {
+        fprintf(f, "<a href=\"%s/%s\"><img src=\"%s/%s\" alt=\"", s->stem, G_PAGE, s->stem,
+                G_THUMB);
+        g_html(f, s->stem);
+        fputs("\"></a>\n", f);
+    } else {
+        fputs("<div class=\"nothumb\">not rendered yet</div>\n", f);
+    }
+    fprintf(f, "<h2><a href=\"%s/%s\">", s->stem, G_PAGE);
+    g_html(f, s->h.title ? s->h.title : s->stem);
+    fputs("</a></h2>\n<p class=\"src\">", f);
+    g_html(f, s->h.source);
+    fputs("</p>\n", f);
+    const lu_json *h[HEADLINES];
+    size_t nh = headlines(r->meta, h);
+    if (nh) {
+        fputs("<table class=\"checks\">\n<tr><th>check</th><th>paper</th>"
+              "<th>lamina</th><th></th></tr>\n", f);
+        for (size_t i = 0; i < nh; i++)
+            headline_row(f, h[i]);
+        fputs("</table>\n", f);
+    }
+    const lu_json *vals = values_of(r->meta);
+    size_t nv = vals ? vals->n : 0;
+    /* no run time here (the page has it): the card stays the same from
+     * run to run, so its screenshot can be compared */
+    fprintf(f, "<p class=\"more\"><a href=\"%s/%s\">", s->stem, G_PAGE);
+    if (nv > nh && nv > 1)
+        fprintf(f, "all %zu values", nv);
+    else
+        fputs("the page", f);
+    fputs("</a></p>\n</div>\n", f);
+}
+
+/* A grid of cards as sphinx-gallery's and raylib's example indexes are
+ * (issue 32 item 9): thumbnail, title, source, at most three headline
+ * checks; it wraps to the window and fits 1400 px without scrolling
+ * sideways (tests/visual/index_*.sh screenshots it). */
 static void index_html(FILE *f, const g_options *o, const row *rows, size_t n)
 {
     fputs("<!DOCTYPE html>\n<!-- written by `lamina gallery`: edit the scripts, not this "
           "file (docs/gallery.md) -->\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+          "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
           "<title>lamina gallery</title>\n<style>\n"
-          "body { font-family: sans-serif; margin: 2em; color: #222; }\n"
-          "table { border-collapse: collapse; }\n"
-          "th, td { border: 1px solid #ccc; padding: 6px 10px; vertical-align: top; "
+          "body { font-family: sans-serif; margin: 1.5em; color: #222; "
+          "overflow-wrap: anywhere; }\n"
+          ".grid { display: grid; grid-template-columns: repeat(auto-fill, minmax(280px, 1fr)); "
+          "gap: 14px; }\n"
+          ".card { border: 1px solid #ccc; border-radius: 4px; padding: 8px; min-width: 0; }\n"
+          ".card img { display: block; max-width: 100%; height: auto; margin: 0 auto; }\n"
+          ".nothumb { height: 120px; background: #f4f4f4; color: #888; text-align: center; "
+          "line-height: 120px; }\n"
+          ".card h2 { font-size: 1em; margin: 8px 0 4px; }\n"
+          ".card h2 a { color: #124; text-decoration: none; }\n"
+          ".src { font-size: 0.8em; color: #555; margin: 0 0 6px; }\n"
+          ".checks { width: 100%; border-collapse: collapse; font-size: 0.78em; "
+          "table-layout: fixed; }\n"
+          ".checks th, .checks td { border-top: 1px solid #e4e4e4; padding: 2px 3px; "
+          "text-align: left; vertical-align: top; }\n"
+          ".checks th { color: #666; font-weight: normal; }\n"
+          ".checks th:nth-child(1) { width: 42%; } .checks th:nth-child(2) { width: 30%; }\n"
+          ".checks th:nth-child(4) { width: 1.2em; }\n"
+          "td.ok { color: #1a7f37; } td.miss { color: #c62828; font-weight: bold; }\n"
+          ".more { font-size: 0.78em; color: #666; margin: 6px 0 0; }\n"
+          "table { border-collapse: collapse; max-width: 100%; }\n"
+          "th, td { border: 1px solid #ccc; padding: 4px 8px; vertical-align: top; "
           "text-align: left; }\n"
           "th { background: #f4f4f4; }\n"
+          ".checks th { background: none; border-left: 0; border-right: 0; "
+          "border-bottom: 0; }\n"
+          ".checks td { border-left: 0; border-right: 0; border-bottom: 0; }\n"
           "td.num { white-space: nowrap; }\n"
           "</style>\n</head>\n<body>\n<h1>lamina gallery</h1>\n", f);
-    fputs("<p>Every reproduced figure, made again from its script in <code>", f);
-    g_html(f, o->scripts);
-    fputs("/</code> by <code>lamina gallery</code>. A thumbnail leads to the figure's page "
-          "(<a href=\"README.md\">README.md</a> is this table for GitHub).</p>\n", f);
+    /* the scripts' folder is not named here (README.md names it): the page
+     * then does not depend on where the checkout lies, and its screenshot
+     * can be compared anywhere */
+    fputs("<p>Every reproduced figure, made again from its script by <code>lamina "
+          "gallery</code>. A thumbnail leads to the figure's page: "
+          "what to look for and every number measured (<a href=\"README.md\">README.md</a> "
+          "lists them all for GitHub). A card shows at most three: the paper's number (or "
+          "lamina's own reference), lamina's, ✓ within the stated tolerance, ✗ outside; "
+          "hover a name for its unit.</p>\n", f);
     if (n == 0) {
         fputs("<p>No figures yet: <code>", f);
         g_html(f, o->scripts);
         fputs("/</code> has no scripts.</p>\n</body>\n</html>\n", f);
         return;
     }
-    fputs("<table>\n<tr><th>Figure</th><th>Title</th><th>Source</th>"
-          "<th>Measured vs paper (or ours)</th><th>Run time</th></tr>\n", f);
-    for (size_t i = 0; i < n; i++) {
-        const g_script *s = rows[i].s;
-        fputs("<tr><td>", f);
-        if (rows[i].has_thumb) {
-            fprintf(f, "<a href=\"%s/%s\"><img src=\"%s/%s\" alt=\"", s->stem, G_PAGE,
-                    s->stem, G_THUMB);
-            g_html(f, s->stem);
-            fputs("\"></a>", f);
-        } else {
-            fputs("—", f);
-        }
-        fprintf(f, "</td><td><a href=\"%s/%s\">", s->stem, G_PAGE);
-        g_html(f, s->h.title ? s->h.title : s->stem);
-        fputs("</a></td><td>", f);
-        g_html(f, s->h.source);
-        fputs("</td><td class=\"num\">", f);
-        put_values(f, rows[i].meta, g_html);
-        char *rt = run_time(rows[i].meta);
-        fputs("</td><td class=\"num\">", f);
-        g_html(f, rt);
-        fputs("</td></tr>\n", f);
-        free(rt);
-    }
-    fputs("</table>\n", f);
+    fputs("<div class=\"grid\">\n", f);
+    for (size_t i = 0; i < n; i++)
+        card(f, &rows[i]);
+    fputs("</div>\n", f);
     g_coverage_html(f, o);
     fputs("</body>\n</html>\n", f);
 }

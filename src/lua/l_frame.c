@@ -115,7 +115,7 @@ int la_sim_frame(lua_State *L)
     f.width = (int)w;
     f.height = (int)h;
     f.backend = backend(L, fn, file, run);
-    la_frame_ctx ctx = { fn, 0, 0 };
+    la_frame_ctx ctx = { fn, 0, 0, 0, 0, 0, 0 };
     lua_newtable(L);
     ctx.anchor = lua_gettop(L);
     lr_panel *p = NULL;
@@ -134,8 +134,17 @@ int la_sim_frame(lua_State *L)
 
     la_prov prov;
     la_provenance(L, &prov);
-    f.text = prov.text;
-    f.ntext = 4;
+    /* lamina:layers: what the frame shows of its membranes, so that a
+     * check can read it from the file (tests/visual/check_membrane_frames.py) */
+    char layers[96];
+    snprintf(layers, sizeof layers, "membranes=%d with_phi=%d phi=%d normals=%d", ctx.membranes,
+             ctx.with_phi, ctx.phi, ctx.normals);
+    lr_text_chunk text[5];
+    memcpy(text, prov.text, sizeof prov.text);
+    text[4].key = "lamina:layers";
+    text[4].value = layers;
+    f.text = text;
+    f.ntext = 5;
     char err[512];
     if (lr_figure_write(&f, file, err, sizeof err))
         return luaL_error(L, "%s: %s", fn, err);

@@ -117,7 +117,8 @@ typedef struct side_store {
 
 /* Membrane normals (the tangent turned +90 degrees, [M] section 3) as
  * arrows one cell long, at every `every`-th point of each membrane. */
-static void normals(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int every, lr_arrows *a)
+static void normals_every(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int every,
+                          lr_arrows *a)
 {
     /* tangents exist from the first step on; before it, from a prepare
      * (which sim:membrane has already run: it cannot fail here unless a
@@ -151,6 +152,56 @@ static void normals(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int every, lr_
     a->width = 1.5;
     a->head = 7.0;
     a->colour = dark;
+}
+
+#define NORMALS_GAP_PX 16.0   /* the default's least gap between drawn arrows */
+
+/* The mean distance between a membrane's consecutive points as they are
+ * now (stretched or not); 0 when it cannot be told. */
+static double membrane_spacing(const lm_sim *sim, const lm_body *bd)
+{
+    if (bd->count < 2) return 0;
+    double sum = 0;
+    for (size_t q = bd->first + 1; q < bd->first + bd->count; q++)
+        sum += hypot(sim->p.x[q] - sim->p.x[q - 1], sim->p.y[q] - sim->p.y[q - 1]);
+    double s = sum / (double)(bd->count - 1);
+    return isfinite(s) && s > 0 ? s : 0;
+}
+
+/* The default (normals = nil): one arrow set per membrane, thinned and
+ * scaled to its spacing by the renderer (lr_arrows.thin): every k-th
+ * point's, k the least with k spacings >= NORMALS_GAP_PX pixels, each
+ * arrow as long as that gap, so that single arrows can be judged at any
+ * zoom (docs/gallery.md, legibility 2). Sets l's arrows (one: the store
+ * of a single set). */
+static void normals_auto(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, lr_layers *l,
+                         lr_arrows *one)
+{
+    int nm = 0;
+    for (int b = 0; b < sim->nbodies; b++)
+        nm += sim->bodies[b].membrane && sim->bodies[b].count > 0;
+    if (nm == 0) return;
+    lr_arrows *sets = nm == 1 ? one : la_frame_scratch(L, ctx, (size_t)nm * sizeof *sets);
+    lr_arrows all;
+    normals_every(L, ctx, sim, 1, &all);
+    size_t at = 0;
+    int k = 0;
+    for (int b = 0; b < sim->nbodies; b++) {
+        const lm_body *bd = &sim->bodies[b];
+        if (!bd->membrane || bd->count == 0) continue;
+        lr_arrows *a = &sets[k++];
+        *a = all;
+        a->n = bd->count;
+        a->x = all.x + at;
+        a->y = all.y + at;
+        a->ux = all.ux + at;
+        a->uy = all.uy + at;
+        a->spacing = membrane_spacing(sim, bd);
+        a->thin = a->spacing > 0 ? NORMALS_GAP_PX : 0;   /* else one cell, every point */
+        at += bd->count;
+    }
+    l->arrows = sets;
+    l->narrows = (size_t)nm;
 }
 
 static int cmp_double(const void *a, const void *b)
@@ -222,9 +273,10 @@ static void pressure_contours(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int 
 typedef struct side_opts {
     int grid;
     field f;
-    int normals;                /* 0, or every k-th point's */
+    int normals;                /* 0 none, -1 the default (thinned to the
+                                   spacing), k every k-th point's */
     int contour_levels;         /* 0: no pressure contours */
-    int phi;
+    int phi;                    /* 0 none, 1 asked (strict), -1 the default */
     int contact_every;          /* 0: no contact arrows */
     double contact_scale;
     int contact_outlined;       /* the table form */
@@ -270,14 +322,25 @@ static void fill_side(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, const side_o
     }
     l->points = st->points;
     l->npoints = la_frame_points(L, ctx, sim, v, &o->pts, &base, st->points);
-    if (o->normals) {
-        normals(L, ctx, sim, o->normals, &st->arrows);
+    int nm = 0, nphi = 0;
+    for (int b = 0; b < sim->nbodies; b++) {
+        nm += sim->bodies[b].membrane && sim->bodies[b].count > 0;
+        nphi += la_membrane_has_phi(&sim->bodies[b]);
+    }
+    ctx->membranes += nm;
+    ctx->with_phi += nphi;
+    ctx->normals += o->normals ? nm : 0;
+    ctx->phi += o->phi ? nphi : 0;
+    if (o->normals > 0) {
+        normals_every(L, ctx, sim, o->normals, &st->arrows);
         l->arrows = &st->arrows;
         l->narrows = 1;
+    } else if (o->normals < 0) {
+        normals_auto(L, ctx, sim, l, &st->arrows);
     }
     if (o->phi) {
         lr_curve *cv;
-        l->ncurves = la_frame_phi(L, ctx, sim, &cv);
+        l->ncurves = la_frame_phi(L, ctx, sim, o->phi > 0, o->pts.band > 0, &cv);
         l->curves = cv;
     }
     if (o->contact_every)
@@ -577,8 +640,9 @@ void la_frame_panel(lua_State *L, la_frame_ctx *ctx, int fidx, int pidx, int sid
     get(L, fidx, pidx, "grid");
     int grid = lua_isnil(L, -1) || lua_toboolean(L, -1);
     lua_pop(L, 1);
-    /* normals = true | false | k (every k-th point's) */
-    int with_normals = 0;
+    /* normals = true | false | k (every k-th point's); nil: thinned to the
+     * spacing (issue 32: a frame shows what the papers show by default) */
+    int with_normals = -1;
     int nt = get(L, fidx, pidx, "normals");
     if (nt == LUA_TBOOLEAN) {
         with_normals = lua_toboolean(L, -1);
@@ -599,7 +663,7 @@ void la_frame_panel(lua_State *L, la_frame_ctx *ctx, int fidx, int pidx, int sid
     side_opts o;
     memset(&o, 0, sizeof o);
     o.own_discs = discs && strcmp(discs, "spacing") == 0;
-    o.phi = boolean(L, ctx, fidx, pidx, "phi", 0);
+    o.phi = boolean(L, ctx, fidx, pidx, "phi", -1);
     contact_opt(L, ctx, fidx, pidx, &o);
     o.pts.band = band_opt(L, ctx, fidx, pidx);
     o.pts.valued = colour_bodies(L, ctx, fidx, pidx, sim, other, f, &o.pts.nvalued);

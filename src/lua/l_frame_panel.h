@@ -17,6 +17,11 @@ typedef struct la_frame_ctx {
     const char *fn;     /* "sim:frame", for messages */
     int anchor;         /* stack index of a table keeping scratch buffers alive */
     int nanchored;
+    /* what the panels drew, for the frame's lamina:layers text (the
+     * gallery's check that membrane frames show phi and normals) */
+    int membranes;      /* membranes shown (both sides of a split panel) */
+    int with_phi;       /* of them, those whose normals' construction has a phi */
+    int phi, normals;   /* of them, those drawn with phi contours / normals */
 } la_frame_ctx;
 
 /* Scratch memory that lives as long as the anchor table (freed by Lua's
@@ -26,9 +31,16 @@ void *la_frame_scratch(lua_State *L, la_frame_ctx *ctx, size_t n);
 /* Fills *p from the panel table at pidx (0: none), each key looked up there
  * first and then in the frame table at fidx; the simulation is the panel's
  * `sim`, else the one at sidx. Raises a Lua error naming a bad key. */
-/* l_frame_phi.c: the membranes' phi contours (phi = true) as curves, one
- * per level, in scratch memory; returns their count. */
-size_t la_frame_phi(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, lr_curve **out);
+/* l_frame_phi.c: the membranes' phi contours as curves, one per level
+ * (phi = 1 twice: its casing, then its ink), in scratch memory; returns
+ * their count. strict (phi = true): a membrane without a phi (colour-
+ * function normals) is an error; else (the default) it is passed over.
+ * hairline: phi = 1 a 1 px line without its casing, over a membrane drawn
+ * as a band (`band`), whose colour is what is read. */
+size_t la_frame_phi(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int strict, int hairline,
+                    lr_curve **out);
+/* Whether a body is a membrane whose normals' construction has a phi. */
+int la_membrane_has_phi(const lm_body *bd);
 
 /* l_frame_points.c: a side's particles as point layers. */
 typedef struct la_frame_points_opts {

@@ -1,6 +1,6 @@
-/* l_frame_phi.c - sim:frame{phi = true}: the membranes' phi contours, as
- * the normals paper draws them ([N] Figs 3-16: phi = 1 bold through the
- * points, other levels thin).
+/* l_frame_phi.c - sim:frame's phi layer (on by default): the membranes'
+ * phi contours, as the normals paper draws them ([N] Figs 3-16: phi = 1
+ * bold through the points, other levels thin).
  *
  * The phi drawn is the construction's own (lm_membrane_phi): for the
  * methods without connectivity the very fit that gave the step's normals,
@@ -21,7 +21,9 @@
 
 #define SAMPLES 12      /* intervals per side of a sampled square */
 #define NLEVELS 4
-static const double levels[NLEVELS] = {0.0, 0.5, 1.0, 1.5};
+/* phi = 1 last, so that it lies over the thin levels where they meet */
+static const double levels[NLEVELS] = {0.0, 0.5, 1.5, 1.0};
+#define BOLD (NLEVELS - 1)
 
 typedef struct seg_buf {
     double *x, *y;      /* segment end points, pairs */
@@ -92,7 +94,16 @@ static void contour_body(const lm_sim *sim, const lm_nreport *rep, int centred, 
     }
 }
 
-size_t la_frame_phi(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, lr_curve **out)
+/* Whether the membrane's normals come from a construction with a phi
+ * (lm_membrane_phi): not the colour-function methods. */
+int la_membrane_has_phi(const lm_body *bd)
+{
+    return bd->membrane && bd->count >= 2 && bd->normals != LM_NORMALS_COLOUR &&
+           bd->normals != LM_NORMALS_QUADRATIC_COLOUR;
+}
+
+size_t la_frame_phi(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int strict, int hairline,
+                    lr_curve **out)
 {
     seg_buf buf[NLEVELS];
     memset(buf, 0, sizeof buf);
@@ -100,6 +111,7 @@ size_t la_frame_phi(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, lr_curve **out
     for (int b = 0; b < sim->nbodies; b++) {
         const lm_body *bd = &sim->bodies[b];
         if (!bd->membrane || bd->count < 2) continue;
+        if (!strict && !la_membrane_has_phi(bd)) continue;  /* the default: where phi exists */
         lm_nreport rep;
         memset(&rep, 0, sizeof rep);
         if (lm_membrane_phi(sim, b, &rep, err, sizeof err) != 0) {
@@ -119,17 +131,28 @@ size_t la_frame_phi(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, lr_curve **out
     for (int k = 0; k < NLEVELS; k++) oom |= buf[k].oom;
     /* the segments move into anchored memory, so a later Lua error in this
      * frame call leaks nothing */
-    lr_curve *cv = la_frame_scratch(L, ctx, NLEVELS * sizeof *cv);
+    lr_curve *cv = la_frame_scratch(L, ctx, (NLEVELS + 1) * sizeof *cv);
     for (int k = 0; k < NLEVELS && !oom; k++) {
         double *xy = la_frame_scratch(L, ctx, 2 * (buf[k].n ? buf[k].n : 1) * sizeof *xy);
         if (buf[k].n) {
             memcpy(xy, buf[k].x, buf[k].n * sizeof *xy);
             memcpy(xy + buf[k].n, buf[k].y, buf[k].n * sizeof *xy);
         }
-        int bold = levels[k] == 1.0;
-        const lr_rgba ink = {0.15, 0.15, 0.15, 1.0}, thin = {0.45, 0.45, 0.45, 0.9};
-        cv[k] = (lr_curve){buf[k].n, xy, xy + buf[k].n, 0, bold ? 2.0 : 0.8,
-                           levels[k] == 0.0 ? 3.0 : 0.0, bold ? ink : thin, 1};
+        const lr_rgba thin = {0.45, 0.45, 0.45, 0.9};
+        cv[k] = (lr_curve){buf[k].n, xy, xy + buf[k].n, 0, 0.8,
+                           levels[k] == 0.0 ? 3.0 : 0.0, thin, 1};
+    }
+    if (!oom) {
+        /* phi = 1 runs through the points ([N] Figs 3-16): drawn over them,
+         * dark on a white casing, so that it reads over discs of any colour
+         * (issue 32: it was hidden under the membrane's discs) */
+        const lr_rgba ink = {0.1, 0.1, 0.1, 1.0}, casing = {1.0, 1.0, 1.0, 0.85};
+        cv[NLEVELS] = cv[BOLD];
+        cv[NLEVELS].width = hairline ? 1.0 : 2.0;
+        cv[NLEVELS].colour = ink;
+        cv[BOLD].width = hairline ? 0.0 : 4.0;
+        cv[BOLD].colour = casing;
+        if (hairline) cv[BOLD].n = 0;   /* a band's colour stays readable */
     }
     for (int k = 0; k < NLEVELS; k++) {
         free(buf[k].x);
@@ -137,7 +160,7 @@ size_t la_frame_phi(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, lr_curve **out
     }
     if (oom) luaL_error(L, "%s: out of memory drawing phi", ctx->fn);
     *out = cv;
-    return NLEVELS;
+    return NLEVELS + 1;
 }
 
 /* The element of rep that answers for (x, y), as contour_body draws them;

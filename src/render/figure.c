@@ -52,6 +52,9 @@ static const char *layers_problem(const lr_layers *l)
         const lr_arrows *a = &l->arrows[i];
         if (a->n > 0 && (!a->x || !a->y || !a->ux || !a->uy))
             return "arrow positions or directions missing";
+        if (!(a->thin >= 0) || !isfinite(a->thin) || !(a->spacing >= 0) ||
+            !isfinite(a->spacing))
+            return "arrows' thinning and spacing must be finite and not negative";
     }
     for (size_t i = 0; i < l->nfields; i++) {
         const lr_field *f = &l->fields[i];
@@ -259,10 +262,47 @@ static void draw_grid_copy(lr_canvas *c, const fig_view *v, const lr_grid *g,
     fig_draw_grid(c, v, &r, skip);
 }
 
+/* A clip rectangle in whole pixels; w < 0: none. */
+typedef struct clip_rect {
+    int x, y, w, h;
+} clip_rect;
+
+static void set_clip(lr_canvas *c, clip_rect r)
+{
+    if (r.w < 0)
+        lr_canvas_unclip(c);
+    else
+        lr_canvas_clip(c, r.x, r.y, r.w, r.h);
+}
+
+/* The overlays' clip: the panel's window in pixels (rounded outward, so a
+ * line on the window's edge keeps its width), within the side's own clip.
+ * Curves and arrows end at the window (issue 32: arrows and phi lines
+ * outside a close-up ran over the title and the next panel); discs
+ * partly inside it are still drawn whole, as before. */
+static clip_rect window_clip(const panel_box *b, const lr_panel *p, clip_rect side)
+{
+    double x0, y0, x1, y1;
+    fig_to_pixel(&b->v, p->wx0, p->wy1, &x0, &y0);
+    fig_to_pixel(&b->v, p->wx1, p->wy0, &x1, &y1);
+    int ix0 = (int)floor(x0), iy0 = (int)floor(y0);
+    int ix1 = (int)ceil(x1), iy1 = (int)ceil(y1);
+    if (side.w >= 0) {
+        ix0 = ix0 > side.x ? ix0 : side.x;
+        iy0 = iy0 > side.y ? iy0 : side.y;
+        ix1 = ix1 < side.x + side.w ? ix1 : side.x + side.w;
+        iy1 = iy1 < side.y + side.h ? iy1 : side.y + side.h;
+    }
+    clip_rect r = { ix0, iy0, ix1 > ix0 ? ix1 - ix0 : 0, iy1 > iy0 ? iy1 - iy0 : 0 };
+    return r;
+}
+
 /* One side's layers, each over all mirror copies before the next layer,
- * so a copy's grid never covers another copy's particles. */
+ * so a copy's grid never covers another copy's particles; the curves and
+ * arrows clipped to the window (window_clip), the side's clip restored
+ * after them. */
 static int draw_side(lr_canvas *c, const panel_box *b, const lr_panel *p,
-                     const lr_layers *l)
+                     const lr_layers *l, clip_rect side)
 {
     fig_mirror m[4];
     int nm = mirror_copies(p, m), rc = 0;
@@ -275,12 +315,16 @@ static int draw_side(lr_canvas *c, const panel_box *b, const lr_panel *p,
     for (size_t i = 0; i < l->npoints && rc == 0; i++)
         for (int k = 0; k < nm && rc == 0; k++)
             rc = fig_draw_points(c, &b->v, &m[k], &l->points[i], p, b->vmin, b->vmax);
-    for (size_t i = 0; i < l->ncurves && rc == 0; i++)
+    if (rc != 0 || (l->ncurves == 0 && l->narrows == 0))
+        return rc;
+    set_clip(c, window_clip(b, p, side));
+    for (size_t i = 0; i < l->ncurves; i++)
         for (int k = 0; k < nm; k++)
             fig_draw_curve(c, &b->v, &m[k], &l->curves[i]);
     for (size_t i = 0; i < l->narrows && rc == 0; i++)
         for (int k = 0; k < nm && rc == 0; k++)
             rc = fig_draw_arrows(c, &b->v, &m[k], &l->arrows[i]);
+    set_clip(c, side);
     return rc;
 }
 
@@ -352,12 +396,14 @@ static int draw_panel(lr_canvas *c, const lr_figure *f, const layout *L, size_t 
     }
     ground(c, b, p);
     for (int s = 0; s < (p->split ? 2 : 1) && rc == 0; s++) {
+        clip_rect side = { 0, 0, -1, -1 };
         if (clipped) {
             int x0 = p->split && s == 1 ? split_px : cx0;
             int x1 = p->split && s == 0 ? split_px : cx1;
-            lr_canvas_clip(c, x0, cy0, x1 - x0, cy1 - cy0);
+            side = (clip_rect){ x0, cy0, x1 - x0, cy1 - cy0 };
+            set_clip(c, side);
         }
-        rc = draw_side(c, b, p, &p->side[s]);
+        rc = draw_side(c, b, p, &p->side[s], side);
     }
     if (clipped)
         lr_canvas_unclip(c);

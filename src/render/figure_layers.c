@@ -282,13 +282,23 @@ int fig_draw_arrows(lr_canvas *c, const fig_view *v, const fig_mirror *m,
         free(counts);
         return -1;
     }
+    /* thinned (lr_arrows.thin): every k-th arrow, as long as the gap
+     * between drawn arrows; else every arrow at its length */
+    size_t stride = 1;
+    double length = a->length;
+    double gap_px = a->spacing * v->s;
+    if (a->thin > 0 && gap_px > 0 && isfinite(gap_px)) {
+        double k = ceil(a->thin / gap_px - 1e-9);
+        stride = k > 1 ? (k < (double)a->n ? (size_t)k : a->n) : 1;
+        length = (double)stride * a->spacing;
+    }
     size_t nh = 0;
-    for (size_t i = 0; i < a->n; i++) {
+    for (size_t i = 0; i < a->n; i += stride) {
         double ux = m->fx ? -a->ux[i] : a->ux[i], uy = m->fy ? -a->uy[i] : a->uy[i];
         double x = fig_mx(m, a->x[i]), y = fig_my(m, a->y[i]);
         double ax, ay, bx, by;
         fig_to_pixel(v, x, y, &ax, &ay);
-        fig_to_pixel(v, x + a->length * ux, y + a->length * uy, &bx, &by);
+        fig_to_pixel(v, x + length * ux, y + length * uy, &bx, &by);
         double len = hypot(bx - ax, by - ay);
         if (!(len > 0) || !isfinite(len))
             continue;   /* zero or bad direction */

@@ -95,7 +95,7 @@ static void make_scene(scene *s)
         s->auy[i] = sin(a);
     }
     const lr_rgba dark = { 0.1, 0.1, 0.1, 1 };
-    s->arrows = (lr_arrows){ 64, s->ax, s->ay, s->aux, s->auy, 0.06, 1.5, 7.0, 0.0, dark };
+    s->arrows = (lr_arrows){ 64, s->ax, s->ay, s->aux, s->auy, 0.06, 1.5, 7.0, 0.0, dark, 0, 0 };
     for (int i = 0; i < 97; i++) {      /* a wavy line and a dashed circle */
         double t = i / 96.0;
         s->cx[i] = 0.05 + 0.9 * t;

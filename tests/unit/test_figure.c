@@ -419,6 +419,83 @@ static void test_filled_contour(lr_backend be)
     free(img);
 }
 
+/* ---- overlays: clipped to the window, arrows thinned -------------------- */
+
+/* Red pixels in row y between x0 and x1 that start a run (arrows crossed). */
+static int runs(const unsigned char *img, int w, int y, int x0, int x1, lr_rgba k)
+{
+    int n = 0, in = 0;
+    for (int x = x0; x < x1; x++) {
+        int r = near(at(img, w, x, y), k, 60);
+        n += r && !in;
+        in = r;
+    }
+    return n;
+}
+
+/* An arrow and a curve that run out of the window end at its edge (issue
+ * 32: they were drawn over the title and the next panel). In a 116 px
+ * figure the window spans pixels 4.06 to 111.94 (margins 3.5 %). */
+static void test_overlay_clip(lr_backend be)
+{
+    static const double ax[] = { 0.5 }, ay[] = { 0.3 }, ux[] = { 1 }, uy[] = { 0 };
+    static const double cx[] = { 0.5, 3.0 }, cy[] = { 0.7, 0.7 };
+    const lr_rgba red = { 1, 0, 0, 1 };
+    lr_arrows a = { .n = 1, .x = ax, .y = ay, .ux = ux, .uy = uy, .length = 2.0,
+                    .width = 3.0, .head = 6.0, .colour = red };
+    lr_curve c = { .n = 2, .x = cx, .y = cy, .width = 3.0, .colour = red };
+    lr_panel p;
+    memset(&p, 0, sizeof p);
+    p.wx1 = p.wy1 = 1;
+    p.side[0].arrows = &a;
+    p.side[0].narrows = 1;
+    p.side[0].curves = &c;
+    p.side[0].ncurves = 1;
+    lr_figure fig = { 116, 116, be, &p, 1, 0, 0, NULL, NULL, NULL, 0 };
+    char err[256] = "";
+    unsigned char *img = lr_figure_render(&fig, err, sizeof err);
+    CHECK(img != NULL);
+    if (!img)
+        return;
+    CHECK(count(img, 116, 60, 70, 111, 80, red) > 45 * 2);     /* the arrow, y = 0.3 */
+    CHECK(count(img, 116, 60, 30, 111, 40, red) > 45 * 2);     /* the curve, y = 0.7 */
+    CHECK(count(img, 116, 112, 0, 116, 116, red) == 0);        /* nothing past x = 1 */
+    free(img);
+}
+
+/* lr_arrows.thin: 17 arrows 0.05 apart (5.39 px at 107.88 px a unit),
+ * thin 16 px: every 3rd (ceil(16 / 5.39)), each 3 spacings = 0.15 long. */
+static void test_arrow_thinning(lr_backend be)
+{
+    enum { N = 17 };
+    double x[N], y[N], ux[N], uy[N];
+    for (int i = 0; i < N; i++) {
+        x[i] = 0.1 + 0.05 * i;
+        y[i] = 0.3;
+        ux[i] = 0;
+        uy[i] = 1;
+    }
+    const lr_rgba red = { 1, 0, 0, 1 };
+    lr_arrows a = { .n = N, .x = x, .y = y, .ux = ux, .uy = uy, .length = 0.6,
+                    .width = 2.0, .head = 5.0, .colour = red, .thin = 16, .spacing = 0.05 };
+    lr_panel p;
+    memset(&p, 0, sizeof p);
+    p.wx1 = p.wy1 = 1;
+    p.side[0].arrows = &a;
+    p.side[0].narrows = 1;
+    lr_figure fig = { 116, 116, be, &p, 1, 0, 0, NULL, NULL, NULL, 0 };
+    char err[256] = "";
+    unsigned char *img = lr_figure_render(&fig, err, sizeof err);
+    CHECK(img != NULL);
+    if (!img)
+        return;
+    /* shafts cross y = 0.35 (pixel 74); the heads end at y = 0.45 (pixel 63) */
+    CHECK(runs(img, 116, 74, 4, 112, red) == 6);      /* points 0, 3, ..., 15 */
+    CHECK(count(img, 116, 4, 4, 112, 58, red) == 0);  /* none reaches 0.5, let alone 0.9 */
+    CHECK(count(img, 116, 4, 62, 112, 68, red) > 12); /* the heads, near 0.45 */
+    free(img);
+}
+
 int main(void)
 {
     if (!mkdtemp(dir)) {
@@ -436,6 +513,8 @@ int main(void)
         test_split(be[i]);
         test_panels_bars(be[i]);
         test_filled_contour(be[i]);
+        test_overlay_clip(be[i]);
+        test_arrow_thinning(be[i]);
     }
     test_vector_and_errors();
     CHECK(rmdir(dir) == 0);

@@ -69,6 +69,12 @@ typedef struct lr_arrows {      /* arrows from (x, y) along unit (ux, uy) */
     double width, head;         /* shaft width and head length, pixels */
     double dash;                /* shaft dashes, pixels; 0: solid */
     lr_rgba colour;
+    double thin;                /* pixels; > 0 with spacing > 0: only every
+                                   k-th arrow, k the smallest with k spacing
+                                   >= thin pixels, each k spacing long (the
+                                   arrows' own gap, so none fuse; length is
+                                   then unused) */
+    double spacing;             /* world distance between consecutive arrows */
 } lr_arrows;
 
 typedef struct lr_field {       /* filled contours of a sampled field */
