@@ -253,10 +253,11 @@ double lm_membrane_enclosed_volume(const lm_sim *sim, int body, double cx, doubl
  * points. Axisymmetric, a point is a ring whose area (its volume m / rho
  * over the thickness, axisym.c) goes from l^2 / 4 at a pole to l R at the
  * equator, and the mean over the surface weights each point by it: the
- * points within a cell of the axis, a few per cent of the surface, carry
- * the grid's boundary layer there (docs/robustness.md "Point spacing"),
- * and a count put them at par with the rest (a sphere's mean off by -15 %
- * at 0.2 cells, within 1 % by area; issue 30 item 4). */
+ * points within a cell of the axis, 1.4 % of a sphere's surface but 12 of
+ * its 96 points at 0.2 cells, carry the grid's boundary layer there
+ * (docs/robustness.md "Point spacing"), and a count put them at par with
+ * the rest (the sphere's mean -12 % at 0.2 cells and -15 % at 0.4; by
+ * area within 1.2 % at 0.05-1 cell; issue 30 item 4). */
 double lm_body_mean_tangential_stress(const lm_sim *sim, int body)
 {
     const lm_body *b = &sim->bodies[body];
