@@ -59,10 +59,10 @@ static int point_count(lua_State *L, const char *fn, const la_curve_points *cp, 
     if (have_spacing) {
         double sp = la_number(L, 2, fn, "spacing");
         if (!(sp > 0)) luaL_error(L, "%s: spacing must be positive (got %f)", fn, sp);
-        if (sp > h)
-            luaL_error(L, "%s: %s spacing %f is larger than a cell (%f): neighbouring "
-                       "points must stay within one cell or the membrane breaks", fn,
-                       *what, sp, h);
+        if (sp > h * (1 + LM_SPACING_SLACK))   /* 1.0003 cells is rounding: accepted */
+            luaL_error(L, "%s: %s spacing %f is larger than a cell (%f) by more than 1 %%: "
+                       "neighbouring points must stay within one cell or the membrane breaks",
+                       fn, *what, sp, h);
         iv = ceil(cp->length / sp - 1e-9);
     } else {
         if (count != floor(count) || count < 2)

@@ -3,8 +3,9 @@
  * binding ([M] §3, docs/physics.md §2; issue 19: the engine is the only writer
  * of its state, as Box2D's b2CreateBody takes a b2BodyDef).
  *
- * The rules: neighbouring points at most a cell apart (docs/physics.md §2: the
- * grid must see the membrane between them, or gas passes through); every
+ * The rules: neighbouring points at most a cell apart, to the rounding
+ * LM_SPACING_SLACK allows (docs/physics.md §2: the grid must see the
+ * membrane between them, or gas passes through); every
  * point inside the domain; in the axisymmetric form no point on or across
  * the axis but an open membrane's ends (a pole); logarithmic strains within
  * (-5, 5), so that exp(-e) stays a mass. A point placed ds apart with
@@ -56,10 +57,11 @@ static lm_status check(lm_sim *sim, const lm_membrane_def *def)
         return LM_ERR_INPUT;
     }
     double h = fmin(g->hx, g->hy);
-    if (!(def->ds > 0) || def->ds > h * (1 + 1e-12)) {
+    if (!(def->ds > 0) || def->ds > h * (1 + LM_SPACING_SLACK)) {
         snprintf(sim->err, sizeof sim->err,
-                 "%s spacing %s is larger than a cell (%s): neighbouring points must stay "
-                 "within one cell or the membrane breaks", what, fmt(def->ds).s, fmt(h).s);
+                 "%s spacing %s is larger than a cell (%s) by more than 1 %%: neighbouring "
+                 "points must stay within one cell or the membrane breaks", what,
+                 fmt(def->ds).s, fmt(h).s);
         return LM_ERR_INPUT;
     }
     double x1 = g->x0 + g->nx * g->hx, y1 = g->y0 + g->ny * g->hy;

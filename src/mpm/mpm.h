@@ -416,6 +416,13 @@ int lm_membrane_phi(const lm_sim *sim, int b, struct lm_nreport *rep, char *err,
  * tangents before it. */
 lm_status lm_sim_prepare(lm_sim *sim);
 
+/* Neighbouring membrane points may be at most a cell apart (docs/physics.md
+ * §2); a spacing up to this fraction over a cell is rounding (a count
+ * that puts points 1.0003 cells apart) and is accepted: the tear check
+ * stops a run only at two cells (issue 30 item 4, docs/robustness.md
+ * "Point spacing"). */
+#define LM_SPACING_SLACK 0.01
+
 /* Courant number dt * c_max / min(hx, hy) over the materials in use. */
 double lm_sim_courant(const lm_sim *sim, double *c_max);
 /* The same, and the body whose speed is c_max (-1: none). */
