@@ -185,15 +185,19 @@ typedef enum lm_normals {
  * interior nodes of a uniformly stretched membrane (membrane_force.c). */
 typedef enum lm_mforce { LM_MFORCE_POINT = 0, LM_MFORCE_SEGMENT = 1 } lm_mforce;
 
-/* Which way a membrane's normals point (the stress does not depend on it;
- * drawing and the gas side do). LM_ORIENT_CENTROID is for definitions
- * only: away from the points' centroid for the constructions without
- * connectivity, none for connectivity. */
+/* Which way a membrane's normals point (the stress does not depend on it:
+ * sigma_t t(x)t and t.de.t are even in t; drawing does). LM_ORIENT_CENTROID
+ * is for definitions only, the default: it becomes LM_ORIENT_CURVE. */
 typedef enum lm_orient {
     LM_ORIENT_CENTROID = -1,
-    LM_ORIENT_NONE = 0,
+    LM_ORIENT_NONE = 0,       /* as the method finds them (unoriented) */
     LM_ORIENT_AWAY = 1,       /* away from (ox, oy) */
-    LM_ORIENT_NEIGHBOURS = 2  /* agree with their neighbours */
+    LM_ORIENT_NEIGHBOURS = 2, /* agree with their neighbours, and in time */
+    /* by the curve, for every normals method (membrane.c): a closed
+     * membrane's point out of the region it encloses, by the sign of its
+     * signed area, every step; an open one's to the side `side` of the
+     * curve's direction (+1 left, -1 right), fixed at creation */
+    LM_ORIENT_CURVE = 3
 } lm_orient;
 
 #define LM_NAME_MAX 64
@@ -206,6 +210,7 @@ typedef struct lm_body {
     lm_normals normals;
     int orient;            /* normals' sign: lm_orient */
     double ox, oy;
+    int side;              /* LM_ORIENT_CURVE, open: +1 left, -1 right */
     double pe_ref;         /* this body's share of sim->pe_ref */
     lm_mforce force;       /* membrane: how its stress reaches the grid */
     int seg_ready;         /* segment rest lengths set (membrane_force.c) */
