@@ -3,14 +3,14 @@
 -- (no symmetry), a closed membrane counter-clockwise from 0 degrees, the
 -- default basis and force unless o says otherwise.
 -- o: p (gas pressure, default 30), E (membrane, default 2e3), normals,
--- orient, cell (default 0.05), ppc (default 4), spacing (membrane points,
+-- orient, force, basis, cell (default 0.05), ppc (default 4), spacing (membrane points,
 -- cells; default 0.5). Returns sim, gas, membrane.
 local M = {}
 
 function M.setup(o)
   o = o or {}
   local h = o.cell or 0.05
-  local sim = lamina.sim{ domain = {0, 0, 1.2, 1.2}, cell = h, dt = o.dt or 1e-4,
+  local sim = lamina.sim{ domain = {0, 0, 1.2, 1.2}, cell = h, dt = o.dt or 1e-4, basis = o.basis,
                           gravity = {0, -10},
                           boundary = { left = "fixed", right = "fixed", bottom = "fixed",
                                        top = "fixed" } }
@@ -21,7 +21,7 @@ function M.setup(o)
   local gas = sim:body{ material = air, ppc = o.ppc or 4, name = "air", fill = "clipped",
                         region = lamina.disk{ center = c, radius = r } }
   local mem = sim:membrane{ material = skin, spacing = (o.spacing or 0.5) * h, name = "skin",
-                            normals = o.normals, orient = o.orient,
+                            normals = o.normals, orient = o.orient, force = o.force,
                             curve = lamina.arc{ center = c, radius = r, from = 0, to = 360 } }
   return sim, gas, mem
 end

@@ -520,7 +520,8 @@ void lm_body_velocity(const lm_sim *sim, int body, double *vx, double *vy);
 double lm_body_mass(const lm_sim *sim, int body);
 /* Linear momentum of all particles. */
 void lm_sim_momentum(const lm_sim *sim, double *px, double *py);
-/* Mean gas pressure (gamma - 1) rho e, without q, over a gas body. */
+/* Mean gas pressure (gamma - 1) rho e, without q, over a gas body's
+ * particles, mass-weighted (gas:pressure("particles")). */
 double lm_body_mean_pressure(const lm_sim *sim, int body);
 /* The pressure integral over a gas body, sum_p V_p p_p = (gamma - 1)
  * sum_p m_p e_p (without q): the quadrature the internal forces use. */
@@ -535,8 +536,21 @@ double lm_body_mean_tangential_stress(const lm_sim *sim, int body);
 /* Distance from (cx, cy) to the membrane along the ray at `deg` degrees;
  * -1 if the ray misses it. */
 double lm_membrane_radius_at(const lm_sim *sim, int body, double deg, double cx, double cy);
-/* Gas particles outside the membrane (closed through (cx, cy) if open). */
-size_t lm_count_outside(const lm_sim *sim, int gas, int membrane, double cx, double cy);
+/* A gas's particles against a membrane's polygon (closed through (cx, cy)
+ * if open; diag_gas.c): on the near side, and on the far side (outside
+ * when inside = 0, inside when 1) within `beyond` of the polygon or beyond
+ * it, with the deepest distance on the far side (length units). */
+typedef struct lm_far {
+    size_t near, within, beyond;
+    double depth;
+} lm_far;
+int lm_gas_far_side(const lm_sim *sim, int gas, int membrane, double cx, double cy,
+                    int inside, double beyond, lm_far *out);
+/* The gas's pressure over the space it fills: the mean of the nodal
+ * pressure (gamma - 1) sum_p m_p e_p N_ip / V_i over the nodes whose
+ * support lies wholly in it (diag_gas.c); *nodes how many (0: none, and the
+ * volume-weighted particle mean is returned). */
+double lm_gas_space_pressure(const lm_sim *sim, int body, size_t *nodes);
 /* The gas pressure interpolated to the grid nodes (mass-weighted; NaN
  * where no gas is): (nx+1)(ny+1) values, x fastest. */
 size_t lm_grid_gas_pressure(const lm_sim *sim, double *out);
