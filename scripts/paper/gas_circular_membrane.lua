@@ -17,6 +17,7 @@
 --   leaves a jagged edge that loads the membrane unevenly and wrinkles it)
 -- visual: t_end=0.01
 -- thumb: fig12_t0.050.png
+
 -- every gas particle outside the membrane: membrane:escaped's count beyond a
 -- quarter cell plus its skin-grazers (issue 30: the count this file used)
 local function outside(beyond, _, grazing) return beyond + grazing end

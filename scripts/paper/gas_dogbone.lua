@@ -88,6 +88,7 @@
 -- heavy: four meshes to t = 8.5, the finest cell 0.05 with the quadratic B-spline on two threads (the time is in the page's record)
 -- visual: finest=0.4 t_end=0.5 threads=1
 -- thumb: cell0.050_t8.50.png
+
 -- every gas particle outside the membrane: membrane:escaped's count beyond a
 -- quarter cell plus its skin-grazers (issue 30: the count this file used)
 local function outside(beyond, _, grazing) return beyond + grazing end

@@ -23,6 +23,7 @@
 -- heavy: cell 0.05 to t = 4 with the quadratic B-spline: about 6 min here on two threads
 -- visual: cell=0.2 t_end=0.3 threads=1
 -- thumb: dogbone_t4.0.png
+
 -- every gas particle outside the membrane: membrane:escaped's count beyond a
 -- quarter cell plus its skin-grazers (issue 30: the count this file used)
 local function outside(beyond, _, grazing) return beyond + grazing end

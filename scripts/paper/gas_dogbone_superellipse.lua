@@ -46,6 +46,7 @@
 -- heavy: four meshes to t = 4, the finest cell 0.05 with gas splitting: about 11 min here (two threads)
 -- visual: finest=0.4 t_end=0.5 threads=1
 -- thumb: cell0.100_t4.0.png
+
 -- every gas particle outside the membrane: membrane:escaped's count beyond a
 -- quarter cell plus its skin-grazers (issue 30: the count this file used)
 local function outside(beyond, _, grazing) return beyond + grazing end
