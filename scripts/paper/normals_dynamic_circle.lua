@@ -30,14 +30,14 @@ local circle = require("circle_membrane")
 local iso, iso_gas, iso_mem = circle.setup{ normals = "isosurface" }
 local con, con_gas = circle.setup{ normals = "connectivity" }
 local worst, worst_c = {}, {}
-local rec_i = iso:record{ every = 1e-4, values = { p = function() return iso_gas:pressure() end,
+local rec_i = iso:record{ every = 1e-4, values = { p = function() return iso_gas:pressure("particles") end,
   err = function()
     local w = circle.worst_normal_error(iso_mem)
     worst[#worst + 1] = w
     worst_c[#worst_c + 1] = circle.worst_connectivity_error(iso_mem)
     return w
   end } }
-local rec_c = con:record{ every = 1e-4, values = { p = function() return con_gas:pressure() end } }
+local rec_c = con:record{ every = 1e-4, values = { p = function() return con_gas:pressure("particles") end } }
 
 local shots = {0, 0.005, 0.01, 0.05}
 local k = 1

@@ -27,7 +27,7 @@ local dog = require("dogbone")
 local function build(method)
   local sim, gas, mem = dog.setup(h, { normals = method })
   local rec = sim:record{ every = 0.005, values = {
-    p = function() return gas:pressure() end,
+    p = function() return gas:pressure("particles") end,
     r0 = function() return mem:radius_at(0) end,
     r90 = function() return mem:radius_at(90) end } }
   return sim, rec

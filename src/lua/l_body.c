@@ -308,7 +308,10 @@ static la_body *check_membrane(lua_State *L, int idx, lm_sim **sim, const char *
     return b;
 }
 
-/* gas:pressure() - the mass-weighted mean over the particles (without q);
+/* gas:pressure() - the mean over the space the gas fills: the nodal
+ * pressure at the nodes wholly in it (diag_gas.c), and how many nodes;
+ * gas:pressure("particles") - the mass-weighted mean over the particles
+ * (without q), whose continuity densities drift from their spacing;
  * gas:pressure(membrane [, {cx, cy}]) - the mean over the space the
  * membrane encloses, sum_p V_p p_p / A (docs/decisions.md); axisymmetric:
  * over its volume per radian, as V_p is. */
@@ -319,6 +322,17 @@ static int body_pressure(lua_State *L)
     if (sim->mats[sim->bodies[b->index].mat]->kind != LM_GAS)
         return luaL_error(L, "body:pressure(): the body is not a gas");
     if (lua_isnoneornil(L, 2)) {
+        size_t nodes;
+        double pr = lm_gas_space_pressure(sim, b->index, &nodes);
+        if (isnan(pr)) return luaL_error(L, "gas:pressure(): out of memory");
+        lua_pushnumber(L, pr);
+        lua_pushinteger(L, (lua_Integer)nodes);
+        return 2;
+    }
+    if (lua_type(L, 2) == LUA_TSTRING) {
+        if (strcmp(lua_tostring(L, 2), "particles") != 0)
+            return luaL_error(L, "gas:pressure('%s'): unknown option (the one known is "
+                              "\"particles\")", lua_tostring(L, 2));
         lua_pushnumber(L, lm_body_mean_pressure(sim, b->index));
         return 1;
     }
@@ -382,8 +396,10 @@ static int body_enclosed_area(lua_State *L)
     return 1;
 }
 
-/* membrane:escaped(gas [, {cx, cy}]) - how many gas particles are outside
- * the membrane (closed through the centre when open: quarter models). */
+/* membrane:escaped(gas [, {cx, cy}]) - the gas particles outside the
+ * membrane (closed through the centre when open: quarter models) by more
+ * than a quarter cell, the deepest distance of any outside (length units),
+ * and those outside within a quarter cell (skin-grazers). */
 static int body_escaped(lua_State *L)
 {
     lm_sim *sim, *sim2;
@@ -394,8 +410,14 @@ static int body_escaped(lua_State *L)
         return luaL_error(L, "membrane:escaped(gas): needs a membrane and a gas of one sim");
     double cx, cy;
     center_arg(L, 3, &cx, &cy);
-    lua_pushinteger(L, (lua_Integer)lm_count_outside(sim, g, b->index, cx, cy));
-    return 1;
+    lm_far far;
+    if (lm_gas_far_side(sim, g, b->index, cx, cy, 0, 0.25 * fmin(sim->grid.hx, sim->grid.hy),
+                        &far))
+        return luaL_error(L, "membrane:escaped(gas): out of memory");
+    lua_pushinteger(L, (lua_Integer)far.beyond);
+    lua_pushnumber(L, far.depth);
+    lua_pushinteger(L, (lua_Integer)far.within);
+    return 3;
 }
 
 static void push_array(lua_State *L, const double *a, size_t first, size_t n, const char *name)

@@ -119,8 +119,18 @@ typedef struct la_sim {
     char *ck_file;              /* sim:checkpoint (l_checkpoint.c) */
     unsigned long long warned_bunched;   /* bodies warned of bunched points (bit b) */
     int warned_energy;          /* said once: the energy rose (l_energy_watch.c) */
+    int warned_leak;            /* said once: gas crossed a membrane (l_leak_watch.c) */
+    signed char *leak_side;     /* leak_nb^2: which side of membrane m gas g keeps */
+    int leak_nb;
+    long leak_step;             /* the step last checked */
     double ck_every, ck_next;
 } la_sim;
+
+/* Gas more than a quarter cell across a closed membrane, said once
+ * (l_leak_watch.c); called every step, it checks when LA_LEAK_EVERY steps
+ * have passed since its last check or a body was added. */
+#define LA_LEAK_EVERY 20
+void la_leak_watch(lua_State *L, la_sim *s);
 
 /* The total energy over one sim:run (l_energy_watch.c): a rise by a tenth
  * with no driven pin is said once, as a warning. */

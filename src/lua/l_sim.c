@@ -167,6 +167,9 @@ static int sim_gc(lua_State *L)
     free(s->ev);
     free(s->pinf);
     free(s->ck_file);
+    free(s->leak_side);
+    s->leak_side = NULL;
+    s->leak_nb = 0;
     s->ck_file = NULL;
     s->sim = NULL;
     s->ev = NULL;
@@ -400,6 +403,7 @@ static void advance(lua_State *L, la_sim *s, long nsteps, double t_end)
     la_checkpoint_due(L, 1, s);
     la_energy_watch watch;
     la_energy_watch_begin(s, &watch);
+    la_leak_watch(L, s);   /* the sides are judged before the first step */
     /* the script may have changed anything since the last step */
     lm_sim_forget_ahead(s->sim);
     for (long n = 0; isnan(t_end) ? n < nsteps : steps_to(s, t_end) > 0; n++) {
@@ -419,6 +423,7 @@ static void advance(lua_State *L, la_sim *s, long nsteps, double t_end)
             la_raise_sim_failure(L, s->sim->err);
         }
         if (fire_due(L, s)) lm_sim_forget_ahead(s->sim);   /* it may have changed the state */
+        la_leak_watch(L, s);
         la_checkpoint_due(L, 1, s);
         if (la_progress_tick(L, s->sim)) {   /* Ctrl-C, watch: stop between steps */
             s->running = 0;

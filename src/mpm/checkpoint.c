@@ -46,7 +46,7 @@ typedef struct header {
 
 typedef struct body_rec {
     uint64_t first, count;
-    int32_t mat, membrane, closed, force, normals, orient, seg_ready, pad;
+    int32_t mat, membrane, closed, force, normals, orient, seg_ready, pad;   /* pad: side */
     double ox, oy, pe_ref;
 } body_rec;
 
@@ -101,7 +101,7 @@ void lm_sim_state_save(const lm_sim *sim, unsigned char *buf)
     for (int k = 0; k < sim->nbodies; k++) {
         const lm_body *bd = &sim->bodies[k];
         body_rec r = {bd->first, bd->count, bd->mat, bd->membrane, bd->closed, (int32_t)bd->force,
-                      (int32_t)bd->normals, bd->orient, bd->seg_ready, 0, bd->ox, bd->oy,
+                      (int32_t)bd->normals, bd->orient, bd->seg_ready, bd->side, bd->ox, bd->oy,
                       bd->pe_ref};
         b = put(b, &r, sizeof r);
     }
@@ -209,6 +209,7 @@ lm_status lm_sim_state_load(lm_sim *sim, const unsigned char *buf, size_t len)
         bd->normals = (lm_normals)r.normals;
         bd->orient = r.orient;
         bd->seg_ready = r.seg_ready;
+        bd->side = r.pad;   /* LM_ORIENT_CURVE's side (0 before it existed) */
         bd->ox = r.ox;
         bd->oy = r.oy;
         bd->pe_ref = r.pe_ref;

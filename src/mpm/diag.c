@@ -312,30 +312,6 @@ double lm_membrane_radius_at(const lm_sim *sim, int body, double deg, double cx,
     return best;
 }
 
-/* Gas particles outside the polygon of the membrane's points (closed
- * through (cx, cy) when the membrane is open, as in quarter models). */
-size_t lm_count_outside(const lm_sim *sim, int gas, int membrane, double cx, double cy)
-{
-    const lm_body *m = &sim->bodies[membrane], *g = &sim->bodies[gas];
-    size_t nv = polygon_size(m);
-    size_t out = 0;
-    for (size_t q = g->first; q < g->first + g->count; q++) {
-        double px = sim->p.x[q], py = sim->p.y[q];
-        int in = 0;
-        for (size_t a = 0, b = nv - 1; a < nv; b = a++) {
-            double xa, ya, xb, yb;
-            polygon_vertex(sim, m, a, cx, cy, &xa, &ya);
-            polygon_vertex(sim, m, b, cx, cy, &xb, &yb);
-            if ((ya > py) != (yb > py)) {
-                double xc = xa + (py - ya) * (xb - xa) / (yb - ya);
-                if (px < xc) in = !in;
-            }
-        }
-        if (!in) out++;
-    }
-    return out;
-}
-
 /* The gas pressure as a grid field, for pressure contours ([T] Fig 56):
  * p_i = sum_p m_p p_p N_ip / sum_p m_p N_ip over the gas particles, p
  * without q. out has (nx+1)(ny+1) values, x fastest; a node no gas touches

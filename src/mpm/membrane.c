@@ -30,13 +30,81 @@ static void tangent_of(const lm_particles *p, size_t a, size_t b, double *tx, do
     /* coincident neighbours: keep the previous tangent */
 }
 
-static void connectivity(lm_particles *p, const lm_body *bd)
+/* The neighbours of point q in curve order: wrapped on a closed curve,
+ * the point itself at an open curve's ends (one-sided there). */
+static void neighbours(const lm_body *bd, size_t q, size_t *prev, size_t *next)
 {
     size_t first = bd->first, last = bd->first + bd->count - 1;
-    for (size_t q = first; q <= last; q++) {
-        size_t prev = q > first ? q - 1 : (bd->closed ? last : q);
-        size_t next = q < last ? q + 1 : (bd->closed ? first : q);
-        tangent_of(p, prev, next, &p->tx[q], &p->ty[q]);
+    *prev = q > first ? q - 1 : (bd->closed ? last : q);
+    *next = q < last ? q + 1 : (bd->closed ? first : q);
+}
+
+/* Tangents along the curve's direction (sign +1) or against it (-1): the
+ * normal, the tangent turned +90 degrees, is then the left of the curve's
+ * direction or its right. */
+static void connectivity(lm_particles *p, const lm_body *bd, int sign)
+{
+    for (size_t q = bd->first; q < bd->first + bd->count; q++) {
+        size_t prev, next;
+        neighbours(bd, q, &prev, &next);
+        if (sign < 0) tangent_of(p, next, prev, &p->tx[q], &p->ty[q]);
+        else tangent_of(p, prev, next, &p->tx[q], &p->ty[q]);
+    }
+}
+
+/* Which side of the curve's direction LM_ORIENT_CURVE's normals take: +1
+ * the left, -1 the right. A closed curve encloses its region on the left
+ * when it runs counter-clockwise, i.e. when its signed area (the shoelace
+ * sum, Green's theorem) is positive: its outward normals are then on the
+ * right. The winding is the curve's own, so no centroid (which may lie
+ * outside a non-convex membrane, or stay behind as it moves) enters. An
+ * open curve keeps the side chosen at creation (membrane_create.c). */
+static int curve_side(const lm_particles *p, const lm_body *bd)
+{
+    if (!bd->closed) return bd->side < 0 ? -1 : 1;
+    double a2 = 0;
+    size_t first = bd->first, n = bd->count;
+    for (size_t k = 0, j = n - 1; k < n; j = k++)
+        a2 += p->x[first + j] * p->y[first + k] - p->x[first + k] * p->y[first + j];
+    return a2 > 0 ? -1 : 1;
+}
+
+/* The constructions without connectivity give each normal a sign of their
+ * own (the random point's side, [N] §8). Under LM_ORIENT_CURVE each is
+ * turned to agree with the curve's normal at the point (n . n_curve >= 0,
+ * n_curve from its neighbours in curve order, on curve_side's side). Under
+ * "neighbours" each agrees with its own normal of the last step (the first
+ * step's: the curve's, outward on a closed membrane): neighbours in time.
+ * Orienting the ring among itself each step instead (Prim's order on
+ * distance, normals_orient.c) let the whole ring take either sign from step
+ * to step (about 150 flips in 1.5 s, issue 30), and with the colour
+ * methods' rougher normals broke the ring into pieces of either sign (22-36
+ * of 100 samples more than half flipped on the falling balloon). Undefined
+ * normals (flags) are skipped. */
+static void orient_constructed(const lm_particles *p, const lm_body *bd, double *nx,
+                               double *ny, const unsigned char *flags)
+{
+    size_t n = bd->count;
+    if (bd->orient == LM_ORIENT_CURVE) {
+        int s = curve_side(p, bd);
+        for (size_t k = 0; k < n; k++) {
+            size_t prev, next;
+            neighbours(bd, bd->first + k, &prev, &next);
+            double rx = -(p->y[next] - p->y[prev]), ry = p->x[next] - p->x[prev];
+            if (s * (nx[k] * rx + ny[k] * ry) < 0) {
+                nx[k] = -nx[k];
+                ny[k] = -ny[k];
+            }
+        }
+    } else if (bd->orient == LM_ORIENT_NEIGHBOURS) {
+        for (size_t k = 0; k < n; k++) {
+            if (flags[k] & LM_NF_UNDEFINED) continue;
+            size_t q = bd->first + k;
+            if (nx[k] * -p->ty[q] + ny[k] * p->tx[q] < 0) {   /* last step's normal */
+                nx[k] = -nx[k];
+                ny[k] = -ny[k];
+            }
+        }
     }
 }
 
@@ -60,7 +128,7 @@ static void orient_away(lm_particles *p, const lm_body *bd)
  * reproducible; cond(T) is not needed here and not computed. A point whose
  * normal is undefined keeps last step's tangent. The sign of the normal
  * does not matter to the stress (sigma_t t(x)t, t.de.t); it is oriented
- * only for drawing. */
+ * (orient_constructed) only for drawing and for the scripts that read it. */
 /* The construction's grid and options for body b as the step numbered
  * `step` uses them (its random points come from the sim's seed, the body
  * and the step, so the same inputs give the same fit). */
@@ -77,8 +145,9 @@ static void body_nopts(const lm_sim *sim, int b, lm_normals method, long step,
         lm_nopts_default(o);
     o->skip_cond = 1;
     o->seed = lm_nrng_mix(sim->def.seed, ((uint64_t)b << 40) ^ (uint64_t)step);
-    o->orient = bd->orient == 1 ? LM_NORIENT_AWAY
-              : bd->orient == 2 ? LM_NORIENT_NEIGHBOURS : LM_NORIENT_NONE;
+    /* "neighbours" and the curve's sign are applied after the construction
+     * (orient_constructed) */
+    o->orient = bd->orient == LM_ORIENT_AWAY ? LM_NORIENT_AWAY : LM_NORIENT_NONE;
     o->orient_point[0] = bd->ox;
     o->orient_point[1] = bd->oy;
     if (method != LM_NORMALS_ISOSURFACE)
@@ -167,6 +236,7 @@ static lm_status without_connectivity(lm_sim *sim, int b)
                  sim->t, sim->step, b + 1, why);
         return LM_ERR_UNSTABLE;
     }
+    orient_constructed(p, bd, nx, ny, flags);
     for (size_t k = 0; k < n; k++) {
         if (flags[k] & LM_NF_UNDEFINED) continue;
         /* tangent = normal turned -90 degrees, so that normal = tangent
@@ -183,15 +253,23 @@ lm_status lm_membrane_tangents(lm_sim *sim)
     for (int b = 0; b < sim->nbodies; b++) {
         const lm_body *bd = &sim->bodies[b];
         if (!bd->membrane || bd->count < 2) continue;
+        /* "neighbours" on a closed curve: its neighbours in curve order
+         * agree, outward as the default */
+        int sign = bd->orient == LM_ORIENT_CURVE ||
+                   (bd->orient == LM_ORIENT_NEIGHBOURS && bd->closed) ? curve_side(p, bd) : 1;
         if (bd->normals == LM_NORMALS_CONNECTIVITY) {
-            connectivity(p, bd);
+            connectivity(p, bd, sign);
             /* the curve's direction fixes the sign; asked to point away
              * from a point, turn the tangents (t(x)t does not change) */
-            if (bd->orient == 1)
+            if (bd->orient == LM_ORIENT_AWAY)
                 orient_away(p, bd);
         } else {
-            /* a first guess for points whose normal is undefined */
-            if (!sim->prepared) connectivity(p, bd);
+            /* a first guess for points whose normal is undefined, and
+             * the reference "neighbours" keeps in time: outward on a
+             * closed membrane whatever the orientation asked */
+            if (!sim->prepared)
+                connectivity(p, bd, bd->closed && bd->orient != LM_ORIENT_AWAY
+                                        ? curve_side(p, bd) : sign);
             lm_status st = without_connectivity(sim, b);
             if (st != LM_OK) return st;
         }

@@ -138,9 +138,13 @@ static lm_status add_points(lm_sim *sim, int b, const lm_membrane_def *def)
     return LM_OK;
 }
 
-/* Which way the normals point: as asked, or for the constructions without
- * connectivity away from the points' centroid (outward for a convex
- * membrane; quarter models give the centre). */
+/* Which way the normals point: as asked, or by the curve (LM_ORIENT_CURVE,
+ * membrane.c): a closed membrane's out of the region it encloses, by its
+ * winding, every step; an open one's to one side of its direction, chosen
+ * here and kept: the side away from the points' centroid summed over the
+ * points (outward for an arc, a quarter model's included), the left on a
+ * tie (a straight string). Fixed by the curve, not by a point in space,
+ * the sign cannot turn as the body moves. */
 static void orient(lm_sim *sim, lm_body *bd, const lm_membrane_def *def)
 {
     if (def->orient != LM_ORIENT_CENTROID) {
@@ -149,16 +153,28 @@ static void orient(lm_sim *sim, lm_body *bd, const lm_membrane_def *def)
         bd->oy = def->oy;
         return;
     }
-    bd->orient = LM_ORIENT_NONE;
-    if (def->normals == LM_NORMALS_CONNECTIVITY) return;
+    bd->orient = LM_ORIENT_CURVE;
+    bd->side = 1;
+    if (bd->closed) return;
+    const double *x = sim->p.x, *y = sim->p.y;
+    size_t a = bd->first, n = bd->count;
     double cx = 0, cy = 0;
-    for (size_t q = bd->first; q < bd->first + bd->count; q++) {
-        cx += sim->p.x[q];
-        cy += sim->p.y[q];
+    for (size_t q = a; q < a + n; q++) {
+        cx += x[q];
+        cy += y[q];
     }
-    bd->orient = LM_ORIENT_AWAY;
-    bd->ox = cx / (double)bd->count;
-    bd->oy = cy / (double)bd->count;
+    cx /= (double)n;
+    cy /= (double)n;
+    double s = 0, scale = 0;
+    for (size_t k = 0; k < n; k++) {
+        size_t i = a + (k > 0 ? k - 1 : 0), j = a + (k + 1 < n ? k + 1 : n - 1);
+        /* the left normal (-dy, dx) of the chord through the neighbours */
+        double dx = x[j] - x[i], dy = y[j] - y[i];
+        double wx = x[a + k] - cx, wy = y[a + k] - cy;
+        s += -dy * wx + dx * wy;
+        scale += sqrt(dx * dx + dy * dy) * sqrt(wx * wx + wy * wy);
+    }
+    if (s < -1e-9 * scale) bd->side = -1;
 }
 
 int lm_sim_create_membrane(lm_sim *sim, const lm_membrane_def *def)

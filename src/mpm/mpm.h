@@ -185,15 +185,19 @@ typedef enum lm_normals {
  * interior nodes of a uniformly stretched membrane (membrane_force.c). */
 typedef enum lm_mforce { LM_MFORCE_POINT = 0, LM_MFORCE_SEGMENT = 1 } lm_mforce;
 
-/* Which way a membrane's normals point (the stress does not depend on it;
- * drawing and the gas side do). LM_ORIENT_CENTROID is for definitions
- * only: away from the points' centroid for the constructions without
- * connectivity, none for connectivity. */
+/* Which way a membrane's normals point (the stress does not depend on it:
+ * sigma_t t(x)t and t.de.t are even in t; drawing does). LM_ORIENT_CENTROID
+ * is for definitions only, the default: it becomes LM_ORIENT_CURVE. */
 typedef enum lm_orient {
     LM_ORIENT_CENTROID = -1,
-    LM_ORIENT_NONE = 0,
+    LM_ORIENT_NONE = 0,       /* as the method finds them (unoriented) */
     LM_ORIENT_AWAY = 1,       /* away from (ox, oy) */
-    LM_ORIENT_NEIGHBOURS = 2  /* agree with their neighbours */
+    LM_ORIENT_NEIGHBOURS = 2, /* agree with their neighbours, and in time */
+    /* by the curve, for every normals method (membrane.c): a closed
+     * membrane's point out of the region it encloses, by the sign of its
+     * signed area, every step; an open one's to the side `side` of the
+     * curve's direction (+1 left, -1 right), fixed at creation */
+    LM_ORIENT_CURVE = 3
 } lm_orient;
 
 #define LM_NAME_MAX 64
@@ -206,6 +210,7 @@ typedef struct lm_body {
     lm_normals normals;
     int orient;            /* normals' sign: lm_orient */
     double ox, oy;
+    int side;              /* LM_ORIENT_CURVE, open: +1 left, -1 right */
     double pe_ref;         /* this body's share of sim->pe_ref */
     lm_mforce force;       /* membrane: how its stress reaches the grid */
     int seg_ready;         /* segment rest lengths set (membrane_force.c) */
@@ -522,7 +527,8 @@ void lm_body_velocity(const lm_sim *sim, int body, double *vx, double *vy);
 double lm_body_mass(const lm_sim *sim, int body);
 /* Linear momentum of all particles. */
 void lm_sim_momentum(const lm_sim *sim, double *px, double *py);
-/* Mean gas pressure (gamma - 1) rho e, without q, over a gas body. */
+/* Mean gas pressure (gamma - 1) rho e, without q, over a gas body's
+ * particles, mass-weighted (gas:pressure("particles")). */
 double lm_body_mean_pressure(const lm_sim *sim, int body);
 /* The pressure integral over a gas body, sum_p V_p p_p = (gamma - 1)
  * sum_p m_p e_p (without q): the quadrature the internal forces use. */
@@ -537,8 +543,21 @@ double lm_body_mean_tangential_stress(const lm_sim *sim, int body);
 /* Distance from (cx, cy) to the membrane along the ray at `deg` degrees;
  * -1 if the ray misses it. */
 double lm_membrane_radius_at(const lm_sim *sim, int body, double deg, double cx, double cy);
-/* Gas particles outside the membrane (closed through (cx, cy) if open). */
-size_t lm_count_outside(const lm_sim *sim, int gas, int membrane, double cx, double cy);
+/* A gas's particles against a membrane's polygon (closed through (cx, cy)
+ * if open; diag_gas.c): on the near side, and on the far side (outside
+ * when inside = 0, inside when 1) within `beyond` of the polygon or beyond
+ * it, with the deepest distance on the far side (length units). */
+typedef struct lm_far {
+    size_t near, within, beyond;
+    double depth;
+} lm_far;
+int lm_gas_far_side(const lm_sim *sim, int gas, int membrane, double cx, double cy,
+                    int inside, double beyond, lm_far *out);
+/* The gas's pressure over the space it fills: the mean of the nodal
+ * pressure (gamma - 1) sum_p m_p e_p N_ip / V_i over the nodes whose
+ * support lies wholly in it (diag_gas.c); *nodes how many (0: none, and the
+ * volume-weighted particle mean is returned). */
+double lm_gas_space_pressure(const lm_sim *sim, int body, size_t *nodes);
 /* The gas pressure interpolated to the grid nodes (mass-weighted; NaN
  * where no gas is): (nx+1)(ny+1) values, x fastest. */
 size_t lm_grid_gas_pressure(const lm_sim *sim, double *out);

@@ -52,7 +52,7 @@ sim:every(2e-5, function()
       cnt[i] = cnt[i] + 1
     end
   end
-  psum = psum + gas:pressure()
+  psum = psum + gas:pressure("particles")
   nsamp = nsamp + 1
 end)
 sim:run{ t_end = t_end }

@@ -18,6 +18,9 @@
 -- +0.29 %: these three are asserted. Printed only, as they miss: linear
 -- with point quadrature -7.2 % / -4.8 % (cell-crossing noise), gimp with
 -- segments -5.6 % / -6.7 % with 6 gas points through the membrane.
+-- every gas particle outside the membrane: membrane:escaped's count beyond a
+-- quarter cell plus its skin-grazers (issue 30: the count this file used)
+local function outside(beyond, _, grazing) return beyond + grazing end
 local p0, R, t, E, nu = 1000, 0.5, 0.1, 1e6, 0.3
 local t_end = lamina.param("t_end", 0.05)
 
@@ -58,12 +61,12 @@ end)
 sim:run{ t_end = t_end }
 local et, eh = sum_t / sum_ref - 1, sum_h / sum_ref - 1
 print(string.format("%s, %s: time-averaged sigma_t t / (p r / 2) - 1 = %.2f %%, sigma_th t: %.2f %%; " ..
-                    "gas out %d", basis, force, 100 * et, 100 * eh, mem:escaped(gas)))
+                    "gas out %d", basis, force, 100 * et, 100 * eh, outside(mem:escaped(gas))))
 print("t, sigma_t t / (p r/2), sigma_th t / (p r/2), mean r:")
 for k = 1, #series, 10 do print("  " .. series[k]) end
 sim:frame{ file = "axisym_sphere_" .. basis .. "_" .. force .. ".png", colour = "pressure",
            mirror = "x", title = "gas-filled sphere (axisymmetric), t = 0.05 s" }
-return et, eh, mem:escaped(gas)
+return et, eh, outside(mem:escaped(gas))
 end
 
 for _, c in ipairs{ {"bspline2", "segment"}, {"bspline2", "point"}, {"linear", "segment"} } do

@@ -12,6 +12,9 @@
 -- holds too (0.013 %, 0.05 %); GIMP with segments just misses (printed).
 -- The first run names neither basis nor force: lamina's defaults (the
 -- quadratic B-spline and segments, issue 13 items 1-2) must hold it.
+-- every gas particle outside the membrane: membrane:escaped's count beyond a
+-- quarter cell plus its skin-grazers (issue 30: the count this file used)
+local function outside(beyond, _, grazing) return beyond + grazing end
 local p0, r, t, E, nu = 1000, 0.5, 0.1, 1e6, 0.3
 
 local function run(force, basis)
@@ -38,8 +41,8 @@ local function run(force, basis)
   sim:run{ t_end = 0.05 }
   assert(basis or (sim.basis == "bspline2" and mem.force == "segment"), "the defaults changed")
   print(string.format("%-8s %-7s: radius change max %.3f %%, hoop stress change max %.3f %%, gas out %d",
-                      basis or "default", force or "", 100 * wr, 100 * ws, mem:escaped(gas)))
-  return wr, ws, mem:escaped(gas)
+                      basis or "default", force or "", 100 * wr, 100 * ws, outside(mem:escaped(gas))))
+  return wr, ws, outside(mem:escaped(gas))
 end
 
 for _, basis in ipairs{false, "linear"} do

@@ -10,6 +10,9 @@
 -- stress is within 5 % of p r / t (averaged p and r); the membrane stays
 -- circular (radius at 0 and 90 degrees within 1 %); no gas escapes; total
 -- energy stays within 0.1 % (viscous dissipation is small here).
+-- every gas particle outside the membrane: membrane:escaped's count beyond a
+-- quarter cell plus its skin-grazers (issue 30: the count this file used)
+local function outside(beyond, _, grazing) return beyond + grazing end
 local sim, gas, mem = require("circle_membrane").setup()
 -- the space mean before the first step: the polygon of the 91 points has
 -- area 90 (r^2 / 2) sin 1 deg, and the clipped gas (gamma - 1) m e = p0 A
@@ -19,14 +22,14 @@ assert(math.abs(mem:enclosed_area() - poly) <= 1e-12, "enclosed area of the quar
 local p_space = gas:pressure(mem)
 assert(math.abs(p_space / (1000 * (math.pi / 16) / poly) - 1) <= 5e-5,
        string.format("space-mean pressure at t = 0: %.6f", p_space))
-assert(math.abs(gas:pressure() - 1000) <= 1e-9, "particle-mean pressure at t = 0")
+assert(math.abs(gas:pressure("particles") - 1000) <= 1e-9, "particle-mean pressure at t = 0")
 local escaped = 0
 local rec = sim:record{ every = 1e-4, energy = true, values = {
-  p = function() return gas:pressure() end,
+  p = function() return gas:pressure("particles") end,
   hoop = function() return mem:hoop_stress() end,
   r0 = function() return mem:radius_at(0) end,
   r90 = function() return mem:radius_at(90) end,
-  escaped = function() escaped = math.max(escaped, mem:escaped(gas)); return escaped end } }
+  escaped = function() escaped = math.max(escaped, outside(mem:escaped(gas))); return escaped end } }
 sim:run{ t_end = 0.05 }
 
 local t0, t1 = 0.0125, 0.05

@@ -28,6 +28,9 @@
 -- 1.4 %, hidden kinetic energy at the end 11.0 / 6.3 / 2.9 (of ~112), both
 -- falling with refinement; the particle total rises by 0.5 / 1.0 / 1.2 %
 -- (the hidden energy outweighs the loss), reported, not asserted.
+-- every gas particle outside the membrane: membrane:escaped's count beyond a
+-- quarter cell plus its skin-grazers (issue 30: the count this file used)
+local function outside(beyond, _, grazing) return beyond + grazing end
 local dog = require("dogbone")
 local t_end = 2.5
 
@@ -36,12 +39,12 @@ local function expand(h)
   local escaped = 0
   local rec = sim:record{ every = 0.01, energy = true, values = {
     p = function() return gas:pressure(mem) end,
-    pp = function() return gas:pressure() end,
+    pp = function() return gas:pressure("particles") end,
     hoop = function() return mem:hoop_stress() end,
     r0 = function() return mem:radius_at(0) end,
     r90 = function() return mem:radius_at(90) end,
     gk = function() return sim:energy().grid_kinetic end,
-    escaped = function() escaped = math.max(escaped, mem:escaped(gas)); return escaped end } }
+    escaped = function() escaped = math.max(escaped, outside(mem:escaped(gas))); return escaped end } }
   sim:run{ t_end = t_end }
   local t0 = t_end - 1
   local r = { p = rec:mean("p", t0, t_end), pp = rec:mean("pp", t0, t_end), hoop = rec:mean("hoop", t0, t_end),

@@ -17,6 +17,9 @@
 --   * dt = 0.35e-4 at the deck's 33 x 33 nodes on 1.6 (cell 0.05) and
 --     7e-4 h elsewhere, the deck's Courant number 1.04 (lamina's
 --     plane-stress membrane wave).
+-- every gas particle outside the membrane: membrane:escaped's count beyond a
+-- quarter cell plus its skin-grazers (issue 30: the count this file used)
+local function outside(beyond, _, grazing) return beyond + grazing end
 local b = require("dogbone_box9")
 
 local area = b.gas_area()
@@ -44,7 +47,7 @@ for _, h in ipairs{0.4, 0.2, 0.1, 0.05} do
     table5[h], sim.dt, sim:courant_number()))
   assert(#mem == 600, "membrane point count")
   assert(math.abs(mm - b.membrane_mass()) < 1e-12, "membrane mass")
-  assert(mem:escaped(gas) == 0, "gas outside the membrane at the start")
+  assert(outside(mem:escaped(gas)) == 0, "gas outside the membrane at the start")
   assert(math.abs(sim.dt - 0.35e-4 * h / 0.05) < 1e-15, "dt rule")
   assert(math.abs(sim:courant_number() - 0.35e-4 * math.sqrt(1e6 / ((1 - 0.09) * 0.5)) / 0.05) < 1e-9,
          "Courant number")
@@ -74,7 +77,7 @@ end
 do
   local sim, gas, mem = b.setup(0.4)
   local out = 0
-  sim:every(0.05, function() out = math.max(out, mem:escaped(gas, {-1, -1})) end)
+  sim:every(0.05, function() out = math.max(out, outside(mem:escaped(gas, {-1, -1}))) end)
   sim:run{ t_end = 2 }
   local r0, r90 = b.radius(mem, 0), b.radius(mem, 90)
   print(string.format("cell 0.4 to t = 2: r(0) %.4f, r(90) %.4f, gas outside %d", r0, r90, out))

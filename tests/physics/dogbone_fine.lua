@@ -19,6 +19,9 @@
 -- hoop -1.9 %, no point split. The gallery's
 -- split run to t = 4: +0.2 % over [3, 4]; quadratic to t = 4: r(0) = r(90) =
 -- 1.4085, p 28.47, no gas out.
+-- every gas particle outside the membrane: membrane:escaped's count beyond a
+-- quarter cell plus its skin-grazers (issue 30: the count this file used)
+local function outside(beyond, _, grazing) return beyond + grazing end
 local dog = require("dogbone")
 local t_end = 1.5
 
@@ -30,7 +33,7 @@ local function run(name, o)
     hoop = function() return mem:hoop_stress() end,
     r0 = function() return mem:radius_at(0) end,
     r90 = function() return mem:radius_at(90) end,
-    escaped = function() escaped = math.max(escaped, mem:escaped(gas)); return escaped end } }
+    escaped = function() escaped = math.max(escaped, outside(mem:escaped(gas))); return escaped end } }
   sim:run{ t_end = t_end }
   local t0 = 0.5
   local p, hoop = rec:mean("p", t0, t_end), rec:mean("hoop", t0, t_end)

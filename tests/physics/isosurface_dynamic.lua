@@ -30,7 +30,7 @@ local function run(method)
   local sim, gas, mem = circle.setup{ normals = method }
   local radial, conn = {}, {}
   local rec = sim:record{ every = sim.dt, values = {
-    p = function() return gas:pressure() end,
+    p = function() return gas:pressure("particles") end,
     err = function()
       radial[#radial + 1] = circle.worst_normal_error(mem)
       conn[#conn + 1] = circle.worst_connectivity_error(mem)
