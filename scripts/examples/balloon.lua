@@ -18,7 +18,7 @@ local out   = lamina.param("out", "out/balloon")
 local every = lamina.param("every", 0.02)
 
 local sim = lamina.sim{ domain = {0, 0, 0.8, 1.4}, cell = cell, dt = 1e-3 * cell,   -- Courant 0.88 on the membrane (its segment wave speed)
-                        basis = "linear", gravity = {0, -9.81},
+                        gravity = {0, -9.81},
                         boundary = { left = "symmetry", bottom = "symmetry",
                                      right = "fixed", top = "fixed" } }
 local air = lamina.gas{ rho = 1, p = 100, gamma = 1.4, mu = 0.2 }
@@ -28,7 +28,7 @@ local centre, radius = {0, 0.85}, 0.4
 local gas = sim:body{ material = air, ppc = 16, name = "gas", fill = "clipped",
                       velocity = {0, -3},
                       region = lamina.disk{ center = centre, radius = radius } }
-local mem = sim:membrane{ material = skin, count = 90, name = "balloon", normals = "connectivity", orient = "none",
+local mem = sim:membrane{ material = skin, count = 90, name = "balloon", normals = "isosurface",
                           velocity = {0, -3},
                           curve = lamina.arc{ center = centre, radius = radius,
                                               from = 90, to = -90 } }
