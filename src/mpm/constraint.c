@@ -40,10 +40,8 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "step.h"
-
 
 /* One heavy point of the step. */
 typedef struct lm_con {
@@ -52,12 +50,11 @@ typedef struct lm_con {
     double minv;        /* 1 / M' */
 } lm_con;
 
-/* A node's weight for particle q as the gather sees it: wm for a scalar
- * (the fold's), wx and wy for the velocity components (0 where a wall holds
- * the component). */
+/* A node's weight for particle q as the gather sees it, per velocity
+ * component (0 where a wall holds the component). */
 typedef struct cw {
     long i;
-    double wm, wx, wy;
+    double wx, wy;
 } cw;
 
 int lm_constraint_active(const lm_sim *sim)
@@ -120,8 +117,7 @@ static int weights(const lm_sim *sim, size_t q, cw *w)
         double wx = held(g, ix, iy, 1) ? 0 : sx * N, wy = held(g, ix, iy, 0) ? 0 : sy * N;
         int k = 0;
         while (k < n && w[k].i != j) k++;
-        if (k == n) w[n++] = (cw){j, 0, 0, 0};
-        w[k].wm += N;
+        if (k == n) w[n++] = (cw){j, 0, 0};
         w[k].wx += wx;
         w[k].wy += wy;
     }
