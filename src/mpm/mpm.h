@@ -291,9 +291,8 @@ typedef struct lm_sim {
     lm_pin *pins;          /* pin.c */
     int npins;
     double *pin_w, *pin_vx, *pin_vy;   /* per node: sum of the held particles'
-                              N_ip and N_ip v_p (allocated with the first pin;
-                              the node-holding pins of a run with contact) */
-    struct lm_con *cons;   /* constraint.c: the held and heavy points of the step */
+                              N_ip and N_ip v_p (allocated with the first pin) */
+    struct lm_con *cons;   /* constraint.c: the heavy end points of the step */
     size_t ncons, capcons;
     lm_link *links;        /* link.c */
     int nlinks;
