@@ -190,6 +190,20 @@ int lm_sim_create_membrane(lm_sim *sim, const lm_membrane_def *def)
         return -1;
     }
     lm_body *bd = &sim->bodies[b];
+    if (def->end_mass > 0 && def->force == LM_MFORCE_SEGMENT) {
+        /* the wire's own share of the heavy point stays on the lumped
+         * grid, the rest rides on its constraint (constraint.c) */
+        const lm_material *mat = sim->mats[def->mat];
+        double e = def->strain ? def->strain[def->n - 1] : 0;
+        double ds_ref = def->ds * exp(-e);
+        double mw = mat->rho * mat->thickness * ds_ref;
+        if (sim->def.axisym) mw *= lm_axisym_ring_radius(def->x[def->n - 1] * exp(-e), ds_ref);
+        if (def->end_mass > mw) bd->end_grid_mass = mw;
+        if (lm_constraint_reserve(sim) != LM_OK) {
+            lm_sim_drop_last_body(sim);
+            return -1;
+        }
+    }
     bd->normals = def->normals;
     bd->force = def->force;
     lm_sim_set_body_name(sim, b, def->name);

@@ -214,6 +214,9 @@ typedef struct lm_body {
     double pe_ref;         /* this body's share of sim->pe_ref */
     lm_mforce force;       /* membrane: how its stress reaches the grid */
     int seg_ready;         /* segment rest lengths set (membrane_force.c) */
+    double end_grid_mass;  /* > 0: the last point is a heavy end point whose
+                              mass beyond this wire share rides off the lumped
+                              grid, tied to it by constraint.c */
     char name[LM_NAME_MAX];/* for messages; "" = unnamed */
 } lm_body;
 
@@ -294,6 +297,8 @@ typedef struct lm_sim {
     int npins;
     double *pin_w, *pin_vx, *pin_vy;   /* per node: sum of the held particles'
                               N_ip and N_ip v_p (allocated with the first pin) */
+    struct lm_con *cons;   /* constraint.c: the heavy end points of the step */
+    size_t ncons, capcons;
     lm_link *links;        /* link.c */
     int nlinks;
     struct lm_contact *contact;   /* pairs in contact (contact.h); NULL: none */

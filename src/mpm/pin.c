@@ -77,6 +77,7 @@ void lm_sim_set_pin_velocity(lm_sim *sim, int pin, double vx, double vy)
 /* Step 1: w_i = sum N_ip and sum N_ip v_pin over the held particles. */
 void lm_pin_p2g(lm_sim *sim)
 {
+    if (lm_constraint_active(sim)) lm_constraint_p2g(sim);   /* heavy ends */
     if (sim->npins == 0) return;
     const lm_grid *g = &sim->grid;
     const lm_particles *p = &sim->p;

@@ -144,6 +144,7 @@ void lm_sim_free(lm_sim *sim)
     free(sim->pins);
     free(sim->links);
     free(sim->pin_w);
+    free(sim->cons);
     lm_contact_free(sim->contact);
     lm_nwork_delete(sim->nwork);
     lm_ahead_free(sim->ahead);

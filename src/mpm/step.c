@@ -221,6 +221,13 @@ void lm_step_grid_update(lm_sim *sim)
     lm_grid *g = &sim->grid;
     size_t nn = lm_grid_nodes(g);
     double dt = sim->def.dt;
+    if (lm_constraint_active(sim)) {
+        /* heavy end points, on p and f with the walls applied (the solve
+         * leaves the walls' components alone: constraint.c) */
+        lm_grid_apply_bc(g, g->px, g->py);
+        lm_grid_apply_bc(g, g->fx, g->fy);
+        lm_constraint_grid(sim);
+    }
 #pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
     for (long i = 0; i < (long)nn; i++) {
         g->px[i] += dt * g->fx[i];
@@ -289,6 +296,7 @@ void lm_step_strain_velocity_end(lm_sim *sim, int remap)
     }
     lm_pin_velocity(sim);
     lm_grid_apply_bc(g, g->vx, g->vy);
+    if (lm_constraint_active(sim)) lm_constraint_velocity(sim);   /* heavy ends */
     double *const fill[2] = {g->vx, g->vy};
     static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
     lm_grid_fill(g, 2, fill, comp);
@@ -308,6 +316,7 @@ void lm_step_strain_velocity(lm_sim *sim)
         for (long i = 0; i < (long)nn; i++) g->vx[i] = g->vy[i] = 0;
         static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
         scatter(sim, SCATTER_MOMENTUM, 2, out, comp);
+        lm_constraint_remap(sim);   /* a heavy point's extra momentum off */
     } else {
 #pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
         for (long i = 0; i < (long)nn; i++) {

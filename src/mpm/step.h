@@ -277,6 +277,14 @@ void lm_pin_particles(lm_sim *sim);  /* after step 4: v_p = v_pin */
 void lm_pin_hold(const lm_sim *sim, const double *m, double *px, double *py, double *fx,
                  double *fy);
 void lm_pin_velocity(lm_sim *sim);   /* step 5: the strain velocity */
+/* Heavy end points: only a wire-sized share on the lumped grid, the rest
+ * tied to the velocity at the point (constraint.c). */
+int lm_constraint_active(const lm_sim *sim);   /* a heavy end point, no contact */
+lm_status lm_constraint_reserve(lm_sim *sim);  /* room for every heavy point */
+void lm_constraint_p2g(lm_sim *sim);       /* step 1: the extra mass off the grid */
+void lm_constraint_grid(lm_sim *sim);      /* step 3: shared on p and on f */
+void lm_constraint_remap(lm_sim *sim);     /* step 5: the extra momentum off */
+void lm_constraint_velocity(lm_sim *sim);  /* step 5: the strain velocities */
 
 /* material_gas.c: [F] §3.3 eqs 21-25, [F] eq 26. */
 double lm_gas_sound_speed(const lm_material *mat, double e);

@@ -1,0 +1,302 @@
+/* constraint.c - a heavy end point moves the nodes it shares with the
+ * wire only as much as its velocity needs (issue 30 item 2).
+ *
+ * [M] §3.1.1's spring-mass hangs a heavy point (end_mass) on a wire. With
+ * the lumped mass of every MPM scheme its mass spreads over every node of
+ * its stencil, and the wire's points sharing those nodes ride rigidly with
+ * it: the spring acts shorter. Measured (k = AE/L = 2.5e5, m = 5, cell 0.1,
+ * default quadratic B-spline and segment forces): period -9.0 % at 3
+ * points a cell, -8.3 % at 1, and still -2.4 % at cell 0.025; the wider the
+ * stencil, the worse (the papers' bilinear hats: -0.5 %).
+ *
+ * Here only a wire-sized share m_w (the mass the point would have without
+ * end_mass, rho t ds) of the point's mass M goes on the lumped grid. The
+ * rest, M' = M - m_w, is the consistent mass M' N N^T of that one point: it
+ * adds to the lumped matrix only in the direction N of the point's own
+ * weights. Solving (M_L + M' N N^T) u = r by Sherman-Morrison is a
+ * constraint with a finite mass: the nodes get the impulse lambda N_i,
+ *   lambda = (V - sum_i N_i r_i / m_i) / (sum_i N_i^2 / m_i + 1 / M'),
+ * with V the velocity M' brings (or, for forces, its own acceleration g),
+ * so that momentum is conserved and only the velocity interpolated at the
+ * point is tied to M'. It is solved for the momenta (the consistent p2g:
+ * M' shares its momentum) and, separately, for the forces (M' accelerates
+ * with the nodes at it), so that FLIP (step 4) carries the constrained
+ * accelerations only, as for every other particle: the point's own FLIP
+ * increment is then the acceleration of the whole mass M, and its move the
+ * constrained v^L. (Putting the projection into the forces too gave the
+ * point the grid's fresh velocity each step, an inelastic collision that
+ * lost 0.5 % of the energy a period.) The MUSL re-map (step 5) takes the
+ * extra momentum off again and shares it the same way. Several heavy
+ * points that share nodes are solved by Gauss-Seidel sweeps in body order
+ * to a relative 1e-12.
+ *
+ * The walls are the grid's own constraints: the weights are those the
+ * gather sees, ghost nodes folded into their mirrors with the image's sign
+ * (grid_walls.c), and a component a wall holds at zero is not changed (an
+ * infinite mass there). Runs with contact keep the lumped heavy point (the
+ * bodies' own fields would need the same split). The papers' point-force
+ * membranes keep it too: [M] §3.1.1 and [T] App. A.2 lump it, and their
+ * pages (V1, the noise spring) reproduce what that gives. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "step.h"
+
+/* One heavy point of the step. */
+typedef struct lm_con {
+    size_t q;
+    double vx, vy;      /* what M' brings: its velocity or its acceleration */
+    double minv;        /* 1 / M' */
+} lm_con;
+
+/* A node's weight for particle q as the gather sees it, per velocity
+ * component (0 where a wall holds the component). */
+typedef struct cw {
+    long i;
+    double wx, wy;
+} cw;
+
+int lm_constraint_active(const lm_sim *sim)
+{
+    if (sim->contact) return 0;
+    for (int b = 0; b < sim->nbodies; b++)
+        if (sim->bodies[b].end_grid_mass > 0) return 1;
+    return 0;
+}
+
+/* The image of grid index k across the walls of an axis of n cells:
+ * k itself inside, -k or 2n - k beyond a walled side (sign of the image
+ * for x and y in *sx, *sy). */
+static int image(const lm_grid *g, int k, int n, int lo, int hi, int normal_x, double *sx,
+                 double *sy)
+{
+    int side = k < 0 ? lo : k > n ? hi : -1;
+    if (side < 0 || g->bc[side] == LM_BC_FREE) return k;
+    if (g->bc[side] == LM_BC_FIXED) {
+        *sx = -*sx;
+        *sy = -*sy;
+    } else if (normal_x) {
+        *sx = -*sx;
+    } else {
+        *sy = -*sy;
+    }
+    return k < 0 ? -k : 2 * n - k;
+}
+
+/* Is component x (cx = 1) or y of node (ix, iy) held at zero by a wall? */
+static int held(const lm_grid *g, int ix, int iy, int cx)
+{
+    if (ix == 0 && g->bc[LM_LEFT] != LM_BC_FREE && (cx || g->bc[LM_LEFT] == LM_BC_FIXED)) return 1;
+    if (ix == g->nx && g->bc[LM_RIGHT] != LM_BC_FREE && (cx || g->bc[LM_RIGHT] == LM_BC_FIXED))
+        return 1;
+    if (iy == 0 && g->bc[LM_BOTTOM] != LM_BC_FREE && (!cx || g->bc[LM_BOTTOM] == LM_BC_FIXED))
+        return 1;
+    if (iy == g->ny && g->bc[LM_TOP] != LM_BC_FREE && (!cx || g->bc[LM_TOP] == LM_BC_FIXED))
+        return 1;
+    return 0;
+}
+
+/* Particle q's folded weights, merged by node: the count. */
+static int weights(const lm_sim *sim, size_t q, cw *w)
+{
+    const lm_grid *g = &sim->grid;
+    const int ns = g->sw * g->sw;
+    lm_weights wt;
+    lm_weights_of(sim, q, &wt);
+    int n = 0;
+    for (int c = 0; c < ns; c++) {
+        double N = wt.N[c];
+        if (N == 0) continue;
+        int i = lm_stencil_node(g, g->sw, sim->p.node[q], c);
+        int ix = i % g->sx - g->pad, iy = i / g->sx - g->pad;
+        double sx = 1, sy = 1;
+        ix = image(g, ix, g->nx, LM_LEFT, LM_RIGHT, 1, &sx, &sy);
+        iy = image(g, iy, g->ny, LM_BOTTOM, LM_TOP, 0, &sx, &sy);
+        long j = lm_grid_node(g, ix, iy);
+        double wx = held(g, ix, iy, 1) ? 0 : sx * N, wy = held(g, ix, iy, 0) ? 0 : sy * N;
+        int k = 0;
+        while (k < n && w[k].i != j) k++;
+        if (k == n) w[n++] = (cw){j, 0, 0};
+        w[k].wx += wx;
+        w[k].wy += wy;
+    }
+    return n;
+}
+
+/* The mass beyond the wire's share of body b's heavy end point (0: none). */
+static double heavy_extra(const lm_sim *sim, int b, size_t *q)
+{
+    const lm_body *bd = &sim->bodies[b];
+    if (!(bd->end_grid_mass > 0) || bd->count == 0) return 0;
+    *q = bd->first + bd->count - 1;
+    double e = sim->p.m[*q] - bd->end_grid_mass;
+    return e > 0 ? e : 0;
+}
+
+/* Takes each heavy point's extra mass M' and momentum M' v off what a
+ * scatter put on the nodes (m may be NULL: the re-map's momenta only).
+ * The walls' folds are the gather's transpose, so the image weights with
+ * the wall's own component left in are what the scatter added (the wall
+ * zeroes that component afterwards). */
+static void take_off_point(lm_sim *sim, size_t q, double e, double *m, double *ux, double *uy)
+{
+    const lm_grid *g = &sim->grid;
+    const lm_particles *p = &sim->p;
+    const int ns = g->sw * g->sw;
+    lm_weights wt;
+    lm_weights_of(sim, q, &wt);
+    for (int c = 0; c < ns; c++) {
+        double N = wt.N[c];
+        int i = lm_stencil_node(g, g->sw, p->node[q], c);
+        int ix = i % g->sx - g->pad, iy = i / g->sx - g->pad;
+        double sx = 1, sy = 1;
+        ix = image(g, ix, g->nx, LM_LEFT, LM_RIGHT, 1, &sx, &sy);
+        iy = image(g, iy, g->ny, LM_BOTTOM, LM_TOP, 0, &sx, &sy);
+        long j = lm_grid_node(g, ix, iy);
+        if (m) {
+            double before = m[j];
+            m[j] -= e * N;
+            /* what the rest put there, or rounding: nothing */
+            if (!(m[j] > 1e-12 * before)) m[j] = 0;
+        }
+        ux[j] -= e * p->vx[q] * sx * N;
+        uy[j] -= e * p->vy[q] * sy * N;
+    }
+}
+
+static void take_off(lm_sim *sim, double *m, double *ux, double *uy)
+{
+    for (int b = 0; b < sim->nbodies; b++) {
+        size_t q;
+        double e = heavy_extra(sim, b, &q);
+        if (e > 0 && !sim->p.pin[q]) take_off_point(sim, q, e, m, ux, uy);
+    }
+}
+
+/* Step 1, after the scatter. */
+void lm_constraint_p2g(lm_sim *sim)
+{
+    lm_grid *g = &sim->grid;
+    take_off(sim, g->m, g->px, g->py);
+}
+
+/* Step 5 (MUSL), after the re-map's scatter of m_p v_p. */
+void lm_constraint_remap(lm_sim *sim)
+{
+    lm_grid *g = &sim->grid;
+    if (lm_constraint_active(sim)) take_off(sim, NULL, g->vx, g->vy);
+}
+
+static size_t count(const lm_sim *sim)
+{
+    size_t n = 0;
+    for (int b = 0; b < sim->nbodies; b++) n += sim->bodies[b].end_grid_mass > 0;
+    return n;
+}
+
+/* Made when a heavy point is added, so that a step needs no memory of its
+ * own. */
+lm_status lm_constraint_reserve(lm_sim *sim)
+{
+    size_t n = count(sim);
+    if (n <= sim->capcons) return LM_OK;
+    lm_con *c = realloc(sim->cons, n * sizeof *c);
+    if (!c) {
+        snprintf(sim->err, sizeof sim->err, "out of memory for %zu heavy points", n);
+        return LM_ERR_MEMORY;
+    }
+    sim->cons = c;
+    sim->capcons = n;
+    return LM_OK;
+}
+
+/* The step's heavy points (a pinned one is the pin's: pin.c). */
+static void gather(lm_sim *sim)
+{
+    lm_con *c = sim->cons;
+    size_t j = 0, cap = sim->capcons;
+    for (int b = 0; b < sim->nbodies && j < cap; b++) {
+        size_t q;
+        double e = heavy_extra(sim, b, &q);
+        if (!(e > 0) || sim->p.pin[q]) continue;
+        c[j++] = (lm_con){q, 0, 0, 1 / e};
+    }
+    sim->ncons = j;
+}
+
+/* What M' brings to the field solved next: its velocity, or its own
+ * acceleration, gravity (the grid no longer carries its weight). */
+static void targets(lm_sim *sim, int accel)
+{
+    const lm_particles *p = &sim->p;
+    for (size_t a = 0; a < sim->ncons; a++) {
+        lm_con *c = &sim->cons[a];
+        c->vx = accel ? sim->def.gx : p->vx[c->q];
+        c->vy = accel ? sim->def.gy : p->vy[c->q];
+    }
+}
+
+/* Gauss-Seidel over the heavy points on a nodal field u with the lumped
+ * masses m: momenta or forces (vel = 0: the field is m_i times what is
+ * interpolated) or velocities (vel = 1). */
+static void solve(lm_sim *sim, int vel, double *ux, double *uy)
+{
+    const double *m = sim->grid.m;
+    lm_con *c = sim->cons;
+    double scale = 0;
+    for (size_t a = 0; a < sim->ncons; a++) scale = fmax(scale, fmax(fabs(c[a].vx), fabs(c[a].vy)));
+    for (int sweep = 0; sweep < 1000; sweep++) {
+        double worst = 0;
+        for (size_t a = 0; a < sim->ncons; a++) {
+            cw w[16];
+            int n = weights(sim, c[a].q, w);
+            double sx = 0, sy = 0, Sx = 0, Sy = 0;
+            for (int k = 0; k < n; k++) {
+                double mi = m[w[k].i];
+                if (!(mi > 0)) continue;
+                double r = vel ? 1 : 1 / mi;
+                sx += w[k].wx * ux[w[k].i] * r;
+                sy += w[k].wy * uy[w[k].i] * r;
+                Sx += w[k].wx * w[k].wx / mi;
+                Sy += w[k].wy * w[k].wy / mi;
+            }
+            scale = fmax(scale, fmax(fabs(sx), fabs(sy)));
+            double minv = c[a].minv;
+            double rx = c[a].vx - sx, ry = c[a].vy - sy;
+            double dx = rx / (Sx + minv), dy = ry / (Sy + minv);
+            worst = fmax(worst, fmax(fabs(rx), fabs(ry)));
+            for (int k = 0; k < n; k++) {
+                long i = w[k].i;
+                double mi = m[i];
+                if (!(mi > 0)) continue;
+                double r = vel ? 1 / mi : 1;
+                ux[i] += dx * w[k].wx * r;
+                uy[i] += dy * w[k].wy * r;
+            }
+            c[a].vx -= dx * minv;
+            c[a].vy -= dy * minv;
+        }
+        /* one heavy point: its residual is rounding after one sweep */
+        if (sim->ncons < 2 || !(worst > 1e-12 * scale)) break;
+    }
+}
+
+/* Step 3 with the walls applied to p and f, before p^L = p + dt f. */
+void lm_constraint_grid(lm_sim *sim)
+{
+    lm_grid *g = &sim->grid;
+    gather(sim);
+    targets(sim, 0);
+    solve(sim, 0, g->px, g->py);
+    targets(sim, 1);
+    solve(sim, 0, g->fx, g->fy);
+}
+
+/* Step 5, after the walls: the strain velocities share M' v the same way. */
+void lm_constraint_velocity(lm_sim *sim)
+{
+    lm_grid *g = &sim->grid;
+    targets(sim, 0);
+    solve(sim, 1, g->vx, g->vy);
+}
