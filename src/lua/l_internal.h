@@ -70,10 +70,17 @@ int la_load_script(lua_State *L, const char *path);
 
 /* l_path.c: every file a script names is checked here before it is
  * written (inside the output root, no NUL or control character, not a
- * device); returns the string at idx. la_opt_output_path reads table key
+ * device, nor a file lamina did not write; hidden names refused; the path
+ * noted in ROOT/.lamina-outputs); returns the string at idx. la_opt_output_path reads table key
  * `key` (NULL when absent). la_check_text refuses control characters in a
  * name that goes into a file's text (CSV headers). */
 const char *la_check_output_path(lua_State *L, const char *fn, int idx);
+/* the same confinement for a file a script reads (no ownership check) */
+const char *la_check_input_path(lua_State *L, const char *fn, int idx);
+/* l_outputs.c: whether lamina wrote the existing file `where` (rel: its
+ * path under root), and noting rel as lamina's (0, or -1 with err) */
+int la_output_owned(lua_State *L, const char *root, const char *rel, const char *where);
+int la_output_note(lua_State *L, const char *root, const char *rel, char *err, size_t len);
 const char *la_opt_output_path(lua_State *L, int idx, const char *fn, const char *key);
 void la_check_text(lua_State *L, const char *fn, const char *what, const char *s);
 

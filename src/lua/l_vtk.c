@@ -230,6 +230,15 @@ static int vtk_output(lua_State *L)
         v->cap = cap;
     }
     char path[PREFIX_MAX + 32], err[PREFIX_MAX + 128];
+    /* each piece is checked as its series' name was (l_path.c): it may
+     * not replace a file lamina did not write */
+    snprintf(path, sizeof path, "%s_%06d.vtu", v->prefix, v->count);
+    lua_pushstring(L, path);
+    la_check_output_path(L, "sim:vtk", -1);
+    snprintf(path, sizeof path, "%s_grid_%06d.vti", v->prefix, v->count);
+    lua_pushstring(L, path);
+    la_check_output_path(L, "sim:vtk", -1);
+    lua_pop(L, 2);
     snprintf(path, sizeof path, "%s_%06d.vtu", v->prefix, v->count);
     if (write_particles(sim, path, err, sizeof err)) return luaL_error(L, "sim:vtk: %s", err);
     snprintf(path, sizeof path, "%s_grid_%06d.vti", v->prefix, v->count);
