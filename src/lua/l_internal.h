@@ -83,6 +83,8 @@ int la_output_owned(lua_State *L, const char *root, const char *rel, const char 
 int la_output_note(lua_State *L, const char *root, const char *rel, char *err, size_t len);
 const char *la_opt_output_path(lua_State *L, int idx, const char *fn, const char *key);
 void la_check_text(lua_State *L, const char *fn, const char *what, const char *s);
+/* a CSV column name: letters, digits, space and _ . - ( ) [ ] / only */
+void la_check_csv_name(lua_State *L, const char *fn, const char *what, const char *s);
 
 /* l_material.c */
 void la_open_material(lua_State *L);

@@ -266,3 +266,23 @@ void la_check_text(lua_State *L, const char *fn, const char *what, const char *s
         luaL_error(L, "%s: %s '%s' contains a control character (newline, tab, ...)", fn,
                    what, printable(L, s, strlen(s)));
 }
+
+/* A name that becomes a field of a CSV header line (issue 31 item 2): the
+ * header is a file's first line, and a first line of `$(...)`, `;` or
+ * `import os` runs when someone does `sh energy.csv` or `python3 x.csv`
+ * (a CSV named conftest.py is collected by pytest). Letters, digits, space
+ * and _ . - ( ) [ ] / make no shell or Python statement that runs: such a
+ * line is at worst an unknown command or name. */
+void la_check_csv_name(lua_State *L, const char *fn, const char *what, const char *s)
+{
+    size_t n = strlen(s);
+    for (size_t i = 0; i < n; i++) {
+        unsigned char c = (unsigned char)s[i];
+        if ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+            strchr("_.-()[]/ ", c))
+            continue;
+        luaL_error(L, "%s: %s '%s' may hold only letters, digits, spaces and _ . - ( ) [ ] / "
+                   "(it heads a CSV column; '%s' is not allowed)", fn, what,
+                   printable(L, s, n), printable(L, s + i, 1));
+    }
+}

@@ -60,9 +60,8 @@ static la_column *add_column(lua_State *L, la_record *r, const char *name, int s
     memset(c, 0, sizeof *c);
     if (strlen(name) >= sizeof c->name)
         luaL_error(L, "sim:record: column name '%s' is too long", name);
-    la_check_text(L, "sim:record", "column name", name);   /* a CSV header line */
-    if (strpbrk(name, ",\""))
-        luaL_error(L, "sim:record: column name '%s' contains a comma or a quote", name);
+    /* a CSV header field: nothing that runs as shell or Python (l_path.c) */
+    la_check_csv_name(L, "sim:record", "column name", name);
     for (int i = 0; i < r->ncols - 1; i++)
         if (strcmp(r->cols[i].name, name) == 0)
             luaL_error(L, "sim:record: column '%s' is given twice", name);
