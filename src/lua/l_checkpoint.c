@@ -43,8 +43,7 @@ int la_sim_checkpoint(lua_State *L)
     if (has_every == has_at) return luaL_error(L, "%s: give exactly one of 'every' and 'at'", fn);
     double every = has_every ? la_number(L, 2, fn, "every") : 0;
     double at = has_at ? la_number(L, 2, fn, "at") : 0;
-    if (has_every && !(every > 0 && isfinite(every)))
-        return luaL_error(L, "%s: every must be positive (got %f)", fn, every);
+    if (has_every) la_check_interval(L, fn, "every", every, s->sim->t);
     if (has_at && !isfinite(at)) return luaL_error(L, "%s: at must be a finite time", fn);
     char *copy = malloc(len + 1);
     if (!copy) return luaL_error(L, "%s: out of memory", fn);
@@ -104,8 +103,11 @@ void la_checkpoint_due(lua_State *L, int sidx, la_sim *s)
     if (!s->ck_file || !(s->ck_next <= s->sim->t + 0.5 * s->sim->def.dt)) return;
     write_checkpoint(L, sidx, s);
     if (s->ck_every > 0) {
-        /* the next multiple after now, as events do: no bursts */
-        while (s->ck_next <= s->sim->t + 0.5 * s->sim->def.dt) s->ck_next += s->ck_every;
+        /* the next multiple after now, as events do: no bursts; computed,
+         * not counted (every = 1e-300 looped for ever, issue 31) */
+        double k = 0;
+        s->ck_next = la_next_multiple(s->ck_next, s->ck_every, &k,
+                                      s->sim->t + 0.5 * s->sim->def.dt);
     } else {
         s->ck_next = INFINITY;
     }
@@ -221,8 +223,9 @@ void la_checkpoint_restore(lua_State *L, int sidx, la_sim *s)
     }
     free(buf);
     la_sim_skip_due(s);
-    if (s->ck_file && s->ck_every > 0)
-        while (s->ck_next <= s->sim->t + 0.5 * s->sim->def.dt) s->ck_next += s->ck_every;
+    double now = s->sim->t + 0.5 * s->sim->def.dt, k = 0;
+    if (s->ck_file && s->ck_every > 0 && s->ck_next <= now)
+        s->ck_next = la_next_multiple(s->ck_next, s->ck_every, &k, now);
     else if (s->ck_file && s->ck_next <= s->sim->t + 0.5 * s->sim->def.dt)
         s->ck_next = INFINITY;
     return;

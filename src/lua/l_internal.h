@@ -160,6 +160,13 @@ void la_push_energy(lua_State *L, lm_energy e);
 /* Calls the function at fidx with the sim at `first` and then every
  * `interval` (0: once), between steps. */
 void la_sim_add_event(lua_State *L, int sidx, double first, double interval, int fidx);
+/* The first t0 + k interval after now (k updated, kept increasing), in
+ * O(1); the next representable time when rounding leaves none. */
+double la_next_multiple(double t0, double interval, double *k, double now);
+/* Refuses an interval that is not a positive finite time, or too small for
+ * the clock at t (t + interval == t, or more than 2^53 multiples to t). */
+void la_check_interval(lua_State *L, const char *fn, const char *what, double interval,
+                       double t);
 
 /* l_pin.c: body:pin{...} and the pin handle. la_sim_add_pin_function
  * (l_sim.c) keeps a driven pin's function; la_pins_update calls them before

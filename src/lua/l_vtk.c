@@ -265,8 +265,7 @@ int la_sim_vtk(lua_State *L)
     la_check_output_path(L, fn, -1);
     lua_pop(L, 1);
     double every = la_opt_number(L, 2, fn, "every", 0);
-    if (la_has(L, 2, "every") && !(every > 0))
-        return luaL_error(L, "%s: every must be positive (got %f)", fn, every);
+    if (la_has(L, 2, "every")) la_check_interval(L, fn, "every", every, s->sim->t);
     la_vtk *v = lua_newuserdatauv(L, sizeof *v, 0);
     memset(v, 0, sizeof *v);
     memcpy(v->prefix, file, len + 1);
