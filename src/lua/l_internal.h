@@ -67,6 +67,9 @@ lua_State *la_new_state(lamina_run *run);
  * is untrusted input"); la_load_script loads a regular text file only. */
 void la_open_sandbox(lua_State *L, const char *script);
 int la_load_script(lua_State *L, const char *path);
+/* l_pattern.c: string.find/match/gmatch/gsub refuse a call whose worst-case
+ * backtracking passes ~1e9 steps (C code cannot be interrupted) */
+void la_guard_patterns(lua_State *L);
 
 /* l_path.c: every file a script names is checked here before it is
  * written (inside the output root, no NUL or control character, not a
