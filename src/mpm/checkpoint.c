@@ -281,8 +281,18 @@ static int check_state(const lm_sim *sim, const unsigned char *b, size_t n, char
     for (int a = 0; a < NDOUBLES; a++, b += n * sizeof(double))
         for (size_t q = 0; q < n; q++) {
             double v = get_double(b, q);
+            const lm_grid *g = &sim->grid;
             if (!isfinite(v) || ((a == 4 || a == 5) && !(v > 0))) {
                 snprintf(why, wl, "particle %zu has %s = %g", q + 1, names[a], v);
+                return -1;
+            }
+            /* positions inside the domain: a step reads the nodes around
+             * each particle, and one far outside is an input error, not a
+             * simulation that failed */
+            if ((a == 0 && !(v >= g->x0 && v <= g->x0 + g->nx * g->hx)) ||
+                (a == 1 && !(v >= g->y0 && v <= g->y0 + g->ny * g->hy))) {
+                snprintf(why, wl, "particle %zu has %s = %g, outside the domain", q + 1,
+                         names[a], v);
                 return -1;
             }
         }

@@ -76,6 +76,7 @@ mutations = [
     ("particle pin 1000", put(data, "<i", ints + 8 * n, 1000), "has pin 1000"),
     ("particle mass -1", put(data, "<d", doubles + 4 * 8 * n, -1.0), "has m = -1"),
     ("particle x inf", put(data, "<d", doubles, math.inf), "has x = inf"),
+    ("particle y 1e10", put(data, "<d", doubles + 8 * n, 1e10), "has y = 1e+10, outside the domain"),
     ("material rho NaN", put(data, "<d", mats + 8, math.nan), "material 1: rho"),
     ("material kind", put(data, "<i", mats, 3), "material 1 is of another kind"),
     ("truncated", data[:len(data) - 100], "truncated"),
