@@ -264,7 +264,7 @@ void la_check_interval(lua_State *L, const char *fn, const char *what, double in
 {
     char msg[256];
     if (!(interval > 0) || !isfinite(interval)) {
-        snprintf(msg, sizeof msg, "must be a positive finite time (got %g)", interval);
+        snprintf(msg, sizeof msg, "must be positive and finite (got %g)", interval);
         luaL_error(L, "%s: %s %s", fn, what, msg);
     }
     /* a schedule is kept as t0 + k interval: past 2^53 multiples the count
