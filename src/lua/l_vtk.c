@@ -11,6 +11,7 @@
  * opens out/run.pvd as one time series (render/vtk.c writes the files). */
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "l_internal.h"
 #include "vtk.h"
@@ -239,12 +240,24 @@ static int vtk_output(lua_State *L)
     lua_pushstring(L, path);
     la_check_output_path(L, "sim:vtk", -1);
     lua_pop(L, 2);
+    /* a series on disk is its .pvd and the pieces it lists: when a piece
+     * or the .pvd cannot be written (a full disk), this output's pieces
+     * are removed, and the .pvd of the outputs before stays (issue 31) */
+    char grid[PREFIX_MAX + 32];
     snprintf(path, sizeof path, "%s_%06d.vtu", v->prefix, v->count);
+    snprintf(grid, sizeof grid, "%s_grid_%06d.vti", v->prefix, v->count);
     if (write_particles(sim, path, err, sizeof err)) return luaL_error(L, "sim:vtk: %s", err);
-    snprintf(path, sizeof path, "%s_grid_%06d.vti", v->prefix, v->count);
-    if (write_grid(sim, path, err, sizeof err)) return luaL_error(L, "sim:vtk: %s", err);
+    if (write_grid(sim, grid, err, sizeof err)) {
+        unlink(path);
+        return luaL_error(L, "sim:vtk: %s", err);
+    }
     v->times[v->count++] = sim->t;
-    if (write_pvd(v, err, sizeof err)) return luaL_error(L, "sim:vtk: %s", err);
+    if (write_pvd(v, err, sizeof err)) {
+        v->count--;
+        unlink(path);
+        unlink(grid);
+        return luaL_error(L, "sim:vtk: %s", err);
+    }
     return 0;
 }
 
