@@ -98,10 +98,10 @@ static int add_folder(frames *f, const char *dir, const char *out, const char *p
         rc = add_frame(f, path);
     }
     closedir(d);
-    if (rc == 0 && f->n > first)   /* (no frames: f->path may be NULL) */
-        qsort(f->path + first, f->n - first, sizeof *f->path, by_name);
-    else
+    if (rc != 0)   /* (an empty folder is not this: the caller says so) */
         fprintf(stderr, "lamina animate: out of memory\n");
+    else if (f->n > first)   /* (no frames: f->path may be NULL) */
+        qsort(f->path + first, f->n - first, sizeof *f->path, by_name);
     return rc;
 }
 

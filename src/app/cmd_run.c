@@ -1,6 +1,8 @@
 /* cmd_run.c - `lamina run SCRIPT.lua [--set name=value ...]`. */
+#include <errno.h>
 #include <lauxlib.h>
 #include <lua.h>
+#include <signal.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -156,6 +158,13 @@ int cmd_run(int argc, char **argv)
     lamina_interrupt_install_term();
     int rc = lamina_run_script(L, &run);
     if (run.stopped == LAMINA_STOP_SIGINT) rc = 128 + lamina_interrupt_signal();
+    /* what the script printed is output too: a full disk or a closed pipe
+     * fails the run (issue 31: `lamina run s.lua > /dev/full` returned 0) */
+    if ((fflush(stdout) != 0 || ferror(stdout)) && rc != 128 + SIGPIPE) {
+        fprintf(stderr, "lamina run: cannot write the script's output to stdout: %s\n",
+                strerror(errno ? errno : EIO));
+        if (rc == 0) rc = LAMINA_EXIT_USAGE;
+    }
     lamina_interrupt_uninstall();
     lua_close(L);
     if (run.frames && !run.quiet)

@@ -470,6 +470,8 @@ int cmd_sweep(int argc, char **argv)
         outdir = wb_absolute(def);
     }
     if (!outdir || !(jobs = plan(&o, outdir, &njobs))) goto done;
+    /* the job lines are shell: refuse what quoting cannot carry (issue 31) */
+    if ((o.emit || o.slurm) && sw_check_jobs(&c, jobs, njobs)) goto done;
     if (o.emit) {
         for (int i = 0; i < njobs; i++) sw_job_print_command(stdout, &c, &jobs[i]);
         status = fflush(stdout) == 0 ? 0 : LAMINA_EXIT_USAGE;

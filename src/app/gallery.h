@@ -164,6 +164,8 @@ int g_outputs(const char *dir, g_strs *images, g_strs *data, char *err, size_t e
 const char *g_key_image(const g_script *s, const g_strs *images);
 void g_markdown_cell(FILE *f, const char *s);
 void g_html(FILE *f, const char *s);
+/* s percent-encoded as one URL path segment (all but A-Z a-z 0-9 - . _ ~) */
+void g_url(FILE *f, const char *s);
 int g_write_page(const g_options *o, const g_script *s, const lu_json *meta, char *err,
                  size_t errlen);
 int g_write_index(const g_options *o, const g_scripts *all, char *err, size_t errlen);

@@ -95,6 +95,27 @@ static void links(const char *text, g_strs *out)
     }
 }
 
+static int hex(char c)
+{
+    return c >= '0' && c <= '9' ? c - '0' : c >= 'A' && c <= 'F' ? c - 'A' + 10
+         : c >= 'a' && c <= 'f' ? c - 'a' + 10 : -1;
+}
+
+/* %XX sequences of a link into their bytes, in place. */
+static void url_decode(char *s)
+{
+    char *w = s;
+    for (const char *r = s; *r; r++) {
+        if (r[0] == '%' && hex(r[1]) >= 0 && hex(r[2]) >= 0) {
+            *w++ = (char)(hex(r[1]) * 16 + hex(r[2]));
+            r += 2;
+        } else {
+            *w++ = *r;
+        }
+    }
+    *w = '\0';
+}
+
 static void check_index(const g_options *o, const char *name, const g_scripts *all,
                         void (*coverage)(FILE *, const g_options *), g_strs *p)
 {
@@ -108,6 +129,7 @@ static void check_index(const g_options *o, const char *name, const g_scripts *a
     g_strs l = { 0 };
     links(text, &l);
     for (size_t i = 0; i < l.n; i++) {
+        url_decode(l.v[i]);   /* the index percent-encodes names (g_url) */
         char *target = l.v[i][0] == '/' ? g_strdup(l.v[i])
                                          : g_fmt("%s/%s", o->gallery, l.v[i]);
         if (!g_exists(target))
@@ -115,7 +137,7 @@ static void check_index(const g_options *o, const char *name, const g_scripts *a
         free(target);
     }
     for (size_t i = 0; i < all->n; i++) {
-        char *want = g_fmt("%s/%s", all->v[i].stem, G_PAGE);
+        char *want = g_fmt("%s/%s", all->v[i].stem, G_PAGE);   /* links decoded above */
         int found = 0;
         for (size_t k = 0; k < l.n && !found; k++)
             found = strcmp(l.v[k], want) == 0;

@@ -460,7 +460,13 @@ void g_coverage_markdown(FILE *f, const g_options *o)
             g_strs pages = { 0 };
             row_pages(r, &pages);
             for (size_t k = 0; k < pages.n; k++)
-                fprintf(f, "%s[%s](%s/%s)", k ? ", " : "", pages.v[k], pages.v[k], G_PAGE);
+            {
+                fputs(k ? ", [" : "[", f);
+                g_markdown_cell(f, pages.v[k]);
+                fputs("](", f);
+                g_url(f, pages.v[k]);
+                fprintf(f, "/%s)", G_PAGE);
+            }
             g_strs_free(&pages);
             fputs(" | ", f);
             g_markdown_cell(f, r->note);
@@ -513,7 +519,9 @@ void g_coverage_html(FILE *f, const g_options *o)
             g_strs pages = { 0 };
             row_pages(r, &pages);
             for (size_t k = 0; k < pages.n; k++) {
-                fprintf(f, "%s<a href=\"%s/%s\">", k ? ", " : "", pages.v[k], G_PAGE);
+                fputs(k ? ", <a href=\"" : "<a href=\"", f);
+                g_url(f, pages.v[k]);
+                fprintf(f, "/%s\">", G_PAGE);
                 g_html(f, pages.v[k]);
                 fputs("</a>", f);
             }

@@ -63,6 +63,37 @@ void g_markdown_cell(FILE *f, const char *s)
     }
 }
 
+/* s as one segment of a relative URL (issue 31: a script's file name went
+ * raw into href and src): every byte but the unreserved A-Z a-z 0-9 - . _ ~
+ * percent-encoded, so the result holds nothing HTML or Markdown reads
+ * (no quote, <, >, &, space, parenthesis or bracket) and no '/' or ':' that
+ * would change where the link leads. */
+void g_url(FILE *f, const char *s)
+{
+    for (; s && *s; s++) {
+        unsigned char c = (unsigned char)*s;
+        if ((c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
+            c == '-' || c == '.' || c == '_' || c == '~')
+            fputc(c, f);
+        else
+            fprintf(f, "%%%02X", c);
+    }
+}
+
+/* A script's file name in a Markdown cell: as g_markdown_cell, and also
+ * < > & " as entities - a name is not meant to carry markup, and a
+ * Markdown renderer passes inline HTML through (issue 31). */
+static void markdown_name(FILE *f, const char *s)
+{
+    for (; s && *s; s++) {
+        const char *e = lu_xml_entity(*s);
+        if (e) fputs(e, f);
+        else if (*s == '|') fputs("\\|", f);
+        else if (*s == '\n' || *s == '\r') fputc(' ', f);
+        else fputc(*s, f);
+    }
+}
+
 void g_html(FILE *f, const char *s)
 {
     for (; s && *s; s++) {
@@ -285,14 +316,23 @@ static void index_markdown(FILE *f, const g_options *o, const row *rows, size_t 
           "| --- | --- | --- | --- | --- |\n", f);
     for (size_t i = 0; i < n; i++) {
         const g_script *s = rows[i].s;
-        if (rows[i].has_thumb)
-            fprintf(f, "| [![%s](%s/%s)](%s/%s) | ", s->stem, s->stem, G_THUMB, s->stem,
-                    G_PAGE);
-        else
+        if (rows[i].has_thumb) {
+            fputs("| [![", f);
+            markdown_name(f, s->stem);
+            fputs("](", f);
+            g_url(f, s->stem);
+            fprintf(f, "/%s)](", G_THUMB);
+            g_url(f, s->stem);
+            fprintf(f, "/%s) | ", G_PAGE);
+        } else {
             fputs("| — | ", f);
+        }
         fputc('[', f);
-        g_markdown_cell(f, s->h.title ? s->h.title : s->stem);
-        fprintf(f, "](%s/%s) | ", s->stem, G_PAGE);
+        if (s->h.title) g_markdown_cell(f, s->h.title);
+        else markdown_name(f, s->stem);
+        fputs("](", f);
+        g_url(f, s->stem);
+        fprintf(f, "/%s) | ", G_PAGE);
         g_markdown_cell(f, s->h.source ? s->h.source : "");
         fputs(" | ", f);
         put_values(f, rows[i].meta, g_markdown_cell);
@@ -362,19 +402,31 @@ static void headline_row(FILE *f, const lu_json *e)
     free(t);
 }
 
+/* <a href="STEM/README.md">: a script's name, whatever it holds, goes into
+ * the attribute percent-encoded (issue 31: a file name was HTML injection). */
+static void page_link(FILE *f, const char *stem)
+{
+    fputs("<a href=\"", f);
+    g_url(f, stem);
+    fprintf(f, "/%s\">", G_PAGE);
+}
+
 static void card(FILE *f, const row *r)
 {
     const g_script *s = r->s;
     fputs("<div class=\"card\">\n", f);
     if (r->has_thumb) {
-        fprintf(f, "<a href=\"%s/%s\"><img src=\"%s/%s\" alt=\"", s->stem, G_PAGE, s->stem,
-                G_THUMB);
+        page_link(f, s->stem);
+        fputs("<img src=\"", f);
+        g_url(f, s->stem);
+        fprintf(f, "/%s\" alt=\"", G_THUMB);
         g_html(f, s->stem);
         fputs("\"></a>\n", f);
     } else {
         fputs("<div class=\"nothumb\">not rendered yet</div>\n", f);
     }
-    fprintf(f, "<h2><a href=\"%s/%s\">", s->stem, G_PAGE);
+    fputs("<h2>", f);
+    page_link(f, s->stem);
     g_html(f, s->h.title ? s->h.title : s->stem);
     fputs("</a></h2>\n<p class=\"src\">", f);
     g_html(f, s->h.source);
@@ -392,7 +444,8 @@ static void card(FILE *f, const row *r)
     size_t nv = vals ? vals->n : 0;
     /* no run time here (the page has it): the card stays the same from
      * run to run, so its screenshot can be compared */
-    fprintf(f, "<p class=\"more\"><a href=\"%s/%s\">", s->stem, G_PAGE);
+    fputs("<p class=\"more\">", f);
+    page_link(f, s->stem);
     if (nv > nh && nv > 1)
         fprintf(f, "all %zu values", nv);
     else

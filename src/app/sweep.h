@@ -53,6 +53,11 @@ int sw_write_slurm(const char *path, const sw_context *c, const sw_job *jobs, in
                    const char *outdir);
 /* Writes s quoted for a POSIX shell. */
 void sw_shell_quote(FILE *out, const char *s);
+/* A name for a shell line: no control character, and no quote unless
+ * quotes (0, or -1 with the message on stderr); sw_check_jobs checks every
+ * name of the jobs (file names without quotes, --set values with). */
+int sw_shell_safe(const char *what, const char *s, int quotes);
+int sw_check_jobs(const sw_context *c, const sw_job *jobs, int njobs);
 
 /* sweep_json.c: the values of a report.json (lamina.report): 0 and n
  * name/value pairs (numbers as written, strings unquoted), or -1. */

@@ -217,6 +217,46 @@ void sw_job_finish(const sw_context *c, sw_job *job, int wstatus)
     write_record(c, job, job->status, job->wall);
 }
 
+/* Issue 31 item 2: a name that goes into a shell line (the jobs file,
+ * whose line k is task k's command, and the sbatch script's header) may
+ * hold no control character - a newline would start a line of its own,
+ * run by `eval` or outside the comment it was meant for - and a file name
+ * no quote (quotes = 0; a --set value may hold one: "it's yes").
+ * Everything else is quoted by sw_shell_quote. 0, or -1 with the message
+ * (the name shown with \ddd for control characters). */
+int sw_shell_safe(const char *what, const char *s, int quotes)
+{
+    const char *p = s;
+    while (*p && (unsigned char)*p >= 0x20 && *p != 0x7f &&
+           (quotes || (*p != '\'' && *p != '"')))
+        p++;
+    if (!*p) return 0;
+    fprintf(stderr, "lamina sweep: %s '", what);
+    for (const char *q = s; *q; q++) {
+        unsigned char ch = (unsigned char)*q;
+        if (ch < 0x20 || ch == 0x7f) fprintf(stderr, "\\%d", ch);
+        else fputc(ch, stderr);
+    }
+    fprintf(stderr, "' holds %s: refused, it would go into a shell line of the jobs\n",
+            *p == '\'' || *p == '"' ? "a quote" : "a newline or another control character");
+    return -1;
+}
+
+int sw_check_jobs(const sw_context *c, const sw_job *jobs, int njobs)
+{
+    if (sw_shell_safe("the program's path", c->exe, 0) ||
+        sw_shell_safe("the script", c->script, 0))
+        return -1;
+    for (int i = 0; i < njobs; i++) {
+        if (sw_shell_safe("a run's folder", jobs[i].folder, 0)) return -1;
+        for (int k = 0; k < jobs[i].nsets; k++)
+            if (sw_shell_safe("a --set name", jobs[i].sets[k].name, 1) ||
+                sw_shell_safe("a --set value", jobs[i].sets[k].value, 1))
+                return -1;
+    }
+    return 0;
+}
+
 void sw_shell_quote(FILE *out, const char *s)
 {
     int plain = *s != '\0';

@@ -30,6 +30,7 @@ int sw_write_slurm(const char *path, const sw_context *c, const sw_job *jobs, in
                    const char *outdir)
 {
     char err[PATH_MAX + 200], jobs_path[PATH_MAX];
+    if (sw_shell_safe("--slurm", path, 0)) return -1;
     if (!plain_path(outdir)) {
         fprintf(stderr, "lamina sweep: --slurm: the output folder '%s' has characters an "
                 "#SBATCH line cannot carry (use letters, digits and /._+-=,)\n", outdir);
@@ -49,6 +50,7 @@ int sw_write_slurm(const char *path, const sw_context *c, const sw_job *jobs, in
     snprintf(jobs_abs, sizeof jobs_abs, "%s%s%s", jobs_path[0] == '/' ? "" : cwd,
              jobs_path[0] == '/' ? "" : "/", jobs_path);
 
+    if (sw_shell_safe("the jobs file", jobs_abs, 0)) return -1;
     lr_atomic a;
     if (lr_atomic_open(&a, jobs_path, err, sizeof err)) goto fail;
     for (int i = 0; i < njobs; i++) sw_job_print_command(a.fp, c, &jobs[i]);

@@ -19,7 +19,9 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "atomic_file.h"
 #include "l_internal.h"
@@ -43,8 +45,7 @@ int la_sim_checkpoint(lua_State *L)
     if (has_every == has_at) return luaL_error(L, "%s: give exactly one of 'every' and 'at'", fn);
     double every = has_every ? la_number(L, 2, fn, "every") : 0;
     double at = has_at ? la_number(L, 2, fn, "at") : 0;
-    if (has_every && !(every > 0 && isfinite(every)))
-        return luaL_error(L, "%s: every must be positive (got %f)", fn, every);
+    if (has_every) la_check_interval(L, fn, "every", every, s->sim->t);
     if (has_at && !isfinite(at)) return luaL_error(L, "%s: at must be a finite time", fn);
     char *copy = malloc(len + 1);
     if (!copy) return luaL_error(L, "%s: out of memory", fn);
@@ -104,45 +105,109 @@ void la_checkpoint_due(lua_State *L, int sidx, la_sim *s)
     if (!s->ck_file || !(s->ck_next <= s->sim->t + 0.5 * s->sim->def.dt)) return;
     write_checkpoint(L, sidx, s);
     if (s->ck_every > 0) {
-        /* the next multiple after now, as events do: no bursts */
-        while (s->ck_next <= s->sim->t + 0.5 * s->sim->def.dt) s->ck_next += s->ck_every;
+        /* the next multiple after now, as events do: no bursts; computed,
+         * not counted (every = 1e-300 looped for ever, issue 31) */
+        double k = 0;
+        s->ck_next = la_next_multiple(s->ck_next, s->ck_every, &k,
+                                      s->sim->t + 0.5 * s->sim->def.dt);
     } else {
         s->ck_next = INFINITY;
     }
 }
 
-/* Reads the whole file (a regular file of bounded size); NULL with msg. */
-static unsigned char *read_all(const char *path, size_t *len, char *msg, size_t msglen)
+/* The largest recorders' part read back (their rows): 4 GiB of doubles. */
+#define MAX_RECORD_BYTES ((uint64_t)1 << 32)
+
+static int parse_header(const unsigned char *buf, size_t len, int *version, int *sim,
+                        uint64_t *eb, int *nrec, size_t *off);
+
+/* What the first bytes of a checkpoint say, checked against the file
+ * before anything large is read (issue 31: a sparse 64 GiB file was read
+ * whole, a FIFO blocked): a regular file (opened without blocking), its
+ * text header, the engine part's size as the engine's own header claims it
+ * (lm_sim_state_claimed) equal to the text's, and the recorders' blocks
+ * (read one header at a time) ending exactly at the end of the file. Then
+ * the whole file, now of a consistent size, into *buf. 0, or -1 with msg. */
+static int read_checkpoint(const char *path, unsigned char **buf, size_t *len, size_t *off,
+                           int *version, int *sim, uint64_t *eb, int *nrec, char *msg,
+                           size_t ml)
 {
+    *buf = NULL;
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
     struct stat st;
-    FILE *fp = fopen(path, "rb");
-    if (!fp) {
-        snprintf(msg, msglen, "cannot read '%s': %s", path, strerror(errno));
-        return NULL;
+    if (fd < 0) {
+        snprintf(msg, ml, "cannot read '%s': %s", path, strerror(errno));
+        return -1;
     }
-    if (fstat(fileno(fp), &st) != 0 || !S_ISREG(st.st_mode) ||
-        (uint64_t)st.st_size > MAX_BYTES) {
-        snprintf(msg, msglen, "'%s' is not a regular file of at most 64 GiB", path);
-        fclose(fp);
-        return NULL;
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || (uint64_t)st.st_size > MAX_BYTES) {
+        snprintf(msg, ml, "'%s' is not a regular file of at most 64 GiB", path);
+        close(fd);
+        return -1;
     }
-    size_t n = (size_t)st.st_size;
-    unsigned char *buf = malloc(n ? n : 1);
-    if (!buf || fread(buf, 1, n, fp) != n) {
-        snprintf(msg, msglen, "cannot read '%s' (%zu bytes)", path, n);
-        free(buf);
-        fclose(fp);
-        return NULL;
+    uint64_t size = (uint64_t)st.st_size;
+    unsigned char head[4096];
+    ssize_t got = pread(fd, head, sizeof head, 0);
+    if (got < 0 || !parse_header(head, (size_t)got, version, sim, eb, nrec, off)) {
+        snprintf(msg, ml, "'%s' is not a lamina checkpoint", path);
+        close(fd);
+        return -1;
     }
-    fclose(fp);
-    *len = n;
-    return buf;
+    if (*version != LM_CHECKPOINT_VERSION) {   /* the caller says which */
+        close(fd);
+        return 0;
+    }
+    unsigned char eh[512];
+    got = pread(fd, eh, sizeof eh, (off_t)*off);
+    size_t claimed = got > 0 ? lm_sim_state_claimed(eh, (size_t)got) : 0;
+    if (claimed == 0 || claimed != *eb || *eb > size - *off) {
+        snprintf(msg, ml, "'%s' is %s: its header gives %" PRIu64 " bytes of state, the "
+                 "state's own header %zu, the file has %" PRIu64 " after the header", path,
+                 *eb > size - *off ? "truncated" : "damaged", *eb, claimed, size - *off);
+        close(fd);
+        return -1;
+    }
+    uint64_t at = *off + *eb, rec = 0;
+    for (int i = 0; i < *nrec; i++) {
+        unsigned char rh[12];
+        uint32_t c;
+        uint64_t r;
+        if (size - at < sizeof rh || pread(fd, rh, sizeof rh, (off_t)at) != (ssize_t)sizeof rh)
+            goto damaged;
+        memcpy(&c, rh, sizeof c);
+        memcpy(&r, rh + sizeof c, sizeof r);
+        at += sizeof rh;
+        if (c == 0 || r > (size - at) / ((uint64_t)c * sizeof(double))) goto damaged;
+        at += r * c * sizeof(double);
+        rec += r * c * sizeof(double);
+        if (rec > MAX_RECORD_BYTES) {
+            snprintf(msg, ml, "'%s': its recorders hold more than 4 GiB of rows", path);
+            close(fd);
+            return -1;
+        }
+    }
+    if (at != size) goto damaged;
+    *buf = malloc(size ? (size_t)size : 1);
+    if (!*buf || pread(fd, *buf, (size_t)size, 0) != (ssize_t)size) {
+        snprintf(msg, ml, "cannot read '%s' (%" PRIu64 " bytes)", path, size);
+        free(*buf);
+        *buf = NULL;
+        close(fd);
+        return -1;
+    }
+    close(fd);
+    *len = (size_t)size;
+    return 0;
+damaged:
+    snprintf(msg, ml, "'%s' is truncated or damaged: its recorders' blocks do not end at the "
+             "end of the file (%" PRIu64 " bytes)", path, size);
+    close(fd);
+    return -1;
 }
 
-/* The text header: fills sim index, engine bytes, recorder count; returns
- * the offset of the binary part, or 0 if the header is not one of ours. */
-static size_t parse_header(const unsigned char *buf, size_t len, int *version, int *sim,
-                           uint64_t *eb, int *nrec)
+/* The text header: fills version, sim index, engine bytes, recorder count
+ * and *off, the offset of the binary part; 0 if it is not one of ours. */
+static int parse_header(const unsigned char *buf, size_t len, int *version, int *sim,
+                        uint64_t *eb, int *nrec, size_t *off)
 {
     const unsigned char *end = NULL;
     for (size_t i = 0; i + 1 < len && i < 512; i++)
@@ -158,26 +223,24 @@ static size_t parse_header(const unsigned char *buf, size_t len, int *version, i
     double t;
     long step;
     if (sscanf(head, MAGIC_LINE " %d\nsim %d\nt %lf\nstep %ld\nengine %" SCNu64 "\nrecorders %d\n",
-               version, sim, &t, &step, eb, nrec) != 6)
+               version, sim, &t, &step, eb, nrec) != 6 || *nrec < 0 || *nrec > 1 << 20)
         return 0;
-    return hl;
+    *off = hl;
+    return 1;
 }
 
 void la_checkpoint_restore(lua_State *L, int sidx, la_sim *s)
 {
     lamina_run *run = la_run(L);
     if (!run || !run->restart || run->restored) return;
-    char msg[700];
-    size_t len = 0;
-    unsigned char *buf = read_all(run->restart, &len, msg, sizeof msg);
-    if (!buf) luaL_error(L, "--restart: %s", msg);
+    char msg[900];
+    size_t len = 0, off = 0;
+    unsigned char *buf;
     int version = 0, index = 0, nrec = 0;
     uint64_t eb = 0;
-    size_t off = parse_header(buf, len, &version, &index, &eb, &nrec);
-    if (!off) {
-        free(buf);
-        luaL_error(L, "--restart: '%s' is not a lamina checkpoint", run->restart);
-    }
+    if (read_checkpoint(run->restart, &buf, &len, &off, &version, &index, &eb, &nrec, msg,
+                        sizeof msg) != 0)
+        luaL_error(L, "--restart: %s", msg);
     if (version != LM_CHECKPOINT_VERSION) {
         free(buf);
         luaL_error(L, "--restart: '%s' is checkpoint format %d; this lamina %s reads format %d",
@@ -221,8 +284,9 @@ void la_checkpoint_restore(lua_State *L, int sidx, la_sim *s)
     }
     free(buf);
     la_sim_skip_due(s);
-    if (s->ck_file && s->ck_every > 0)
-        while (s->ck_next <= s->sim->t + 0.5 * s->sim->def.dt) s->ck_next += s->ck_every;
+    double now = s->sim->t + 0.5 * s->sim->def.dt, k = 0;
+    if (s->ck_file && s->ck_every > 0 && s->ck_next <= now)
+        s->ck_next = la_next_multiple(s->ck_next, s->ck_every, &k, now);
     else if (s->ck_file && s->ck_next <= s->sim->t + 0.5 * s->sim->def.dt)
         s->ck_next = INFINITY;
     return;

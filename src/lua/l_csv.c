@@ -41,7 +41,7 @@ int la_read_csv(lua_State *L)
 {
     const char *fn = "lamina.read_csv";
     luaL_checktype(L, 1, LUA_TSTRING);
-    const char *path = la_check_output_path(L, fn, 1);
+    const char *path = la_check_input_path(L, fn, 1);
     char *text, err[600];
     size_t len;
     if (lr_read_file(path, LR_READ_MAX, &text, &len, err, sizeof err))

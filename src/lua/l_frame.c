@@ -123,8 +123,11 @@ int la_sim_frame(lua_State *L)
     f.panels = p;
     layout(L, fn, f.npanels, &f);
     f.title = la_opt_string(L, 2, fn, "title", NULL);
-    la_getfield(L, 2, "label");
-    if (lua_isstring(L, -1)) f.label = lua_tostring(L, -1);
+    int lt = la_getfield(L, 2, "label");
+    if (lt != LUA_TNIL && lt != LUA_TSTRING && lt != LUA_TBOOLEAN)   /* issue 31 item 7 */
+        luaL_error(L, "%s: 'label' must be a string, true or false (got %s)", fn,
+                   luaL_typename(L, -1));
+    if (lt == LUA_TSTRING) f.label = lua_tostring(L, -1);
     else if (lua_isnil(L, -1) || lua_toboolean(L, -1)) {
         char t[64];
         snprintf(t, sizeof t, "t = %.4f   step %ld", sim->t, sim->step);

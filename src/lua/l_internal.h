@@ -67,15 +67,27 @@ lua_State *la_new_state(lamina_run *run);
  * is untrusted input"); la_load_script loads a regular text file only. */
 void la_open_sandbox(lua_State *L, const char *script);
 int la_load_script(lua_State *L, const char *path);
+/* l_pattern.c: string.find/match/gmatch/gsub refuse a call whose worst-case
+ * backtracking passes ~1e9 steps (C code cannot be interrupted) */
+void la_guard_patterns(lua_State *L);
 
 /* l_path.c: every file a script names is checked here before it is
  * written (inside the output root, no NUL or control character, not a
- * device); returns the string at idx. la_opt_output_path reads table key
+ * device, nor a file lamina did not write; hidden names refused; the path
+ * noted in ROOT/.lamina-outputs); returns the string at idx. la_opt_output_path reads table key
  * `key` (NULL when absent). la_check_text refuses control characters in a
  * name that goes into a file's text (CSV headers). */
 const char *la_check_output_path(lua_State *L, const char *fn, int idx);
+/* the same confinement for a file a script reads (no ownership check) */
+const char *la_check_input_path(lua_State *L, const char *fn, int idx);
+/* l_outputs.c: whether lamina wrote the existing file `where` (rel: its
+ * path under root), and noting rel as lamina's (0, or -1 with err) */
+int la_output_owned(lua_State *L, const char *root, const char *rel, const char *where);
+int la_output_note(lua_State *L, const char *root, const char *rel, char *err, size_t len);
 const char *la_opt_output_path(lua_State *L, int idx, const char *fn, const char *key);
 void la_check_text(lua_State *L, const char *fn, const char *what, const char *s);
+/* a CSV column name: letters, digits, space and _ . - ( ) [ ] / only */
+void la_check_csv_name(lua_State *L, const char *fn, const char *what, const char *s);
 
 /* l_material.c */
 void la_open_material(lua_State *L);
@@ -161,6 +173,13 @@ void la_push_energy(lua_State *L, lm_energy e);
 /* Calls the function at fidx with the sim at `first` and then every
  * `interval` (0: once), between steps. */
 void la_sim_add_event(lua_State *L, int sidx, double first, double interval, int fidx);
+/* The first t0 + k interval after now (k updated, kept increasing), in
+ * O(1); the next representable time when rounding leaves none. */
+double la_next_multiple(double t0, double interval, double *k, double now);
+/* Refuses an interval that is not a positive finite time, or too small for
+ * the clock at t (t + interval == t, or more than 2^53 multiples to t). */
+void la_check_interval(lua_State *L, const char *fn, const char *what, double interval,
+                       double t);
 
 /* l_pin.c: body:pin{...} and the pin handle. la_sim_add_pin_function
  * (l_sim.c) keeps a driven pin's function; la_pins_update calls them before

@@ -18,7 +18,25 @@ static volatile sig_atomic_t pending;
 static volatile sig_atomic_t last_signal;   /* SIGINT or SIGTERM, for the exit status */
 static lua_State *volatile threads[MAX_THREADS];
 static int installed, installed_term;
-static struct sigaction saved, saved_term;
+static struct sigaction saved;
+
+/* The signals `lamina run` treats as SIGTERM (issue 31 item 6): a closed
+ * terminal, a quit key, a reader gone from a pipe (`lamina run s.lua |
+ * head`), a user's or a batch system's signals and limits - each killed a
+ * run before its record CSV was written and left a temporary file. */
+static const int term_signals[] = {SIGTERM, SIGHUP, SIGQUIT, SIGPIPE, SIGUSR1,
+                                   SIGUSR2, SIGALRM, SIGXCPU, SIGXFSZ};
+#define NTERM ((int)(sizeof term_signals / sizeof term_signals[0]))
+static struct sigaction saved_term[NTERM];
+
+static const char *signal_name(int sig)
+{
+    static const char *const names[] = {"SIGTERM", "SIGHUP", "SIGQUIT", "SIGPIPE", "SIGUSR1",
+                                        "SIGUSR2", "SIGALRM", "SIGXCPU", "SIGXFSZ"};
+    for (int i = 0; i < NTERM; i++)
+        if (term_signals[i] == sig) return names[i];
+    return NULL;
+}
 
 static void clear_hooks(void)
 {
@@ -42,9 +60,9 @@ int la_interrupt_raise(lua_State *L, const lm_sim *sim)
     if (why == LAMINA_STOP_POLL)
         return luaL_error(L, "stopped at t = %f, step %I: %s", sim->t, (lua_Integer)sim->step,
                           run->stop_why ? run->stop_why : "asked to stop");
-    return luaL_error(L, "interrupted%s at t = %f, step %I",
-                      last_signal == SIGTERM ? " (SIGTERM)" : "", sim->t,
-                      (lua_Integer)sim->step);
+    const char *name = signal_name(last_signal);
+    return luaL_error(L, "interrupted%s%s%s at t = %f, step %I", name ? " (" : "",
+                      name ? name : "", name ? ")" : "", sim->t, (lua_Integer)sim->step);
 }
 
 /* The count hook: Lua code running when Ctrl-C came. Inside a run (a
@@ -90,9 +108,10 @@ void lamina_interrupt_install(lua_State *L)
     if (sigaction(SIGINT, &sa, &saved) == 0) installed = 1;
 }
 
-/* lamina run: SIGTERM (kill, a batch system's time limit) stops the run at a
- * step boundary as Ctrl-C does, so its records are written; the repl keeps
- * the default (a SIGTERM ends it). */
+/* lamina run: SIGTERM (kill, a batch system's time limit) and the others of
+ * term_signals stop the run at a step boundary as Ctrl-C does, so its
+ * records are written and it exits 128 + the signal's number; the repl
+ * keeps the defaults (a SIGTERM ends it). */
 void lamina_interrupt_install_term(void)
 {
     if (installed_term) return;
@@ -100,7 +119,8 @@ void lamina_interrupt_install_term(void)
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = on_sigint;
     sigemptyset(&sa.sa_mask);
-    if (sigaction(SIGTERM, &sa, &saved_term) == 0) installed_term = 1;
+    for (int i = 0; i < NTERM; i++) sigaction(term_signals[i], &sa, &saved_term[i]);
+    installed_term = 1;
 }
 
 int lamina_interrupt_signal(void)
@@ -120,7 +140,8 @@ void lamina_interrupt_add_thread(lua_State *thread)
 void lamina_interrupt_uninstall(void)
 {
     if (installed) sigaction(SIGINT, &saved, NULL);
-    if (installed_term) sigaction(SIGTERM, &saved_term, NULL);
+    if (installed_term)
+        for (int i = 0; i < NTERM; i++) sigaction(term_signals[i], &saved_term[i], NULL);
     installed = installed_term = 0;
     clear_hooks();
     memset((void *)threads, 0, sizeof threads);

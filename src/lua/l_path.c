@@ -1,15 +1,30 @@
 /* l_path.c - where a script may write, and what text it may put in headers.
  *
  * Every file lamina writes for a script (frames, figures, plots and their
- * CSV, recorder CSV) is named by the script, and a script is untrusted
- * input (docs/design.md). So every such name goes through la_check_output_path
- * before anything is created: it must resolve inside the output root - the
- * working directory, or `lamina run --out-root DIR` - after "..", absolute
- * paths and symbolic links of the folders that exist are resolved; it must
- * hold no NUL byte (C would write "a" for "a\0b.png") and no control
- * character; an existing target must be a regular file (not /dev/null).
- * The folders still missing are created by the writer (atomic_file.c), as
- * real folders under the resolved parent, so they stay inside too. */
+ * CSV, recorder CSV, VTK series, checkpoints) is named by the script, and a
+ * script is untrusted input (docs/design.md, docs/security.md). So every
+ * such name goes through la_check_output_path before anything is created:
+ *
+ *  - it holds no NUL byte (C would write "a" for "a\0b.png") and no control
+ *    character;
+ *  - it is resolved component by component against the real file system
+ *    (resolve below): every component that exists is replaced by its real
+ *    path (links followed, ".." of the real folder); from the first missing
+ *    component on, the rest is created by the writer as real folders, so a
+ *    ".." there is refused - the kernel would resolve it only after the
+ *    folder is made, through whatever link sits beside it (issue 31:
+ *    "out/nosuch/../link/x.png" wrote through out/link);
+ *  - the result lies inside the output root (the working directory, or
+ *    `lamina run --out-root DIR`), and no component of the name as given
+ *    or as resolved under the root starts with a dot ("." and ".." as given
+ *    only navigate): no .bashrc, .git/hooks, nor lamina's own manifest;
+ *  - an existing target is a regular file that lamina wrote (l_outputs.c:
+ *    the manifest of outputs, or a PNG/checkpoint's own provenance); a link,
+ *    device or anyone else's file is refused, naming it.
+ *
+ * Accepted paths are noted in the manifest, so a later run may replace
+ * them. Nothing can change the tree between the check and the write but
+ * lamina's own writers (a script makes no links and runs no programs). */
 #define _XOPEN_SOURCE 700     /* realpath */
 #include <errno.h>
 #include <limits.h>
@@ -68,15 +83,19 @@ static void up(char *p)
     else if (s) *s = '\0';
 }
 
+/* Why resolve refused a path. */
+enum { RES_OK = 0, RES_LONG = -1, RES_DOTDOT = -2, RES_DOT = -3 };
+
 /* Where path would land: the absolute path with every existing component
  * resolved as the kernel will (symbolic links followed, ".." of the real
- * folder), the missing ones appended as they will be created. 0 or -1 when
- * too long. */
+ * folder), the missing ones appended as the writer will create them.
+ * RES_DOTDOT for a ".." after a missing component, RES_DOT for a component
+ * starting with a dot other than "." and "..", RES_LONG when too long. */
 static int resolve(const char *path, char *out)
 {
     char buf[PATH_MAX];
     if (path[0] == '/') strcpy(buf, "/");
-    else if (!getcwd(buf, sizeof buf)) return -1;
+    else if (!getcwd(buf, sizeof buf)) return RES_LONG;
     int exists = 1;   /* every component so far exists */
     const char *p = path;
     while (*p) {
@@ -87,20 +106,26 @@ static int resolve(const char *path, char *out)
         if (n == 1 && p[0] == '.') {
             /* stays */
         } else if (n == 2 && p[0] == '.' && p[1] == '.') {
-            up(buf);   /* buf is real while it exists; created folders are real */
+            if (!exists) return RES_DOTDOT;
+            up(buf);   /* buf is real: every component so far exists */
+        } else if (p[0] == '.') {
+            return RES_DOT;
         } else {
             size_t b = strlen(buf);
-            if (b + 1 + n + 1 > sizeof buf) return -1;
+            if (b + 1 + n + 1 > sizeof buf) return RES_LONG;
             if (b > 1) buf[b++] = '/';
             memcpy(buf + b, p, n);
             buf[b + n] = '\0';
             struct stat st;
             if (exists && lstat(buf, &st) == 0) {
                 char real[PATH_MAX];
-                /* a link as the target itself is replaced by rename(2), not
-                 * written through; a link as a folder is followed */
-                if (!(last && S_ISLNK(st.st_mode)) && realpath(buf, real))
+                /* a link as the target itself is not followed: it is
+                 * refused below (lamina never writes one); a link as a
+                 * folder is followed to where it leads */
+                if (!(last && S_ISLNK(st.st_mode))) {
+                    if (!realpath(buf, real)) return RES_LONG;
                     strcpy(buf, real);
+                }
             } else {
                 exists = 0;
             }
@@ -108,7 +133,18 @@ static int resolve(const char *path, char *out)
         p += n;
     }
     strcpy(out, buf);
-    return 0;
+    return RES_OK;
+}
+
+/* The first component of rel (a path relative to the root) starting with
+ * a dot, or NULL. */
+static const char *dot_component(const char *rel)
+{
+    for (const char *p = rel; *p; p += strcspn(p, "/")) {
+        while (*p == '/') p++;
+        if (*p == '.') return p;
+    }
+    return NULL;
 }
 
 /* Control characters would forge lines in a log or a CSV, and a file name
@@ -139,34 +175,76 @@ static const char *printable(lua_State *L, const char *s, size_t len)
     return lua_tostring(L, -1);
 }
 
-const char *la_check_output_path(lua_State *L, const char *fn, int idx)
+/* The checks every path gets, writing or reading: a string, no NUL or
+ * control character, resolved inside the root. where (PATH_MAX) gets the
+ * resolved path, root (PATH_MAX) the root; returns the path. */
+static const char *confined(lua_State *L, const char *fn, int idx, const char *verb,
+                            char *root, char *where)
 {
-    idx = lua_absindex(L, idx);
     if (lua_type(L, idx) != LUA_TSTRING)
         luaL_error(L, "%s: the file name must be a string (got %s)", fn, luaL_typename(L, idx));
     size_t len;
     const char *path = lua_tolstring(L, idx, &len);
     if (len == 0) luaL_error(L, "%s: the file name is empty", fn);
     if (strlen(path) != len)
-        luaL_error(L, "%s: cannot write '%s': the file name contains a NUL byte", fn,
+        luaL_error(L, "%s: cannot %s '%s': the file name contains a NUL byte", fn, verb,
                    printable(L, path, len));
     if (has_control(path, len))
-        luaL_error(L, "%s: cannot write '%s': the file name contains a control character",
-                   fn, printable(L, path, len));
-    char root[PATH_MAX], where[PATH_MAX];
+        luaL_error(L, "%s: cannot %s '%s': the file name contains a control character",
+                   fn, verb, printable(L, path, len));
     if (!output_root(L, root))
-        luaL_error(L, "%s: cannot write '%s': the working directory is unknown (%s)", fn,
-                   path, strerror(errno));
-    if (len >= PATH_MAX || resolve(path, where) != 0)
-        luaL_error(L, "%s: cannot write '%s': the file name is too long", fn, path);
+        luaL_error(L, "%s: cannot %s '%s': the working directory is unknown (%s)", fn,
+                   verb, path, strerror(errno));
+    int r = len >= PATH_MAX ? RES_LONG : resolve(path, where);
+    if (r == RES_LONG)
+        luaL_error(L, "%s: cannot %s '%s': the file name is too long", fn, verb, path);
+    if (r == RES_DOTDOT)
+        luaL_error(L, "%s: cannot %s '%s': '..' after a folder that does not exist "
+                   "(it would be resolved only once made, through what lies beside it)",
+                   fn, verb, path);
+    if (r == RES_DOT)
+        luaL_error(L, "%s: cannot %s '%s': a name in it starts with a dot (hidden files "
+                   "and folders are not outputs)", fn, verb, path);
     if (!inside(where, root))
-        luaL_error(L, "%s: cannot write '%s': it resolves to '%s', outside the output root "
+        luaL_error(L, "%s: cannot %s '%s': it resolves to '%s', outside the output root "
                    "'%s' (the working directory, or lamina run --out-root DIR)",
-                   fn, path, where, root);
-    struct stat st;
-    if (stat(where, &st) == 0 && !S_ISREG(st.st_mode))
-        luaL_error(L, "%s: cannot write '%s': it exists and is not a regular file", fn, path);
+                   fn, verb, path, where, root);
     return path;
+}
+
+const char *la_check_output_path(lua_State *L, const char *fn, int idx)
+{
+    idx = lua_absindex(L, idx);
+    char root[PATH_MAX], where[PATH_MAX];
+    const char *path = confined(L, fn, idx, "write", root, where);
+    const char *rel = where + strlen(root) + (strcmp(root, "/") != 0);
+    const char *dot = dot_component(rel);
+    if (dot)
+        luaL_error(L, "%s: cannot write '%s': it resolves to '%s', where '%s' starts with a "
+                   "dot (hidden files and folders are not outputs)", fn, path, where, dot);
+    struct stat st;
+    if (lstat(where, &st) == 0) {
+        if (S_ISLNK(st.st_mode))
+            luaL_error(L, "%s: cannot write '%s': it is a symbolic link (lamina replaces only "
+                       "files it wrote)", fn, path);
+        if (!S_ISREG(st.st_mode))
+            luaL_error(L, "%s: cannot write '%s': it exists and is not a regular file", fn,
+                       path);
+        if (!la_output_owned(L, root, rel, where))
+            luaL_error(L, "%s: cannot write '%s': it exists and lamina did not write it (it "
+                       "is not in %s/.lamina-outputs and carries no lamina provenance); "
+                       "remove it or choose another name", fn, path, root);
+    }
+    char err[PATH_MAX + 160];
+    if (la_output_note(L, root, rel, err, sizeof err) != 0)
+        luaL_error(L, "%s: cannot write '%s': %s", fn, path, err);
+    return path;
+}
+
+const char *la_check_input_path(lua_State *L, const char *fn, int idx)
+{
+    char root[PATH_MAX], where[PATH_MAX];
+    return confined(L, fn, lua_absindex(L, idx), "read", root, where);
 }
 
 const char *la_opt_output_path(lua_State *L, int idx, const char *fn, const char *key)
@@ -187,4 +265,24 @@ void la_check_text(lua_State *L, const char *fn, const char *what, const char *s
     if (has_control(s, strlen(s)))
         luaL_error(L, "%s: %s '%s' contains a control character (newline, tab, ...)", fn,
                    what, printable(L, s, strlen(s)));
+}
+
+/* A name that becomes a field of a CSV header line (issue 31 item 2): the
+ * header is a file's first line, and a first line of `$(...)`, `;` or
+ * `import os` runs when someone does `sh energy.csv` or `python3 x.csv`
+ * (a CSV named conftest.py is collected by pytest). Letters, digits, space
+ * and _ . - ( ) [ ] / make no shell or Python statement that runs: such a
+ * line is at worst an unknown command or name. */
+void la_check_csv_name(lua_State *L, const char *fn, const char *what, const char *s)
+{
+    size_t n = strlen(s);
+    for (size_t i = 0; i < n; i++) {
+        unsigned char c = (unsigned char)s[i];
+        if ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+            strchr("_.-()[]/ ", c))
+            continue;
+        luaL_error(L, "%s: %s '%s' may hold only letters, digits, spaces and _ . - ( ) [ ] / "
+                   "(it heads a CSV column; '%s' is not allowed)", fn, what,
+                   printable(L, s, n), printable(L, s + i, 1));
+    }
 }

@@ -60,14 +60,21 @@ static size_t *read_points(lua_State *L, const lm_sim *sim, int b, size_t *n)
             idx[k++] = (size_t)(v - 1);
         }
     } else if (t == LUA_TFUNCTION) {
+        /* the function is the script's: it may add a body (sim->bodies and
+         * the particle arrays move: bd and sim->p.x dangled, issue 31) or
+         * run the sim. So the body's range is copied, the arrays are read
+         * afresh for every call, and a changed range is refused after. */
         int f = lua_gettop(L);
-        for (size_t q = 0; q < bd->count; q++) {
+        const size_t first = bd->first, count = bd->count;
+        for (size_t q = 0; q < count; q++) {
             lua_pushvalue(L, f);
-            lua_pushnumber(L, sim->p.x[bd->first + q]);
-            lua_pushnumber(L, sim->p.y[bd->first + q]);
+            lua_pushnumber(L, sim->p.x[first + q]);
+            lua_pushnumber(L, sim->p.y[first + q]);
             lua_call(L, 2, 1);
             if (lua_toboolean(L, -1)) idx[k++] = q;
             lua_pop(L, 1);
+            if (sim->bodies[b].first != first || sim->bodies[b].count != count)
+                luaL_error(L, "%s: the points function changed the body's points", fn);
         }
         if (k == 0) luaL_error(L, "%s: the points function chose no point", fn);
     } else {

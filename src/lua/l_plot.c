@@ -144,7 +144,13 @@ static void read_series(lua_State *L, int sidx, int k, int aidx, lr_plot_series 
         luaL_error(L, "lamina.plot: series %d: 'label' must be a string (got %s)", k,
                    luaL_typename(L, -1));
     s->label = lua_tostring(L, -1);   /* alive: referenced by the series table */
-    if (s->label) la_check_text(L, "lamina.plot", "series label", s->label);   /* a CSV header */
+    if (s->label) {   /* a CSV header field too, quoted (plot_csv.c): nothing may expand */
+        la_check_text(L, "lamina.plot", "series label", s->label);
+        const char *bad = strpbrk(s->label, "\"$`\\");
+        if (bad)
+            luaL_error(L, "lamina.plot: series %d: label '%s' may not hold '%c' (it heads a "
+                       "CSV column, where a shell would expand it)", k, s->label, *bad);
+    }
     lua_pop(L, 1);
     const char *sfn = s->label ? lua_pushfstring(L, "lamina.plot: series %d ('%s')", k,
                                                  s->label)

@@ -60,9 +60,8 @@ static la_column *add_column(lua_State *L, la_record *r, const char *name, int s
     memset(c, 0, sizeof *c);
     if (strlen(name) >= sizeof c->name)
         luaL_error(L, "sim:record: column name '%s' is too long", name);
-    la_check_text(L, "sim:record", "column name", name);   /* a CSV header line */
-    if (strpbrk(name, ",\""))
-        luaL_error(L, "sim:record: column name '%s' contains a comma or a quote", name);
+    /* a CSV header field: nothing that runs as shell or Python (l_path.c) */
+    la_check_csv_name(L, "sim:record", "column name", name);
     for (int i = 0; i < r->ncols - 1; i++)
         if (strcmp(r->cols[i].name, name) == 0)
             luaL_error(L, "sim:record: column '%s' is given twice", name);
@@ -246,7 +245,10 @@ static void running_mean(const la_record *r, int c, double *out)
     for (size_t i = 0; i < r->nrows; i++) {
         sum += r->rows[i * r->ncols + c];
         double t = r->rows[i * r->ncols];
-        while (r->rows[lo * r->ncols] <= t - r->average) {
+        /* the window always holds row i: with an average below t's
+         * resolution t - average == t, and lo ran past i and off the
+         * rows (issue 31: average = 1e-18, heap overflow) */
+        while (lo < i && r->rows[lo * r->ncols] <= t - r->average) {
             sum -= r->rows[lo * r->ncols + c];
             lo++;
         }
@@ -427,7 +429,7 @@ int la_sim_record(lua_State *L)
     la_sim *s = la_check_sim(L, 1);
     la_check_keys(L, 2, fn, keys);
     double every = la_opt_number(L, 2, fn, "every", s->sim->def.dt);
-    if (!(every > 0)) return luaL_error(L, "%s: every must be positive (got %f)", fn, every);
+    la_check_interval(L, fn, "every", every, s->sim->t);
     const char *file = la_opt_output_path(L, 2, fn, "file");
 
     la_record *r = lua_newuserdatauv(L, sizeof *r, 2);
@@ -446,7 +448,8 @@ int la_sim_record(lua_State *L)
     }
     lua_setiuservalue(L, ridx, 2);
     r->average = la_opt_number(L, 2, fn, "average", 0);
-    if (r->average < 0) return luaL_error(L, "%s: average must be >= 0", fn);
+    if (!(r->average >= 0) || !isfinite(r->average))
+        return luaL_error(L, "%s: average must be a finite time >= 0 (got %f)", fn, r->average);
 
     add_column(L, r, "t", SRC_T);
     add_column(L, r, "step", SRC_STEP);

@@ -315,6 +315,11 @@ int la_report(lua_State *L)
     /* every entry checked before any is stored: a call is all or nothing */
     int first = lua_gettop(L) + 1;
     for (size_t i = 0; i < n; i++) {
+        /* each entry stays on the stack until all are checked, and a C
+         * function is given only LUA_MINSTACK (20) slots: ~30 names wrote
+         * past them (issue 31, SIGSEGV). The entry and push_entry's work
+         * need 8; beyond Lua's stack limit this is an error, not a crash. */
+        luaL_checkstack(L, 8, "lamina.report: too many names in one call");
         check_name(L, names[i]);
         la_getfield(L, 1, names[i]);
         push_entry(L, names[i], -1);

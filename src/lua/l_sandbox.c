@@ -345,6 +345,7 @@ void la_open_sandbox(lua_State *L, const char *script)
     lua_pushnil(L);
     lua_setfield(L, -2, "dump");
     lua_pop(L, 1);
+    la_guard_patterns(L);   /* the matcher's work capped: it cannot be interrupted */
     /* strings' metatable locked too: an __index function set on it would
      * run script code wherever a binding indexes a string */
     lua_pushliteral(L, "");

@@ -226,7 +226,7 @@ static int sim_every(lua_State *L)
 {
     la_sim *s = la_check_sim(L, 1);
     double dt = luaL_checknumber(L, 2);
-    if (!(dt > 0)) return luaL_error(L, "sim:every: interval must be positive (got %f)", dt);
+    la_check_interval(L, "sim:every", "interval", dt, s->sim->t);
     la_sim_add_event(L, 1, s->sim->t, dt, 3);
     return 0;
 }
@@ -235,8 +235,49 @@ static int sim_every(lua_State *L)
 static int sim_at(lua_State *L)
 {
     la_check_sim(L, 1);
-    la_sim_add_event(L, 1, luaL_checknumber(L, 2), 0, 3);
+    double t = luaL_checknumber(L, 2);
+    if (!isfinite(t))   /* NaN compares false: it never fired (issue 31) */
+        return luaL_error(L, "sim:at: the time must be a finite number (got %f)", t);
+    la_sim_add_event(L, 1, t, 0, 3);
     return 0;
+}
+
+double la_next_multiple(double t0, double interval, double *k, double now)
+{
+    /* the first multiple after now, computed, not counted up to: an
+     * interval far below dt (1e-300), or a clock far ahead of t0 (a
+     * restart, t = 1e300), would loop for ever; an interval shorter than
+     * dt fires once per step, not in bursts */
+    double kk = floor((now - t0) / interval) + 1;
+    if (!(kk > *k)) kk = *k + 1;
+    /* the division may round: settle on the first multiple past now,
+     * as counting up did (a step or two at most) */
+    for (int j = 0; j < 4 && kk - 1 > *k && t0 + (kk - 1) * interval > now; j++) kk--;
+    for (int j = 0; j < 4 && !(t0 + kk * interval > now); j++) kk++;
+    *k = kk;
+    double next = t0 + kk * interval;
+    /* rounding, or an interval so small that the count overflows (5e-324),
+     * or below the clock's resolution: the next step */
+    if (!(next > now) || !isfinite(next)) next = nextafter(now, HUGE_VAL);
+    return next;
+}
+
+void la_check_interval(lua_State *L, const char *fn, const char *what, double interval,
+                       double t)
+{
+    char msg[256];
+    if (!(interval > 0) || !isfinite(interval)) {
+        snprintf(msg, sizeof msg, "must be positive and finite (got %g)", interval);
+        luaL_error(L, "%s: %s %s", fn, what, msg);
+    }
+    /* a schedule is kept as t0 + k interval: past 2^53 multiples the count
+     * no longer resolves one, and below the clock's resolution t + interval
+     * is t (issue 31) */
+    if (!(t + interval > t) || fabs(t) / interval > 0x1p53) {
+        snprintf(msg, sizeof msg, "= %g is too small for the run's clock at t = %g (the "
+                 "clock resolves %g there)", interval, t, nextafter(fabs(t), HUGE_VAL) - fabs(t));
+        luaL_error(L, "%s: %s %s", fn, what, msg);
+    }
 }
 
 /* Runs every event that is due. Half a step of tolerance, so that an event
@@ -250,21 +291,7 @@ static int fire_due(lua_State *L, la_sim *s)
         la_event *e = &s->ev[i];
         if (e->done || e->next > now) continue;
         if (e->interval > 0) {
-            /* the first multiple after now, computed, not counted up to: an
-             * interval far below dt (1e-300) would loop for ever; an
-             * interval shorter than dt fires once per step, not in bursts */
-            double k = floor((now - e->t0) / e->interval) + 1;
-            if (!(k > e->k)) k = e->k + 1;
-            /* the division may round: settle on the first multiple past now,
-             * as counting up did (a step or two at most) */
-            for (int j = 0; j < 4 && k - 1 > e->k && e->t0 + (k - 1) * e->interval > now; j++)
-                k--;
-            for (int j = 0; j < 4 && !(e->t0 + k * e->interval > now); j++) k++;
-            e->k = k;
-            e->next = e->t0 + k * e->interval;
-            /* rounding, or an interval so small that the count overflows
-             * (5e-324): the next step */
-            if (!(e->next > now) || !isfinite(e->next)) e->next = nextafter(now, HUGE_VAL);
+            e->next = la_next_multiple(e->t0, e->interval, &e->k, now);
         } else {
             e->done = 1;
         }
@@ -300,11 +327,8 @@ void la_sim_skip_due(la_sim *s)
     for (int i = 0; i < s->nev; i++) {
         la_event *e = &s->ev[i];
         if (e->done || e->next > now) continue;
-        if (e->interval > 0) {
-            do {
-                e->k++;
-                e->next = e->t0 + e->k * e->interval;
-            } while (e->next <= now);
+        if (e->interval > 0) {   /* computed: a restart far ahead hung here */
+            e->next = la_next_multiple(e->t0, e->interval, &e->k, now);
         } else {
             e->done = 1;
         }
@@ -384,10 +408,14 @@ static void check_courant(lua_State *L, la_sim *s)
 
 /* The steps left to t_end at the current dt: a dt changed by a callback
  * applies at once, so the run still ends on t_end instead of overshooting. */
+/* The most steps one sim:run may take (checked at the call and again when
+ * a callback changes dt). */
+#define STEP_CAP 1e12
+
 static long steps_to(const la_sim *s, double t_end)
 {
     double n = floor((t_end - s->sim->t) / s->sim->def.dt + 0.5);
-    return n > 0 ? (long)fmin(n, 1e12) : 0;
+    return n > 0 ? (long)fmin(n, STEP_CAP) : 0;
 }
 
 /* nsteps steps (sim:step), or up to t_end when it is a number (sim:run). */
@@ -406,6 +434,7 @@ static void advance(lua_State *L, la_sim *s, long nsteps, double t_end)
     la_leak_watch(L, s);   /* the sides are judged before the first step */
     /* the script may have changed anything since the last step */
     lm_sim_forget_ahead(s->sim);
+    double dt_was = s->sim->def.dt;
     for (long n = 0; isnan(t_end) ? n < nsteps : steps_to(s, t_end) > 0; n++) {
         la_pins_update(L, 1, s);
         la_energy_watch_step(s, &watch);
@@ -424,6 +453,22 @@ static void advance(lua_State *L, la_sim *s, long nsteps, double t_end)
         }
         if (fire_due(L, s)) lm_sim_forget_ahead(s->sim);   /* it may have changed the state */
         la_leak_watch(L, s);
+        if (!isnan(t_end) && s->sim->def.dt != dt_was) {
+            /* a callback changed dt: the cap sim:run applied at its start
+             * applies again (s.dt = 1e-300 ran ~for ever, issue 31) */
+            dt_was = s->sim->def.dt;
+            double left = floor((t_end - s->sim->t) / dt_was + 0.5);
+            if (left > STEP_CAP) {
+                s->running = 0;
+                run->active = NULL;
+                la_progress_end(L);
+                la_record_flush(L, 1);
+                char msg[256];
+                snprintf(msg, sizeof msg, "dt = %g, set at t = %g, leaves %g steps to t_end = "
+                         "%g (at most %g)", dt_was, s->sim->t, left, t_end, STEP_CAP);
+                luaL_error(L, "sim:run: %s", msg);
+            }
+        }
         la_checkpoint_due(L, 1, s);
         if (la_progress_tick(L, s->sim)) {   /* Ctrl-C, watch: stop between steps */
             s->running = 0;
@@ -485,7 +530,7 @@ static int sim_run(lua_State *L)
         return luaL_error(L, "sim:run: t_end must be a finite number (got %f)", t_end);
     if (!s->running) la_checkpoint_restore(L, 1, s);   /* --restart: before counting steps */
     double n = floor((t_end - s->sim->t) / s->sim->def.dt + 0.5);
-    if (n > 1e12) return luaL_error(L, "sim:run: t_end = %f needs %f steps", t_end, n);
+    if (n > STEP_CAP) return luaL_error(L, "sim:run: t_end = %f needs %f steps", t_end, n);
     advance(L, s, n > 0 ? (long)n : 0, t_end);
     warn_bunched(L, s);
     return 0;

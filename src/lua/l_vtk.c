@@ -11,6 +11,7 @@
  * opens out/run.pvd as one time series (render/vtk.c writes the files). */
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "l_internal.h"
 #include "vtk.h"
@@ -230,12 +231,33 @@ static int vtk_output(lua_State *L)
         v->cap = cap;
     }
     char path[PREFIX_MAX + 32], err[PREFIX_MAX + 128];
+    /* each piece is checked as its series' name was (l_path.c): it may
+     * not replace a file lamina did not write */
     snprintf(path, sizeof path, "%s_%06d.vtu", v->prefix, v->count);
-    if (write_particles(sim, path, err, sizeof err)) return luaL_error(L, "sim:vtk: %s", err);
+    lua_pushstring(L, path);
+    la_check_output_path(L, "sim:vtk", -1);
     snprintf(path, sizeof path, "%s_grid_%06d.vti", v->prefix, v->count);
-    if (write_grid(sim, path, err, sizeof err)) return luaL_error(L, "sim:vtk: %s", err);
+    lua_pushstring(L, path);
+    la_check_output_path(L, "sim:vtk", -1);
+    lua_pop(L, 2);
+    /* a series on disk is its .pvd and the pieces it lists: when a piece
+     * or the .pvd cannot be written (a full disk), this output's pieces
+     * are removed, and the .pvd of the outputs before stays (issue 31) */
+    char grid[PREFIX_MAX + 32];
+    snprintf(path, sizeof path, "%s_%06d.vtu", v->prefix, v->count);
+    snprintf(grid, sizeof grid, "%s_grid_%06d.vti", v->prefix, v->count);
+    if (write_particles(sim, path, err, sizeof err)) return luaL_error(L, "sim:vtk: %s", err);
+    if (write_grid(sim, grid, err, sizeof err)) {
+        unlink(path);
+        return luaL_error(L, "sim:vtk: %s", err);
+    }
     v->times[v->count++] = sim->t;
-    if (write_pvd(v, err, sizeof err)) return luaL_error(L, "sim:vtk: %s", err);
+    if (write_pvd(v, err, sizeof err)) {
+        v->count--;
+        unlink(path);
+        unlink(grid);
+        return luaL_error(L, "sim:vtk: %s", err);
+    }
     return 0;
 }
 
@@ -256,8 +278,7 @@ int la_sim_vtk(lua_State *L)
     la_check_output_path(L, fn, -1);
     lua_pop(L, 1);
     double every = la_opt_number(L, 2, fn, "every", 0);
-    if (la_has(L, 2, "every") && !(every > 0))
-        return luaL_error(L, "%s: every must be positive (got %f)", fn, every);
+    if (la_has(L, 2, "every")) la_check_interval(L, fn, "every", every, s->sim->t);
     la_vtk *v = lua_newuserdatauv(L, sizeof *v, 0);
     memset(v, 0, sizeof *v);
     memcpy(v->prefix, file, len + 1);

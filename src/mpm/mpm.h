@@ -481,6 +481,10 @@ void lm_sim_forget_ahead(lm_sim *sim);
 size_t lm_sim_state_bytes(const lm_sim *sim);
 void lm_sim_state_save(const lm_sim *sim, unsigned char *buf);
 lm_status lm_sim_state_load(lm_sim *sim, const unsigned char *buf, size_t len);
+/* The state's size a checkpoint's header (its first bytes) claims, computed
+ * without overflow; 0 when it is no header of this format or its counts are
+ * out of range: a reader checks it against the file before reading it. */
+size_t lm_sim_state_claimed(const unsigned char *buf, size_t len);
 
 /* ---- seeding (seed.c, region.c) ----------------------------------------- */
 

@@ -25,6 +25,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include "util.h"
 
 static const lr_rgba WHITE = { 1.0, 1.0, 1.0, 1.0 };
@@ -983,7 +984,9 @@ int lr_plot_write(const lr_plot *p, const char *path, const lr_text_chunk *text,
     }
     int rc = lr_png_write(path, p->width, p->height, rgba, text, ntext, err, errlen);
     free(rgba);
-    if (rc == 0 && p->csv)
-        rc = lr_plot_write_csv(p, p->csv, err, errlen);
+    /* the plot is its picture and its data: a CSV that cannot be written
+     * (a full disk) takes the picture with it (issue 31 item 6) */
+    if (rc == 0 && p->csv && (rc = lr_plot_write_csv(p, p->csv, err, errlen)) != 0)
+        unlink(path);
     return rc;
 }

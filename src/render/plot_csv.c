@@ -15,8 +15,12 @@
 #include "util.h"
 
 
-/* One header field, quoted (RFC 4180) when it holds a separator, a quote,
- * a line break or edge spaces that a reader could trim. */
+/* One header field, always quoted (RFC 4180; quotes doubled, though
+ * lamina.plot refuses them): a label is free text (the legend's), and the
+ * header is the file's first line. Quoted, and with no " $ ` or backslash
+ * in a label (l_plot.c), the line is one shell word in which nothing
+ * expands, and a Python tuple of plain strings: it runs as neither
+ * (issue 31 item 2). */
 static void put_field(FILE *fp, const char *label, size_t k, const char *axis)
 {
     char buf[64];
@@ -25,18 +29,13 @@ static void put_field(FILE *fp, const char *label, size_t k, const char *axis)
         snprintf(buf, sizeof buf, "series %zu", k + 1);
         s = buf;
     }
-    size_t n = strlen(s);
-    int quote = strpbrk(s, ",\"\r\n") != NULL || s[0] == ' ' || s[n - 1] == ' ';
-    if (quote)
-        fputc('"', fp);
+    fputc('"', fp);
     for (const char *c = s; *c; c++) {
         if (*c == '"')
             fputc('"', fp);
         fputc(*c, fp);
     }
-    fprintf(fp, " %s", axis);
-    if (quote)
-        fputc('"', fp);
+    fprintf(fp, " %s\"", axis);
 }
 
 /* The shortest %.Ng (N = 15..17) that reads back as v: 0.1 stays "0.1"

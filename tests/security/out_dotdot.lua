@@ -6,5 +6,5 @@ local sim = lamina.sim{ dt = 1e-3 }
 local el = lamina.elastic{ rho = 1000, E = 1000, nu = 0.3 }
 sim:body{ material = el, region = lamina.disk{ center = {0.5, 0.5}, radius = 0.2 } }
 -- ".." that stays inside is fine
-sim:frame{ file = "out/security/a/../dotdot_inside.png", width = 16, height = 16 }
+sim:frame{ file = "out/security/root/../dotdot_inside.png", width = 16, height = 16 }
 sim:frame{ file = "out/../../../x.png", width = 16, height = 16 }
