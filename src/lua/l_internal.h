@@ -143,6 +143,7 @@ typedef struct la_sim {
  * have passed since its last check or a body was added. */
 #define LA_LEAK_EVERY 20
 void la_leak_watch(lua_State *L, la_sim *s);
+void la_option_warn(const la_sim *s);
 
 /* The total energy over one sim:run (l_energy_watch.c): a rise by a tenth
  * with no driven pin is said once, as a warning. */

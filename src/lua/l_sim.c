@@ -432,6 +432,7 @@ static void advance(lua_State *L, la_sim *s, long nsteps, double t_end)
     la_energy_watch watch;
     la_energy_watch_begin(s, &watch);
     la_leak_watch(L, s);   /* the sides are judged before the first step */
+    la_option_warn(s);
     /* the script may have changed anything since the last step */
     lm_sim_forget_ahead(s->sim);
     double dt_was = s->sim->def.dt;
