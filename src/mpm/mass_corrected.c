@@ -99,7 +99,10 @@ static void correct_weighted(lm_sim *sim, double *rx, double *ry, int momentum, 
     lm_grid_fill(g, 2, fill, comp);
     consistent_times(sim, ux, uy, bx, by);
     for (size_t i = 0; i < nn; i++) {
-        if (!(g->m[i] > 0)) continue;
+        /* a held node keeps its own sums: pin.c reads the reaction from
+         * them (correcting them doubled a hanging chain's end tension,
+         * measured: +100 %), and holds its momentum whatever they are */
+        if (!(g->m[i] > 0) || (sim->npins && sim->pin_w[i] > 0)) continue;
         rx[i] = 2 * rx[i] - bx[i];
         ry[i] = 2 * ry[i] - by[i];
     }
