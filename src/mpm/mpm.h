@@ -438,9 +438,10 @@ double lm_sim_courant_body(const lm_sim *sim, double *c_max, int *body);
  * M_C(pi)) = sqrt(1.867); the step-5 correction adds to it). Measured on
  * the 1-D bar (scripts/measure/courant_basis.lua --set mass=corrected,
  * docs/robustness.md "Corrected mass"): the largest stable dt c / h over
- * 1, 4, 9 points per cell is linear 1.27 / 1.09 / 1.06, bspline2 1.26 /
- * 1.54 / 1.46, against the lumped linear basis' 1.97 / 1.72 / 1.66 that
- * `courant` is stated for: the smallest ratio, 0.634. */
+ * 1, 4, 9 points per cell is linear 1.27 / 1.09 / 1.06, uGIMP 1.26 /
+ * 1.10 / 1.07, bspline2 1.26 / 1.54 / 1.46, against the lumped linear
+ * basis' 1.97 / 1.72 / 1.66 that `courant` is stated for: the smallest
+ * ratio, 0.634. */
 #define LM_CORRECTED_COURANT 0.63
 /* The largest Courant number the run accepts: `courant` (stated for the
  * linear basis and MUSL) times the basis' factor, and LM_USL_COURANT for
