@@ -37,7 +37,7 @@ M.level = lamina.param("level", 1)
 M.tol = lamina.param("tol", 0)
 assert(M.level == 1 or M.level == 2 or M.level == 3, "level must be 1, 2 or 3")
 M.case = (SCRIPT:match("([^/]+)%.lua$")) or SCRIPT
-M.explicit = M.basis ~= nil or M.force ~= nil or M.scheme ~= nil
+M.explicit = M.basis ~= nil or M.force ~= nil or M.scheme ~= nil or M.mass ~= nil
 
 -- lamina.sim with the case's basis and scheme added to `t`.
 function M.sim(t)
