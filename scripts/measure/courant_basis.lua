@@ -13,17 +13,22 @@
 -- decays slowly, so only growth counts). Bisection to 0.005 between 0.2
 -- and 4.
 --   lamina run scripts/measure/courant_basis.lua [--set cells=40 --set steps=20000 --set ppc=2]
+--     [--set mass=corrected] [--set bases=bspline2] (lamina.sim{mass};
+--     bases: one basis, or "all")
 local cells = lamina.param("cells", 40)
 local steps = lamina.param("steps", 20000)
 local ppc = lamina.param("ppc", 2)
 local scheme = lamina.param("scheme", "musl")
+local mass = lamina.param("mass", "lumped")
+local bases = lamina.param("bases", "all")
+bases = bases == "all" and { "linear", "gimp", "bspline2" } or { bases }
 local L, E, rho, v0 = 1.0, 100, 1, 0.01
 local h = L / cells
 local c = math.sqrt(E / rho)
 
 local function stable(basis, cn)
   local sim = lamina.sim{ domain = {0, 0, 1.25, h}, cell = h, dt = cn * h / c, courant = 100,
-                          basis = basis, scheme = scheme,
+                          basis = basis, scheme = scheme, mass = mass,
                           boundary = { left = "fixed", right = "free",
                                        bottom = "symmetry", top = "symmetry" } }
   local steel = lamina.elastic{ rho = rho, E = E, nu = 0, plane = "stress" }
@@ -39,12 +44,12 @@ local function stable(basis, cn)
   return true
 end
 
-print(string.format("1D bar, %d cells, %d x %d points per cell, %s, %d steps per trial",
-                    cells, ppc, ppc, scheme, steps))
+print(string.format("1D bar, %d cells, %d x %d points per cell, %s, mass %s, %d steps per trial",
+                    cells, ppc, ppc, scheme, mass, steps))
 print("| basis | largest stable dt c / h | relative to linear |")
 print("|---|---:|---:|")
 local lin
-for _, basis in ipairs{ "linear", "gimp", "bspline2" } do
+for _, basis in ipairs(bases) do
   local lo, hi = 0.2, 4
   assert(stable(basis, lo), basis .. ": not stable even at " .. lo)
   while hi - lo > 0.005 do

@@ -8,6 +8,7 @@ id="$c.$b.$f.$s.$l"
 set -- run "tests/verify/$c.lua" --quiet --set level="$l"
 [ "$b" = default ] || set -- "$@" --set basis="$b" --set scheme="$s"
 [ "$f" = - ] || [ "$f" = default ] || set -- "$@" --set force="$f"
+[ -z "${MASS:-}" ] || set -- "$@" --set mass="$MASS"
 t0=$(date +%s.%N)
 st=0
 nice "$LAMINA" "$@" > "$OUT/jobs/$id.out" 2> "$OUT/jobs/$id.err" || st=$?

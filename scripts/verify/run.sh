@@ -8,6 +8,9 @@
 # docs/verification.md (scripts/verify/report.py).
 #
 # usage: scripts/verify/run.sh [-l "1 2"] [-j 2] [-c "case1 case2"] [-o OUTDIR]
+#                              [-b "bspline2"] [-m corrected]
+#   -b limits the bases of the matrix; -m runs every job (the default row
+#   too) with lamina.sim{mass = ...} (docs/api.md).
 #   LAMINA (default build/lamina) is the binary; run from the repository.
 set -eu
 LAMINA=${LAMINA:-build/lamina}
@@ -15,13 +18,17 @@ LEVELS="1 2"
 JOBS=2
 CASES=""
 OUT=build/verify
-while getopts l:j:c:o: opt; do
+BASES="linear gimp bspline2"
+MASS=""
+while getopts l:j:c:o:b:m: opt; do
   case $opt in
     l) LEVELS=$OPTARG ;;
     j) JOBS=$OPTARG ;;
     c) CASES=$OPTARG ;;
     o) OUT=$OPTARG ;;
-    *) echo "usage: $0 [-l LEVELS] [-j JOBS] [-c CASES] [-o OUTDIR]" >&2; exit 2 ;;
+    b) BASES=$OPTARG ;;
+    m) MASS=$OPTARG ;;
+    *) echo "usage: $0 [-l LEVELS] [-j JOBS] [-c CASES] [-o OUTDIR] [-b BASES] [-m MASS]" >&2; exit 2 ;;
   esac
 done
 [ -x "$LAMINA" ] || { echo "run.sh: no lamina at $LAMINA (build first, or set LAMINA)" >&2; exit 2; }
@@ -36,7 +43,7 @@ for c in $CASES; do
   if grep -q '^-- verify: membrane' "tests/verify/$c.lua"; then forces="point segment"; else forces="-"; fi
   for l in $LEVELS; do
     echo "$c default default default $l" >> "$list"
-    for b in linear gimp bspline2; do
+    for b in $BASES; do
       for f in $forces; do
         for s in musl usl; do echo "$c $b $f $s $l" >> "$list"; done
       done
@@ -46,7 +53,7 @@ done
 n=$(wc -l < "$list")
 echo "run.sh: $n runs, $JOBS at a time, into $OUT" >&2
 start=$(date +%s)
-export LAMINA OUT
+export LAMINA OUT MASS
 xargs -P "$JOBS" -L 1 sh scripts/verify/job.sh < "$list"
 end=$(date +%s)
 echo "run.sh: $n runs in $((end - start)) s" >&2

@@ -11,6 +11,7 @@
 #include "l_internal.h"
 
 static const char *const schemes[] = {"musl", "usl", NULL};
+static const char *const masses[] = {"lumped", "corrected", NULL};
 /* in lm_basis order (mpm.h) */
 static const char *const bases[] = {"linear", "gimp", "bspline2", NULL};
 /* lm_stress: [T] §5.4.3 (stress_cell.c) */
@@ -90,7 +91,7 @@ int la_sim_new(lua_State *L)
 {
     static const char *const keys[] = {"domain", "cell", "dt", "scheme", "gravity",
                                        "boundary", "courant", "pic", "seed", "threads",
-                                       "basis", "stress", "axisymmetric", NULL};
+                                       "basis", "stress", "axisymmetric", "mass", NULL};
     const char *fn = "lamina.sim";
     la_check_keys(L, 1, fn, keys);
     lm_sim_def d;
@@ -100,6 +101,7 @@ int la_sim_new(lua_State *L)
     d.dt = la_number(L, 1, fn, "dt");
     d.scheme = (lm_scheme)la_option(L, fn, "scheme",
                                     la_opt_string(L, 1, fn, "scheme", "musl"), schemes);
+    d.mass = (lm_mass)la_option(L, fn, "mass", la_opt_string(L, 1, fn, "mass", "lumped"), masses);
     d.stress = (lm_stress)la_option(L, fn, "stress",
                                     la_opt_string(L, 1, fn, "stress", "points"), stresses);
     if (la_has(L, 1, "gravity")) la_pair(L, 1, fn, "gravity", &d.gx, &d.gy);
@@ -374,7 +376,7 @@ static int courant_exceeded(la_sim *s, char *msg, size_t len)
     double limit = lm_sim_courant_limit(s->sim);
     if (!(cn > limit * (1 + 1e-12))) return 0;
     double h = fmin(s->sim->grid.hx, s->sim->grid.hy);
-    char basis[160] = "", who[96] = "", why[200] = "";
+    char basis[320] = "", who[96] = "", why[200] = "";
     double fb = lm_basis_courant_factor(s->sim->def.basis);
     if (fb != 1)
         snprintf(basis, sizeof basis, " x %g for basis = \"%s\"", fb,
@@ -383,6 +385,11 @@ static int courant_exceeded(la_sim *s, char *msg, size_t len)
         size_t k = strlen(basis);
         snprintf(basis + k, sizeof basis - k, " x %g for scheme = \"usl\" (USL divides each "
                  "node's momentum by its own mass: less stable than MUSL)", LM_USL_COURANT);
+    }
+    if (s->sim->def.mass == LM_MASS_CORRECTED) {
+        size_t k = strlen(basis);
+        snprintf(basis + k, sizeof basis - k, " x %g for mass = \"corrected\" (its highest "
+                 "grid mode is faster)", LM_CORRECTED_COURANT);
     }
     if (b >= 0) {
         const lm_body *bd = &s->sim->bodies[b];
@@ -402,7 +409,7 @@ static int courant_exceeded(la_sim *s, char *msg, size_t len)
 
 static void check_courant(lua_State *L, la_sim *s)
 {
-    char msg[700];
+    char msg[900];
     if (courant_exceeded(s, msg, sizeof msg)) luaL_error(L, "%s", msg);
 }
 
@@ -617,6 +624,7 @@ static int sim_index(lua_State *L)
     else if (strcmp(k, "scheme") == 0) lua_pushstring(L, schemes[m->def.scheme]);
     else if (strcmp(k, "basis") == 0) lua_pushstring(L, lm_basis_name(m->def.basis));
     else if (strcmp(k, "pic") == 0) lua_pushnumber(L, m->def.pic);
+    else if (strcmp(k, "mass") == 0) lua_pushstring(L, masses[m->def.mass]);
     else if (strcmp(k, "stress") == 0) lua_pushstring(L, stresses[m->def.stress]);
     else if (strcmp(k, "threads") == 0) lua_pushinteger(L, m->def.threads);
     else if (strcmp(k, "axisymmetric") == 0) lua_pushboolean(L, m->def.axisym);
@@ -652,7 +660,7 @@ static int sim_newindex(lua_State *L)
         lm_sim_set_dt(m, dt);
         /* checked as at the start of a run (s.dt = 1e300 was not): a dt
          * past the Courant limit is refused and the old one kept */
-        char msg[700];
+        char msg[900];
         if (courant_exceeded(s, msg, sizeof msg)) {
             lm_sim_set_dt(m, old);
             return luaL_error(L, "sim.%s", msg);

@@ -25,6 +25,9 @@ typedef enum lm_status {
 } lm_status;
 
 typedef enum lm_scheme { LM_MUSL = 0, LM_USL = 1 } lm_scheme;
+/* The grid's mass: lumped (row sums, [F] eq 7), or lumped with one Neumann
+ * step towards the consistent mass (mass_corrected.c). */
+typedef enum lm_mass { LM_MASS_LUMPED = 0, LM_MASS_CORRECTED = 1 } lm_mass;
 
 /* Shape functions of the step (lamina.sim{basis}; docs/decisions.md
  * "Shape functions"): the bilinear hats of the papers (shape.c, a 2 x 2
@@ -268,6 +271,7 @@ typedef struct lm_sim_def {
                               bit-identical for the same count (threads.h) */
     lm_basis basis;        /* shape functions (default linear) */
     lm_stress stress;      /* internal force from point or cell stresses */
+    lm_mass mass;          /* lumped (default) or corrected (mass_corrected.c) */
     int axisym;            /* the axisymmetric form (axisym.c): x is r, y is
                               z, the left side is the axis r = 0; masses,
                               volumes, forces and energies per radian */
@@ -446,6 +450,16 @@ double lm_sim_courant_body(const lm_sim *sim, double *c_max, int *body);
  * centres first grows at dt c / h = 0.75 (MUSL: 2.15; docs/robustness.md
  * "The 1-D bar"). The check scales `courant` by this for USL. */
 #define LM_USL_COURANT 0.7
+/* mass = "corrected" (mass_corrected.c) raises the highest grid mode's
+ * frequency (1-D estimate for the B-spline's grid step alone: sqrt(2 -
+ * M_C(pi)) = sqrt(1.867); the step-5 correction adds to it). Measured on
+ * the 1-D bar (scripts/measure/courant_basis.lua --set mass=corrected,
+ * docs/robustness.md "Corrected mass"): the largest stable dt c / h over
+ * 1, 4, 9 points per cell is linear 1.27 / 1.09 / 1.06, uGIMP 1.26 /
+ * 1.10 / 1.07, bspline2 1.26 / 1.54 / 1.46, against the lumped linear
+ * basis' 1.97 / 1.72 / 1.66 that `courant` is stated for: the smallest
+ * ratio, 0.634. */
+#define LM_CORRECTED_COURANT 0.63
 /* The largest Courant number the run accepts: `courant` (stated for the
  * linear basis and MUSL) times the basis' factor, and LM_USL_COURANT for
  * USL. */

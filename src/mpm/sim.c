@@ -317,7 +317,8 @@ void lm_sim_set_particle_size(lm_sim *sim, size_t q, double lx, double ly)
 double lm_sim_courant_limit(const lm_sim *sim)
 {
     double usl = sim->def.scheme == LM_USL ? LM_USL_COURANT : 1;
-    return sim->def.courant * lm_basis_courant_factor(sim->def.basis) * usl;
+    double mass = sim->def.mass == LM_MASS_CORRECTED ? LM_CORRECTED_COURANT : 1;
+    return sim->def.courant * lm_basis_courant_factor(sim->def.basis) * usl * mass;
 }
 
 /* docs/physics.md §5: dt_c = h / c_max; the number is dt / dt_c. A gas's

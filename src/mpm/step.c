@@ -221,6 +221,9 @@ void lm_step_grid_update(lm_sim *sim)
     lm_grid *g = &sim->grid;
     size_t nn = lm_grid_nodes(g);
     double dt = sim->def.dt;
+    /* mass = "corrected": p_i, f_i towards the consistent mass
+     * (mass_corrected.c; one field only: not with contact's own fields) */
+    if (sim->def.mass == LM_MASS_CORRECTED && !sim->contact) lm_mass_correct_momentum_forces(sim);
     if (lm_constraint_active(sim)) {
         /* heavy end points, on p and f with the walls applied (the solve
          * leaves the walls' components alone: constraint.c) */
@@ -293,6 +296,10 @@ void lm_step_strain_velocity_end(lm_sim *sim, int remap)
                 g->vy[i] /= g->m[i];
             }
         }
+        /* scratch px, py: MUSL reads p_i^L no more this step (step 9
+         * clears them) */
+        if (sim->def.mass == LM_MASS_CORRECTED && !sim->contact)
+            lm_mass_correct_velocity(sim, g->px, g->py);
     }
     lm_pin_velocity(sim);
     lm_grid_apply_bc(g, g->vx, g->vy);

@@ -172,6 +172,10 @@ lm_status lm_step_split(lm_sim *sim);       /* thinned gas points into four */
 
 /* Zeroes the boundary-constrained components of a nodal vector field. */
 void lm_grid_apply_bc(const lm_grid *g, double *ux, double *uy);
+/* mass = "corrected" (mass_corrected.c): before step 3, p_i and f_i; in
+ * step 5 (MUSL), the re-mapped velocities in (vx, vy), (sx, sy) scratch. */
+void lm_mass_correct_momentum_forces(lm_sim *sim);
+void lm_mass_correct_velocity(lm_sim *sim, double *sx, double *sy);
 /* Nodes of the arrays, ghosts included. */
 size_t lm_grid_nodes(const lm_grid *g);
 /* Sets the ghost ring and stride for the basis (lm_sim_new). */

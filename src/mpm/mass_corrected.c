@@ -1,0 +1,145 @@
+/* mass_corrected.c - lamina.sim{mass = "corrected"}: one Neumann step of
+ * the consistent-mass solve on the grid (issue 30 item 2, docs/robustness.md
+ * "Corrected mass").
+ *
+ * Step 1's nodal mass is the row sum of the consistent mass matrix
+ * M_C = sum_p m_p N_ip N_jp ([F] eq 7's lumping, [M] eq 10). For the
+ * quadratic B-spline that costs dispersion: in 1-D the stiffness symbol is
+ * K(theta) = theta^2 (1 - theta^2 / 4) against a lumped mass of 1, so
+ * omega_h / omega = 1 - theta^2 / 8 (theta = k h). M_C's symbol is
+ * (66 + 52 cos theta + 2 cos 2 theta) / 120 = 1 - theta^2 / 4 + O(theta^4);
+ * one Neumann step of M_C^-1 = (M_L - (M_L - M_C))^-1,
+ *     u_C = u_L + M_L^-1 (M_L - M_C) u_L = 2 u_L - M_L^-1 (M_C u_L),
+ * u_L = M_L^-1 r, has the symbol 2 - M_C(theta) = 1 + theta^2 / 4 + ...,
+ * which cancels the theta^2 term: omega_h / omega = 1 + O(theta^4).
+ * M_C u_L costs one gather of u_L to the particles and one scatter
+ * m_p N_ip u_p back. M_L - M_C is positive semi-definite, so the corrected
+ * inverse mass (2 - M_C(theta) in [1, 2)) stays positive, but the highest
+ * mode's frequency rises (1-D theta = pi: x sqrt(1.87)): the Courant check
+ * scales by LM_CORRECTED_COURANT.
+ *
+ * Applied to the nodal momenta and forces before step 3 (so p_i^L, the
+ * accelerations and every velocity built from them carry it) and to the
+ * MUSL re-mapped velocities of step 5 (which move segment membranes'
+ * points, [M] eq 13: their smoothing is the larger half of the string's
+ * dispersion, docs/robustness.md). Uniform fields are kept exactly (the
+ * N_ip sum to one: M_C 1 = M_L 1), and sum_i of the correction is zero,
+ * so momentum is conserved. The loops are serial and in particle order:
+ * same bits for the same script. */
+#include "step.h"
+
+/* (bx, by)_i = sum_p m_p N_ip sum_j N_jp (ux, uy)_j, the ghost sums folded
+ * at the walls; (ux, uy) filled at the ghost nodes by the caller. Row by
+ * row for the 3 x 3 stencils, as step 4 gathers. */
+static void consistent_times(const lm_sim *sim, const double *ux, const double *uy,
+                             double *bx, double *by)
+{
+    const lm_grid *g = &sim->grid;
+    const lm_particles *p = &sim->p;
+    const int W = g->sw;
+    size_t nn = lm_grid_nodes(g);
+    for (size_t i = 0; i < nn; i++) bx[i] = by[i] = 0;
+    for (size_t q = 0; q < p->n; q++) {
+        lm_weights wt;
+        lm_weights_of(sim, q, &wt);
+        const double *N = wt.N;
+        double sx = 0, sy = 0;
+        for (int b = 0; b < W; b++) {
+            const long row = lm_stencil_row(g, p->node[q], b);
+            double rx = 0, ry = 0;
+            for (int a = 0; a < W; a++) {
+                rx += N[b * W + a] * ux[row + a];
+                ry += N[b * W + a] * uy[row + a];
+            }
+            sx += rx;
+            sy += ry;
+        }
+        sx *= p->m[q];
+        sy *= p->m[q];
+        for (int b = 0; b < W; b++) {
+            const long row = lm_stencil_row(g, p->node[q], b);
+            for (int a = 0; a < W; a++) {
+                bx[row + a] += N[b * W + a] * sx;
+                by[row + a] += N[b * W + a] * sy;
+            }
+        }
+    }
+    double *const f[2] = {bx, by};
+    static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
+    lm_grid_fold(g, 2, f, comp);
+}
+
+/* One mass-weighted field (rx, ry) (a momentum or a force) replaced by
+ * M_L (2 u_L - M_L^-1 M_C u_L) = 2 r - M_C u_L, u_L = r / m constrained as
+ * step 3 will constrain it: at the walls (lm_grid_apply_bc) and, at the
+ * nodes a pin holds, the pin's velocity (momentum) or no acceleration
+ * (forces: a pin moves steadily within a step; the impulse
+ * (v_pin - p_i / m_i) / dt with which pin.c holds the node is no
+ * acceleration of the string, and fed to the neighbours through M_C it
+ * made the pinned strings blow up, measured). (ux, uy), (bx, by) are
+ * scratch. */
+static void correct_weighted(lm_sim *sim, double *rx, double *ry, int momentum, double *ux,
+                             double *uy, double *bx, double *by)
+{
+    lm_grid *g = &sim->grid;
+    size_t nn = lm_grid_nodes(g);
+    for (size_t i = 0; i < nn; i++) {
+        double r = g->m[i] > 0 ? 1.0 / g->m[i] : 0;
+        ux[i] = rx[i] * r;
+        uy[i] = ry[i] * r;
+        if (sim->npins && sim->pin_w[i] > 0) {
+            double w = sim->pin_w[i];
+            ux[i] = momentum ? sim->pin_vx[i] / w : 0;
+            uy[i] = momentum ? sim->pin_vy[i] / w : 0;
+        }
+    }
+    lm_grid_apply_bc(g, ux, uy);
+    double *const fill[2] = {ux, uy};
+    static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
+    lm_grid_fill(g, 2, fill, comp);
+    consistent_times(sim, ux, uy, bx, by);
+    for (size_t i = 0; i < nn; i++) {
+        /* a held node keeps its own sums: pin.c reads the reaction from
+         * them (correcting them doubled a hanging chain's end tension,
+         * measured: +100 %), and holds its momentum whatever they are */
+        if (!(g->m[i] > 0) || (sim->npins && sim->pin_w[i] > 0)) continue;
+        rx[i] = 2 * rx[i] - bx[i];
+        ry[i] = 2 * ry[i] - by[i];
+    }
+}
+
+/* Before step 3: p_i and f_i corrected. Scratch: the step-4 arrays
+ * (ax, ay, vx, vy), which step 4 overwrites whole (phase-by-phase path
+ * only: lm_step_fusable says no when the option is on). pin.c's
+ * lm_pin_grid then holds the pinned nodes as before. */
+void lm_mass_correct_momentum_forces(lm_sim *sim)
+{
+    lm_grid *g = &sim->grid;
+    correct_weighted(sim, g->fx, g->fy, 0, g->ax, g->ay, g->vx, g->vy);
+    correct_weighted(sim, g->px, g->py, 1, g->ax, g->ay, g->vx, g->vy);
+}
+
+/* Step 5, MUSL: the re-mapped velocities v_i = (sum_p m_p v_p N_ip) / m_i
+ * in (vx, vy), not yet constrained, corrected to 2 v - M_L^-1 M_C v with
+ * v constrained first (walls, pins). Scratch: ax, ay (step 4 is done) and
+ * one more pair, the caller's. */
+void lm_mass_correct_velocity(lm_sim *sim, double *sx, double *sy)
+{
+    lm_grid *g = &sim->grid;
+    size_t nn = lm_grid_nodes(g);
+    lm_pin_velocity(sim);
+    lm_grid_apply_bc(g, g->vx, g->vy);
+    for (size_t i = 0; i < nn; i++) {
+        g->ax[i] = g->vx[i];
+        g->ay[i] = g->vy[i];
+    }
+    double *const fill[2] = {g->ax, g->ay};
+    static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
+    lm_grid_fill(g, 2, fill, comp);
+    consistent_times(sim, g->ax, g->ay, sx, sy);
+    for (size_t i = 0; i < nn; i++) {
+        if (!(g->m[i] > 0)) continue;
+        g->vx[i] = 2 * g->vx[i] - sx[i] / g->m[i];
+        g->vy[i] = 2 * g->vy[i] - sy[i] / g->m[i];
+    }
+}
