@@ -1,0 +1,19 @@
+# tests/out_fixtures.cmake - what the security and EGL tests expect to find in
+# their working folders: run as the test `fixtures.out` before them (and not
+# only at configure time), so a build tree whose tests/out was cleared runs
+# the same as a fresh one.  Called with -DOUT=<build>/tests/out.
+file(MAKE_DIRECTORY ${OUT}/security/root ${OUT}/egl_cannot_start)
+# a link leading out of the output root
+file(CREATE_LINK / ${OUT}/security/to_slash SYMBOLIC)
+# a file lamina did not write, and a link to it (issue 31, out_not_ours)
+file(WRITE ${OUT}/security/theirs/conftest.py "print('not lamina')\n")
+file(CREATE_LINK conftest.py ${OUT}/security/theirs/link.csv SYMBOLIC)
+# A cleared tests/out leaves the output list (tests/.lamina-outputs) behind;
+# a run that wrote conftest.py while it was missing listed it as lamina's.
+set(list ${OUT}/../.lamina-outputs)
+if(EXISTS ${list})
+  file(STRINGS ${list} lines)
+  list(FILTER lines EXCLUDE REGEX "^out/security/theirs/")
+  list(JOIN lines "\n" text)
+  file(WRITE ${list} "${text}\n")
+endif()
