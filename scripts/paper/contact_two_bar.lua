@@ -11,16 +11,24 @@
 --   within a few per cent (Fig 96); Fig 19's normals (every other node's,
 --   2.5 times their usual length) point out of each bar at the nodes the
 --   bars share (grey marks: they moved together there)
--- checks: bar velocities at t = 0.5 against the paper's 0.3 and 1.7 (not
---   reached: lamina's bars part more cleanly, 0.13 / 1.87) and against ours,
---   a finite-element bar on a rigid frictionless wall (the same problem in
---   the frame of the centre of mass, assets/lua/bar_wall_fem.lua), which
---   converges to e = 0.95, not the paper's 0.7; their sum v0 = 2
---   to round-off, the largest rise of the total energy against the 3 % of
---   [T] A.1.5, the difference v_right - v_left at t = 0.5 for three meshes,
---   and for each the restitution e = (v_right - v_left) / v0 against the
---   reference with elements half the cell (the particle spacing), within
---   0.02 (the reference's own accuracy there, tests/physics/contact_two_bar_fem.lua)
+-- checks: bar velocities at t = 0.5 against the paper's "about 0.3" and
+--   "about 1.7" ([T] App. A.1.5, Fig 95(b); tolerance 0.05, the rounding of
+--   "about" to one decimal). [T] A.1.5 itself calls them a pseudo coefficient
+--   of restitution "that includes numerical dissipation", with "about an 11%
+--   drop in energy after the impact" (Fig 96(a)): lamina's contact-release
+--   dissipates less (the energy change after the impact is printed beside
+--   the paper's -11 %, tolerance 1 %) and parts the bars more cleanly
+--   (0.126 / 1.874), close to ours, a finite-element bar on a rigid
+--   frictionless wall (the same elastic impact in the frame of the centre of
+--   mass, assets/lua/bar_wall_fem.lua: 0.111 / 1.889 at elements half the
+--   cell, converging to e = 0.95, not the paper's 0.7): the misses against
+--   the paper stay visible as a cross, not a widened tolerance. Also: the
+--   velocities' sum v0 = 2 to round-off; the largest rise of the total energy
+--   (printed; [T] Fig 96(b)'s "about a 3% increase" belongs to another pair of
+--   runs); the difference v_right - v_left at t = 0.5 for three meshes, and
+--   for each the restitution e = (v_right - v_left) / v0 against our FEM with
+--   elements half the cell (the particle spacing), within 0.02 (the
+--   reference's own accuracy there, tests/physics/contact_two_bar_fem.lua)
 -- assumed: the deck's 5 x 5 box with fixed walls, 21 x 21 nodes (cell 0.25),
 --   4 points per cell, dt = 7e-4; the finer meshes keep dt / cell (the paper
 --   does not give them: cells 0.125 and 0.0625 here)
@@ -115,10 +123,12 @@ for k = 1, meshes do
                       0.25 / 2 ^ (k - 1), diffs[k], refs[k]))
 end
 local report = {
-  left = { vl, paper = 0.3, ref = 1 - refs[1] / 2, tol = 0.1 },
-  right = { vr, paper = 1.7, ref = 1 + refs[1] / 2, tol = 0.1 },
+  left = { vl, paper = 0.3, ref = 1 - refs[1] / 2, tol = 0.05, unit = "[T] Fig 95(b)" },
+  right = { vr, paper = 1.7, ref = 1 + refs[1] / 2, tol = 0.05, unit = "[T] Fig 95(b)" },
   momentum_sum = { vl + vr, ref = 2, tol = 1e-12 },
-  energy_rise = { 100 * rise, paper = 3, unit = "%" },
+  energy_change = { 100 * (rel.e[#rel.e] - 1), paper = -11, tol = 1,
+                    unit = "% at t = 0.5, after the impact; [T] A.1.5, Fig 96(a)" },
+  energy_rise = { 100 * rise, unit = "% (largest rise)" },
   state_hash = rel.sim:hash(),
 }
 for k = 1, meshes do
