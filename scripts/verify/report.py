@@ -74,13 +74,17 @@ def config_of(r, default_cfg):
     return (r["jb"], r["jf"], r["js"])
 
 
-def fmt_err(r):
+def fmt_err(r, cfg=None):
     if r is None:
         return ""
     if r["status"] != "ok":
         return r["status"]
     e = r["err"]
     s = "%.3g" % e if e >= 0.001 else ("0" if e == 0 else "%.1e" % e)
+    # a default row that ran on another basis (incline: sim:contact refuses
+    # the default's and the case follows the refusal) says which
+    if cfg and cfg[0] == "default" and r.get("basis") and r["basis"] != cfg[1]:
+        s += " (on %s)" % r["basis"]
     return s
 
 
@@ -227,7 +231,7 @@ def main():
                 rs = [table.get((c, q, cs[0], l)) if cs else None for l in levels]
                 for l, r in zip(levels, rs):
                     mark = " **x**" if fails(r, l, levels) else ""
-                    cells.append(fmt_err(r) + mark)
+                    cells.append(fmt_err(r, cs[0] if cs else None) + mark)
                 cells.append(order(rs[0], rs[1]) if len(rs) > 1 else "")
             L.append("| %s | %s | %s |" % (c, q, " | ".join(cells)))
             readme.append((c, q, cells))
@@ -252,7 +256,7 @@ def main():
                     continue
                 nall += 1
                 if any(fails(r, l, levels) for l, r in zip(levels, rs)):
-                    misses.append("%s %s (%s)" % (c, q, " / ".join(fmt_err(r) or "-" for r in rs)))
+                    misses.append("%s %s (%s)" % (c, q, " / ".join(fmt_err(r, k) or "-" for r in rs)))
                 else:
                     npass += 1
         L.append("- %s: passes %d of %d. Misses: %s" % (cfg_name(k), npass, nall,
@@ -286,7 +290,7 @@ def main():
             L.append("|" + " --- |" * (len(levels) + 2))
             for k in cfgs_of(c):
                 rs = [table.get((c, q, k, l)) for l in levels]
-                cells = [fmt_err(r) + (" **x**" if fails(r, l, levels) else "") for l, r in zip(levels, rs)]
+                cells = [fmt_err(r, k) + (" **x**" if fails(r, l, levels) else "") for l, r in zip(levels, rs)]
                 L.append("| %s | %s | %s |" % (cfg_name(k), " | ".join(cells),
                                                order(rs[0], rs[1]) if len(rs) > 1 else ""))
             L.append("")

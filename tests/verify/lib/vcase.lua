@@ -97,4 +97,48 @@ function M.period(t, y, mean, t_skip)
   return (up[#up] - up[1]) / (#up - 1), up
 end
 
+-- The trapezoidal mean of a sampled y(t) between ta and tb (ta, tb inside
+-- the samples; the ends interpolated linearly).
+function M.mean_between(t, y, ta, tb)
+  local function at(x)
+    for i = 2, #t do
+      if t[i] >= x then return y[i - 1] + (y[i] - y[i - 1]) * (x - t[i - 1]) / (t[i] - t[i - 1]) end
+    end
+    return y[#y]
+  end
+  local s, prev_t, prev_y = 0, ta, at(ta)
+  for i = 1, #t do
+    if t[i] > ta and t[i] < tb then
+      s = s + 0.5 * (prev_y + y[i]) * (t[i] - prev_t)
+      prev_t, prev_y = t[i], y[i]
+    end
+  end
+  s = s + 0.5 * (prev_y + at(tb)) * (tb - prev_t)
+  return s / (tb - ta)
+end
+
+-- The mean of a ringing signal over whole periods within [t0, t1]: a mean
+-- over a window that ends part-way through a period carries up to
+-- amplitude / periods of the ringing with it, which for a lightly damped
+-- body is larger than the drift being measured. The periods' ends are the
+-- signal's upward crossings of its own mean (first the window's mean, then,
+-- once, the mean between the crossings that gives), linearly interpolated.
+-- Returns the mean, the number of whole periods, the first and last crossing.
+function M.ringing_mean(t, y, t0, t1)
+  local mean = M.mean_between(t, y, t0, t1)
+  local up
+  for _ = 1, 2 do
+    up = {}
+    for i = 2, #t do
+      local a, b = y[i - 1] - mean, y[i] - mean
+      if t[i - 1] >= t0 and t[i] <= t1 and a < 0 and b >= 0 then
+        up[#up + 1] = t[i - 1] + (t[i] - t[i - 1]) * (-a) / (b - a)
+      end
+    end
+    assert(#up >= 2, M.case .. ": fewer than two upward crossings in the window, no whole period")
+    mean = M.mean_between(t, y, up[1], up[#up])
+  end
+  return mean, #up - 1, up[1], up[#up]
+end
+
 return M
