@@ -403,9 +403,6 @@ static void rest_sums(lm_sim *sim, lm_contact_field *f)
         }
 }
 
-void lm_contact_body_normals(lm_sim *sim, lm_contact_field *f);   /* contact_normals.c */
-void lm_contact_release_test(lm_sim *sim);                         /* contact_correct.c */
-
 lm_status lm_contact_sums(lm_sim *sim)
 {
     if (!sim->contact || sim->contact->npairs == 0) return LM_OK;

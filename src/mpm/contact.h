@@ -221,5 +221,9 @@ void lm_contact_strain_velocity(lm_sim *sim);
  * own field differs by, sum_i dv_i (x) G_iq. */
 void lm_contact_gradient(const lm_sim *sim, size_t q, double L[4]);
 void lm_contact_velocity(const lm_sim *sim, size_t q, double *ux, double *uy);
+/* Parts of lm_contact_sums in their own files: the normals at the nodes
+ * where pairs meet (contact_normals.c), the release test (contact_correct.c). */
+void lm_contact_body_normals(lm_sim *sim, lm_contact_field *f);
+void lm_contact_release_test(lm_sim *sim);
 
 #endif

@@ -183,10 +183,10 @@ void lm_contact_release_test(lm_sim *sim)
         memset(flag, 0, (size_t)c->nf);
         for (int k = 0; k < c->npairs; k++) {
             if (!pair_here(c, k, i)) continue;
-            int a = c->pairs[k].a, b = c->pairs[k].b;
-            flag[a] |= 1;
-            flag[b] |= 1;
-            if (!separating(c, k, i)) flag[a] |= 2, flag[b] |= 2;
+            int pa = c->pairs[k].a, pb = c->pairs[k].b;
+            flag[pa] |= 1;
+            flag[pb] |= 1;
+            if (!separating(c, k, i)) flag[pa] |= 2, flag[pb] |= 2;
             any = 1;
         }
         if (any)
