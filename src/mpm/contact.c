@@ -232,19 +232,6 @@ static lm_cbox box_meet(const lm_cbox *a, const lm_cbox *b)
     return lm_cbox_empty(&r) ? EMPTY : r;
 }
 
-static void box_join(lm_cbox *a, const lm_cbox *b)
-{
-    if (lm_cbox_empty(b)) return;
-    if (lm_cbox_empty(a)) {
-        *a = *b;
-        return;
-    }
-    if (b->i0 < a->i0) a->i0 = b->i0;
-    if (b->i1 > a->i1) a->i1 = b->i1;
-    if (b->j0 < a->j0) a->j0 = b->j0;
-    if (b->j1 > a->j1) a->j1 = b->j1;
-}
-
 /* b and r nodes around it, within the storage. */
 static lm_cbox box_grow(const lm_contact *c, const lm_cbox *b, int r)
 {
@@ -424,7 +411,7 @@ lm_status lm_contact_sums(lm_sim *sim)
     c->box = EMPTY;
     for (int k = 0; k < c->npairs; k++) {
         lm_cbox m = box_meet(&c->f[c->pairs[k].a].nodes, &c->f[c->pairs[k].b].nodes);
-        box_join(&c->box, &m);
+        lm_cbox_join(&c->box, &m);
     }
     /* what the stencils of particles that reach box reach (sw - 1 nodes
      * on), and where the walls fold their ghost nodes (2 nodes in) */
@@ -454,7 +441,7 @@ lm_status lm_contact_sums(lm_sim *sim)
             for (int k = 0; k < c->npairs; k++)
                 if (c->f[c->pairs[k].a].m[i] > 0 && c->f[c->pairs[k].b].m[i] > 0) {
                     lm_cbox one = {ii, ii, j, j};
-                    box_join(&c->met, &one);
+                    lm_cbox_join(&c->met, &one);
                     break;
                 }
         }

@@ -136,6 +136,21 @@ static inline int lm_cbox_empty(const lm_cbox *b)
     return b->i0 > b->i1 || b->j0 > b->j1;
 }
 
+/* a grown to hold b too: the smallest box holding both (an empty one adds
+ * nothing). The one join of the contact boxes (box, met, near, moved). */
+static inline void lm_cbox_join(lm_cbox *a, const lm_cbox *b)
+{
+    if (lm_cbox_empty(b)) return;
+    if (lm_cbox_empty(a)) {
+        *a = *b;
+        return;
+    }
+    if (b->i0 < a->i0) a->i0 = b->i0;
+    if (b->i1 > a->i1) a->i1 = b->i1;
+    if (b->j0 < a->j0) a->j0 = b->j0;
+    if (b->j1 > a->j1) a->j1 = b->j1;
+}
+
 /* The walls' conditions (lm_grid_apply_bc) on ux, uy at the nodes of box b
  * only: the same zeroes there. */
 static inline void lm_cbox_apply_bc(const lm_contact *c, const lm_grid *g, const lm_cbox *b,
