@@ -99,19 +99,23 @@ static int split_tabs(const char *line, size_t len, char *f[6])
 
 /* Reads SCRIPTS/coverage.tsv. Returns 1 when there is none, 0 when read
  * (rows that cannot be read are skipped and added to problems, if given),
- * -1 on a read error. */
+ * -1 on a read error; c is to be freed only after 0 (nothing is kept
+ * otherwise). */
 static int coverage_read(const char *scripts, g_coverage *c, g_strs *problems)
 {
     memset(c, 0, sizeof *c);
     c->path = g_fmt("%s/%s", scripts, G_COVERAGE);
-    if (!g_exists(c->path))
+    if (!g_exists(c->path)) {
+        coverage_free(c);
         return 1;
+    }
     char *text;
     size_t len;
     char err[512];
     if (g_read_file(c->path, &text, &len, err, sizeof err) != 0) {
         if (problems)
             g_strs_add(problems, g_strdup(err));
+        coverage_free(c);
         return -1;
     }
     int lineno = 0, header = 0;
@@ -332,10 +336,8 @@ void g_source_refs(const char *source, g_strs *out)
 void g_coverage_check(const g_options *o, const g_scripts *all, g_strs *problems)
 {
     g_coverage c;
-    if (coverage_read(o->scripts, &c, problems) != 0) {
-        coverage_free(&c);
+    if (coverage_read(o->scripts, &c, problems) != 0)
         return;
-    }
     g_strs seen = { 0 };
     for (size_t i = 0; i < c.n; i++) {
         const cov_row *r = &c.v[i];
@@ -432,10 +434,8 @@ static const char *const INTRO =
 void g_coverage_markdown(FILE *f, const g_options *o)
 {
     g_coverage c;
-    if (coverage_read(o->scripts, &c, NULL) != 0) {
-        coverage_free(&c);
+    if (coverage_read(o->scripts, &c, NULL) != 0)
         return;
-    }
     fputs("\n## Coverage of the papers\n\n", f);
     fprintf(f, INTRO, c.path);
     fputs("\n\n| Paper | Figures and tables | Reproduced | Partial | Missing |\n"
@@ -479,10 +479,8 @@ void g_coverage_markdown(FILE *f, const g_options *o)
 void g_coverage_html(FILE *f, const g_options *o)
 {
     g_coverage c;
-    if (coverage_read(o->scripts, &c, NULL) != 0) {
-        coverage_free(&c);
+    if (coverage_read(o->scripts, &c, NULL) != 0)
         return;
-    }
     fputs("<h2>Coverage of the papers</h2>\n<p>", f);
     char *intro = g_fmt(INTRO, c.path);
     for (const char *s = intro; *s; s++)      /* the Markdown's bold and code, as text */

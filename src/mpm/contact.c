@@ -326,6 +326,15 @@ static LM_FORCE_INLINE void body_sums_w(lm_sim *sim, lm_contact_field *f, const 
     }
 }
 
+/* f's mass zeroed where the last step left it; from now it may be
+ * non-zero over the body's present nodes. */
+static void mass_to_nodes(const lm_contact *c, lm_contact_field *f)
+{
+    double *const mz[1] = {f->m};
+    lm_cbox_zero(c, &f->mbox, mz, 1);
+    f->mbox = f->nodes;
+}
+
 /* Steps 1-2 for one body alone: m^I, p^I and f^I = f^int,I + m^I g, the
  * same sums as step.c's over the body's particles only ([M] eqs 23, 25),
  * then folded at the walls like the shared field; m everywhere, the rest
@@ -334,9 +343,7 @@ static void body_sums(lm_sim *sim, lm_contact_field *f)
 {
     const lm_grid *g = &sim->grid;
     lm_contact *c = sim->contact;
-    double *const mz[1] = {f->m};
-    lm_cbox_zero(c, &f->mbox, mz, 1);
-    f->mbox = f->nodes;
+    mass_to_nodes(c, f);
     if (g->sw == 2) body_sums_w(sim, f, 2);
     else body_sums_w(sim, f, 3);
     double *const out[5] = {f->m, f->px, f->py, f->fx, f->fy};
@@ -359,9 +366,7 @@ static void rest_sums(lm_sim *sim, lm_contact_field *f)
 {
     const lm_grid *g = &sim->grid;
     lm_contact *c = sim->contact;
-    double *const mz[1] = {f->m};
-    lm_cbox_zero(c, &f->mbox, mz, 1);
-    f->mbox = f->nodes;
+    mass_to_nodes(c, f);
     const lm_cbox *b = &f->nodes;
     for (int j = b->j0; j <= b->j1; j++)
         for (long i = (long)j * c->sx + b->i0; i <= (long)j * c->sx + b->i1; i++) {
