@@ -476,6 +476,14 @@ void g_coverage_markdown(FILE *f, const g_options *o)
     coverage_free(&c);
 }
 
+/* <td>s</td>, s escaped. */
+static void html_cell(FILE *f, const char *s)
+{
+    fputs("<td>", f);
+    g_html(f, s);
+    fputs("</td>", f);
+}
+
 void g_coverage_html(FILE *f, const g_options *o)
 {
     g_coverage c;
@@ -509,11 +517,10 @@ void g_coverage_html(FILE *f, const g_options *o)
                 continue;
             fputs("<tr><td class=\"num\">", f);
             g_html(f, r->item);
-            fputs("</td><td>", f);
-            g_html(f, r->caption);
-            fputs("</td><td>", f);
-            g_html(f, r->status);
-            fputs("</td><td>", f);
+            fputs("</td>", f);
+            html_cell(f, r->caption);
+            html_cell(f, r->status);
+            fputs("<td>", f);
             g_strs pages = { 0 };
             row_pages(r, &pages);
             for (size_t k = 0; k < pages.n; k++) {
@@ -524,9 +531,9 @@ void g_coverage_html(FILE *f, const g_options *o)
                 fputs("</a>", f);
             }
             g_strs_free(&pages);
-            fputs("</td><td>", f);
-            g_html(f, r->note);
-            fputs("</td></tr>\n", f);
+            fputs("</td>", f);
+            html_cell(f, r->note);
+            fputs("</tr>\n", f);
         }
         fputs("</table>\n", f);
     }
