@@ -431,6 +431,63 @@ static const char *const INTRO =
     "fails when it names a page that does not exist, or when a page's `source:` cites "
     "a figure whose row does not name the page.";
 
+/* How a table row is written, in Markdown or HTML: what opens it, parts
+ * its cells and closes it; text escaped; the link to a page (k: its place
+ * in the row's list). */
+typedef struct cov_style {
+    const char *open, *sep, *close;
+    void (*text)(FILE *f, const char *s);
+    void (*link)(FILE *f, const char *page, size_t k);
+} cov_style;
+
+static void markdown_link(FILE *f, const char *page, size_t k)
+{
+    fputs(k ? ", [" : "[", f);
+    g_markdown_cell(f, page);
+    fputs("](", f);
+    g_url(f, page);
+    fprintf(f, "/%s)", G_PAGE);
+}
+
+static void html_link(FILE *f, const char *page, size_t k)
+{
+    fputs(k ? ", <a href=\"" : "<a href=\"", f);
+    g_url(f, page);
+    fprintf(f, "/%s\">", G_PAGE);
+    g_html(f, page);
+    fputs("</a>", f);
+}
+
+static const cov_style MARKDOWN = {"| ", " | ", " |\n", g_markdown_cell, markdown_link};
+static const cov_style HTML = {"<tr><td class=\"num\">", "</td><td>", "</td></tr>\n", g_html,
+                               html_link};
+
+/* The rows of paper p: item, caption, status (one of three plain words,
+ * the same escaped or not), pages, note. */
+static void write_rows(FILE *f, const g_coverage *c, int p, const cov_style *s)
+{
+    for (size_t i = 0; i < c->n; i++) {
+        const cov_row *r = &c->v[i];
+        if (paper_index(r->paper) != p)
+            continue;
+        fputs(s->open, f);
+        s->text(f, r->item);
+        fputs(s->sep, f);
+        s->text(f, r->caption);
+        fputs(s->sep, f);
+        s->text(f, r->status);
+        fputs(s->sep, f);
+        g_strs pages = { 0 };
+        row_pages(r, &pages);
+        for (size_t k = 0; k < pages.n; k++)
+            s->link(f, pages.v[k], k);
+        g_strs_free(&pages);
+        fputs(s->sep, f);
+        s->text(f, r->note);
+        fputs(s->close, f);
+    }
+}
+
 void g_coverage_markdown(FILE *f, const g_options *o)
 {
     g_coverage c;
@@ -448,40 +505,9 @@ void g_coverage_markdown(FILE *f, const g_options *o)
     for (int p = 0; p < 4; p++) {
         fprintf(f, "\n### %s\n\n| Item | Caption | Status | Page | Note |\n"
                    "| --- | --- | --- | --- | --- |\n", PAPER_NAMES[p]);
-        for (size_t i = 0; i < c.n; i++) {
-            const cov_row *r = &c.v[i];
-            if (paper_index(r->paper) != p)
-                continue;
-            fputs("| ", f);
-            g_markdown_cell(f, r->item);
-            fputs(" | ", f);
-            g_markdown_cell(f, r->caption);
-            fprintf(f, " | %s | ", r->status);
-            g_strs pages = { 0 };
-            row_pages(r, &pages);
-            for (size_t k = 0; k < pages.n; k++)
-            {
-                fputs(k ? ", [" : "[", f);
-                g_markdown_cell(f, pages.v[k]);
-                fputs("](", f);
-                g_url(f, pages.v[k]);
-                fprintf(f, "/%s)", G_PAGE);
-            }
-            g_strs_free(&pages);
-            fputs(" | ", f);
-            g_markdown_cell(f, r->note);
-            fputs(" |\n", f);
-        }
+        write_rows(f, &c, p, &MARKDOWN);
     }
     coverage_free(&c);
-}
-
-/* <td>s</td>, s escaped. */
-static void html_cell(FILE *f, const char *s)
-{
-    fputs("<td>", f);
-    g_html(f, s);
-    fputs("</td>", f);
 }
 
 void g_coverage_html(FILE *f, const g_options *o)
@@ -511,30 +537,7 @@ void g_coverage_html(FILE *f, const g_options *o)
         g_html(f, PAPER_NAMES[p]);
         fputs("</h3>\n<table>\n<tr><th>Item</th><th>Caption</th><th>Status</th><th>Page</th>"
               "<th>Note</th></tr>\n", f);
-        for (size_t i = 0; i < c.n; i++) {
-            const cov_row *r = &c.v[i];
-            if (paper_index(r->paper) != p)
-                continue;
-            fputs("<tr><td class=\"num\">", f);
-            g_html(f, r->item);
-            fputs("</td>", f);
-            html_cell(f, r->caption);
-            html_cell(f, r->status);
-            fputs("<td>", f);
-            g_strs pages = { 0 };
-            row_pages(r, &pages);
-            for (size_t k = 0; k < pages.n; k++) {
-                fputs(k ? ", <a href=\"" : "<a href=\"", f);
-                g_url(f, pages.v[k]);
-                fprintf(f, "/%s\">", G_PAGE);
-                g_html(f, pages.v[k]);
-                fputs("</a>", f);
-            }
-            g_strs_free(&pages);
-            fputs("</td>", f);
-            html_cell(f, r->note);
-            fputs("</tr>\n", f);
-        }
+        write_rows(f, &c, p, &HTML);
         fputs("</table>\n", f);
     }
     coverage_free(&c);
