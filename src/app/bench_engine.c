@@ -203,23 +203,6 @@ lm_sim *bench_two_disks(double particles, lm_scheme scheme, int nt)
     return make_disks(sqrt(1.005 / particles), scheme, &rubber, nt);
 }
 
-int bench_sizes(const char *cmd, const char *arg, double *sizes, int max)
-{
-    int n = 0;
-    for (const char *s = arg; *s && n < max;) {
-        char *end;
-        double v = strtod(s, &end);
-        if (end == s || !(v >= 100 && v <= 1e7)) {
-            fprintf(stderr, "lamina bench %s: --sizes needs particle counts in [100, 1e7], "
-                    "comma separated\n", cmd);
-            return -1;
-        }
-        sizes[n++] = v;
-        s = *end == ',' ? end + 1 : end;
-    }
-    return n;
-}
-
 int bench_engine(int argc, char **argv)
 {
     double work = 4e6;
@@ -233,12 +216,10 @@ int bench_engine(int argc, char **argv)
                 return 2;
             }
         } else if (strcmp(argv[i], "--threads") == 0 && i + 1 < argc) {
-            threads = atoi(argv[++i]);
-            if (threads < 1 || threads > LM_MAX_THREADS) {
-                fprintf(stderr, "lamina bench engine: --threads needs a whole number from 1 to %d\n",
-                        LM_MAX_THREADS);
+            long v;
+            if (bench_whole("engine", "--threads", argv[++i], 1, LM_MAX_THREADS, &v) != 0)
                 return 2;
-            }
+            threads = (int)v;
         } else if (strcmp(argv[i], "--basis") == 0 && i + 1 < argc) {
             const char *name = argv[++i];
             int b = 0;
@@ -252,10 +233,8 @@ int bench_engine(int argc, char **argv)
         } else if (strcmp(argv[i], "--sizes") == 0 && i + 1 < argc) {
             if ((nsizes = bench_sizes("engine", argv[++i], sizes, 8)) < 0) return 2;
         } else {
-            fprintf(stderr, "lamina bench engine: unknown option '%s' (usage: lamina bench "
-                    "engine [--sizes N,N,...] [--work PARTICLE_STEPS] [--threads N] "
-                    "[--basis linear|gimp|bspline2])\n", argv[i]);
-            return 2;
+            return bench_unknown("engine", argv[i], "[--sizes N,N,...] [--work PARTICLE_STEPS] "
+                                 "[--threads N] [--basis linear|gimp|bspline2]");
         }
     }
     lm_material air = {.kind = LM_GAS, .rho = 1, .gamma = 1.4, .mu = 0.2,

@@ -101,18 +101,6 @@ done:
     return secs;
 }
 
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, cmp_double);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 #define MAX_PAIRS 15
 
 /* One row: `pairs` alternating pairs at this size; 0, or 1 if a run
@@ -144,16 +132,16 @@ static int row(double particles, int nt, long steps, int pairs, int loaded)
         ratio[k] = t1[k] / tn[k];
     }
     stop_load(child);
-    double r = median(ratio, pairs);
+    double r = bench_median(ratio, pairs);
     int met = loaded ? r >= 0.8 : r >= 1.8;
     /* the idle target is for 1e5 particles and more */
     const char *verdict = loaded ? (met ? ">= 0.8: met" : "< 0.8: NOT met")
                           : particles < 1e5 ? "(from 1e5)"
                           : met ? ">= 1.8: met" : "< 1.8: NOT met";
     printf("| %9.0f | %-13s | %5.2f | %7.3f | %7.3f | %6.2f | %-14s | %s | %7.3f | %7.3f |\n",
-           particles, loaded ? "1 busy loop" : "none", load, median(t1, pairs),
-           median(tn, pairs), r, verdict, same ? "yes" : "NO", median(c1, pairs),
-           median(cn, pairs));
+           particles, loaded ? "1 busy loop" : "none", load, bench_median(t1, pairs),
+           bench_median(tn, pairs), r, verdict, same ? "yes" : "NO",
+           bench_median(c1, pairs), bench_median(cn, pairs));
     fflush(stdout);
     return same ? 0 : 1;
 }
@@ -164,27 +152,16 @@ int bench_threads(int argc, char **argv)
     int nsizes = 1, nt = 2, pairs = 3, which = 3;   /* 1 idle, 2 loaded */
     long steps = 300;
     for (int i = 0; i < argc; i++) {
+        long v;
         if (strcmp(argv[i], "--steps") == 0 && i + 1 < argc) {
-            steps = atol(argv[++i]);
-            if (steps < 1 || steps > 1000000) {
-                fprintf(stderr, "lamina bench threads: --steps needs a whole number from 1 to "
-                        "1000000\n");
-                return 2;
-            }
+            if (bench_whole("threads", "--steps", argv[++i], 1, 1000000, &steps) != 0) return 2;
         } else if (strcmp(argv[i], "--pairs") == 0 && i + 1 < argc) {
-            pairs = atoi(argv[++i]);
-            if (pairs < 1 || pairs > MAX_PAIRS) {
-                fprintf(stderr, "lamina bench threads: --pairs needs a whole number from 1 to "
-                        "%d\n", MAX_PAIRS);
-                return 2;
-            }
+            if (bench_whole("threads", "--pairs", argv[++i], 1, MAX_PAIRS, &v) != 0) return 2;
+            pairs = (int)v;
         } else if (strcmp(argv[i], "--threads") == 0 && i + 1 < argc) {
-            nt = atoi(argv[++i]);
-            if (nt < 2 || nt > LM_MAX_THREADS) {
-                fprintf(stderr, "lamina bench threads: --threads needs a whole number from 2 "
-                        "to %d\n", LM_MAX_THREADS);
+            if (bench_whole("threads", "--threads", argv[++i], 2, LM_MAX_THREADS, &v) != 0)
                 return 2;
-            }
+            nt = (int)v;
         } else if (strcmp(argv[i], "--idle") == 0) {
             which = 1;
         } else if (strcmp(argv[i], "--loaded") == 0) {
@@ -192,10 +169,8 @@ int bench_threads(int argc, char **argv)
         } else if (strcmp(argv[i], "--sizes") == 0 && i + 1 < argc) {
             if ((nsizes = bench_sizes("threads", argv[++i], sizes, 8)) < 0) return 2;
         } else {
-            fprintf(stderr, "lamina bench threads: unknown option '%s' (usage: lamina bench "
-                    "threads [--sizes N,N,...] [--steps N] [--pairs N] [--threads N] "
-                    "[--idle | --loaded])\n", argv[i]);
-            return 2;
+            return bench_unknown("threads", argv[i], "[--sizes N,N,...] [--steps N] [--pairs N] "
+                                 "[--threads N] [--idle | --loaded]");
         }
     }
     const char *spin = getenv("GOMP_SPINCOUNT"), *policy = getenv("OMP_WAIT_POLICY");

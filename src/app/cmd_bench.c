@@ -38,18 +38,6 @@ static double now_ms(void)
     return 1e3 * (double)t.tv_sec + 1e-6 * (double)t.tv_nsec;
 }
 
-static int by_value(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, by_value);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 /* ---- the scene ---------------------------------------------------------- */
 
 typedef struct scene {
@@ -139,8 +127,8 @@ static int time_backend(scene *s, lr_backend b, int runs, const char *png,
         t_draw[r] = t1 - t0;
         t_total[r] = t2 - t0;
     }
-    *draw = median(t_draw, runs);
-    *total = median(t_total, runs);
+    *draw = bench_median(t_draw, runs);
+    *total = bench_median(t_total, runs);
     return 0;
 }
 

@@ -99,19 +99,23 @@ static int split_tabs(const char *line, size_t len, char *f[6])
 
 /* Reads SCRIPTS/coverage.tsv. Returns 1 when there is none, 0 when read
  * (rows that cannot be read are skipped and added to problems, if given),
- * -1 on a read error. */
+ * -1 on a read error; c is to be freed only after 0 (nothing is kept
+ * otherwise). */
 static int coverage_read(const char *scripts, g_coverage *c, g_strs *problems)
 {
     memset(c, 0, sizeof *c);
     c->path = g_fmt("%s/%s", scripts, G_COVERAGE);
-    if (!g_exists(c->path))
+    if (!g_exists(c->path)) {
+        coverage_free(c);
         return 1;
+    }
     char *text;
     size_t len;
     char err[512];
     if (g_read_file(c->path, &text, &len, err, sizeof err) != 0) {
         if (problems)
             g_strs_add(problems, g_strdup(err));
+        coverage_free(c);
         return -1;
     }
     int lineno = 0, header = 0;
@@ -332,10 +336,8 @@ void g_source_refs(const char *source, g_strs *out)
 void g_coverage_check(const g_options *o, const g_scripts *all, g_strs *problems)
 {
     g_coverage c;
-    if (coverage_read(o->scripts, &c, problems) != 0) {
-        coverage_free(&c);
+    if (coverage_read(o->scripts, &c, problems) != 0)
         return;
-    }
     g_strs seen = { 0 };
     for (size_t i = 0; i < c.n; i++) {
         const cov_row *r = &c.v[i];
@@ -429,13 +431,68 @@ static const char *const INTRO =
     "fails when it names a page that does not exist, or when a page's `source:` cites "
     "a figure whose row does not name the page.";
 
+/* How a table row is written, in Markdown or HTML: what opens it, parts
+ * its cells and closes it; text escaped; the link to a page (k: its place
+ * in the row's list). */
+typedef struct cov_style {
+    const char *open, *sep, *close;
+    void (*text)(FILE *f, const char *s);
+    void (*link)(FILE *f, const char *page, size_t k);
+} cov_style;
+
+static void markdown_link(FILE *f, const char *page, size_t k)
+{
+    fputs(k ? ", [" : "[", f);
+    g_markdown_cell(f, page);
+    fputs("](", f);
+    g_url(f, page);
+    fprintf(f, "/%s)", G_PAGE);
+}
+
+static void html_link(FILE *f, const char *page, size_t k)
+{
+    fputs(k ? ", <a href=\"" : "<a href=\"", f);
+    g_url(f, page);
+    fprintf(f, "/%s\">", G_PAGE);
+    g_html(f, page);
+    fputs("</a>", f);
+}
+
+static const cov_style MARKDOWN = {"| ", " | ", " |\n", g_markdown_cell, markdown_link};
+static const cov_style HTML = {"<tr><td class=\"num\">", "</td><td>", "</td></tr>\n", g_html,
+                               html_link};
+
+/* The rows of paper p: item, caption, status (one of three plain words,
+ * the same escaped or not), pages, note. */
+static void write_rows(FILE *f, const g_coverage *c, int p, const cov_style *s)
+{
+    for (size_t i = 0; i < c->n; i++) {
+        const cov_row *r = &c->v[i];
+        if (paper_index(r->paper) != p)
+            continue;
+        fputs(s->open, f);
+        s->text(f, r->item);
+        fputs(s->sep, f);
+        s->text(f, r->caption);
+        fputs(s->sep, f);
+        s->text(f, r->status);
+        fputs(s->sep, f);
+        g_strs pages = { 0 };
+        row_pages(r, &pages);
+        for (size_t k = 0; k < pages.n; k++)
+            s->link(f, pages.v[k], k);
+        g_strs_free(&pages);
+        fputs(s->sep, f);
+        s->text(f, r->note);
+        fputs(s->close, f);
+    }
+}
+
 void g_coverage_markdown(FILE *f, const g_options *o)
 {
     g_coverage c;
-    if (coverage_read(o->scripts, &c, NULL) != 0) {
-        coverage_free(&c);
+    if (coverage_read(o->scripts, &c, NULL) != 0)
         return;
-    }
     fputs("\n## Coverage of the papers\n\n", f);
     fprintf(f, INTRO, c.path);
     fputs("\n\n| Paper | Figures and tables | Reproduced | Partial | Missing |\n"
@@ -448,30 +505,7 @@ void g_coverage_markdown(FILE *f, const g_options *o)
     for (int p = 0; p < 4; p++) {
         fprintf(f, "\n### %s\n\n| Item | Caption | Status | Page | Note |\n"
                    "| --- | --- | --- | --- | --- |\n", PAPER_NAMES[p]);
-        for (size_t i = 0; i < c.n; i++) {
-            const cov_row *r = &c.v[i];
-            if (paper_index(r->paper) != p)
-                continue;
-            fputs("| ", f);
-            g_markdown_cell(f, r->item);
-            fputs(" | ", f);
-            g_markdown_cell(f, r->caption);
-            fprintf(f, " | %s | ", r->status);
-            g_strs pages = { 0 };
-            row_pages(r, &pages);
-            for (size_t k = 0; k < pages.n; k++)
-            {
-                fputs(k ? ", [" : "[", f);
-                g_markdown_cell(f, pages.v[k]);
-                fputs("](", f);
-                g_url(f, pages.v[k]);
-                fprintf(f, "/%s)", G_PAGE);
-            }
-            g_strs_free(&pages);
-            fputs(" | ", f);
-            g_markdown_cell(f, r->note);
-            fputs(" |\n", f);
-        }
+        write_rows(f, &c, p, &MARKDOWN);
     }
     coverage_free(&c);
 }
@@ -479,10 +513,8 @@ void g_coverage_markdown(FILE *f, const g_options *o)
 void g_coverage_html(FILE *f, const g_options *o)
 {
     g_coverage c;
-    if (coverage_read(o->scripts, &c, NULL) != 0) {
-        coverage_free(&c);
+    if (coverage_read(o->scripts, &c, NULL) != 0)
         return;
-    }
     fputs("<h2>Coverage of the papers</h2>\n<p>", f);
     char *intro = g_fmt(INTRO, c.path);
     for (const char *s = intro; *s; s++)      /* the Markdown's bold and code, as text */
@@ -505,31 +537,7 @@ void g_coverage_html(FILE *f, const g_options *o)
         g_html(f, PAPER_NAMES[p]);
         fputs("</h3>\n<table>\n<tr><th>Item</th><th>Caption</th><th>Status</th><th>Page</th>"
               "<th>Note</th></tr>\n", f);
-        for (size_t i = 0; i < c.n; i++) {
-            const cov_row *r = &c.v[i];
-            if (paper_index(r->paper) != p)
-                continue;
-            fputs("<tr><td class=\"num\">", f);
-            g_html(f, r->item);
-            fputs("</td><td>", f);
-            g_html(f, r->caption);
-            fputs("</td><td>", f);
-            g_html(f, r->status);
-            fputs("</td><td>", f);
-            g_strs pages = { 0 };
-            row_pages(r, &pages);
-            for (size_t k = 0; k < pages.n; k++) {
-                fputs(k ? ", <a href=\"" : "<a href=\"", f);
-                g_url(f, pages.v[k]);
-                fprintf(f, "/%s\">", G_PAGE);
-                g_html(f, pages.v[k]);
-                fputs("</a>", f);
-            }
-            g_strs_free(&pages);
-            fputs("</td><td>", f);
-            g_html(f, r->note);
-            fputs("</td></tr>\n", f);
-        }
+        write_rows(f, &c, p, &HTML);
         fputs("</table>\n", f);
     }
     coverage_free(&c);

@@ -213,3 +213,9 @@ void la_new_class(lua_State *L, const char *name, const luaL_Reg *meta,
     luaL_setfuncs(L, methods, 0);
     lua_setfield(L, -2, "__index");
 }
+
+int la_push_handle_name(lua_State *L, const char *name, int index)
+{
+    lua_pushfstring(L, "%s %d", name, index + 1);
+    return 1;
+}

@@ -47,6 +47,9 @@ int la_new_metatable(lua_State *L, const char *name);
  * table methods as its __index; the metatable is left on the stack. */
 void la_new_class(lua_State *L, const char *name, const luaL_Reg *meta,
                   const luaL_Reg *methods);
+/* A handle's __tostring: "CLASS N", N its 1-based index in the sim (pins,
+ * links). */
+int la_push_handle_name(lua_State *L, const char *name, int index);
 
 /* l_provenance.c: the tEXt chunks of every image (Software, lamina:script,
  * lamina:script-hash, lamina:set); la_provenance pushes one string that must

@@ -121,9 +121,7 @@ static int link_tension(lua_State *L)
 
 static int link_tostring(lua_State *L)
 {
-    la_link *h = luaL_checkudata(L, 1, LA_LINK);
-    lua_pushfstring(L, "lamina.link %d", h->index + 1);
-    return 1;
+    return la_push_handle_name(L, LA_LINK, ((la_link *)luaL_checkudata(L, 1, LA_LINK))->index);
 }
 
 void la_link_methods(lua_State *L)

@@ -169,9 +169,7 @@ static int pin_len(lua_State *L)
 
 static int pin_tostring(lua_State *L)
 {
-    la_pin *h = luaL_checkudata(L, 1, LA_PIN);
-    lua_pushfstring(L, "lamina.pin %d", h->index + 1);
-    return 1;
+    return la_push_handle_name(L, LA_PIN, ((la_pin *)luaL_checkudata(L, 1, LA_PIN))->index);
 }
 
 void la_open_pin(lua_State *L)

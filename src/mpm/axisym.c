@@ -36,20 +36,14 @@
  * and the segment forms (membrane_force.c); no integration drift. */
 #include <math.h>
 
-#include "step.h"
+#include "gather.h"
 
 /* sum_i N_ip v_ri with the strain velocity (step 5), stencil W wide. */
 static inline double radial_velocity(const lm_sim *sim, size_t q)
 {
-    const lm_grid *g = &sim->grid;
-    const lm_particles *p = &sim->p;
-    const int W = g->sw, NS = W * W;
     lm_weights wt;
     lm_weights_of(sim, q, &wt);
-    const double *N = wt.N;
-    double u = 0;
-    for (int k = 0; k < NS; k++) u += N[k] * g->vx[lm_stencil_node(g, W, p->node[q], k)];
-    return u;
+    return lm_gather(&sim->grid, &wt, sim->p.node[q], sim->grid.vx);
 }
 
 double lm_axisym_hoop_rate(const lm_sim *sim, size_t q)

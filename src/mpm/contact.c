@@ -232,19 +232,6 @@ static lm_cbox box_meet(const lm_cbox *a, const lm_cbox *b)
     return lm_cbox_empty(&r) ? EMPTY : r;
 }
 
-static void box_join(lm_cbox *a, const lm_cbox *b)
-{
-    if (lm_cbox_empty(b)) return;
-    if (lm_cbox_empty(a)) {
-        *a = *b;
-        return;
-    }
-    if (b->i0 < a->i0) a->i0 = b->i0;
-    if (b->i1 > a->i1) a->i1 = b->i1;
-    if (b->j0 < a->j0) a->j0 = b->j0;
-    if (b->j1 > a->j1) a->j1 = b->j1;
-}
-
 /* b and r nodes around it, within the storage. */
 static lm_cbox box_grow(const lm_contact *c, const lm_cbox *b, int r)
 {
@@ -339,6 +326,15 @@ static LM_FORCE_INLINE void body_sums_w(lm_sim *sim, lm_contact_field *f, const 
     }
 }
 
+/* f's mass zeroed where the last step left it; from now it may be
+ * non-zero over the body's present nodes. */
+static void mass_to_nodes(const lm_contact *c, lm_contact_field *f)
+{
+    double *const mz[1] = {f->m};
+    lm_cbox_zero(c, &f->mbox, mz, 1);
+    f->mbox = f->nodes;
+}
+
 /* Steps 1-2 for one body alone: m^I, p^I and f^I = f^int,I + m^I g, the
  * same sums as step.c's over the body's particles only ([M] eqs 23, 25),
  * then folded at the walls like the shared field; m everywhere, the rest
@@ -347,9 +343,7 @@ static void body_sums(lm_sim *sim, lm_contact_field *f)
 {
     const lm_grid *g = &sim->grid;
     lm_contact *c = sim->contact;
-    double *const mz[1] = {f->m};
-    lm_cbox_zero(c, &f->mbox, mz, 1);
-    f->mbox = f->nodes;
+    mass_to_nodes(c, f);
     if (g->sw == 2) body_sums_w(sim, f, 2);
     else body_sums_w(sim, f, 3);
     double *const out[5] = {f->m, f->px, f->py, f->fx, f->fy};
@@ -372,9 +366,7 @@ static void rest_sums(lm_sim *sim, lm_contact_field *f)
 {
     const lm_grid *g = &sim->grid;
     lm_contact *c = sim->contact;
-    double *const mz[1] = {f->m};
-    lm_cbox_zero(c, &f->mbox, mz, 1);
-    f->mbox = f->nodes;
+    mass_to_nodes(c, f);
     const lm_cbox *b = &f->nodes;
     for (int j = b->j0; j <= b->j1; j++)
         for (long i = (long)j * c->sx + b->i0; i <= (long)j * c->sx + b->i1; i++) {
@@ -403,9 +395,6 @@ static void rest_sums(lm_sim *sim, lm_contact_field *f)
         }
 }
 
-void lm_contact_body_normals(lm_sim *sim, lm_contact_field *f);   /* contact_normals.c */
-void lm_contact_release_test(lm_sim *sim);                         /* contact_correct.c */
-
 lm_status lm_contact_sums(lm_sim *sim)
 {
     if (!sim->contact || sim->contact->npairs == 0) return LM_OK;
@@ -427,7 +416,7 @@ lm_status lm_contact_sums(lm_sim *sim)
     c->box = EMPTY;
     for (int k = 0; k < c->npairs; k++) {
         lm_cbox m = box_meet(&c->f[c->pairs[k].a].nodes, &c->f[c->pairs[k].b].nodes);
-        box_join(&c->box, &m);
+        lm_cbox_join(&c->box, &m);
     }
     /* what the stencils of particles that reach box reach (sw - 1 nodes
      * on), and where the walls fold their ghost nodes (2 nodes in) */
@@ -457,7 +446,7 @@ lm_status lm_contact_sums(lm_sim *sim)
             for (int k = 0; k < c->npairs; k++)
                 if (c->f[c->pairs[k].a].m[i] > 0 && c->f[c->pairs[k].b].m[i] > 0) {
                     lm_cbox one = {ii, ii, j, j};
-                    box_join(&c->met, &one);
+                    lm_cbox_join(&c->met, &one);
                     break;
                 }
         }

@@ -136,6 +136,21 @@ static inline int lm_cbox_empty(const lm_cbox *b)
     return b->i0 > b->i1 || b->j0 > b->j1;
 }
 
+/* a grown to hold b too: the smallest box holding both (an empty one adds
+ * nothing). The one join of the contact boxes (box, met, near, moved). */
+static inline void lm_cbox_join(lm_cbox *a, const lm_cbox *b)
+{
+    if (lm_cbox_empty(b)) return;
+    if (lm_cbox_empty(a)) {
+        *a = *b;
+        return;
+    }
+    if (b->i0 < a->i0) a->i0 = b->i0;
+    if (b->i1 > a->i1) a->i1 = b->i1;
+    if (b->j0 < a->j0) a->j0 = b->j0;
+    if (b->j1 > a->j1) a->j1 = b->j1;
+}
+
 /* The walls' conditions (lm_grid_apply_bc) on ux, uy at the nodes of box b
  * only: the same zeroes there. */
 static inline void lm_cbox_apply_bc(const lm_contact *c, const lm_grid *g, const lm_cbox *b,
@@ -221,5 +236,9 @@ void lm_contact_strain_velocity(lm_sim *sim);
  * own field differs by, sum_i dv_i (x) G_iq. */
 void lm_contact_gradient(const lm_sim *sim, size_t q, double L[4]);
 void lm_contact_velocity(const lm_sim *sim, size_t q, double *ux, double *uy);
+/* Parts of lm_contact_sums in their own files: the normals at the nodes
+ * where pairs meet (contact_normals.c), the release test (contact_correct.c). */
+void lm_contact_body_normals(lm_sim *sim, lm_contact_field *f);
+void lm_contact_release_test(lm_sim *sim);
 
 #endif

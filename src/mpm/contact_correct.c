@@ -40,6 +40,7 @@
 #include <string.h>
 
 #include "contact.h"
+#include "gather.h"
 #include "step.h"
 
 /* Mass below which a remainder is rounding (relative to the node's). */
@@ -183,28 +184,15 @@ void lm_contact_release_test(lm_sim *sim)
         memset(flag, 0, (size_t)c->nf);
         for (int k = 0; k < c->npairs; k++) {
             if (!pair_here(c, k, i)) continue;
-            int a = c->pairs[k].a, b = c->pairs[k].b;
-            flag[a] |= 1;
-            flag[b] |= 1;
-            if (!separating(c, k, i)) flag[a] |= 2, flag[b] |= 2;
+            int pa = c->pairs[k].a, pb = c->pairs[k].b;
+            flag[pa] |= 1;
+            flag[pb] |= 1;
+            if (!separating(c, k, i)) flag[pa] |= 2, flag[pb] |= 2;
             any = 1;
         }
         if (any)
             for (int k = 0; k < c->nf; k++) c->f[k].own[i] = flag[k] == 1;
     }
-}
-
-/* a grown to hold b (b a node) */
-static void grow_to(lm_cbox *a, const lm_cbox *b)
-{
-    if (lm_cbox_empty(a)) {
-        *a = *b;
-        return;
-    }
-    if (b->i0 < a->i0) a->i0 = b->i0;
-    if (b->i1 > a->i1) a->i1 = b->i1;
-    if (b->j0 < a->j0) a->j0 = b->j0;
-    if (b->j1 > a->j1) a->j1 = b->j1;
 }
 
 /* lm_contact.qflag of the paired bodies' particles: does the stencil
@@ -442,8 +430,8 @@ void lm_contact_correct(lm_sim *sim)
             correct_node(sim, i);
             if (c->state[i] == LM_CNODE_NONE) continue;
             lm_cbox one = {ii, ii, j, j};
-            grow_to(&c->near, &one);
-            if (c->state[i] != LM_CNODE_STICK) grow_to(&c->moved, &one);
+            lm_cbox_join(&c->near, &one);
+            if (c->state[i] != LM_CNODE_STICK) lm_cbox_join(&c->moved, &one);
         }
     particle_flags(sim);
     static const lm_comp comp[4] = {LM_COMP_X, LM_COMP_Y, LM_COMP_X, LM_COMP_Y};
@@ -457,20 +445,10 @@ void lm_contact_correct(lm_sim *sim)
 static void gather2(const lm_sim *sim, size_t q, const double *dx, const double *dy,
                     double *sx, double *sy)
 {
-    const lm_grid *g = &sim->grid;
-    const lm_particles *p = &sim->p;
-    const int W = g->sw, NS = W * W;
     lm_weights wt;
     lm_weights_of(sim, q, &wt);
-    const double *N = wt.N;
-    double ax = 0, ay = 0;
-    for (int k = 0; k < NS; k++) {
-        long i = lm_stencil_node(g, W, p->node[q], k);
-        ax += N[k] * dx[i];
-        ay += N[k] * dy[i];
-    }
-    *sx = ax;
-    *sy = ay;
+    *sx = lm_gather(&sim->grid, &wt, sim->p.node[q], dx);
+    *sy = lm_gather(&sim->grid, &wt, sim->p.node[q], dy);
 }
 
 /* Step 4 for the paired bodies: the difference of their own fields from

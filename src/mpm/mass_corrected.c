@@ -26,7 +26,7 @@
  * N_ip sum to one: M_C 1 = M_L 1), and sum_i of the correction is zero,
  * so momentum is conserved. The loops are serial and in particle order:
  * same bits for the same script. */
-#include "step.h"
+#include "gather.h"
 
 /* (bx, by)_i = sum_p m_p N_ip sum_j N_jp (ux, uy)_j, the ghost sums folded
  * at the walls; (ux, uy) filled at the ghost nodes by the caller. Row by
@@ -43,19 +43,8 @@ static void consistent_times(const lm_sim *sim, const double *ux, const double *
         lm_weights wt;
         lm_weights_of(sim, q, &wt);
         const double *N = wt.N;
-        double sx = 0, sy = 0;
-        for (int b = 0; b < W; b++) {
-            const long row = lm_stencil_row(g, p->node[q], b);
-            double rx = 0, ry = 0;
-            for (int a = 0; a < W; a++) {
-                rx += N[b * W + a] * ux[row + a];
-                ry += N[b * W + a] * uy[row + a];
-            }
-            sx += rx;
-            sy += ry;
-        }
-        sx *= p->m[q];
-        sy *= p->m[q];
+        const double sx = lm_gather_rows(g, &wt, p->node[q], ux) * p->m[q];
+        const double sy = lm_gather_rows(g, &wt, p->node[q], uy) * p->m[q];
         for (int b = 0; b < W; b++) {
             const long row = lm_stencil_row(g, p->node[q], b);
             for (int a = 0; a < W; a++) {

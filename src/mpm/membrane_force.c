@@ -27,6 +27,7 @@
 #include <stdio.h>
 
 #include "contact.h"
+#include "gather.h"
 #include "step.h"
 
 /* Neighbour after q in curve order, or SIZE_MAX at an open end. */
@@ -141,24 +142,10 @@ void lm_membrane_segment_hold(lm_sim *sim)
 static void remapped_velocity(const lm_sim *sim, size_t q, double *ux, double *uy)
 {
     const lm_grid *g = &sim->grid;
-    const lm_particles *p = &sim->p;
-    const int W = g->sw;
     lm_weights wt;
     lm_weights_of(sim, q, &wt);
-    const double *N = wt.N;
-    double sx = 0, sy = 0;
-    for (int b = 0; b < W; b++) {
-        const long row = lm_stencil_row(g, p->node[q], b);
-        double rx = 0, ry = 0;
-        for (int a = 0; a < W; a++) {
-            rx += N[b * W + a] * g->vx[row + a];
-            ry += N[b * W + a] * g->vy[row + a];
-        }
-        sx += rx;
-        sy += ry;
-    }
-    *ux = sx;
-    *uy = sy;
+    *ux = lm_gather_rows(g, &wt, sim->p.node[q], g->vx);
+    *uy = lm_gather_rows(g, &wt, sim->p.node[q], g->vy);
 }
 
 void lm_membrane_segment_move(lm_sim *sim)

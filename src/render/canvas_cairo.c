@@ -264,6 +264,17 @@ static void set_colour(cairo_t *cr, lr_rgba k)
 /* A finished vector canvas has no context left to draw into. */
 static int drawable(const cc_canvas *c) { return c->cr != NULL; }
 
+/* The context of a drawing call, saved (the call restores it), or NULL
+ * when there is nothing to draw into. */
+static cairo_t *begin(lr_canvas *base)
+{
+    cc_canvas *c = as_cairo(base);
+    if (!drawable(c))
+        return NULL;
+    cairo_save(c->cr);
+    return c->cr;
+}
+
 static void cc_clear(lr_canvas *base, lr_rgba colour)
 {
     cc_canvas *c = as_cairo(base);
@@ -282,11 +293,9 @@ static int finite2(double a, double b) { return isfinite(a) && isfinite(b); }
 static void cc_line(lr_canvas *base, double x0, double y0, double x1, double y1,
                        double width, lr_rgba colour, double dash)
 {
-    cc_canvas *c = as_cairo(base);
-    if (!drawable(c))
+    cairo_t *cr = begin(base);
+    if (!cr)
         return;
-    cairo_t *cr = c->cr;
-    cairo_save(cr);
     cairo_set_line_width(cr, width);
     cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
     if (dash > 0 && isfinite(dash))
@@ -302,11 +311,9 @@ static void cc_line(lr_canvas *base, double x0, double y0, double x1, double y1,
 static void cc_rect(lr_canvas *base, double x, double y, double w, double h,
                        double line_width, lr_rgba stroke)
 {
-    cc_canvas *c = as_cairo(base);
-    if (!drawable(c))
+    cairo_t *cr = begin(base);
+    if (!cr)
         return;
-    cairo_t *cr = c->cr;
-    cairo_save(cr);
     cairo_set_line_width(cr, line_width);
     cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);
     set_colour(cr, stroke);
@@ -606,11 +613,9 @@ static void cc_discs(lr_canvas *base, size_t n, const double *px,
 static void cc_text(lr_canvas *base, double x, double y, double size,
                        lr_rgba colour, lr_align align, const char *clean)
 {
-    cc_canvas *c = as_cairo(base);
-    if (!drawable(c))
+    cairo_t *cr = begin(base);
+    if (!cr)
         return;
-    cairo_t *cr = c->cr;
-    cairo_save(cr);
     cairo_set_font_size(cr, size);
     if (align != LR_ALIGN_LEFT) {
         cairo_text_extents_t ext;
@@ -629,11 +634,9 @@ static void cc_text(lr_canvas *base, double x, double y, double size,
 static void cc_fill(lr_canvas *base, size_t npoly, const size_t *counts,
                              const double *xy, lr_rgba colour)
 {
-    cc_canvas *c = as_cairo(base);
-    if (!drawable(c))
+    cairo_t *cr = begin(base);
+    if (!cr)
         return;
-    cairo_t *cr = c->cr;
-    cairo_save(cr);
     cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
     cairo_new_path(cr);
     const double *p = xy;

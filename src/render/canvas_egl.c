@@ -216,21 +216,7 @@ static void destroy(gl_engine *e)
     eglDestroyContext(dpy, e->ctx);
 }
 
-const gl_platform gl_egl_platform = {
-    .backend = LR_BACKEND_EGL,
-    .slot = 1,
-    .create = create,
-    .target_new = target_new,
-    .use = use,
-    .target_free = target_free,
-    .release = release,
-    .destroy = destroy,
-};
-
-lr_canvas *lr_canvas_egl_new(int width, int height, char *err, size_t errlen)
-{
-    return gl_canvas_new(&gl_egl_platform, width, height, err, errlen);
-}
+GL_PLATFORM_DEFINE(gl_egl_platform, lr_canvas_egl_new, LR_BACKEND_EGL, 1)
 
 /* Whether EGL works here, found once: a display, a context, and a pixel
  * drawn and read back through the GL lamina is linked with. */

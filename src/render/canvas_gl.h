@@ -135,6 +135,21 @@ struct gl_platform {
     void (*destroy)(gl_engine *e);
 };
 
+/* Defines a platform's table `var` from the hooks its file names create,
+ * target_new, use, target_free, release and destroy (static there), and
+ * its public constructor `ctor` (width, height, err, errlen) -> a canvas
+ * of it: the one set-up of canvas_osmesa.c and canvas_egl.c. */
+#define GL_PLATFORM_DEFINE(var, ctor, backend_, slot_)                          \
+    const gl_platform var = {                                                   \
+        .backend = (backend_), .slot = (slot_), .create = create,              \
+        .target_new = target_new, .use = use, .target_free = target_free,      \
+        .release = release, .destroy = destroy,                                \
+    };                                                                          \
+    lr_canvas *ctor(int width, int height, char *err, size_t errlen)           \
+    {                                                                           \
+        return gl_canvas_new(&var, width, height, err, errlen);                 \
+    }
+
 /* canvas_gl.c */
 /* A canvas of platform p; NULL with "cannot create canvas: ..." in err. */
 lr_canvas *gl_canvas_new(const gl_platform *p, int width, int height, char *err,

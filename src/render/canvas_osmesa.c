@@ -62,18 +62,4 @@ static void destroy(gl_engine *e)
     OSMesaDestroyContext(e->ctx);
 }
 
-const gl_platform gl_osmesa_platform = {
-    .backend = LR_BACKEND_OSMESA,
-    .slot = 0,
-    .create = create,
-    .target_new = target_new,
-    .use = use,
-    .target_free = target_free,
-    .release = release,
-    .destroy = destroy,
-};
-
-lr_canvas *lr_canvas_osmesa_new(int width, int height, char *err, size_t errlen)
-{
-    return gl_canvas_new(&gl_osmesa_platform, width, height, err, errlen);
-}
+GL_PLATFORM_DEFINE(gl_osmesa_platform, lr_canvas_osmesa_new, LR_BACKEND_OSMESA, 0)

@@ -16,6 +16,7 @@
 #include <lua.h>
 
 #include "lamina_lua.h"
+#include "fuzz_target.h"
 
 static const char *const scene =
     "local sim = lamina.sim{ dt = 5e-4, domain = {0, 0, 1, 1}, cell = 0.1 }\n"

@@ -13,6 +13,7 @@
 #include <lua.h>
 
 #include "lamina_lua.h"
+#include "fuzz_target.h"
 
 static const char *const check =
     "local h, names, n = lamina.read_csv('fuzz-input.csv')\n"

@@ -9,6 +9,7 @@
 #include "fuzz_file.h"
 #include "gallery.h"
 #include "sweep.h"
+#include "fuzz_target.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

@@ -15,6 +15,7 @@
 #include <lua.h>
 
 #include "lamina_lua.h"
+#include "fuzz_target.h"
 
 static const char *const statements[] = {
     "S = lamina.sim{dt = %s, domain = %s, cell = %s, gravity = %s}",

@@ -6,6 +6,7 @@
 
 #include "fuzz_file.h"
 #include "render.h"
+#include "fuzz_target.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

@@ -254,8 +254,8 @@ static void test_sine(void)
  * longer than a few pixels. */
 static int line_gaps(int dashed, const char *name, int *longest_on)
 {
-    const double x[2] = { 0.0, 1.0 }, y[2] = { 0.5, 0.5 };
-    lr_plot_series s = { 2, x, y, NULL, 1, dashed, 0, 2.0 };
+    const double xs[2] = { 0.0, 1.0 }, ys[2] = { 0.5, 0.5 };
+    lr_plot_series s = { 2, xs, ys, NULL, 1, dashed, 0, 2.0 };
     lr_plot p;
     memset(&p, 0, sizeof p);
     p.width = 300;

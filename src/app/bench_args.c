@@ -1,0 +1,55 @@
+/* bench_args.c - what the `lamina bench` commands share (bench.h): their
+ * options' parsing and messages, and the median of their timings. */
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "bench.h"
+
+int bench_sizes(const char *cmd, const char *arg, double *sizes, int max)
+{
+    int n = 0;
+    for (const char *s = arg; *s && n < max;) {
+        char *end;
+        double v = strtod(s, &end);
+        if (end == s || !(v >= 100 && v <= 1e7)) {
+            fprintf(stderr, "lamina bench %s: --sizes needs particle counts in [100, 1e7], "
+                    "comma separated\n", cmd);
+            return -1;
+        }
+        sizes[n++] = v;
+        s = *end == ',' ? end + 1 : end;
+    }
+    return n;
+}
+
+int bench_whole(const char *cmd, const char *opt, const char *arg, long lo, long hi,
+                long *out)
+{
+    long v = atol(arg);
+    if (v < lo || v > hi) {
+        fprintf(stderr, "lamina bench %s: %s needs a whole number from %ld to %ld\n", cmd, opt,
+                lo, hi);
+        return -1;
+    }
+    *out = v;
+    return 0;
+}
+
+int bench_unknown(const char *cmd, const char *arg, const char *usage)
+{
+    fprintf(stderr, "lamina bench %s: unknown option '%s' (usage: lamina bench %s %s)\n", cmd,
+            arg, cmd, usage);
+    return 2;
+}
+
+static int by_value(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+double bench_median(double *v, int n)
+{
+    qsort(v, (size_t)n, sizeof *v, by_value);
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
