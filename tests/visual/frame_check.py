@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""frame_check.py LAMINA SCENES WORK - sim:frame's displacement exaggeration,
+"""frame_check.py LAMINA SCENES RESTART WORK - sim:frame's displacement exaggeration,
 tension colour bar and pressure colours, read back from the pixels (issue 35
 item 4; docs/api.md "sim:frame").
 
@@ -18,10 +18,16 @@ reader below: 8-bit RGB / RGBA, the only kinds lamina writes), and checks:
 3. colour = "pressure": gas at p = 10 is far from white (the pale end of
    the diverging map it used to be on), the membrane keeps its body colour;
    the old drawing (every body, diverging map) fails the same test.
+4. RESTART (tests/visual/frame_restart.lua) run whole, then again with
+   --restart from its checkpoint half way: the scale = 100 frames at the
+   end are the same pixels (the references are the script's build, not
+   the checkpoint's state: captured after the restore instead, 1293
+   pixels differed).
 
 Prints one line per check; exit 1 on any failure.
 """
 import os
+import shutil
 import struct
 import subprocess
 import sys
@@ -184,16 +190,34 @@ def pressure_checks(work, facts):
                     f"white (< 150: pale, as issue 35 found)")
 
 
-def main():
-    lamina, scenes, work = sys.argv[1:4]
-    os.makedirs(work, exist_ok=True)
-    out = os.path.join(work, "out")
-    run = subprocess.run([lamina, "run", scenes, "--quiet", "--out-root", work,
-                          "--set", "out=" + out], capture_output=True, text=True)
+def run_script(lamina, script, work, out, *extra):
+    run = subprocess.run([lamina, "run", script, "--quiet", "--out-root", work,
+                          "--set", "out=" + out, *extra], capture_output=True, text=True)
     if run.returncode != 0:
         print(run.stdout + run.stderr)
-        print(f"FAIL  {scenes} exited with status {run.returncode}")
-        return 1
+        print(f"FAIL  {script} exited with status {run.returncode}")
+        sys.exit(1)
+    return run
+
+
+def restart_checks(lamina, script, work):
+    first, again = os.path.join(work, "restart_first"), os.path.join(work, "restart_again")
+    run_script(lamina, script, work, first)
+    run_script(lamina, script, work, again, "--restart", os.path.join(first, "half.ckpt"))
+    _, _, ra, ta = read_png(os.path.join(first, "end.png"))
+    _, _, rb, tb = read_png(os.path.join(again, "end.png"))
+    n = differing(ra, rb)
+    check(n == 0 and ta.get("Title") == tb.get("Title") == "displacements x 100",
+          f"scale = 100 after --restart: {n} pixels differ from the whole run's frame")
+
+
+def main():
+    lamina, scenes, restart, work = sys.argv[1:5]
+    if os.path.isdir(work):
+        shutil.rmtree(work)
+    os.makedirs(work)
+    out = os.path.join(work, "out")
+    run = run_script(lamina, scenes, work, out)
     facts = {}
     for line in run.stdout.splitlines():
         parts = line.split()
@@ -202,6 +226,7 @@ def main():
     scale_checks(out, facts)
     tension_checks(out, facts)
     pressure_checks(out, facts)
+    restart_checks(lamina, restart, work)
     print(f"frame_check: {len(FAILED)} failed")
     return 1 if FAILED else 0
 
