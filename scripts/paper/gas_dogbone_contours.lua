@@ -61,7 +61,7 @@ local function frame(tf, name)
              panels = {
                { title = "gas pressure at the nodes", contours = "pressure", particles = "membranes",
                  grid = false, range = p_range, contour_levels = 16 },
-               { title = "membrane stress sigma_t", colour = "tension", colourmap = "viridis",
+               { title = "membrane stress sigma_t", colour = "membrane_stress", colourmap = "viridis",
                  particles = "membranes", grid = false, range = s_range, band = 7 } } }
 end
 sim:at(math.min(0.2, t_end), function() frame(math.min(0.2, t_end), "fig56_a_early") end)

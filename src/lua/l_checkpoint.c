@@ -233,6 +233,8 @@ void la_checkpoint_restore(lua_State *L, int sidx, la_sim *s)
 {
     lamina_run *run = la_run(L);
     if (!run || !run->restart || run->restored) return;
+    la_ref_capture(L, s);   /* the script's build, before any state is replaced: the
+                               first run's reference positions (l_ref.c) */
     char msg[900];
     size_t len = 0, off = 0;
     unsigned char *buf;

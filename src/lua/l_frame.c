@@ -68,6 +68,24 @@ static size_t panels(lua_State *L, la_frame_ctx *ctx, lr_panel **out)
     return n;
 }
 
+/* scale = k: every point drawn at X0 + k (x - X0), X0 its reference
+ * position (l_ref.c); a finite number > 0, 1 by default. */
+static double scale_opt(lua_State *L, const char *fn)
+{
+    int t = la_getfield(L, 2, "scale");
+    double k = 1;
+    if (t != LUA_TNIL) {
+        if (t != LUA_TNUMBER)
+            luaL_error(L, "%s: 'scale' must be a number > 0 (got %s)", fn,
+                       luaL_typename(L, -1));
+        k = lua_tonumber(L, -1);
+        if (!(k > 0) || !isfinite(k))
+            luaL_error(L, "%s: 'scale' must be a finite number > 0 (got %f)", fn, k);
+    }
+    lua_pop(L, 1);
+    return k;
+}
+
 /* layout = {rows, cols} */
 static void layout(lua_State *L, const char *fn, size_t n, lr_figure *f)
 {
@@ -95,7 +113,8 @@ static void layout(lua_State *L, const char *fn, size_t n, lr_figure *f)
 int la_sim_frame(lua_State *L)
 {
     static const char *const keys[] = { "file", "width", "height", "title", "label",
-                                        "backend", "layout", "panels", LA_PANEL_KEYS,
+                                        "backend", "layout", "panels", "scale",
+                                        LA_PANEL_KEYS,
                                         NULL };
     const char *fn = "sim:frame";
     la_sim *s = la_check_sim(L, 1);
@@ -115,7 +134,7 @@ int la_sim_frame(lua_State *L)
     f.width = (int)w;
     f.height = (int)h;
     f.backend = backend(L, fn, file, run);
-    la_frame_ctx ctx = { fn, 0, 0, 0, 0, 0, 0 };
+    la_frame_ctx ctx = { fn, 0, 0, 0, 0, 0, 0, scale_opt(L, fn) };
     lua_newtable(L);
     ctx.anchor = lua_gettop(L);
     lr_panel *p = NULL;
@@ -123,6 +142,12 @@ int la_sim_frame(lua_State *L)
     f.panels = p;
     layout(L, fn, f.npanels, &f);
     f.title = la_opt_string(L, 2, fn, "title", NULL);
+    if (ctx.scale != 1) {   /* the title says the drawing is exaggerated */
+        char t[64];
+        snprintf(t, sizeof t, "displacements x %g", ctx.scale);
+        f.title = f.title && *f.title ? lua_pushfstring(L, "%s - %s", f.title, t)
+                                      : lua_pushstring(L, t);
+    }
     int lt = la_getfield(L, 2, "label");
     if (lt != LUA_TNIL && lt != LUA_TSTRING && lt != LUA_TBOOLEAN)   /* issue 31 item 7 */
         luaL_error(L, "%s: 'label' must be a string, true or false (got %s)", fn,
@@ -142,12 +167,16 @@ int la_sim_frame(lua_State *L)
     char layers[96];
     snprintf(layers, sizeof layers, "membranes=%d with_phi=%d phi=%d normals=%d", ctx.membranes,
              ctx.with_phi, ctx.phi, ctx.normals);
-    lr_text_chunk text[5];
+    lr_text_chunk text[6];
     memcpy(text, prov.text, sizeof prov.text);
     text[4].key = "lamina:layers";
     text[4].value = layers;
+    /* the title as text too (PNG's own "Title" keyword): what a frame
+     * says it shows - "displacements x k" - can be read back by a check */
+    text[5].key = "Title";
+    text[5].value = f.title;
     f.text = text;
-    f.ntext = 5;
+    f.ntext = f.title && *f.title ? 6 : 5;
     char err[512];
     if (lr_figure_write(&f, file, err, sizeof err))
         return luaL_error(L, "%s: %s", fn, err);

@@ -38,22 +38,43 @@ static int get(lua_State *L, int fidx, int pidx, const char *key)
 
 typedef enum field {
     F_BODY, F_SPEED, F_VX, F_VY, F_PRESSURE, F_SXX, F_SYY, F_SXY, F_RHO, F_MASS,
-    F_STRAIN, F_TENSION
+    F_STRAIN, F_TENSION, F_MEMBRANE_STRESS
 } field;
 
 static const char *const field_names[] = { "body", "speed", "vx", "vy", "pressure",
                                            "sxx", "syy", "sxy", "rho", "mass",
-                                           "strain", "tension", NULL };
+                                           "strain", "tension", "membrane_stress", NULL };
 
-/* Signed quantities get the diverging map by default (zero in the middle). */
-static int signed_field(field f)
+/* The colour bar's label: the field, and for the two membrane fields the
+ * unit, since both are called "tension" somewhere (issue 35 item 4). */
+static const char *field_label(field f)
 {
-    return f == F_VX || f == F_VY || f == F_PRESSURE || f == F_SXX || f == F_SYY ||
-           f == F_SXY || f == F_STRAIN || f == F_TENSION;
+    return f == F_BODY ? "pressure"
+         : f == F_TENSION ? "tension (F/L)"
+         : f == F_MEMBRANE_STRESS ? "stress (F/A)"
+         : field_names[f];
 }
 
-static double field_value(const lm_particles *p, size_t i, field f)
+/* Signed quantities get the diverging map by default (zero in the middle).
+ * Pressure does not: it colours gas, whose pressure is positive, and on a
+ * scale symmetric about 0 gas at p = 10 came out pale (issue 35 item 4). */
+static int signed_field(field f)
 {
+    return f == F_VX || f == F_VY || f == F_SXX || f == F_SYY || f == F_SXY ||
+           f == F_STRAIN || f == F_TENSION || f == F_MEMBRANE_STRESS;
+}
+
+/* t . sigma . t: a membrane point's tangential stress (0 off membranes,
+ * whose tangent is 0) */
+static double tangential_stress(const lm_particles *p, size_t i)
+{
+    return p->tx[i] * p->tx[i] * p->sxx[i] + 2.0 * p->tx[i] * p->ty[i] * p->sxy[i] +
+           p->ty[i] * p->ty[i] * p->syy[i];
+}
+
+static double field_value(const lm_sim *sim, size_t i, field f)
+{
+    const lm_particles *p = &sim->p;
     switch (f) {
     case F_SPEED: return hypot(p->vx[i], p->vy[i]);
     case F_VX: return p->vx[i];
@@ -65,9 +86,14 @@ static double field_value(const lm_particles *p, size_t i, field f)
     case F_RHO: return p->rho[i];
     case F_MASS: return p->m[i];
     case F_STRAIN: return p->et[i];
-    case F_TENSION:     /* t . sigma . t: a membrane's tangential stress (0 off membranes) */
-        return p->tx[i] * p->tx[i] * p->sxx[i] + 2.0 * p->tx[i] * p->ty[i] * p->sxy[i] +
-               p->ty[i] * p->ty[i] * p->syy[i];
+    case F_MEMBRANE_STRESS: return tangential_stress(p, i);
+    case F_TENSION:
+        /* force per length, sigma_t times the thickness: the engine's
+         * membrane keeps its thickness (its volume thickness ds e^eps_t
+         * carries the strain in its length, docs/physics.md), so the
+         * current thickness is the material's - the F = sigma_t thickness
+         * of the segment forces (membrane_force.c) */
+        return tangential_stress(p, i) * sim->mats[p->mat[i]]->thickness;
     default: return 0.0;
     }
 }
@@ -117,8 +143,8 @@ typedef struct side_store {
 
 /* Membrane normals (the tangent turned +90 degrees, [M] section 3) as
  * arrows one cell long, at every `every`-th point of each membrane. */
-static void normals_every(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int every,
-                          lr_arrows *a)
+static void normals_every(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, const double *px,
+                          const double *py, int every, lr_arrows *a)
 {
     /* tangents exist from the first step on; before it, from a prepare
      * (which sim:membrane has already run: it cannot fail here unless a
@@ -136,8 +162,8 @@ static void normals_every(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int ever
         const lm_body *bd = &sim->bodies[b];
         for (size_t q = bd->first; bd->membrane && q < bd->first + bd->count;
              q += (size_t)every, k++) {
-            x[k] = sim->p.x[q];
-            y[k] = sim->p.y[q];
+            x[k] = px[q];
+            y[k] = py[q];
             ux[k] = -sim->p.ty[q];
             uy[k] = sim->p.tx[q];
         }
@@ -157,13 +183,13 @@ static void normals_every(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int ever
 #define NORMALS_GAP_PX 16.0   /* the default's least gap between drawn arrows */
 
 /* The mean distance between a membrane's consecutive points as they are
- * now (stretched or not); 0 when it cannot be told. */
-static double membrane_spacing(const lm_sim *sim, const lm_body *bd)
+ * drawn (stretched or not); 0 when it cannot be told. */
+static double membrane_spacing(const double *px, const double *py, const lm_body *bd)
 {
     if (bd->count < 2) return 0;
     double sum = 0;
     for (size_t q = bd->first + 1; q < bd->first + bd->count; q++)
-        sum += hypot(sim->p.x[q] - sim->p.x[q - 1], sim->p.y[q] - sim->p.y[q - 1]);
+        sum += hypot(px[q] - px[q - 1], py[q] - py[q - 1]);
     double s = sum / (double)(bd->count - 1);
     return isfinite(s) && s > 0 ? s : 0;
 }
@@ -174,8 +200,8 @@ static double membrane_spacing(const lm_sim *sim, const lm_body *bd)
  * arrow as long as that gap, so that single arrows can be judged at any
  * zoom (docs/gallery.md, legibility 2). Sets l's arrows (one: the store
  * of a single set). */
-static void normals_auto(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, lr_layers *l,
-                         lr_arrows *one)
+static void normals_auto(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, const double *px,
+                         const double *py, lr_layers *l, lr_arrows *one)
 {
     int nm = 0;
     for (int b = 0; b < sim->nbodies; b++)
@@ -183,7 +209,7 @@ static void normals_auto(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, lr_layers
     if (nm == 0) return;
     lr_arrows *sets = nm == 1 ? one : la_frame_scratch(L, ctx, (size_t)nm * sizeof *sets);
     lr_arrows all;
-    normals_every(L, ctx, sim, 1, &all);
+    normals_every(L, ctx, sim, px, py, 1, &all);
     size_t at = 0;
     int k = 0;
     for (int b = 0; b < sim->nbodies; b++) {
@@ -196,7 +222,7 @@ static void normals_auto(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, lr_layers
         a->y = all.y + at;
         a->ux = all.ux + at;
         a->uy = all.uy + at;
-        a->spacing = membrane_spacing(sim, bd);
+        a->spacing = membrane_spacing(px, py, bd);
         a->thin = a->spacing > 0 ? NORMALS_GAP_PX : 0;   /* else one cell, every point */
         at += bd->count;
     }
@@ -284,10 +310,22 @@ typedef struct side_opts {
     la_frame_points_opts pts;   /* which bodies, coloured how, band */
 } side_opts;
 
-static void fill_side(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, const side_opts *o,
+static void fill_side(lua_State *L, la_frame_ctx *ctx, la_sim *ls, const side_opts *o,
                       lr_panel *p, lr_layers *l)
 {
+    lm_sim *sim = ls->sim;
     side_store *st = la_frame_scratch(L, ctx, sizeof *st);
+    /* the positions drawn: the points' own, or with scale = k about their
+     * reference positions (l_ref.c); normals and bands follow them */
+    const double *px = sim->p.x, *py = sim->p.y;
+    if (ctx->scale != 1) {
+        size_t n = sim->p.n ? sim->p.n : 1;
+        double *x = la_frame_scratch(L, ctx, n * sizeof *x);
+        double *y = la_frame_scratch(L, ctx, n * sizeof *y);
+        la_ref_scaled(ls, ctx->scale, x, y);
+        px = x;
+        py = y;
+    }
     if (o->contour_levels > 0) {
         pressure_contours(L, ctx, sim, o->contour_levels, &st->field, p, o->f == F_BODY);
         if (st->field.f) {
@@ -306,19 +344,20 @@ static void fill_side(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, const side_o
     lr_points base;
     memset(&base, 0, sizeof base);
     base.n = sim->p.n;
-    base.x = sim->p.x;
-    base.y = sim->p.y;
+    base.x = px;
+    base.y = py;
     base.group = sim->p.body;
     base.radius = particle_radius(sim);
     base.group_radius = o->own_discs ? body_radii(L, ctx, sim) : NULL;
     base.ngroups = o->own_discs ? sim->nbodies : 0;
-    if (o->f == F_TENSION && !sim->prepared && lm_sim_prepare(sim) != LM_OK)
+    if ((o->f == F_TENSION || o->f == F_MEMBRANE_STRESS) && !sim->prepared &&
+        lm_sim_prepare(sim) != LM_OK)
         luaL_error(L, "sim:frame: %s", sim->err);   /* tangents before the first step */
     double *v = NULL;
     if (o->f != F_BODY) {
         v = la_frame_scratch(L, ctx, (sim->p.n ? sim->p.n : 1) * sizeof *v);
         for (size_t i = 0; i < sim->p.n; i++)
-            v[i] = field_value(&sim->p, i, o->f);
+            v[i] = field_value(sim, i, o->f);
     }
     l->points = st->points;
     l->npoints = la_frame_points(L, ctx, sim, v, &o->pts, &base, st->points);
@@ -332,11 +371,11 @@ static void fill_side(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, const side_o
     ctx->normals += o->normals ? nm : 0;
     ctx->phi += o->phi ? nphi : 0;
     if (o->normals > 0) {
-        normals_every(L, ctx, sim, o->normals, &st->arrows);
+        normals_every(L, ctx, sim, px, py, o->normals, &st->arrows);
         l->arrows = &st->arrows;
         l->narrows = 1;
     } else if (o->normals < 0) {
-        normals_auto(L, ctx, sim, l, &st->arrows);
+        normals_auto(L, ctx, sim, px, py, l, &st->arrows);
     }
     if (o->phi) {
         lr_curve *cv;
@@ -350,13 +389,13 @@ static void fill_side(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, const side_o
 
 /* ---- the keys ----------------------------------------------------------- */
 
-static lm_sim *sim_at(lua_State *L, const la_frame_ctx *ctx, int idx, const char *key)
+static la_sim *sim_at(lua_State *L, const la_frame_ctx *ctx, int idx, const char *key)
 {
     la_sim *s = luaL_testudata(L, idx, LA_SIM);
     if (!s)
         luaL_error(L, "%s: '%s' must be a simulation (lamina.sim), got %s", ctx->fn,
                    key, luaL_typename(L, idx));
-    return s->sim;
+    return la_check_sim(L, idx);   /* and not freed */
 }
 
 /* Pushes key's value (get); 1 when it is of type `type`, 0 when nil, else
@@ -484,7 +523,7 @@ static field colours(lua_State *L, const la_frame_ctx *ctx, int fidx, int pidx,
     if (p->colourbar && f == F_BODY && !contours)
         luaL_error(L, "%s: a colour bar needs colour = a field (e.g. \"speed\"), "
                    "not \"body\"", ctx->fn);
-    p->colourbar_label = f == F_BODY ? "pressure" : field_names[f];
+    p->colourbar_label = field_label(f);
     return f;
 }
 
@@ -506,10 +545,10 @@ static void scalebar(lua_State *L, const la_frame_ctx *ctx, int fidx, int pidx,
 }
 
 /* split = other sim: its particles right of split_at; names = {left, right} */
-static lm_sim *split(lua_State *L, const la_frame_ctx *ctx, int fidx, int pidx,
+static la_sim *split(lua_State *L, const la_frame_ctx *ctx, int fidx, int pidx,
                      lr_panel *p)
 {
-    lm_sim *other = NULL;
+    la_sim *other = NULL;
     if (get(L, fidx, pidx, "split") != LUA_TNIL) {
         other = sim_at(L, ctx, lua_gettop(L), "split");
         p->split = 1;
@@ -614,15 +653,51 @@ static unsigned char *colour_bodies(lua_State *L, la_frame_ctx *ctx, int fidx, i
     return valued;
 }
 
+/* colour = "pressure" without colour_bodies: the fluid bodies (gas and
+ * linear fluid) coloured, the others in their body colours (issue 35 item
+ * 4: a membrane's stress is no pressure to put on the gas's scale; a
+ * membrane field is asked for by name). NULL when neither simulation has
+ * a fluid body: then every body's pressure (a solid's mean stress) shows. */
+static unsigned char *fluid_bodies(lua_State *L, la_frame_ctx *ctx, const lm_sim *sim,
+                                   const lm_sim *other, int *nvalued)
+{
+    int nb = sim->nbodies;
+    if (other && other->nbodies > nb) nb = other->nbodies;
+    unsigned char *valued = la_frame_scratch(L, ctx, (size_t)(nb ? nb : 1));
+    int any = 0;
+    for (int k = 0; k < 2; k++) {
+        const lm_sim *sm = k == 0 ? sim : other;
+        for (int b = 0; sm && b < sm->nbodies; b++) {
+            lm_kind kind = sm->mats[sm->bodies[b].mat]->kind;
+            if (kind == LM_GAS || kind == LM_LINEAR_FLUID) valued[b] = 1, any = 1;
+        }
+    }
+    *nvalued = any ? nb : 0;
+    return any ? valued : NULL;
+}
+
+/* With scale = k the points are drawn away from where they are: the layers
+ * that are fields of the grid (pressure contours, contact normals, the phi
+ * contours) cannot follow them and are refused by name; phi, on by
+ * default, is then off by default. */
+static void scale_refuse(lua_State *L, const la_frame_ctx *ctx, const char *what)
+{
+    if (ctx->scale != 1)
+        luaL_error(L, "%s: %s is a field of the grid, drawn where the points are: it cannot "
+                      "be drawn with 'scale' = %f (about the reference positions)", ctx->fn,
+                   what, ctx->scale);
+}
+
 void la_frame_panel(lua_State *L, la_frame_ctx *ctx, int fidx, int pidx, int sidx,
                     lr_panel *p)
 {
     memset(p, 0, sizeof *p);
-    lm_sim *sim;
+    la_sim *ls;
     if (pidx && get(L, fidx, pidx, "sim") != LUA_TNIL)
-        sim = sim_at(L, ctx, lua_gettop(L), "sim");
+        ls = sim_at(L, ctx, lua_gettop(L), "sim");
     else
-        sim = la_check_sim(L, sidx)->sim;
+        ls = la_check_sim(L, sidx);
+    lm_sim *sim = ls->sim;
     if (pidx)
         lua_pop(L, 1);
     if (pidx)
@@ -635,7 +710,8 @@ void la_frame_panel(lua_State *L, la_frame_ctx *ctx, int fidx, int pidx, int sid
         luaL_error(L, "%s: contours = \"%s\" is not one of \"pressure\"", ctx->fn, contours);
     field f = colours(L, ctx, fidx, pidx, p, contours != NULL);
     scalebar(L, ctx, fidx, pidx, p);
-    lm_sim *other = split(L, ctx, fidx, pidx, p);
+    la_sim *lother = split(L, ctx, fidx, pidx, p);
+    lm_sim *other = lother ? lother->sim : NULL;
     /* grid: any Lua truth value, as sim:frame always took it */
     get(L, fidx, pidx, "grid");
     int grid = lua_isnil(L, -1) || lua_toboolean(L, -1);
@@ -663,10 +739,15 @@ void la_frame_panel(lua_State *L, la_frame_ctx *ctx, int fidx, int pidx, int sid
     side_opts o;
     memset(&o, 0, sizeof o);
     o.own_discs = discs && strcmp(discs, "spacing") == 0;
-    o.phi = boolean(L, ctx, fidx, pidx, "phi", -1);
+    o.phi = boolean(L, ctx, fidx, pidx, "phi", ctx->scale != 1 ? 0 : -1);
     contact_opt(L, ctx, fidx, pidx, &o);
+    if (contours) scale_refuse(L, ctx, "contours = \"pressure\"");
+    if (o.contact_every) scale_refuse(L, ctx, "contact");
+    if (o.phi > 0) scale_refuse(L, ctx, "phi");
     o.pts.band = band_opt(L, ctx, fidx, pidx);
     o.pts.valued = colour_bodies(L, ctx, fidx, pidx, sim, other, f, &o.pts.nvalued);
+    if (f == F_PRESSURE && !o.pts.valued)
+        o.pts.valued = fluid_bodies(L, ctx, sim, other, &o.pts.nvalued);
     p->split_x = 0.5 * (p->wx0 + p->wx1);
     if (get(L, fidx, pidx, "split_at") != LUA_TNIL) {
         int isnum;
@@ -702,7 +783,7 @@ void la_frame_panel(lua_State *L, la_frame_ctx *ctx, int fidx, int pidx, int sid
     o.normals = with_normals;
     o.contour_levels = nlevels;
     o.pts.which = which;
-    fill_side(L, ctx, sim, &o, p, &p->side[0]);
+    fill_side(L, ctx, ls, &o, p, &p->side[0]);
     if (other)
-        fill_side(L, ctx, other, &o, p, &p->side[1]);
+        fill_side(L, ctx, lother, &o, p, &p->side[1]);
 }

@@ -22,6 +22,7 @@ typedef struct la_frame_ctx {
     int membranes;      /* membranes shown (both sides of a split panel) */
     int with_phi;       /* of them, those whose normals' construction has a phi */
     int phi, normals;   /* of them, those drawn with phi contours / normals */
+    double scale;       /* scale = k: points at X0 + k (x - X0) (l_ref.c); 1: as they are */
 } la_frame_ctx;
 
 /* Scratch memory that lives as long as the anchor table (freed by Lua's

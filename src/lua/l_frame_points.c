@@ -32,7 +32,7 @@ static void link_body(const lm_body *bd, size_t k, long *next)
  * the layer shows the field. */
 static void compact(lua_State *L, la_frame_ctx *ctx, const lm_sim *sim,
                     const double *value, const la_frame_points_opts *o, int want,
-                    lr_points *pts)
+                    const lr_points *base, lr_points *pts)
 {
     size_t n = 0;
     for (int b = 0; b < sim->nbodies; b++) {
@@ -54,8 +54,8 @@ static void compact(lua_State *L, la_frame_ctx *ctx, const lm_sim *sim,
         if (!included(bd, o->which) || (o->valued && v != want)) continue;
         if (next) link_body(bd, k, next);
         for (size_t q = bd->first; q < bd->first + bd->count; q++, k++) {
-            x[k] = sim->p.x[q];
-            y[k] = sim->p.y[q];
+            x[k] = base->x[q];   /* as drawn: scale = k moves them (l_ref.c) */
+            y[k] = base->y[q];
             grp[k] = b;
             if (val) val[k] = value[q];
         }
@@ -88,9 +88,9 @@ size_t la_frame_points(lua_State *L, la_frame_ctx *ctx, const lm_sim *sim,
         }
         return 1;
     }
-    compact(L, ctx, sim, value, o, 1, &out[0]);
+    compact(L, ctx, sim, value, o, 1, base, &out[0]);
     if (!o->valued) return 1;
     /* the bodies in their own colours over the field's */
-    compact(L, ctx, sim, value, o, 0, &out[1]);
+    compact(L, ctx, sim, value, o, 0, base, &out[1]);
     return 2;
 }

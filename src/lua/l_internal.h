@@ -123,6 +123,12 @@ typedef struct la_pin_fn {
     int ref;                    /* its velocity function, in the uservalue */
 } la_pin_fn;
 
+/* l_ref.c: one body's reference positions (sim:frame{scale = k}) */
+typedef struct la_ref_body {
+    size_t n;                   /* its points captured (the first n) */
+    double *x, *y;
+} la_ref_body;
+
 typedef struct la_sim {
     lm_sim *sim;
     int running;                /* inside run/step: no nested runs */
@@ -139,7 +145,17 @@ typedef struct la_sim {
     int leak_nb;
     long leak_step;             /* the step last checked */
     double ck_every, ck_next;
+    la_ref_body *ref;           /* per body, nref of them (l_ref.c) */
+    int nref;
 } la_sim;
+
+/* l_ref.c: captures the points of s's bodies that have no reference yet
+ * (called as a run starts and before a --restart replaces the state);
+ * la_ref_scaled fills x, y (p.n each) with X0 + k (x - X0), a point without
+ * a reference where it is; la_ref_free when the sim is collected. */
+void la_ref_capture(lua_State *L, la_sim *s);
+void la_ref_scaled(const la_sim *s, double k, double *x, double *y);
+void la_ref_free(la_sim *s);
 
 /* Gas more than a quarter cell across a closed membrane, said once
  * (l_leak_watch.c); called every step, it checks when LA_LEAK_EVERY steps

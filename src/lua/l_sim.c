@@ -170,6 +170,7 @@ static int sim_gc(lua_State *L)
     free(s->pinf);
     free(s->ck_file);
     free(s->leak_side);
+    la_ref_free(s);
     s->leak_side = NULL;
     s->leak_nb = 0;
     s->ck_file = NULL;
@@ -442,6 +443,7 @@ static void advance(lua_State *L, la_sim *s, long nsteps, double t_end)
     la_option_warn(s);
     /* the script may have changed anything since the last step */
     lm_sim_forget_ahead(s->sim);
+    la_ref_capture(L, s);   /* bodies added since: their reference positions */
     double dt_was = s->sim->def.dt;
     for (long n = 0; isnan(t_end) ? n < nsteps : steps_to(s, t_end) > 0; n++) {
         la_pins_update(L, 1, s);

@@ -1,6 +1,7 @@
 -- sim:frame's membrane stress and pressure contours ([T] Fig 56; docs/api.md
--- "sim:frame"): colour = "tension" (t . sigma . t of each membrane point)
--- draws before the first step (the tangents come from a prepare) and after;
+-- "sim:frame"): colour = "membrane_stress" (t . sigma . t of each membrane
+-- point) and "tension" (that times the thickness, force per length) draw
+-- before the first step (the tangents come from a prepare) and after;
 -- contours = "pressure" with colour by body owns the colour bar, takes a
 -- fixed range, and still refuses nothing a colour bar by body would need.
 -- A failure is a Lua error (status 2).
@@ -23,8 +24,10 @@ for i = 1, q.n do
   local st = tx * tx * q.sxx[i] + 2 * tx * ty * q.sxy[i] + ty * ty * q.syy[i]
   assert(st > 0, string.format("point %d: sigma_t = %g, expected tension", i, st))
 end
-sim:frame{ file = out .. "/tension.png", width = 200, height = 160, colour = "tension",
+sim:frame{ file = out .. "/stress.png", width = 200, height = 160, colour = "membrane_stress",
            particles = "membranes", range = {0, 200} }
+sim:frame{ file = out .. "/tension.png", width = 200, height = 160, colour = "tension",
+           particles = "membranes", range = {0, 2} }
 sim:frame{ file = out .. "/contours.png", width = 240, height = 160, contours = "pressure",
            particles = "membranes", range = {0, 20} }
 sim:frame{ file = out .. "/contours_bar.png", width = 240, height = 160, contours = "pressure",
