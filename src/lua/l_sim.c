@@ -498,6 +498,11 @@ static void advance(lua_State *L, la_sim *s, long nsteps, double t_end)
     la_energy_watch_end(L, s, &watch);
 }
 
+void la_sim_advance(lua_State *L, la_sim *s, long nsteps)
+{
+    advance(L, s, nsteps, NAN);
+}
+
 /* After a run: a segment membrane with a quarter of its points slack by
  * more than 1 % beside taut ones has bunched points that carry nothing
  * (lm_membrane_segment_slack): said once per membrane, not an error (a
@@ -736,6 +741,7 @@ void la_open_sim(lua_State *L)
     luaL_newlib(L, methods);
     la_contact_methods(L);   /* sim:contact, sim:contact_info (l_contact.c) */
     la_link_methods(L);      /* sim:link (l_link.c) */
+    la_relax_methods(L);     /* sim:relax (l_relax.c) */
     lua_setfield(L, -2, "methods");
     lua_pop(L, 1);
 }
