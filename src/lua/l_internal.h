@@ -212,6 +212,11 @@ void la_pins_update(lua_State *L, int sidx, la_sim *s);
 /* l_contact.c: adds sim:contact and sim:contact_info to the method table
  * at the top of the stack. */
 void la_contact_methods(lua_State *L);
+/* l_relax.c: sim:relax{...}, steps with grid damping until the motion has
+ * died down; la_sim_advance (l_sim.c) is sim:step(n) for it (sim at
+ * stack index 1). */
+void la_relax_methods(lua_State *L);
+void la_sim_advance(lua_State *L, la_sim *s, long nsteps);
 /* l_link.c: sim:link{...} and the link handle. */
 void la_link_methods(lua_State *L);
 void la_open_link(lua_State *L);

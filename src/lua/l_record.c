@@ -178,7 +178,8 @@ static double sample(lua_State *L, const la_column *c, lm_sim *sim, const lm_ene
     case SRC_T: return sim->t;
     case SRC_STEP: return (double)sim->step;
     case SRC_ENERGY: {
-        const double v[5] = {e->kinetic, e->strain, e->internal, e->potential, e->total};
+        const double v[6] = {e->kinetic, e->strain, e->internal, e->potential, e->total,
+                             sim->damped};
         return v[c->which];
     }
     case SRC_POINT_X: return p->x[sim->bodies[c->body].first + (size_t)c->index];
@@ -424,7 +425,8 @@ int la_sim_record(lua_State *L)
 {
     static const char *const keys[] = {"file", "every", "energy", "points", "angle",
                                        "values", "average", NULL};
-    static const char *const energies[] = {"kinetic", "strain", "internal", "potential", "total"};
+    static const char *const energies[] = {"kinetic", "strain", "internal", "potential", "total",
+                                           "damped"};
     const char *fn = "sim:record";
     la_sim *s = la_check_sim(L, 1);
     la_check_keys(L, 2, fn, keys);
@@ -457,7 +459,10 @@ int la_sim_record(lua_State *L)
     int energy = lua_toboolean(L, -1);
     lua_pop(L, 1);
     r->energy = energy;
-    for (int i = 0; energy && i < 5; i++) add_column(L, r, energies[i], SRC_ENERGY)->which = i;
+    /* "damped" (the grid damping's work, damping.c) only when the sim is
+     * damped as the recorder is made: undamped runs keep their columns */
+    int nen = s->sim->def.damping > 0 ? 6 : 5;
+    for (int i = 0; energy && i < nen; i++) add_column(L, r, energies[i], SRC_ENERGY)->which = i;
     read_points(L, r, s->sim);
     read_angles(L, r, s->sim);
     lua_getiuservalue(L, ridx, 2);

@@ -91,7 +91,8 @@ int la_sim_new(lua_State *L)
 {
     static const char *const keys[] = {"domain", "cell", "dt", "scheme", "gravity",
                                        "boundary", "courant", "pic", "seed", "threads",
-                                       "basis", "stress", "axisymmetric", "mass", NULL};
+                                       "basis", "stress", "axisymmetric", "mass", "damping",
+                                       NULL};
     const char *fn = "lamina.sim";
     la_check_keys(L, 1, fn, keys);
     lm_sim_def d;
@@ -133,6 +134,10 @@ int la_sim_new(lua_State *L)
         luaL_error(L, "%s: seed must be a whole number >= 0 (got %f)", fn, seed);
     d.seed = (uint64_t)seed;
     if (!(d.pic >= 0 && d.pic <= 1)) luaL_error(L, "%s: pic must lie in [0, 1] (got %f)", fn, d.pic);
+    /* damping = c (1/s): viscous damping of the grid velocities (damping.c) */
+    d.damping = la_opt_number(L, 1, fn, "damping", 0.0);
+    if (!(d.damping >= 0) || !isfinite(d.damping))
+        luaL_error(L, "%s: damping must be a finite number >= 0 (1/s) (got %f)", fn, d.damping);
     /* threads: the key, else lamina run --threads (the run's configuration,
      * passed in explicitly), else the user's LAMINA_THREADS, else 1; the
      * state is bit-identical for the same count (docs/decisions.md) */
@@ -495,6 +500,11 @@ static void advance(lua_State *L, la_sim *s, long nsteps, double t_end)
     la_energy_watch_end(L, s, &watch);
 }
 
+void la_sim_advance(lua_State *L, la_sim *s, long nsteps)
+{
+    advance(L, s, nsteps, NAN);
+}
+
 /* After a run: a segment membrane with a quarter of its points slack by
  * more than 1 % beside taut ones has bunched points that carry nothing
  * (lm_membrane_segment_slack): said once per membrane, not an error (a
@@ -582,6 +592,8 @@ static int sim_energy(lua_State *L)
     la_push_energy(L, lm_sim_energy(s->sim));
     lua_pushnumber(L, lm_sim_grid_kinetic(s->sim));
     lua_setfield(L, -2, "grid_kinetic");
+    lua_pushnumber(L, s->sim->damped);   /* the grid damping's work (damping.c) */
+    lua_setfield(L, -2, "damped");
     return 1;
 }
 
@@ -631,6 +643,7 @@ static int sim_index(lua_State *L)
     else if (strcmp(k, "threads") == 0) lua_pushinteger(L, m->def.threads);
     else if (strcmp(k, "axisymmetric") == 0) lua_pushboolean(L, m->def.axisym);
     else if (strcmp(k, "courant") == 0) lua_pushnumber(L, m->def.courant);
+    else if (strcmp(k, "damping") == 0) lua_pushnumber(L, m->def.damping);
     else if (strcmp(k, "gravity") == 0) {
         lua_createtable(L, 2, 0);
         lua_pushnumber(L, m->def.gx);
@@ -649,7 +662,7 @@ static int sim_index(lua_State *L)
 /* Live simulation parameters, applied between steps like material changes
  * and logged the same way: dt (the clock stays exact), gravity (the
  * potential energy keeps its original datum and gravity: it is only
- * meaningful while gravity is unchanged), pic, courant. */
+ * meaningful while gravity is unchanged), pic, courant, damping. */
 static int sim_newindex(lua_State *L)
 {
     la_sim *s = la_check_sim(L, 1);
@@ -680,8 +693,12 @@ static int sim_newindex(lua_State *L)
     } else if (strcmp(k, "courant") == 0) {
         if (lm_sim_set_courant(m, luaL_checknumber(L, 3)) != LM_OK)
             return luaL_error(L, "sim.%s", m->err);
+    } else if (strcmp(k, "damping") == 0) {
+        if (lm_sim_set_damping(m, luaL_checknumber(L, 3)) != LM_OK)
+            return luaL_error(L, "sim.%s", m->err);
     } else {
-        return luaL_error(L, "sim.%s cannot be changed (changeable: dt, gravity, pic, courant)", k);
+        return luaL_error(L, "sim.%s cannot be changed (changeable: dt, gravity, pic, courant, "
+                          "damping)", k);
     }
     la_log_change(L, "sim", k, 3);
     return 0;
@@ -726,6 +743,7 @@ void la_open_sim(lua_State *L)
     luaL_newlib(L, methods);
     la_contact_methods(L);   /* sim:contact, sim:contact_info (l_contact.c) */
     la_link_methods(L);      /* sim:link (l_link.c) */
+    la_relax_methods(L);     /* sim:relax (l_relax.c) */
     lua_setfield(L, -2, "methods");
     lua_pop(L, 1);
 }

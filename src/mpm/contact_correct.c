@@ -407,11 +407,16 @@ void lm_contact_correct(lm_sim *sim)
     const lm_cbox *b = &c->met;   /* the fields are read there only */
     for (int k = 0; k < c->nf; k++) {
         lm_contact_field *f = &c->f[k];
-        for (int j = b->j0; j <= b->j1; j++)
+        for (int j = b->j0; j <= b->j1; j++) {
+            /* each body's own field damped as the shared one (damping.c) */
+            if (sim->def.damping > 0)
+                lm_damp_forces(sim, (long)j * c->sx + b->i0, (long)j * c->sx + b->i1 + 1, f->px,
+                               f->py, f->fx, f->fy);
             for (long i = (long)j * c->sx + b->i0; i <= (long)j * c->sx + b->i1; i++) {
                 f->px[i] += dt * f->fx[i];   /* [M] eq 24: p^L of the body */
                 f->py[i] += dt * f->fy[i];
             }
+        }
         pin_field(sim, f);
         lm_cbox_apply_bc(c, g, b, f->px, f->py);
         lm_cbox_apply_bc(c, g, b, f->fx, f->fy);

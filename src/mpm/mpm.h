@@ -275,6 +275,9 @@ typedef struct lm_sim_def {
     int axisym;            /* the axisymmetric form (axisym.c): x is r, y is
                               z, the left side is the axis r = 0; masses,
                               volumes, forces and energies per radian */
+    double damping;        /* c >= 0 (1/s): viscous damping of the grid
+                              velocities, force -c m_i v_i (damping.c);
+                              0: none, the undamped step to the bit */
 } lm_sim_def;
 
 /* Fills a definition with lamina's defaults (unit square, cell 0.1, MUSL,
@@ -294,6 +297,8 @@ typedef struct lm_sim {
     double t_base;         /* t = t_base + (step - step_base) dt: exact */
     long step_base;        /* multiples of dt, and dt can change mid-run */
     double pe_ref;         /* sum m g.x at seeding: potential energy datum */
+    double damped;         /* the work the grid damping took out so far
+                              (damping.c); not in the checkpoint */
     int prepared;          /* membrane stresses built from eps_t */
     double *cell_rho;      /* density.c: gas density per cell (nx * ny) */
     double *cell_stress;   /* stress_cell.c: sum V sigma per cell (3 nx ny) */
@@ -474,6 +479,8 @@ void lm_sim_set_dt(lm_sim *sim, double dt);
 lm_status lm_sim_set_gravity(lm_sim *sim, double gx, double gy);
 lm_status lm_sim_set_pic(lm_sim *sim, double pic);
 lm_status lm_sim_set_courant(lm_sim *sim, double courant);
+/* The grid damping c (1/s, finite, >= 0; damping.c). */
+lm_status lm_sim_set_damping(lm_sim *sim, double c);
 
 /* One step of docs/physics.md §1. On failure sim->err says why. */
 lm_status lm_sim_step(lm_sim *sim);

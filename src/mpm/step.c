@@ -215,7 +215,9 @@ void lm_step_forces_rest(lm_sim *sim)
 }
 
 /* Step 3: p_i^L = p_i + dt f_i ([F] eq 10); the boundary conditions act on
- * both p^L and f, so that step 4 sees the constrained accelerations. */
+ * both p^L and f, so that step 4 sees the constrained accelerations. With
+ * lamina.sim{damping = c} f_i first takes the implicit damping force
+ * (damping.c); every path (USL, MUSL, fused, threaded) goes through here. */
 void lm_step_grid_update(lm_sim *sim)
 {
     lm_grid *g = &sim->grid;
@@ -224,6 +226,10 @@ void lm_step_grid_update(lm_sim *sim)
     /* mass = "corrected": p_i, f_i towards the consistent mass
      * (mass_corrected.c; one field only: not with contact's own fields) */
     if (sim->def.mass == LM_MASS_CORRECTED && !sim->contact) lm_mass_correct_momentum_forces(sim);
+    /* grid damping (damping.c): part of the force, so before the heavy end
+     * points' solve and the walls, which then act on the damped force */
+    const int damped = sim->def.damping > 0;
+    if (damped) lm_damp_grid(sim);
     if (lm_constraint_active(sim)) {
         /* heavy end points, on p and f with the walls applied (the solve
          * leaves the walls' components alone: constraint.c) */
@@ -239,6 +245,7 @@ void lm_step_grid_update(lm_sim *sim)
     lm_pin_grid(sim);   /* held nodes move with their pins (pin.c) */
     lm_grid_apply_bc(g, g->px, g->py);
     lm_grid_apply_bc(g, g->fx, g->fy);
+    if (damped) lm_damp_account(sim);
 }
 
 /* Step 4's nodal values, per node once, not per particle corner:

@@ -157,6 +157,14 @@ lm_status lm_step_check_report(lm_sim *sim, size_t first);
 /* Step 2 after the particles' own forces: the hoop, tethers, gravity. */
 void lm_step_forces_rest(lm_sim *sim);
 
+/* damping.c (lamina.sim{damping = c}): f_i <- (f_i - c p_i) / (1 + c dt) on
+ * the grid, or on nodes [first, last) of a body's own fields (contact), before
+ * p_i^L = p_i + dt f_i; then the work the damping did, added to sim->damped. */
+void lm_damp_grid(lm_sim *sim);
+void lm_damp_forces(const lm_sim *sim, long first, long last, const double *px,
+                    const double *py, double *fx, double *fy);
+void lm_damp_account(lm_sim *sim);
+
 /* step_fused.c: steps 4-8 and the check particle by particle, and the
  * next step's 0-2 in the same pass, for a plain run. */
 int lm_step_fusable(const lm_sim *sim);     /* one thread, no pins, contact, ... */

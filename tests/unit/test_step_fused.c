@@ -12,7 +12,9 @@
  *   - a run that blows up stops at the same step naming the same particle
  *     with the same words;
  *   - on 2 or 3 threads, the same bits whatever the OS team that runs them
- *     (lm_sim_fix_team: one OS thread doing every part; threads.h). */
+ *     (lm_sim_fix_team: one OS thread doing every part; threads.h);
+ *   - with the grid damping (damping.c), the same bits and the same damped
+ *     energy. */
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -32,6 +34,7 @@ typedef struct setup {
                     (connectivity); 2 the same with cell densities and
                     isosurface normals */
     double cell;   /* 0: 1/16 */
+    double damping;   /* lamina.sim{damping} (damping.c) */
 } setup;
 
 static lm_material solid = {.kind = LM_ELASTIC, .rho = 10, .E = 1e4, .nu = 0.3};
@@ -73,6 +76,7 @@ static lm_sim *build(const setup *s)
     d.scheme = s->scheme;
     d.pic = s->pic;
     d.threads = s->threads;
+    d.damping = s->damping;
     d.gy = -9.81;
     memcpy(d.bc, s->bc, sizeof d.bc);
     char err[256];
@@ -172,6 +176,9 @@ static void compare(const setup *s, int steps)
     CHECK(lm_sim_hash(solo) == lm_sim_hash(ref));
     CHECK(same_fields(plain, ref));
     CHECK(same_fields(ahead, ref));
+    CHECK(plain->damped == ref->damped && ahead->damped == ref->damped &&
+          solo->damped == ref->damped);
+    CHECK((s->damping > 0) == (ref->damped > 0));
     if (lm_sim_hash(ahead) != lm_sim_hash(ref))
         fprintf(stderr, "  scene %d basis %d scheme %d bc %d%d%d%d pic %g: states differ\n",
                 s->scene, s->basis, s->scheme, s->bc[0], s->bc[1], s->bc[2], s->bc[3], s->pic);
@@ -186,7 +193,7 @@ static void compare(const setup *s, int steps)
 static void edits_between_steps(void)
 {
     setup s = {LM_BASIS_LINEAR, LM_USL, {LM_BC_FIXED, LM_BC_FIXED, LM_BC_FIXED, LM_BC_FIXED},
-               0, 1e-4, 1, 0, 0};
+               0, 1e-4, 1, 0, 0, 0};
     lm_sim *ref = build(&s), *ahead = build(&s);
     for (int k = 0; k < 20; k++) {
         CHECK(reference_step(ref) == LM_OK);
@@ -215,7 +222,7 @@ static void edits_between_steps(void)
 static void blow_up(lm_scheme scheme)
 {
     setup s = {LM_BASIS_LINEAR, scheme, {LM_BC_FIXED, LM_BC_FIXED, LM_BC_FIXED, LM_BC_FIXED},
-               0, 0.05, 1, 0, 0};
+               0, 0.05, 1, 0, 0, 0};
     lm_sim *ref = build(&s), *ahead = build(&s);
     lm_status a = LM_OK, b = LM_OK;
     int ka = -1, kb = -1;
@@ -243,14 +250,14 @@ int main(void)
     for (int b = 0; b < 3; b++)
         for (int sc = 0; sc < 2; sc++)
             for (int w = 0; w < 3; w++) {
-                setup s = {bases[b], sc ? LM_USL : LM_MUSL, {0}, w == 2 ? 0.3 : 0, 1e-4, 1, 0, 0};
+                setup s = {bases[b], sc ? LM_USL : LM_MUSL, {0}, w == 2 ? 0.3 : 0, 1e-4, 1, 0, 0, 0};
                 memcpy(s.bc, walls[w], sizeof s.bc);
                 compare(&s, 150);
             }
     for (int scene = 1; scene <= 2; scene++)
         for (int b = 0; b < 3; b++)
             for (int sc = 0; sc < 2; sc++) {
-                setup s = {bases[b], sc ? LM_USL : LM_MUSL, {0}, 0, 5e-5, 1, scene, 0};
+                setup s = {bases[b], sc ? LM_USL : LM_MUSL, {0}, 0, 5e-5, 1, scene, 0, 0};
                 memcpy(s.bc, walls[b], sizeof s.bc);
                 compare(&s, 60);
             }
@@ -258,7 +265,7 @@ int main(void)
         for (int b = 0; b < 3; b++)
             for (int sc = 0; sc < 2; sc++) {
                 setup s = {bases[b], sc ? LM_USL : LM_MUSL, {0}, scene == 3 ? 0.2 : 0, 1e-4, 1,
-                           scene, 0};
+                           scene, 0, 0};
                 memcpy(s.bc, walls[scene - 3], sizeof s.bc);
                 compare(&s, 100);
             }
@@ -268,7 +275,17 @@ int main(void)
         for (int scene = 0; scene <= 2; scene++)
             for (int sc = 0; sc < 2; sc++) {
                 setup s = {bases[(scene + sc) % 3], sc ? LM_USL : LM_MUSL, {0}, 0, 5e-5, nt,
-                           scene, 0.015625};
+                           scene, 0.015625, 0};
+                memcpy(s.bc, walls[scene], sizeof s.bc);
+                compare(&s, 30);
+            }
+    /* grid damping (issue 35 item 2): the pass reads the damped forces as
+     * the phases do, on one thread and on two */
+    for (int nt = 1; nt <= 2; nt++)
+        for (int scene = 0; scene <= 1; scene++)
+            for (int sc = 0; sc < 2; sc++) {
+                setup s = {bases[(scene + sc + 2) % 3], sc ? LM_USL : LM_MUSL, {0}, 0, 5e-5, nt,
+                           scene, nt > 1 ? 0.015625 : 0, 50};
                 memcpy(s.bc, walls[scene], sizeof s.bc);
                 compare(&s, 30);
             }
