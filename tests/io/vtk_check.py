@@ -22,8 +22,10 @@ import xml.etree.ElementTree as ET
 
 import meshio
 import numpy as np
-import vtk
-from vtk.util.numpy_support import vtk_to_numpy
+# only the XML reader's module (not `import vtk`, which loads rendering,
+# Qt and MPI too)
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 
 
 def fail(msg):
@@ -43,7 +45,7 @@ def close(a, b, what, tol=1e-12):
 
 def read_vtk(path):
     """(points, {name: array}, cells as [(vtk type, point ids)]) by VTK."""
-    r = vtk.vtkXMLUnstructuredGridReader()
+    r = vtkXMLUnstructuredGridReader()
     r.SetFileName(path)
     r.Update()
     if r.GetErrorCode() != 0:
