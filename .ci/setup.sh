@@ -11,6 +11,8 @@ PACKAGES=(cmake make gcc pkg-config liblua5.4-dev libcairo2-dev libpng-dev
           libfontconfig-dev fonts-dejavu-core libosmesa6-dev libegl-dev libegl-mesa0
           libgl-dev libopengl-dev valgrind libreadline-dev
           libfreetype-dev zlib1g-dev python3-meshio clang parallel chromium)
+# VTK's own readers, which tests/io/vtk_check.py opens lamina's files with
+PACKAGES+=(python3-vtk9)
 
 missing=()
 for p in "${PACKAGES[@]}"; do

@@ -1,6 +1,8 @@
 -- trampoline.lua - an elastic ball dropped on a pre-tensioned membrane
--- pinned at both ends, under gravity (issue 13), shared by
--- scripts/examples/trampoline.lua and tests/physics/trampoline.lua.
+-- pinned at both ends, under gravity (issue 13), for tests/physics; the
+-- template scripts/examples/trampoline.lua builds the same scene inline
+-- (issue 35 item 6: an example needs nothing but lamina): keep the two in
+-- step.
 -- Sheet: 1.6 long, rho 1000, E 1e7, thickness 0.005, prestrain 0.01
 -- (tension 500 per unit depth), points a third of a cell apart, held by two
 -- pins. Ball: radius 0.15, rho 500, E 1e5, nu 0.3 (plane strain), dropped

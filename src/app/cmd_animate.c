@@ -3,12 +3,19 @@
  *
  * FRAMES are folders (their .png files, in name order: frame_%04d names
  * sort by step) or PNG files in the order given. The output is an APNG
- * written by lamina itself (apng.h), or an MP4 when FILE ends in .mp4 and
- * ffmpeg is on PATH. When the MP4 cannot be made the APNG is written
- * instead, and when no animation can be written at all (frames of
- * different sizes, an unreadable frame, an unwritable target) the frames
- * are left as they are - they are never touched - and the message says
- * why. Exit status: 0 written, 1 nothing written, 2 a wrong command line. */
+ * written by lamina itself (apng.h) when FILE ends in .apng or .png, or an
+ * MP4 when FILE ends in .mp4 and ffmpeg is on PATH. lamina writes only the
+ * file it was asked for (issue 35 item 5): when the MP4 cannot be made it
+ * says why and writes nothing (no APNG in its place, which could replace
+ * an older animation), another name ending is refused, the output may not
+ * be one of the frames, and the default name (FOLDER.apng, not asked for
+ * by name) replaces only an earlier animation of lamina's. When no
+ * animation can be written at all (an unreadable frame, an unwritable
+ * target) the frames are left as they are - they are never touched - and
+ * the message says why. Exit status: 0 written; 1 nothing written (a
+ * frame or the target failed); 2 the command cannot be done as asked (a
+ * wrong command line, a format that cannot be made, a file that would be
+ * replaced without being named), nothing written. */
 #include <dirent.h>
 #include <errno.h>
 #include <fnmatch.h>
@@ -233,6 +240,64 @@ static char *default_out(const char *input, int is_dir)
     return out;
 }
 
+/* The asked format: 'a' APNG, 'm' MP4, 0 none lamina makes. */
+static int out_format(const char *out)
+{
+    if (ends_with(out, ".apng") || ends_with(out, ".png"))
+        return 'a';
+    return ends_with(out, ".mp4") ? 'm' : 0;
+}
+
+/* 1 when path is an animation lamina wrote: its "lamina:frames" text
+ * chunk (write_apng) comes before the image data, in the first bytes. */
+static int written_by_lamina(const char *path)
+{
+    char b[4096];
+    FILE *fp = fopen(path, "rb");
+    if (!fp)
+        return 0;
+    size_t n = fread(b, 1, sizeof b, fp);
+    fclose(fp);
+    static const char key[] = "lamina:frames";
+    for (size_t i = 0; i + sizeof key - 1 <= n; i++)
+        if (memcmp(b + i, key, sizeof key - 1) == 0)
+            return 1;
+    return 0;
+}
+
+/* 1 when a and b are the same file (a frame given as the output). */
+static int same_file(const char *a, const char *b)
+{
+    struct stat sa, sb;
+    return stat(a, &sa) == 0 && stat(b, &sb) == 0 && sa.st_dev == sb.st_dev &&
+           sa.st_ino == sb.st_ino;
+}
+
+/* The checks before anything is written; 0, or 2 with the message said. */
+static int may_write(const char *out, int named, const frames *f)
+{
+    if (!out_format(out)) {
+        fprintf(stderr, "lamina animate: cannot make '%s': lamina writes an APNG (a name "
+                "ending in .apng or .png) or an MP4 (.mp4, through ffmpeg); nothing "
+                "written\n", out);
+        return 2;
+    }
+    for (size_t i = 0; i < f->n; i++)
+        if (same_file(out, f->path[i])) {
+            fprintf(stderr, "lamina animate: the output '%s' is one of the frames; "
+                    "name another file with --out (nothing written)\n", out);
+            return 2;
+        }
+    struct stat st;
+    if (!named && stat(out, &st) == 0 && !written_by_lamina(out)) {
+        fprintf(stderr, "lamina animate: '%s' exists and is not an animation lamina "
+                "wrote; name the output with --out to replace it (nothing written)\n",
+                out);
+        return 2;
+    }
+    return 0;
+}
+
 static int is_folder(const char *path)
 {
     struct stat st;
@@ -297,16 +362,6 @@ static long file_size(const char *path)
     return stat(path, &st) == 0 ? (long)st.st_size : -1;
 }
 
-/* X.mp4 -> X.apng */
-static char *apng_name(const char *mp4)
-{
-    size_t n = strlen(mp4);
-    char *s = malloc(n + 8);
-    if (s)
-        snprintf(s, n + 8, "%.*s.apng", (int)(n - 4), mp4);
-    return s;
-}
-
 int cmd_animate(int argc, char **argv)
 {
     options o = { NULL, 10.0, 0, 0, NULL };
@@ -338,10 +393,11 @@ int cmd_animate(int argc, char **argv)
     }
     if (status == 0)
         keep_first_size(&f);
+    if (status == 0)
+        status = may_write(out, o.out != NULL, &f);
     const char *where = ninputs == 1 ? inputs[0] : "their files";
     char why[1024] = "";
-    char *fallback = NULL;
-    if (status == 0 && ends_with(out, ".mp4")) {
+    if (status == 0 && out_format(out) == 'm') {
         char ffmpeg[4096];
         if (animate_find_ffmpeg(ffmpeg, sizeof ffmpeg) != 0)
             snprintf(why, sizeof why, "ffmpeg is not installed (not on PATH)");
@@ -351,14 +407,12 @@ int cmd_animate(int argc, char **argv)
                         "bytes)\n", f.n, out, file_size(out));
             goto done;
         }
-        fallback = apng_name(out);
-        if (!fallback) {
-            status = 1;
-            goto done;
-        }
-        fprintf(stderr, "lamina animate: no MP4: %s; writing an APNG instead: %s\n",
-                why, fallback);
-        out = fallback;
+        /* No stand-in: an APNG under another name could replace a file
+         * nobody asked to replace (issue 35 item 5). */
+        fprintf(stderr, "lamina animate: cannot make the MP4 '%s': %s; nothing written "
+                "(an APNG: --out NAME.apng)\n", out, why);
+        status = 2;
+        goto done;
     }
     if (status == 0) {
         int w = 0, h = 0;
@@ -372,7 +426,6 @@ int cmd_animate(int argc, char **argv)
         }
     }
 done:
-    free(fallback);
     free(out_owned);
     free_frames(&f);
     free(inputs);

@@ -285,6 +285,11 @@ void la_checkpoint_restore(lua_State *L, int sidx, la_sim *s)
         }
     }
     free(buf);
+    /* Say where the run goes on from (issue 35 item 5): without it a
+     * restarted run looks like a fresh one. */
+    if (!run->quiet)
+        fprintf(stderr, "lamina: resumed %s at t = %.9g, step %ld\n", run->restart,
+                s->sim->t, s->sim->step);
     la_sim_skip_due(s);
     double now = s->sim->t + 0.5 * s->sim->def.dt, k = 0;
     if (s->ck_file && s->ck_every > 0 && s->ck_next <= now)

@@ -9,6 +9,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "l_analysis.h"
 #include "l_curve.h"
 
 /* lamina.param(name, default): the --set value when given, converted to the
@@ -84,6 +85,7 @@ static int luaopen_lamina(lua_State *L)
     luaL_newlib(L, funcs);
     la_register_curves(L);
     la_open_normals(L);         /* lamina.normals, lamina.figure */
+    la_open_analysis(L);        /* lamina.analysis (l_analysis*.c) */
     lua_pushstring(L, LAMINA_VERSION);
     lua_setfield(L, -2, "version");
     return 1;

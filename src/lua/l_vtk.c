@@ -5,8 +5,9 @@
  * writes, now and then every `every` of simulated time (once if `every` is
  * absent), out/run_000000.vtu (the particles: an unstructured grid whose
  * cells are one vertex per particle of a solid or gas body and one line
- * per segment of each membrane, in curve order), out/run_grid_000000.vti
- * (the grid's nodal fields of the last step), and rewrites out/run.pvd,
+ * per segment of each membrane, in curve order), out/run_grid_000000.vtu
+ * (the grid's nodal fields of the last step, its cells as quads), and
+ * rewrites out/run.pvd,
  * the collection of every output so far with its time, so that ParaView
  * opens out/run.pvd as one time series (render/vtk.c writes the files). */
 #include <stdlib.h>
@@ -18,7 +19,7 @@
 
 #define LA_VTK "lamina.vtk"
 #define PREFIX_MAX 1024
-#define NAME_MAX_LEN (PREFIX_MAX + 32)   /* prefix + "_grid_NNNNNN.vti" */
+#define NAME_MAX_LEN (PREFIX_MAX + 32)   /* prefix + "_grid_NNNNNN.vtu" */
 
 typedef struct la_vtk {
     char prefix[PREFIX_MAX];
@@ -154,16 +155,28 @@ static int write_particles(const lm_sim *sim, const char *path, char *err, size_
     return rc;
 }
 
+/* The grid as an unstructured grid of quads (VTK_QUAD) over its nodes:
+ * image data (.vti) is smaller, but meshio reads neither .vti nor .vtr,
+ * only .vtu among VTK's XML files, and a .pvd series must be XML, so the
+ * one form ParaView, VTK's readers and meshio all read is this (issue 35
+ * item 5). Nodes x fastest, as the .vti they replace had them. */
 static int write_grid(const lm_sim *sim, const char *path, char *err, size_t errlen)
 {
     const lm_grid *gr = &sim->grid;
     size_t nn = (size_t)(gr->nx + 1) * (size_t)(gr->ny + 1);
-    double *d = malloc(7 * nn * sizeof *d);
-    if (!d) {
+    size_t nc = (size_t)gr->nx * (size_t)gr->ny;
+    double *d = malloc(10 * nn * sizeof *d);
+    int64_t *conn = malloc(5 * nc * sizeof *conn + 1);
+    uint8_t *types = malloc(nc + 1);
+    if (!d || !conn || !types) {
+        free(d);
+        free(conn);
+        free(types);
         snprintf(err, errlen, "cannot write '%s': out of memory", path);
         return -1;
     }
-    double *vel = d + nn, *force = d + 4 * nn;
+    double *vel = d + nn, *force = d + 4 * nn, *xyz = d + 7 * nn;
+    int64_t *offs = conn + 4 * nc;
     /* the nodes 0..nx x 0..ny, without the wider bases' ghost ring */
     for (int j = 0, i = 0; j <= gr->ny; j++) {
         for (int a = 0; a <= gr->nx; a++, i++) {
@@ -175,12 +188,31 @@ static int write_grid(const lm_sim *sim, const char *path, char *err, size_t err
             force[3 * i] = gr->fx[k];
             force[3 * i + 1] = gr->fy[k];
             force[3 * i + 2] = 0;
+            xyz[3 * i] = gr->x0 + a * gr->hx;
+            xyz[3 * i + 1] = gr->y0 + j * gr->hy;
+            xyz[3 * i + 2] = 0;
+        }
+    }
+    /* cell (a, j): its corners anticlockwise, as VTK_QUAD wants them */
+    int64_t row = gr->nx + 1;
+    for (int j = 0, c = 0; j < gr->ny; j++) {
+        for (int a = 0; a < gr->nx; a++, c++) {
+            int64_t n0 = (int64_t)j * row + a;
+            int64_t *q = conn + 4 * (size_t)c;
+            q[0] = n0;
+            q[1] = n0 + 1;
+            q[2] = n0 + 1 + row;
+            q[3] = n0 + row;
+            offs[c] = 4 * (int64_t)(c + 1);
+            types[c] = LR_VTK_QUAD;
         }
     }
     lr_vtk_field pf[] = {{"mass", 1, d}, {"velocity", 3, vel}, {"force", 3, force}};
-    int rc = lr_vtk_write_vti(path, gr->nx, gr->ny, gr->x0, gr->y0, gr->hx, gr->hy, pf, 3,
-                              err, errlen);
+    lr_vtk_cells cells = {nc, conn, offs, types};
+    int rc = lr_vtk_write_vtu(path, nn, xyz, &cells, pf, 3, NULL, 0, err, errlen);
     free(d);
+    free(conn);
+    free(types);
     return rc;
 }
 
@@ -202,7 +234,7 @@ static int write_pvd(const la_vtk *v, char *err, size_t errlen)
     for (int k = 0; k < v->count; k++) {
         for (int s = 0; s < 2; s++) {
             char *nm = names + (size_t)(2 * k + s) * NAME_MAX_LEN;
-            snprintf(nm, NAME_MAX_LEN, s ? "%s_grid_%06d.vti" : "%s_%06d.vtu", base, k);
+            snprintf(nm, NAME_MAX_LEN, s ? "%s_grid_%06d.vtu" : "%s_%06d.vtu", base, k);
             files[2 * k + s] = nm;
             t[2 * k + s] = v->times[k];
             part[2 * k + s] = s;
@@ -236,7 +268,7 @@ static int vtk_output(lua_State *L)
     snprintf(path, sizeof path, "%s_%06d.vtu", v->prefix, v->count);
     lua_pushstring(L, path);
     la_check_output_path(L, "sim:vtk", -1);
-    snprintf(path, sizeof path, "%s_grid_%06d.vti", v->prefix, v->count);
+    snprintf(path, sizeof path, "%s_grid_%06d.vtu", v->prefix, v->count);
     lua_pushstring(L, path);
     la_check_output_path(L, "sim:vtk", -1);
     lua_pop(L, 2);
@@ -245,7 +277,7 @@ static int vtk_output(lua_State *L)
      * are removed, and the .pvd of the outputs before stays (issue 31) */
     char grid[PREFIX_MAX + 32];
     snprintf(path, sizeof path, "%s_%06d.vtu", v->prefix, v->count);
-    snprintf(grid, sizeof grid, "%s_grid_%06d.vti", v->prefix, v->count);
+    snprintf(grid, sizeof grid, "%s_grid_%06d.vtu", v->prefix, v->count);
     if (write_particles(sim, path, err, sizeof err)) return luaL_error(L, "sim:vtk: %s", err);
     if (write_grid(sim, grid, err, sizeof err)) {
         unlink(path);

@@ -1,4 +1,4 @@
-/* vtk.c - VTK XML writers (vtk.h): UnstructuredGrid, ImageData, Collection.
+/* vtk.c - VTK XML writers (vtk.h): UnstructuredGrid and Collection.
  *
  * The format is VTK's "XML file formats" with raw appended data: the XML
  * header names each DataArray with format="appended" and its offset into
@@ -108,22 +108,6 @@ int lr_vtk_write_vtu(const char *path, size_t npts, const double *xyz,
                bl, &nb, &off);
     data_array(a.fp, "UInt8", "types", 1, cells->types, cells->n, bl, &nb, &off);
     fputs("      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n", a.fp);
-    return appended(&a, bl, nb, err, errlen);
-}
-
-int lr_vtk_write_vti(const char *path, int nx, int ny, double x0, double y0, double hx,
-                     double hy, const lr_vtk_field *pf, int npf, char *err, size_t errlen)
-{
-    lr_atomic a;
-    if (vtk_open(&a, path, "ImageData", npf, err, errlen)) return -1;
-    block bl[MAX_ARRAYS];
-    int nb = 0;
-    uint64_t off = 0;
-    fprintf(a.fp, "  <ImageData WholeExtent=\"0 %d 0 %d 0 0\" Origin=\"%.17g %.17g 0\" "
-            "Spacing=\"%.17g %.17g 1\">\n    <Piece Extent=\"0 %d 0 %d 0 0\">\n",
-            nx, ny, x0, y0, hx, hy, nx, ny);
-    fields(a.fp, "PointData", pf, npf, (size_t)(nx + 1) * (size_t)(ny + 1), bl, &nb, &off);
-    fputs("      <CellData>\n      </CellData>\n    </Piece>\n  </ImageData>\n", a.fp);
     return appended(&a, bl, nb, err, errlen);
 }
 

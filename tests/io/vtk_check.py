@@ -1,7 +1,20 @@
-"""Reads sim:vtk's files back (issue 20 item 1) and compares them with the
-values lamina printed (tests/io/vtk_export.lua): the particles' .vtu with
-meshio, an independent reader; the .vti and .pvd, which meshio does not
-read, with Python's own XML parser and numpy (not lamina's code).
+"""Reads every file sim:vtk wrote back (issue 20 item 1, issue 35 item 5)
+and compares it with the values lamina printed (tests/io/vtk_export.lua),
+through two readers that are not lamina's code:
+
+- VTK's own XML reader (vtkXMLUnstructuredGridReader, Debian python3-vtk9),
+  which ParaView uses;
+- meshio (Debian python3-meshio), the reader of many Python users.
+
+Every .vtu the .pvd lists (particles and grid, at every time) must open in
+both with the same values. The last output is compared with lamina's own
+numbers: the particles with the REF lines, the grid with a reference
+computed here from the PRE lines (the positions at the start of the last
+step): nodal mass sum_p m_p N_i(x_p) with the bilinear hat functions and,
+at interior nodes, velocity sum_p m_p v_p N_i(x_p) / m_i (MUSL's re-mapped
+velocity, from the particles' velocities after the step); the fixed walls'
+nodes hold 0. The .pvd (which neither reader opens: ParaView's own) is
+read with Python's XML parser.
 
 usage: vtk_check.py REF_FILE PREFIX"""
 import sys
@@ -9,6 +22,10 @@ import xml.etree.ElementTree as ET
 
 import meshio
 import numpy as np
+# only the XML reader's module (not `import vtk`, which loads rendering,
+# Qt and MPI too)
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 
 
 def fail(msg):
@@ -26,39 +43,80 @@ def close(a, b, what, tol=1e-12):
         fail(f"{what}: differs by {err:g}")
 
 
-def appended_arrays(path):
-    """{name: array} of a raw-appended VTK XML file (UInt64 headers)."""
-    raw = open(path, "rb").read()
-    start = raw.index(b"<AppendedData")
-    start = raw.index(b"_", start) + 1
-    head = raw[:raw.index(b"<AppendedData")].decode() + "</VTKFile>"
-    for tag in ("</Piece>", "</ImageData>"):
-        if tag not in head:
-            head = head.replace("</VTKFile>", tag + "</VTKFile>")
-    root = ET.fromstring(head)
-    out = {}
-    types = {"Float64": "<f8", "Int64": "<i8", "UInt8": "u1"}
-    for da in root.iter("DataArray"):
-        off = start + int(da.get("offset"))
-        n = int(np.frombuffer(raw[off:off + 8], "<u8")[0])
-        a = np.frombuffer(raw[off + 8:off + 8 + n], types[da.get("type")])
-        k = int(da.get("NumberOfComponents", "1"))
-        out[da.get("Name")] = a.reshape(-1, k) if k > 1 else a
-    return root, out
+def read_vtk(path):
+    """(points, {name: array}, cells as [(vtk type, point ids)]) by VTK."""
+    r = vtkXMLUnstructuredGridReader()
+    r.SetFileName(path)
+    r.Update()
+    if r.GetErrorCode() != 0:
+        fail(f"VTK cannot read {path} (error code {r.GetErrorCode()})")
+    g = r.GetOutput()
+    if g is None or g.GetNumberOfPoints() == 0:
+        fail(f"VTK read no points from {path}")
+    pts = vtk_to_numpy(g.GetPoints().GetData())
+    pd = g.GetPointData()
+    arrays = {pd.GetArrayName(i): vtk_to_numpy(pd.GetArray(i))
+              for i in range(pd.GetNumberOfArrays())}
+    cells = []
+    for c in range(g.GetNumberOfCells()):
+        ids = g.GetCell(c).GetPointIds()
+        cells.append((g.GetCellType(c), [ids.GetId(k) for k in range(ids.GetNumberOfIds())]))
+    return pts, arrays, cells
+
+
+MESHIO_TYPES = {"vertex": 1, "line": 3, "quad": 9}
+
+
+def read_both(path):
+    """Reads path with VTK and meshio; they must agree; VTK's result."""
+    pts, arrays, cells = read_vtk(path)
+    try:
+        mesh = meshio.read(path)
+    except Exception as e:   # noqa: BLE001 - any failure is the finding
+        fail(f"meshio cannot read {path}: {type(e).__name__}: {e}")
+    close(mesh.points, pts, f"{path}: points (meshio vs VTK)", 0)
+    if set(mesh.point_data) != set(arrays):
+        fail(f"{path}: meshio has {sorted(mesh.point_data)}, VTK {sorted(arrays)}")
+    for name, a in arrays.items():
+        close(np.asarray(mesh.point_data[name]).reshape(a.shape), a,
+              f"{path}: {name} (meshio vs VTK)", 0)
+    mcells = [(MESHIO_TYPES[b.type], list(row)) for b in mesh.cells for row in b.data]
+    if sorted(mcells) != sorted(cells):
+        fail(f"{path}: meshio's cells differ from VTK's")
+    return pts, arrays, cells
+
+
+def grid_reference(pre, ref, h, nx, ny):
+    """Nodal mass and momentum of the last step's particle-to-grid map."""
+    nn = (nx + 1) * (ny + 1)
+    m, p = np.zeros(nn), np.zeros((nn, 2))
+    for (x, y, mp), v in zip(pre[:, 1:4], ref[:, 3:5]):
+        i, j = int(x // h), int(y // h)
+        fx, fy = x / h - i, y / h - j
+        for da, wa in ((0, 1 - fx), (1, fx)):
+            for db, wb in ((0, 1 - fy), (1, fy)):
+                k = (j + db) * (nx + 1) + i + da
+                m[k] += mp * wa * wb
+                p[k] += mp * wa * wb * v
+    return m, p
 
 
 def main():
     ref_file, prefix = sys.argv[1], sys.argv[2]
-    ref, t_end, nmem = [], None, None
+    ref, pre, t_end, nmem, grid = [], [], None, None, None
     for line in open(ref_file):
         w = line.split()
         if w and w[0] == "REF":
             ref.append([float(x) for x in w[1:]])
+        elif w and w[0] == "PRE":
+            pre.append([float(x) for x in w[1:]])
         elif w and w[0] == "META":
             t_end, nmem = float(w[2]), int(w[4])
-    ref = np.array(ref)
-    if ref.size == 0:
-        fail("no REF lines")
+        elif w and w[0] == "GRID":
+            grid = dict(zip(w[1::2], (float(x) for x in w[2::2])))
+    ref, pre = np.array(ref), np.array(pre)
+    if ref.size == 0 or pre.shape[0] != ref.shape[0] or grid is None:
+        fail("no REF, PRE or GRID lines")
     # the collection: four times, particles and grid at each
     pvd = ET.parse(prefix + ".pvd").getroot()
     sets = pvd.findall("./Collection/DataSet")
@@ -66,19 +124,24 @@ def main():
     close(times, [0.0, 0.001, 0.002, 0.003], "pvd times", 1e-9)
     if len(sets) != 8:
         fail(f"pvd lists {len(sets)} datasets, expected 8")
-    last = [d.get("file") for d in sets if float(d.get("timestep")) == times[-1]]
     close(times[-1], t_end, "last time", 1e-12)
     folder = prefix.rsplit("/", 1)[0] + "/" if "/" in prefix else ""
-    vtu = [f for f in last if f.endswith(".vtu")][0]
-    vti = [f for f in last if f.endswith(".vti")][0]
+    # every file of the series opens in both readers, and they agree
+    read = {}
+    for d in sets:
+        read[d.get("file")] = read_both(folder + d.get("file"))
+    last = [d.get("file") for d in sets if float(d.get("timestep")) == times[-1]]
+    part = {d.get("file"): d.get("part") for d in sets}
+    vtu = [f for f in last if part[f] == "0"][0]
+    gridf = [f for f in last if part[f] == "1"][0]
 
-    mesh = meshio.read(folder + vtu)
+    # the particles
+    pts, pd, cells = read[vtu]
     n = len(ref)
-    if mesh.points.shape[0] != n:
-        fail(f"{mesh.points.shape[0]} points, lamina has {n}")
-    close(mesh.points[:, 0], ref[:, 1], "x")
-    close(mesh.points[:, 1], ref[:, 2], "y")
-    pd = mesh.point_data
+    if pts.shape[0] != n:
+        fail(f"{pts.shape[0]} points, lamina has {n}")
+    close(pts[:, 0], ref[:, 1], "x")
+    close(pts[:, 1], ref[:, 2], "y")
     close(pd["velocity"][:, 0], ref[:, 3], "vx")
     close(pd["velocity"][:, 1], ref[:, 4], "vy")
     close(pd["stress"][:, 0], ref[:, 5], "sxx")
@@ -93,25 +156,41 @@ def main():
     close(pd["normal"][mem, 0], ref[mem, 11], "membrane nx")
     close(pd["normal"][mem, 1], ref[mem, 12], "membrane ny")
     # cells: a vertex per solid/gas particle, the membrane as lines in order
-    cells = {c.type: c.data for c in mesh.cells}
-    if len(cells.get("vertex", [])) != int(np.sum(~mem)):
+    verts = [ids for t, ids in cells if t == 1]
+    lines = [ids for t, ids in cells if t == 3]
+    if len(verts) != int(np.sum(~mem)):
         fail("vertex cells do not match the solid and gas particles")
-    lines = cells.get("line")
-    if lines is None or len(lines) != nmem - 1:
-        fail("the membrane is not one line per segment")
     first = int(np.argmax(mem))
-    expect = np.array([[first + i, first + i + 1] for i in range(nmem - 1)])
-    if not np.array_equal(lines, expect):
-        fail("membrane lines are not in curve order")
+    if lines != [[first + i, first + i + 1] for i in range(nmem - 1)]:
+        fail("the membrane is not one line per segment in curve order")
 
-    root, arrays = appended_arrays(folder + vti)
-    ext = [int(x) for x in root.find("ImageData").get("WholeExtent").split()]
-    nodes = (ext[1] + 1) * (ext[3] + 1)
-    if arrays["mass"].shape[0] != nodes:
-        fail("grid mass has the wrong node count")
-    close(arrays["mass"].sum(), ref[:, 9].sum(), "grid mass = particle mass", 1e-12)
-    print(f"vtk_check: {n} particles, {nmem} membrane points, {nodes} nodes, "
-          f"{len(times)} times: every value read back equals lamina's")
+    # the grid: nodes, quads, and the last step's nodal values
+    nx, ny, h = int(grid["nx"]), int(grid["ny"]), grid["h"]
+    gpts, ga, gcells = read[gridf]
+    nodes = (nx + 1) * (ny + 1)
+    if gpts.shape[0] != nodes or len(gcells) != nx * ny:
+        fail(f"grid: {gpts.shape[0]} nodes and {len(gcells)} cells, "
+             f"expected {nodes} and {nx * ny}")
+    ii, jj = np.arange(nodes) % (nx + 1), np.arange(nodes) // (nx + 1)
+    close(gpts[:, 0], grid["x0"] + ii * h, "grid node x", 1e-15)
+    close(gpts[:, 1], grid["y0"] + jj * h, "grid node y", 1e-15)
+    for c, (t, ids) in enumerate(gcells):
+        a, j = c % nx, c // nx
+        n0 = j * (nx + 1) + a
+        if t != 9 or ids != [n0, n0 + 1, n0 + nx + 2, n0 + nx + 1]:
+            fail(f"grid cell {c} is type {t} over {ids}, not the quad of cell ({a}, {j})")
+    m, p = grid_reference(pre, ref, h, nx, ny)
+    close(ga["mass"], m, "grid mass (sum m_p N_i, computed here)")
+    close(ga["mass"].sum(), ref[:, 9].sum(), "grid mass = particle mass")
+    inner = (ii > 0) & (ii < nx) & (jj > 0) & (jj < ny) & (m > 0)
+    close(ga["velocity"][inner, :2], p[inner] / m[inner, None],
+          "interior grid velocity (sum m_p v_p N_i / m_i, computed here)")
+    wall = ~((ii > 0) & (ii < nx) & (jj > 0) & (jj < ny))
+    close(ga["velocity"][wall], np.zeros_like(ga["velocity"][wall]), "fixed walls' velocity", 0)
+    print(f"vtk_check: {len(sets)} files read by VTK and meshio alike; {n} particles, "
+          f"{nmem} membrane points, {nodes} nodes ({int(inner.sum())} interior), "
+          f"{len(times)} times: every value read back equals lamina's and the grid "
+          f"equals the particle-to-grid map computed here")
 
 
 main()

@@ -248,12 +248,14 @@ static void test_command(const char *lamina)
     CHECK(said("5 frames (48x32, 10 fps)"));
     CHECK(check_file(path("frames.apng"), 1000) == NFRAMES);
 
-    /* .mp4 without ffmpeg: an APNG instead, and why */
+    /* .mp4 without ffmpeg: status 2, why, and nothing written - no APNG
+     * in its place (issue 35 item 5) */
     snprintf(cmd, sizeof cmd, "PATH=/nonexistent %s animate %s --out %s --fps 10",
              lamina, path("frames"), path("movie.mp4"));
-    CHECK(run(cmd) == 0);
+    CHECK(run(cmd) == 2);
     CHECK(said("ffmpeg is not installed"));
-    CHECK(check_file(path("movie.apng"), 1000) == NFRAMES);
+    CHECK(said("nothing written"));
+    CHECK(!exists(path("movie.apng")));
     CHECK(!exists(path("movie.mp4")));
 
     /* an ffmpeg on PATH (a stand-in that writes its last argument) */

@@ -1,5 +1,5 @@
-/* vtk.h - VTK XML files for ParaView: particles as an unstructured grid
- * (.vtu), the background grid as image data (.vti), and a collection
+/* vtk.h - VTK XML files for ParaView: unstructured grids (.vtu: the
+ * particles, and the background grid as quads), and a collection
  * (.pvd) that makes a run a time series.
  *
  * Arrays go into one raw appended block (each array preceded by its byte
@@ -13,7 +13,7 @@
 #include <stdint.h>
 
 /* VTK cell types used here */
-enum { LR_VTK_VERTEX = 1, LR_VTK_LINE = 3 };
+enum { LR_VTK_VERTEX = 1, LR_VTK_LINE = 3, LR_VTK_QUAD = 9 };
 
 typedef struct lr_vtk_field {
     const char *name;
@@ -33,11 +33,6 @@ typedef struct lr_vtk_cells {
 int lr_vtk_write_vtu(const char *path, size_t npts, const double *xyz,
                      const lr_vtk_cells *cells, const lr_vtk_field *pf, int npf,
                      const lr_vtk_field *cf, int ncf, char *err, size_t errlen);
-
-/* Nodes (nx + 1) x (ny + 1) from (x0, y0), spacing (hx, hy), x fastest;
- * point fields over the nodes. */
-int lr_vtk_write_vti(const char *path, int nx, int ny, double x0, double y0, double hx,
-                     double hy, const lr_vtk_field *pf, int npf, char *err, size_t errlen);
 
 /* A collection of n datasets: times[k] and file names (relative to the
  * .pvd's folder); part[k] numbers the datasets of one time step. */
