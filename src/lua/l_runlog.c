@@ -147,12 +147,16 @@ void la_log_change(lua_State *L, const char *what, const char *key, int validx)
     const char *name = lua_tostring(L, -1);
     const char *value = replayable(L, validx, 0);
     char line[512];
+    /* where the change came from when not the script: the repl's prompt or
+     * lamina serve's page */
+    char from[64] = "";
+    if (run->change_from) snprintf(from, sizeof from, " (%s)", run->change_from);
+    else if (prompt) snprintf(from, sizeof from, " (at the prompt)");
     if (sim)
         snprintf(line, sizeof line, "lamina: t = %.9g step %ld: %s = %s%s\n", sim->t,
-                 sim->step, name, value, prompt ? " (at the prompt)" : "");
+                 sim->step, name, value, from);
     else
-        snprintf(line, sizeof line, "lamina: %s = %s%s\n", name, value,
-                 prompt ? " (at the prompt)" : "");
+        snprintf(line, sizeof line, "lamina: %s = %s%s\n", name, value, from);
     lamina_progress_clear_line();
     fputs(line, stderr);
     if (run->log) {
