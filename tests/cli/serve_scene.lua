@@ -10,6 +10,7 @@ local out = lamina.param("out", "out")
 local amp = lamina.param("amp", 1.0)
 lamina.param("label", "disks")           -- a string parameter, shown on the page
 lamina.param("fast", true)               -- a boolean one
+lamina.param("tag<b>\"&'", 0)             -- a name the page must escape
 
 local sim = lamina.sim{ basis = "linear", domain = {0, 0, 1, 1}, cell = 0.1, dt = 1e-3 }
 local rubber = lamina.elastic{ rho = 1000, E = 1000, nu = 0.3 }
