@@ -56,6 +56,11 @@ static void record(lua_State *L, const lm_sim *sim, const char *what, const char
     lua_setfield(L, -2, "value");
     lua_pushboolean(L, prompt);
     lua_setfield(L, -2, "prompt");
+    const lamina_run *run = la_run(L);
+    if (run && run->change_from) {   /* lamina serve's page */
+        lua_pushstring(L, run->change_from);
+        lua_setfield(L, -2, "from");
+    }
     lua_seti(L, -2, (lua_Integer)luaL_len(L, -2) + 1);
     lua_pop(L, 1);
 }

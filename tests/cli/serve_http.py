@@ -108,6 +108,10 @@ msgs = wait_until(lambda: (lambda j: j["msgs"] if j and any("refused" in m for m
 check(msgs and any("sim.gravity = 0,-2" in m for m in msgs) and any("refused: dt" in m for m in msgs),
       "the page's log: gravity applied, dt refused (%s)" % msgs)
 check("sim.gravity = {0, -2} (from the page)" in s.stderr(), "the run log replays gravity")
+check(s.control("/api/setting", "name=dt&value=1")[0] == 200, "a dt past the Courant limit is queued")
+msgs = wait_until(lambda: (lambda j: j["msgs"] if j and any("Courant" in m for m in j["msgs"]) else None)(s.json("/api/state")))
+check(msgs is not None, "...and refused by the Courant check, the run going on")
+check(s.json("/api/params")["settings"][0]["value"] == "0.001", "dt unchanged (0.001)")
 
 # pause, step, resume
 check(s.control("/api/control", "action=pause")[0] == 200, "pause")
@@ -122,7 +126,10 @@ if p:
     s.control("/api/control", "action=resume")
     check(wait_until(lambda: s.json("/api/state")["step"] > p["step"] + 10) is not None, "resume")
 
-# SIGTERM: the run stops at a step boundary, writes its records, exits 143
+# SIGTERM while paused: the run stops at its step boundary, writes its
+# records, exits 143
+s.control("/api/control", "action=pause")
+check(wait_until(lambda: s.json("/api/state")["waiting"]) is not None, "paused again")
 s.proc.send_signal(signal.SIGTERM)
 rc = s.wait()
 check(rc == 143, "SIGTERM: exit status 143 (got %s)" % rc)
