@@ -15,6 +15,7 @@
 #include <microhttpd.h>
 #include <netdb.h>
 #include <netinet/in.h>
+#include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -28,6 +29,7 @@
 #define CONN_PER_IP 8
 #define CONN_TIMEOUT 15        /* s idle before a connection is closed */
 #define CONN_MEMORY (128 * 1024)
+#define LOG_MAX 20             /* libmicrohttpd's messages kept in the run log */
 
 struct serve_http {
     struct MHD_Daemon *d;
@@ -35,6 +37,7 @@ struct serve_http {
     char host[256];            /* as given to --host */
     unsigned port;
     int loopback, wildcard;
+    int logged;                /* libmicrohttpd messages so far */
 };
 
 /* per request: the body read so far */
@@ -298,6 +301,27 @@ static void completed(void *cls, struct MHD_Connection *c, void **ctx,
 
 /* ---- the daemon ------------------------------------------------------- */
 
+/* libmicrohttpd's own messages (a connection over the limit, a malformed
+ * request) go to the run log as lines of their own, named, and at most
+ * LOG_MAX of them: a flood of bad requests cannot flood the log. Called on
+ * its thread only. */
+static void mhd_log(void *cls, const char *fmt, va_list ap)
+{
+    serve_http *h = cls;
+    if (h->logged > LOG_MAX) return;
+    if (h->logged++ == LOG_MAX) {
+        fprintf(stderr, "lamina serve: http: further messages of the HTTP library left out\n");
+        return;
+    }
+    char buf[512];
+    vsnprintf(buf, sizeof buf, fmt, ap);
+    size_t n = strlen(buf);
+    while (n && (buf[n - 1] == '\n' || buf[n - 1] == '\r')) buf[--n] = 0;
+    for (char *p = buf; *p; p++)   /* it may quote what a client sent */
+        if ((unsigned char)*p < 0x20 || (unsigned char)*p >= 0x7f) *p = '?';
+    fprintf(stderr, "lamina serve: http: %s\n", buf);
+}
+
 static int resolve(const char *host, struct sockaddr_storage *ss, socklen_t *len)
 {
     struct addrinfo hints, *res = NULL;
@@ -358,6 +382,8 @@ serve_http *serve_http_start(serve_state *st, const serve_opts *o)
     unsigned flags = MHD_USE_AUTO | MHD_USE_INTERNAL_POLLING_THREAD | MHD_USE_ERROR_LOG;
     if (ss.ss_family == AF_INET6) flags |= MHD_USE_IPv6;
     h->d = MHD_start_daemon(flags, (uint16_t)o->port, NULL, NULL, handle, h,
+                            /* first, so that every message goes through it */
+                            MHD_OPTION_EXTERNAL_LOGGER, mhd_log, h,
                             MHD_OPTION_SOCK_ADDR, (struct sockaddr *)&ss,
                             MHD_OPTION_CONNECTION_LIMIT, (unsigned)CONN_MAX,
                             MHD_OPTION_PER_IP_CONNECTION_LIMIT, (unsigned)CONN_PER_IP,

@@ -6,6 +6,7 @@ import json
 import os
 import signal
 import socket
+import subprocess
 import sys
 import time
 
@@ -96,6 +97,15 @@ for sk in idle:
     sk.close()
 check(wait_until(lambda: s.json("/api/state"), 30) is not None, "the server answers after the flood")
 
+check("lamina serve: http: Server reached connection limit" in s.stderr(),
+      "libmicrohttpd's messages are named in the run log")
+
+# a second server on a port in use: status 2, saying so
+busy = subprocess.run([LAMINA, "serve", SCENE, "--port", str(s.port), "--set", "t_end=0.01"],
+                      cwd=W, capture_output=True, text=True, timeout=60)
+check(busy.returncode == 2 and "cannot listen on 127.0.0.1 port %d" % s.port in busy.stderr,
+      "a port in use: status 2 (%d, %r)" % (busy.returncode, busy.stderr[-200:]))
+
 # a parameter change: the same live-change log as the repl, seen by the script
 check(s.control("/api/param", "name=amp&value=2.5")[0] == 200, "set amp = 2.5")
 check(wait_until(lambda: s.column("amp")[-1:] == [2.5]) is not None and s.column("amp")[-1:] == [2.5],
@@ -137,6 +147,16 @@ with open(os.path.join(W, "out", "amp.csv")) as f:
     rows = f.read().splitlines()
 check(rows[0].startswith("t,step,") and rows[-1].split(",")[-1] == "2.5", "amp.csv written, last amp 2.5")
 check(s.request("GET", "/api/state")[0] is None, "the server is gone")
+
+# --host 0.0.0.0 --allow-remote: every interface; a Host must then be an IP
+# literal with the port (a DNS name could be rebound)
+s3 = Server(LAMINA, SCENE, W + "_remote", "--host", "0.0.0.0", "--allow-remote",
+            "--set", "t_end=100000", "--set", "every=1", "--quiet")
+check(s3.request("GET", "/api/state")[0] == 200, "wildcard bind: Host 127.0.0.1:PORT answered")
+check(s3.request("GET", "/api/state", host="evil.example:%d" % s3.port)[0] == 403,
+      "wildcard bind: a DNS name in Host refused (403)")
+s3.proc.send_signal(signal.SIGTERM)
+check(s3.wait() == 143, "wildcard server ends on SIGTERM")
 
 # a short run: the server stops at the run's end with its status
 s2 = Server(LAMINA, SCENE, W + "_short", "--set", "t_end=0.05", "--quiet")
