@@ -18,6 +18,7 @@ int cmd_gallery(int argc, char **argv);
 int cmd_repl(int argc, char **argv);    /* the workbench, docs/workbench.md */
 int cmd_watch(int argc, char **argv);
 int cmd_sweep(int argc, char **argv);
+int cmd_serve(int argc, char **argv);   /* the workbench in a browser */
 
 /* issue 5: renderer benchmarks and animations of a run's frames */
 int cmd_bench(int argc, char **argv);

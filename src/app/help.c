@@ -48,6 +48,14 @@ static const command_help commands[] = {
      "one run per combination and a summary table; --emit-jobs prints the runs'\n"
      "commands (GNU parallel), --slurm FILE writes a Slurm job array,\n"
      "--collect summarises their folders (docs/workbench.md)"},
+    {"serve",
+     "lamina serve SCRIPT.lua [--port N] [--host ADDR] [--allow-remote]\n"
+     "             [--set name=value ...] [--paused] [--keep] [--quiet]",
+     "run a scenario and watch it in a browser: its latest frames, recorders'\n"
+     "plots, progress; pause, step, resume, change lamina.param values and live\n"
+     "settings. Port 8035 (0: a free one, printed); 127.0.0.1 unless --host and\n"
+     "--allow-remote; --paused waits after the first step; --keep serves after\n"
+     "the run's end until Ctrl-C (docs/workbench.md)"},
     {"animate",
      "lamina animate FOLDER|FRAME.png... [--out FILE.apng|FILE.mp4] [--fps N]\n"
      "               [--loop N] [--pattern GLOB] [--quiet]",

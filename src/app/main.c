@@ -13,7 +13,7 @@ int main(int argc, char **argv)
     }
     const char *cmd = argv[1];
     static const char *const known[] = {"run", "animate", "bench", "diff", "gallery",
-                                        "repl", "watch", "sweep", NULL};
+                                        "repl", "watch", "sweep", "serve", NULL};
     for (int k = 0; known[k]; k++)   /* lamina CMD ... --help (help.c) */
         if (strcmp(cmd, known[k]) == 0 && app_wants_help(argc - 2, argv + 2))
             return app_command_help(stdout, cmd, argc > 2 ? argv[2] : NULL);
@@ -25,6 +25,7 @@ int main(int argc, char **argv)
     if (strcmp(cmd, "repl") == 0) return cmd_repl(argc - 2, argv + 2);
     if (strcmp(cmd, "watch") == 0) return cmd_watch(argc - 2, argv + 2);
     if (strcmp(cmd, "sweep") == 0) return cmd_sweep(argc - 2, argv + 2);
+    if (strcmp(cmd, "serve") == 0) return cmd_serve(argc - 2, argv + 2);
     if (strcmp(cmd, "help") == 0 || strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0) {
         if (argc > 2) return app_command_help(stdout, argv[2], argc > 3 ? argv[3] : NULL);
         app_usage(stdout);

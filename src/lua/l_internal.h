@@ -41,6 +41,8 @@ int la_option(lua_State *L, const char *fn, const char *key, const char *value,
 int la_point_list(lua_State *L, const char *fn, int min, int *n);
 void la_point_at(lua_State *L, int list, int i, const char *fn, double *x, double *y);
 lamina_run *la_run(lua_State *L);
+/* l_param.c: lamina.param(name, default) */
+int la_param(lua_State *L);
 /* luaL_newmetatable with __metatable set: every userdata type uses it. */
 int la_new_metatable(lua_State *L, const char *name);
 /* A class: la_new_metatable(name) with the metamethods meta and a method

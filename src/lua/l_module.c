@@ -12,39 +12,6 @@
 #include "l_analysis.h"
 #include "l_curve.h"
 
-/* lamina.param(name, default): the --set value when given, converted to the
- * default's type, else the default. */
-static int l_param(lua_State *L)
-{
-    const char *name = luaL_checkstring(L, 1);
-    luaL_checkany(L, 2);
-    lamina_run *run = la_run(L);
-    for (int i = 0; run && i < run->nsets; i++) {
-        if (strcmp(run->sets[i].name, name) != 0) continue;
-        const char *v = run->sets[i].value;
-        run->sets[i].used = 1;
-        switch (lua_type(L, 2)) {
-        case LUA_TNUMBER:
-            if (!lua_stringtonumber(L, v))
-                return luaL_error(L, "--set %s=%s: a number is expected", name, v);
-            return 1;
-        case LUA_TBOOLEAN:
-            if (strcmp(v, "true") == 0) lua_pushboolean(L, 1);
-            else if (strcmp(v, "false") == 0) lua_pushboolean(L, 0);
-            else return luaL_error(L, "--set %s=%s: true or false is expected", name, v);
-            return 1;
-        case LUA_TSTRING:
-            lua_pushstring(L, v);
-            return 1;
-        default:
-            return luaL_error(L, "lamina.param('%s', ...): the default must be a "
-                              "number, boolean or string", name);
-        }
-    }
-    lua_pushvalue(L, 2);
-    return 1;
-}
-
 /* lamina.clock(): wall-clock seconds from an arbitrary start (monotonic),
  * for timing a run; os.clock counts processor time, which threads add up. */
 static int l_clock(lua_State *L)
@@ -57,7 +24,7 @@ static int l_clock(lua_State *L)
 
 static int luaopen_lamina(lua_State *L)
 {
-    static const luaL_Reg funcs[] = {{"param", l_param},
+    static const luaL_Reg funcs[] = {{"param", la_param},
                                      {"clock", l_clock},
                                      {"read_csv", la_read_csv},
                                      {"sim", la_sim_new},

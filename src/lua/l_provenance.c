@@ -48,4 +48,5 @@ void la_note_image(lua_State *L, const char *path)
     memcpy(run->frame_dir, path, n);
     run->frame_dir[n] = 0;
     if (n == 0) strcpy(run->frame_dir, "./");
+    if (run->observer && run->observer->image) run->observer->image(run->observer->ud, path);
 }

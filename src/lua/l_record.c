@@ -225,6 +225,18 @@ static int record_sample(lua_State *L)
     double *row = r->rows + r->nrows * (size_t)r->ncols;
     for (int i = 0; i < r->ncols; i++) row[i] = sample(L, &r->cols[i], sim, &e);
     r->nrows++;
+    const lamina_run *run = la_run(L);
+    if (run && run->observer && run->observer->record && r->ncols > 0) {
+        /* lamina serve plots the series live: named by the recorder's file */
+        const char *label = "record";
+        int top = lua_gettop(L);
+        lua_getiuservalue(L, lua_upvalueindex(1), 2);
+        if (lua_type(L, -1) == LUA_TTABLE && la_getfield(L, -1, "file") == LUA_TSTRING)
+            label = lua_tostring(L, -1);
+        run->observer->record(run->observer->ud, r, label, r->ncols, r->cols[0].name,
+                              sizeof r->cols[0], row);
+        lua_settop(L, top);
+    }
     r->dirty = 1;
     return 0;
 }

@@ -56,6 +56,11 @@ static void record(lua_State *L, const lm_sim *sim, const char *what, const char
     lua_setfield(L, -2, "value");
     lua_pushboolean(L, prompt);
     lua_setfield(L, -2, "prompt");
+    const lamina_run *run = la_run(L);
+    if (run && run->change_from) {   /* lamina serve's page */
+        lua_pushstring(L, run->change_from);
+        lua_setfield(L, -2, "from");
+    }
     lua_seti(L, -2, (lua_Integer)luaL_len(L, -2) + 1);
     lua_pop(L, 1);
 }
@@ -147,12 +152,16 @@ void la_log_change(lua_State *L, const char *what, const char *key, int validx)
     const char *name = lua_tostring(L, -1);
     const char *value = replayable(L, validx, 0);
     char line[512];
+    /* where the change came from when not the script: the repl's prompt or
+     * lamina serve's page */
+    char from[64] = "";
+    if (run->change_from) snprintf(from, sizeof from, " (%s)", run->change_from);
+    else if (prompt) snprintf(from, sizeof from, " (at the prompt)");
     if (sim)
         snprintf(line, sizeof line, "lamina: t = %.9g step %ld: %s = %s%s\n", sim->t,
-                 sim->step, name, value, prompt ? " (at the prompt)" : "");
+                 sim->step, name, value, from);
     else
-        snprintf(line, sizeof line, "lamina: %s = %s%s\n", name, value,
-                 prompt ? " (at the prompt)" : "");
+        snprintf(line, sizeof line, "lamina: %s = %s%s\n", name, value, from);
     lamina_progress_clear_line();
     fputs(line, stderr);
     if (run->log) {

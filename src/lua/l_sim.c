@@ -485,6 +485,11 @@ static void advance(lua_State *L, la_sim *s, long nsteps, double t_end)
             }
         }
         la_checkpoint_due(L, 1, s);
+        /* lamina serve: its page sees the step, may pause here or change a
+         * live setting (then the engine forgets what it computed ahead) */
+        if (run->observer && run->observer->step &&
+            run->observer->step(run->observer->ud, L, 1, s->sim))
+            lm_sim_forget_ahead(s->sim);
         if (la_progress_tick(L, s->sim)) {   /* Ctrl-C, watch: stop between steps */
             s->running = 0;
             run->active = NULL;

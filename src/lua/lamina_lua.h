@@ -23,6 +23,25 @@ typedef struct lamina_set {
     int used;                   /* asked for by lamina.param */
 } lamina_set;
 
+/* lamina serve (src/app/serve_*.c): what a run tells a watcher in the same
+ * process. Every call comes from the thread that runs the script. */
+typedef struct lamina_observer {
+    void *ud;
+    /* After every step of a sim:run / sim:step, the sim at stack index sidx:
+     * may block (a pause) and change live settings through
+     * lamina_set_live / lamina_set_param; returns 1 when it changed
+     * something the engine may have computed ahead. */
+    int (*step)(void *ud, lua_State *L, int sidx, const struct lm_sim *sim);
+    /* lamina.param answered `value` (as text; type is the default's Lua type) */
+    void (*param)(void *ud, const char *name, int type, const char *value);
+    /* an image was written at path */
+    void (*image)(void *ud, const char *path);
+    /* a recorder (id) took a row of ncols values; column k is named at
+     * names + k * stride; label names the recorder (its file, or "record") */
+    void (*record)(void *ud, const void *id, const char *label, int ncols,
+                   const char *names, size_t stride, const double *row);
+} lamina_observer;
+
 typedef struct lamina_run {
     const char *script;         /* path as given */
     char script_hash[17];       /* FNV-1a of the script's bytes, hex */
@@ -55,6 +74,9 @@ typedef struct lamina_run {
     /* the Lua state's memory (l_alloc.c): a cap, bytes (0: the default,
      * LAMINA_LUA_MEM_DEFAULT_MB; lamina run --lua-mem MB), in use, peak */
     size_t lua_mem_limit, lua_mem_used, lua_mem_peak;
+    const lamina_observer *observer;   /* lamina serve's, else NULL */
+    const char *change_from;    /* set while a change from lamina serve's page
+                                   is applied: the run log says so */
 } lamina_run;
 
 /* The default cap on a script's Lua memory, in MB: far above what any
@@ -117,5 +139,20 @@ int lamina_script_start(lua_State *L, lamina_run *run);
 int lamina_run_watched(lua_State *L, lamina_run *run, char *msg, size_t len);
 /* "name = value, ..." of what the script reported through lamina.report. */
 void lamina_report_line(lua_State *L, char *buf, size_t len);
+
+/* l_param.c, for lamina serve: while a sim steps (from an observer's step),
+ * lamina.param(name, ...) answers value from now on, converted to the type
+ * of the default the script gave; the change is logged as a live change
+ * ("param.NAME = value"). 0, or -1 with err (a name the script has not
+ * read, a value of the wrong type). */
+int lamina_set_param(lua_State *L, const char *name, const char *value, char *err,
+                     size_t len);
+/* Sets a live setting of the sim at sidx (dt, gravity "gx,gy", pic,
+ * courant) through the same path as `sim.dt = ...` in a callback (checked,
+ * logged). 0, or -1 with err. */
+int lamina_set_live(lua_State *L, int sidx, const char *key, const char *value, char *err,
+                    size_t len);
+/* The live settings the page shows and lamina_set_live takes. */
+extern const char *const lamina_live_settings[];
 
 #endif
