@@ -76,6 +76,26 @@ check(s.control("/api/param", "name=amp&value=" + "9" * 5000)[0] == 413, "a body
 status, _, _ = s.request("POST", "/api/param", None,
                          {"X-Lamina-Control": "1", "Content-Length": "100000000"})
 check(status == 413, "Content-Length 1e8: 413 before the body")
+# a chunked body (no Content-Length) that grows past the bound: the server
+# closes the connection instead of reading on
+c = socket.create_connection(("127.0.0.1", s.port), timeout=20)
+c.sendall(("POST /api/param HTTP/1.1\r\nHost: %s\r\nX-Lamina-Control: 1\r\n"
+           "Transfer-Encoding: chunked\r\n\r\n" % s.host).encode())
+closed = False
+try:
+    for _ in range(4096):   # 4 MB at most
+        c.sendall(b"400\r\n" + b"9" * 1024 + b"\r\n")
+except OSError:
+    closed = True
+if not closed:
+    try:
+        c.settimeout(20)
+        closed = c.recv(200) == b""
+    except OSError:
+        closed = True
+c.close()
+check(closed, "a chunked body over 4096 bytes: the connection is closed")
+check(s.json("/api/state") is not None, "...and the server answers on")
 
 # a malformed request line, and more idle connections than allowed from one
 # address: refused or answered, never a crash; the server answers after
