@@ -182,4 +182,22 @@ check(s3.wait() == 143, "wildcard server ends on SIGTERM")
 s2 = Server(LAMINA, SCENE, W + "_short", "--set", "t_end=0.05", "--quiet")
 check(s2.wait() == 0, "the server ends with the run (status 0)")
 check(os.path.exists(os.path.join(W + "_short", "out", "amp.csv")), "its records are written")
+# --paused: the run waits after its first step until Resume
+s4 = Server(LAMINA, SCENE, W + "_paused", "--paused", "--set", "t_end=0.05", "--quiet")
+w = wait_until(lambda: (lambda j: j if j and j["waiting"] else None)(s4.json("/api/state")))
+check(w is not None and w["step"] == 1 and w["paused"], "--paused: waits at step 1 (%s)" % (w and w["step"]))
+time.sleep(0.3)
+check(s4.proc.poll() is None, "...and stays")
+s4.control("/api/control", "action=resume")
+check(s4.wait() == 0, "Resume: the run goes to its end (status 0)")
+
+# --keep: the last state is served after the run's end; controls are
+# refused; SIGTERM ends it with the run's own status
+s5 = Server(LAMINA, SCENE, W + "_keep", "--keep", "--set", "t_end=0.02", "--quiet")
+f = wait_until(lambda: (lambda j: j if j and j["finished"] else None)(s5.json("/api/state")))
+check(f is not None and f["status"] == 0 and f["step"] == 20, "--keep: the finished run is served (%s)" % (f and f["step"]))
+st, _, body = s5.control("/api/param", "name=amp&value=2")
+check(st == 400 and b"the run has ended" in body, "a change after the end: 400 (%s)" % body)
+s5.proc.send_signal(signal.SIGTERM)
+check(s5.wait() == 0, "--keep: SIGTERM ends the server with the run's status 0")
 finish()
