@@ -103,9 +103,15 @@ static int apply_queued(serve_state *st, lua_State *L, int sidx)
     lua_getfield(L, LUA_REGISTRYINDEX, "lamina.run");
     run = lua_touserdata(L, -1);
     lua_pop(L, 1);
+    /* the queue is taken whole first: an error thrown through here (out of
+     * Lua memory) leaves it empty, not half applied twice */
+    serve_cmd cmds[SERVE_MAX_CMDS];
+    int n = st->ncmds;
+    memcpy(cmds, st->cmds, (size_t)n * sizeof *cmds);
+    st->ncmds = 0;
     int changed = 0;
-    for (int i = 0; i < st->ncmds; i++) {
-        serve_cmd *c = &st->cmds[i];
+    for (int i = 0; i < n; i++) {
+        serve_cmd *c = &cmds[i];
         char err[600];
         if (run) run->change_from = "from the page";
         int rc = c->kind == CMD_PARAM
@@ -122,7 +128,6 @@ static int apply_queued(serve_state *st, lua_State *L, int sidx)
         free(c->name);
         free(c->value);
     }
-    st->ncmds = 0;
     return changed;
 }
 
@@ -142,6 +147,34 @@ static void refresh(serve_state *st, lua_State *L, int sidx, const lm_sim *sim, 
     st->last_refresh = now;
 }
 
+/* What the run's thread does in Lua at a step boundary, under lua_pcall
+ * (with the lock held: an error must not leave it locked). */
+typedef struct step_job {
+    serve_state *st;
+    const lm_sim *sim;
+    int refresh, changed;
+} step_job;
+
+static int step_job_run(lua_State *L)
+{
+    step_job *j = lua_touserdata(L, 1);   /* the sim is argument 2 */
+    if (j->st->ncmds && apply_queued(j->st, L, 2)) j->changed = 1;
+    if (j->refresh || j->changed) refresh(j->st, L, 2, j->sim, wb_now());
+    return 0;
+}
+
+static void run_job(serve_state *st, lua_State *L, int sidx, step_job *j)
+{
+    if (!lua_checkstack(L, 4)) return;
+    lua_pushcfunction(L, step_job_run);
+    lua_pushlightuserdata(L, j);
+    lua_pushvalue(L, sidx);
+    if (lua_pcall(L, 2, 0, 0) != LUA_OK) {
+        serve_msg(st, "error: %s", lua_tostring(L, -1) ? lua_tostring(L, -1) : "?");
+        lua_pop(L, 1);
+    }
+}
+
 static int on_step(void *ud, lua_State *L, int sidx, const lm_sim *sim)
 {
     serve_state *st = ud;
@@ -150,14 +183,16 @@ static int on_step(void *ud, lua_State *L, int sidx, const lm_sim *sim)
     st->t = sim->t;
     st->step = sim->step;
     st->dt = sim->def.dt;
-    double now = wb_now();
-    int changed = st->ncmds ? apply_queued(st, L, sidx) : 0;
-    if (changed || now - st->last_refresh >= REFRESH) refresh(st, L, sidx, sim, now);
+    step_job j = {st, sim, wb_now() - st->last_refresh >= REFRESH, 0};
+    if (j.refresh || st->ncmds) run_job(st, L, sidx, &j);
     if (st->paused && st->step_budget > 0) {
         st->step_budget--;   /* "step": this one was it */
     }
     while (st->paused && st->step_budget == 0 && !lamina_interrupt_pending()) {
-        if (!st->waiting) refresh(st, L, sidx, sim, wb_now());
+        if (!st->waiting) {
+            j.refresh = 1;   /* the page sees where it waits */
+            run_job(st, L, sidx, &j);
+        }
         st->waiting = 1;
         struct timespec ts;
         clock_gettime(CLOCK_REALTIME, &ts);
@@ -167,9 +202,9 @@ static int on_step(void *ud, lua_State *L, int sidx, const lm_sim *sim)
             ts.tv_nsec -= 1000000000L;
         }
         pthread_cond_timedwait(&st->cv, &st->mu, &ts);
-        if (st->ncmds && apply_queued(st, L, sidx)) {
-            changed = 1;
-            refresh(st, L, sidx, sim, wb_now());
+        if (st->ncmds) {
+            j.refresh = 0;
+            run_job(st, L, sidx, &j);
         }
     }
     if (st->waiting) {
@@ -178,7 +213,7 @@ static int on_step(void *ud, lua_State *L, int sidx, const lm_sim *sim)
         st->rate_step = sim->step;
     }
     pthread_mutex_unlock(&st->mu);
-    return changed;
+    return j.changed;
 }
 
 static void on_param(void *ud, const char *name, int type, const char *value)

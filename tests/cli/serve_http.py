@@ -76,6 +76,26 @@ check(s.control("/api/param", "name=amp&value=" + "9" * 5000)[0] == 413, "a body
 status, _, _ = s.request("POST", "/api/param", None,
                          {"X-Lamina-Control": "1", "Content-Length": "100000000"})
 check(status == 413, "Content-Length 1e8: 413 before the body")
+# a chunked body (no Content-Length) that grows past the bound: the server
+# closes the connection instead of reading on
+c = socket.create_connection(("127.0.0.1", s.port), timeout=20)
+c.sendall(("POST /api/param HTTP/1.1\r\nHost: %s\r\nX-Lamina-Control: 1\r\n"
+           "Transfer-Encoding: chunked\r\n\r\n" % s.host).encode())
+closed = False
+try:
+    for _ in range(4096):   # 4 MB at most
+        c.sendall(b"400\r\n" + b"9" * 1024 + b"\r\n")
+except OSError:
+    closed = True
+if not closed:
+    try:
+        c.settimeout(20)
+        closed = c.recv(200) == b""
+    except OSError:
+        closed = True
+c.close()
+check(closed, "a chunked body over 4096 bytes: the connection is closed")
+check(s.json("/api/state") is not None, "...and the server answers on")
 
 # a malformed request line, and more idle connections than allowed from one
 # address: refused or answered, never a crash; the server answers after
@@ -162,4 +182,22 @@ check(s3.wait() == 143, "wildcard server ends on SIGTERM")
 s2 = Server(LAMINA, SCENE, W + "_short", "--set", "t_end=0.05", "--quiet")
 check(s2.wait() == 0, "the server ends with the run (status 0)")
 check(os.path.exists(os.path.join(W + "_short", "out", "amp.csv")), "its records are written")
+# --paused: the run waits after its first step until Resume
+s4 = Server(LAMINA, SCENE, W + "_paused", "--paused", "--set", "t_end=0.05", "--quiet")
+w = wait_until(lambda: (lambda j: j if j and j["waiting"] else None)(s4.json("/api/state")))
+check(w is not None and w["step"] == 1 and w["paused"], "--paused: waits at step 1 (%s)" % (w and w["step"]))
+time.sleep(0.3)
+check(s4.proc.poll() is None, "...and stays")
+s4.control("/api/control", "action=resume")
+check(s4.wait() == 0, "Resume: the run goes to its end (status 0)")
+
+# --keep: the last state is served after the run's end; controls are
+# refused; SIGTERM ends it with the run's own status
+s5 = Server(LAMINA, SCENE, W + "_keep", "--keep", "--set", "t_end=0.02", "--quiet")
+f = wait_until(lambda: (lambda j: j if j and j["finished"] else None)(s5.json("/api/state")))
+check(f is not None and f["status"] == 0 and f["step"] == 20, "--keep: the finished run is served (%s)" % (f and f["step"]))
+st, _, body = s5.control("/api/param", "name=amp&value=2")
+check(st == 400 and b"the run has ended" in body, "a change after the end: 400 (%s)" % body)
+s5.proc.send_signal(signal.SIGTERM)
+check(s5.wait() == 0, "--keep: SIGTERM ends the server with the run's status 0")
 finish()
