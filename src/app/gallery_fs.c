@@ -218,6 +218,11 @@ static int list_under(const char *root, const char *rel, g_strs *out, char *err,
     g_strs names = { 0 };
     int rc = entries(dir, &names, err, errlen);
     for (size_t i = 0; rc == 0 && i < names.n; i++) {
+        /* a hidden file is never a page's output (no output name may start
+         * with a dot, docs/security.md): the run's own list of outputs,
+         * .lamina-outputs, stays off the page */
+        if (names.v[i][0] == '.')
+            continue;
         char *r = rel ? g_fmt("%s/%s", rel, names.v[i]) : g_strdup(names.v[i]);
         char *full = g_fmt("%s/%s", root, r);
         struct stat st;
