@@ -81,7 +81,7 @@ static int sim_relax(lua_State *L)
             break;
         }
     }
-    sim->def.damping = was;
+    lm_sim_set_damping(sim, was);   /* the sim's own, checked when set */
     lua_pushboolean(L, done);
     lua_pushnumber(L, sim->t);
     lua_pushnumber(L, peak > 0 ? wmax / peak : 0);
