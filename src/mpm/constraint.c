@@ -186,7 +186,7 @@ static void take_off(lm_sim *sim, double *m, double *ux, double *uy)
     for (int k = 0; k < sim->npins; k++) {
         const lm_pin *pn = &sim->pins[k];
         size_t first = sim->bodies[pn->body].first;
-        for (size_t j = 0; j < pn->n; j++) {
+        for (size_t j = 0; j < pn->n && pn->point; j++) {
             size_t q = first + pn->idx[j];
             take_off_point(sim, q, sim->p.m[q], m, ux, uy);
         }
@@ -246,7 +246,7 @@ static void gather(lm_sim *sim)
     for (int k = 0; k < sim->npins; k++) {
         const lm_pin *pn = &sim->pins[k];
         size_t first = sim->bodies[pn->body].first;
-        for (size_t i = 0; i < pn->n && j < cap; i++)
+        for (size_t i = 0; i < pn->n && j < cap && pn->point; i++)
             c[j++] = (lm_con){first + pn->idx[i], 0, 0, 0, k, 0, 0};
     }
     sim->ncons = j;
@@ -330,14 +330,19 @@ static void solve(lm_sim *sim, int vel, double *ux, double *uy)
 }
 
 /* Step 3 with the walls applied to p and f, before p^L = p + dt f. Each
- * pin's reaction, the force it exerted on the material this step: the
- * impulse of the momentum solve over dt, the force solve's, what held the
- * point itself, m_q (a_pin - g) (its weight is on no node), and the force
- * at the nodes only held points reach (massless_share). */
-/* Pass 0: counts each pinned point's weight W_j at the nodes left without
- * mass (W in scratch); pass 1: each pin's reaction takes its share
- * N_qj / W_j of the force there, which only held points put there and the
- * pin absorbs (a node without mass is not moved); pass 2: W back to 0. */
+ * pin's reaction, the force it exerted on the material this step, is what
+ * changes the particles' momentum (FLIP, step 4, carries the forces only):
+ * the force solve's lambda N_i, what held the point itself,
+ * m_q (a_pin - g) (its weight is on no node), and the force at the nodes
+ * only held points reach (massless_share). The momentum solve's impulse
+ * is not in it: it makes the grid's velocity at the point the point's,
+ * which moves the material and its strain, but no particle's momentum
+ * (sum m_p dv_p = dt (reactions + weight) to rounding: measured on a
+ * string under gravity driven at one end). */
+/* At the nodes left without mass: pass 0 zeroes the scratch W, pass 1
+ * counts each pinned point's weight W_j, pass 2 gives each pin's reaction
+ * its share N_qj / W_j of the force there, which only held points put
+ * there and the pin absorbs (a node without mass is not moved). */
 static void massless_share(lm_sim *sim, double *W, int pass)
 {
     const lm_grid *g = &sim->grid;
@@ -358,12 +363,12 @@ static void massless_share(lm_sim *sim, double *W, int pass)
             long j = lm_grid_node(g, ix, iy);
             if (g->m[j] > 0 || !(N > 0)) continue;
             if (pass == 0) {
+                W[j] = 0;
+            } else if (pass == 1) {
                 W[j] += N;
-            } else if (pass == 1 && W[j] > 0) {
+            } else if (W[j] > 0) {
                 pn->rx -= g->fx[j] * N / W[j];
                 pn->ry -= g->fy[j] * N / W[j];
-            } else {
-                W[j] = 0;
             }
         }
     }
@@ -377,14 +382,8 @@ void lm_constraint_grid(lm_sim *sim)
     gather(sim);
     targets(sim, 0);
     solve(sim, 0, g->px, g->py);
-    for (int k = 0; k < sim->npins; k++) sim->pins[k].rx = sim->pins[k].ry = 0;
-    for (size_t a = 0; a < sim->ncons; a++) {
-        const lm_con *c = &sim->cons[a];
-        if (c->pin < 0) continue;
-        lm_pin *pn = &sim->pins[c->pin];
-        pn->rx += c->jx / dt;
-        pn->ry += c->jy / dt;
-    }
+    for (int k = 0; k < sim->npins; k++)
+        if (sim->pins[k].point) sim->pins[k].rx = sim->pins[k].ry = 0;
     targets(sim, 1);
     solve(sim, 0, g->fx, g->fy);
     for (size_t a = 0; a < sim->ncons; a++) {
@@ -396,7 +395,8 @@ void lm_constraint_grid(lm_sim *sim)
         pn->ry += c->jy + mq * ((pn->vy - p->vy[c->q]) / dt - sim->def.gy);
     }
     if (sim->npins) {
-        for (int pass = 0; pass < 3; pass++) massless_share(sim, sim->pin_vx, pass);
+        /* scratch: step 4 writes every node's ax afresh */
+        for (int pass = 0; pass < 3; pass++) massless_share(sim, g->ax, pass);
     }
 }
 

@@ -39,11 +39,11 @@ static void consistent_times(const lm_sim *sim, const double *ux, const double *
     const int W = g->sw;
     size_t nn = lm_grid_nodes(g);
     for (size_t i = 0; i < nn; i++) bx[i] = by[i] = 0;
-    /* a pinned point's mass is off the grid (pin.c): not in M_L, so not
-     * in M_C either (M_C 1 = M_L 1 keeps a uniform field) */
-    const int pinned_off = sim->npins && lm_constraint_active(sim);
     for (size_t q = 0; q < p->n; q++) {
-        if (pinned_off && p->pin[q]) continue;
+        /* a point-held pinned point's mass is off the grid (pin.c): not
+         * in M_L, so not in M_C either (M_C 1 = M_L 1 keeps a uniform
+         * field) */
+        if (p->pin[q] && sim->pins[p->pin[q] - 1].point) continue;
         lm_weights wt;
         lm_weights_of(sim, q, &wt);
         const double *N = wt.N;

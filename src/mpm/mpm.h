@@ -233,6 +233,8 @@ typedef struct lm_pin {
     size_t *idx;           /* the particles held, by index within the body
                               (bodies move in memory when gas splits) */
     double *x0;            /* their x, y at the step's start (2 n) */
+    int point;             /* this step: held by the point constraint (1)
+                              or by its nodes (0: pin.c) */
     double vx, vy;         /* the prescribed velocity of this step */
     double rx, ry;         /* reaction of the last step: the force the pin
                               exerted on the material (per unit depth) */

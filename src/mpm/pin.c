@@ -22,12 +22,17 @@
  * takes the pinned string from +4.59 / +3.67 % (modes 1 / 2, cell 1/32)
  * to the walled string's -0.25 / -0.99 % (docs/robustness.md).
  *
- * With sim:contact (each body its own field: contact.c, contact_correct.c)
- * a pin still holds every node its point touches (N_ip > 0), as a wall
- * does, weighted by N_ip where two pins share a node: p_i^L = m_i v_pin in
- * step 3 with the force corrected to match, the strain velocity again in
- * step 5; the correction is the reaction. The constraint is not built for
- * the bodies' own fields there. */
+ * A pin whose points lie closer together than a stencil (a pinned edge, a
+ * lid, "all": some node touched by two held points), and every pin with
+ * sim:contact (each body its own field: contact.c, contact_correct.c),
+ * still holds every node its points touch (N_ip > 0), as a wall does,
+ * weighted by N_ip where two pins share a node: p_i^L = m_i v_pin in step
+ * 3 with the force corrected to match, the strain velocity again in step
+ * 5; the correction is the reaction. There the nodes may have no free mass
+ * left once the held masses are off and the constraints' system is
+ * singular (a block's lid of 1000 points: the Gauss-Seidel sweeps ran out
+ * and the energy grew), and the constraint is not built for the bodies'
+ * own fields. The choice is made each step (classify). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -97,17 +102,55 @@ void lm_sim_set_pin_velocity(lm_sim *sim, int pin, double vx, double vy)
     sim->pins[pin].vy = vy;
 }
 
-/* Do the pins hold nodes (with contact) rather than their points? */
+/* Does any pin hold its nodes this step? */
 static int holds_nodes(const lm_sim *sim)
 {
-    return sim->npins > 0 && !lm_constraint_active(sim);
+    for (int k = 0; k < sim->npins; k++)
+        if (!sim->pins[k].point) return 1;
+    return 0;
 }
 
-/* Step 1: the heavy and pinned points' masses off the grid and the held
- * points' positions kept (constraint.c); with contact, w_i = sum N_ip and
- * sum N_ip v_pin over the held particles. */
+/* Which pins hold their points this step: those whose every point shares
+ * no node with another held point (the string's ends, a sheet's corners,
+ * the airbag's pole). Points packed closer (a pinned edge, a lid, "all")
+ * hold their nodes: there every node they touch may have no free mass
+ * left, and the constraints' system is singular (measured: a block's lid
+ * of 1000 points, the Gauss-Seidel sweeps ran out and the energy grew).
+ * With contact every pin holds its nodes. Counts in pin_w, zeroed after. */
+static void classify(lm_sim *sim)
+{
+    const lm_grid *g = &sim->grid;
+    const lm_particles *p = &sim->p;
+    const int ns = g->sw * g->sw;
+    const int point = lm_constraint_active(sim);
+    for (int pass = 0; pass < 3; pass++) {
+        for (int k = 0; k < sim->npins; k++) {
+            lm_pin *pn = &sim->pins[k];
+            size_t first = sim->bodies[pn->body].first;
+            if (pass == 1) pn->point = point;
+            for (size_t j = 0; j < pn->n && point; j++) {
+                size_t q = first + pn->idx[j];
+                lm_weights wt;
+                lm_weights_of(sim, q, &wt);
+                for (int c = 0; c < ns; c++) {
+                    if (!(wt.N[c] > 0)) continue;
+                    int i = lm_stencil_node(g, g->sw, p->node[q], c);
+                    if (pass == 0) sim->pin_w[i] += 1;
+                    else if (pass == 1 && sim->pin_w[i] > 1) pn->point = 0;
+                    else if (pass == 2) sim->pin_w[i] = 0;
+                }
+            }
+        }
+    }
+}
+
+/* Step 1: which pins hold their points; the held points' positions kept;
+ * the heavy and point-held masses off the grid (constraint.c); for the
+ * pins that hold nodes, w_i = sum N_ip and sum N_ip v_pin over their
+ * particles. */
 void lm_pin_p2g(lm_sim *sim)
 {
+    if (sim->npins) classify(sim);
     if (lm_constraint_active(sim)) lm_constraint_p2g(sim);   /* heavy ends, pins */
     for (int k = 0; k < sim->npins; k++) {
         lm_pin *pn = &sim->pins[k];
@@ -125,6 +168,7 @@ void lm_pin_p2g(lm_sim *sim)
     memset(sim->pin_w, 0, 3 * nn * sizeof(double));
     for (int k = 0; k < sim->npins; k++) {
         const lm_pin *pn = &sim->pins[k];
+        if (pn->point) continue;
         size_t first = sim->bodies[pn->body].first;
         for (size_t j = 0; j < pn->n; j++) {
             size_t q = first + pn->idx[j];
@@ -146,13 +190,14 @@ void lm_pin_p2g(lm_sim *sim)
  * changes. */
 void lm_pin_grid(lm_sim *sim)
 {
-    if (!holds_nodes(sim)) return;   /* the reaction is constraint.c's */
+    if (!holds_nodes(sim)) return;
     lm_grid *g = &sim->grid;
     const lm_particles *p = &sim->p;
     double dt = sim->def.dt;
     const int ns = g->sw * g->sw;
     for (int k = 0; k < sim->npins; k++) {
         lm_pin *pn = &sim->pins[k];
+        if (pn->point) continue;   /* its reaction is constraint.c's */
         size_t first = sim->bodies[pn->body].first;
         pn->rx = pn->ry = 0;
         for (size_t j = 0; j < pn->n; j++) {
@@ -195,7 +240,6 @@ void lm_pin_hold(const lm_sim *sim, const double *m, double *px, double *py, dou
 void lm_pin_particles(lm_sim *sim)
 {
     lm_particles *p = &sim->p;
-    const int point = !holds_nodes(sim);
     double dt = sim->def.dt;
     for (int k = 0; k < sim->npins; k++) {
         const lm_pin *pn = &sim->pins[k];
@@ -204,7 +248,7 @@ void lm_pin_particles(lm_sim *sim)
             size_t q = first + pn->idx[j];
             p->vx[q] = pn->vx;
             p->vy[q] = pn->vy;
-            if (point) {
+            if (pn->point) {
                 p->x[q] = pn->x0[2 * j] + dt * pn->vx;
                 p->y[q] = pn->x0[2 * j + 1] + dt * pn->vy;
             }
@@ -215,7 +259,7 @@ void lm_pin_particles(lm_sim *sim)
 /* Step 5, before the walls: the strain velocity at held nodes. */
 void lm_pin_velocity(lm_sim *sim)
 {
-    if (!holds_nodes(sim)) return;   /* constraint.c projects it */
+    if (!holds_nodes(sim)) return;   /* constraint.c projects the rest */
     lm_grid *g = &sim->grid;
     size_t nn = lm_grid_nodes(g);
     for (size_t i = 0; i < nn; i++) {
