@@ -5,9 +5,13 @@
 -- step.
 -- Sheet: 1.6 long, rho 1000, E 1e7, thickness 0.005, prestrain 0.01
 -- (tension 500 per unit depth), points a third of a cell apart, held by two
--- pins. Ball: radius 0.15, rho 500, E 1e5, nu 0.3 (plane strain), dropped
+-- pins. Ball: radius 0.15, rho 500, E 1e6, nu 0.3 (plane strain), dropped
 -- from 0.25 above the sheet at 1 m/s. Gravity 9.81, dt 1e-4 (Courant 0.2
--- on the sheet's wave speed at cell 0.05).
+-- on the sheet's wave speed at cell 0.05). The ball was E 1e5 until issue
+-- 30 item 3: so soft a hypoelastic ball gains 2-3 % of the scene's energy
+-- by itself, which the node-holding pins drained; the pins now hold only
+-- their points and damp nothing, and the stiffer ball keeps the energy
+-- within 0.3 % (docs/robustness.md "Heavy end points and pins").
 local M = {}
 
 -- o.cell (0.05), o.force ("segment"), o.threads (1), o.basis (lamina's default, "bspline2"). Returns sim, sheet, ball, {pin1, pin2}.
@@ -19,7 +23,7 @@ function M.setup(o)
                          boundary = {left = "free", right = "free", bottom = "free", top = "free"}}
   local sheet_mat = lamina.membrane{rho = 1000, E = 1e7, nu = 0, thickness = 0.005,
                                     law = "uniaxial"}
-  local ball_mat = lamina.elastic{rho = 500, E = 1e5, nu = 0.3, plane = "strain"}
+  local ball_mat = lamina.elastic{rho = 500, E = 1e6, nu = 0.3, plane = "strain"}
   local sheet = sim:membrane{material = sheet_mat, name = "trampoline",
                              curve = lamina.segment{from = {0.2, 0.5}, to = {1.8, 0.5}},
                              spacing = h / 3, initial_strain = 0.01,

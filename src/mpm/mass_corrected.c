@@ -40,6 +40,10 @@ static void consistent_times(const lm_sim *sim, const double *ux, const double *
     size_t nn = lm_grid_nodes(g);
     for (size_t i = 0; i < nn; i++) bx[i] = by[i] = 0;
     for (size_t q = 0; q < p->n; q++) {
+        /* a point-held pinned point's mass is off the grid (pin.c): not
+         * in M_L, so not in M_C either (M_C 1 = M_L 1 keeps a uniform
+         * field) */
+        if (p->pin[q] && sim->pins[p->pin[q] - 1].point) continue;
         lm_weights wt;
         lm_weights_of(sim, q, &wt);
         const double *N = wt.N;
@@ -60,8 +64,10 @@ static void consistent_times(const lm_sim *sim, const double *ux, const double *
 
 /* One mass-weighted field (rx, ry) (a momentum or a force) replaced by
  * M_L (2 u_L - M_L^-1 M_C u_L) = 2 r - M_C u_L, u_L = r / m constrained as
- * step 3 will constrain it: at the walls (lm_grid_apply_bc) and, at the
- * nodes a pin holds, the pin's velocity (momentum) or no acceleration
+ * step 3 will constrain it: at the walls (lm_grid_apply_bc) and, with
+ * sim:contact (where pins hold nodes; otherwise pin_w is 0 and
+ * constraint.c holds the pinned points after this), at the nodes a pin
+ * holds, the pin's velocity (momentum) or no acceleration
  * (forces: a pin moves steadily within a step; the impulse
  * (v_pin - p_i / m_i) / dt with which pin.c holds the node is no
  * acceleration of the string, and fed to the neighbours through M_C it

@@ -160,6 +160,11 @@ void lm_membrane_segment_move(lm_sim *sim)
             double ux, uy;
             remapped_velocity(sim, q, &ux, &uy);
             if (moved) lm_contact_velocity(sim, q, &ux, &uy);
+            if (p->pin[q] && sim->pins[p->pin[q] - 1].point) {
+                /* a pinned point moves with its pin exactly (pin.c) */
+                ux = p->vx[q];
+                uy = p->vy[q];
+            }
             p->x[q] = p->fpx[q] + dt * ux;
             p->y[q] = p->fpy[q] + dt * uy;
         }

@@ -223,14 +223,18 @@ typedef struct lm_body {
     char name[LM_NAME_MAX];/* for messages; "" = unnamed */
 } lm_body;
 
-/* A pin holds a set of particles to a prescribed velocity (pin.c): every
- * node a held particle touches moves with it, so the grid and the
- * particle agree; the force the pin needed is its reaction. */
+/* A pin holds a set of particles to a prescribed velocity (pin.c): the
+ * grid's velocity interpolated at each held particle is the pin's
+ * (constraint.c; with sim:contact every node a held particle touches
+ * moves with it); the force the pin needed is its reaction. */
 typedef struct lm_pin {
     int body;
     size_t n;
     size_t *idx;           /* the particles held, by index within the body
                               (bodies move in memory when gas splits) */
+    double *x0;            /* their x, y at the step's start (2 n) */
+    int point;             /* this step: held by the point constraint (1)
+                              or by its nodes (0: pin.c) */
     double vx, vy;         /* the prescribed velocity of this step */
     double rx, ry;         /* reaction of the last step: the force the pin
                               exerted on the material (per unit depth) */

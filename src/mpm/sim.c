@@ -140,7 +140,10 @@ void lm_sim_free(lm_sim *sim)
     free(sim->bodies);
     free(sim->cell_rho);
     free(sim->cell_stress);
-    for (int k = 0; k < sim->npins; k++) free(sim->pins[k].idx);
+    for (int k = 0; k < sim->npins; k++) {
+        free(sim->pins[k].idx);
+        free(sim->pins[k].x0);
+    }
     free(sim->pins);
     free(sim->links);
     free(sim->pin_w);

@@ -1,12 +1,20 @@
--- Issue 13 item 6: the trampoline (assets/lua/trampoline.lua) over 1 s with
--- lamina's defaults (the quadratic B-spline, the tension along segments)
--- and with the linear basis and segments: the total energy never rises
--- more than 1 % above its start, the sheet stays whole (a tear stops the
--- run with an error naming the membrane), and the ball bounces (goes down,
--- then up at a good fraction of its impact speed). Measured: defaults
--- +0.016 %, linear +0.53 %. Then the same scene with the papers' point
--- quadrature and basis, shown failing as measured (the sheet tears): the
--- reason segment forces exist.
+-- Issue 13 item 6, issue 30 item 3: the trampoline (assets/lua/trampoline.lua)
+-- over 1 s with lamina's defaults (the quadratic B-spline, the tension
+-- along segments): the total energy never rises more than 1 % above its
+-- start, the sheet stays whole (a tear stops the run with an error naming
+-- the membrane), the ball bounces (goes down, then up at a good fraction
+-- of its impact speed), the pins hold their points to the bit and pull
+-- the sheet. Measured: +0.270 % (the same scene with the sheet's ends on
+-- fixed walls instead of pins: +0.284 %).
+-- The ball is E 1e6 since issue 30 item 3 (it was E 1e5): this test
+-- measures the pins' energy, and the soft hypoelastic ball gains 2-3 % of
+-- the scene's energy by itself, pins or walls alike (docs/robustness.md
+-- "Heavy end points and pins"); the node-holding pins before drained that
+-- much (-15 % by t = 1) and hid it. The pins now hold only their points
+-- (pin.c, constraint.c) and damp nothing. The linear basis' run is the
+-- expected failure trampoline_linear.lua (the ball's cell-crossing gain).
+-- Then the same scene with the papers' point quadrature and basis, shown
+-- failing as measured (the sheet tears): the reason segment forces exist.
 local tramp = require("trampoline")
 
 local function bounce(basis)
@@ -22,7 +30,6 @@ local function bounce(basis)
   assert(w.y_min > 0.2, "the ball went through the sheet")
   return sim, sheet, ends
 end
-bounce("linear")
 local sim, sheet, ends = bounce(nil)
 assert(sim.basis == "bspline2", "the default basis changed")
 -- the sheet is continuous: neighbours within a cell
