@@ -35,6 +35,7 @@
 
 #include "normals.h"
 #include "normals_bins.h"
+#include "util.h"
 #include "normals_work.h"
 
 void lm_nopts_default(lm_nopts *o)
@@ -91,11 +92,7 @@ long lm_ngrid_cell(const lm_ngrid *g, const double x[3], int c[3])
 
 void lm_nbins_free(lm_nbins *b)
 {
-    free(b->start);
-    free(b->order);
-    free(b->cell);
-    free(b->sum);
-    free(b->fill);
+    LU_FREE_ALL(b->start, b->order, b->cell, b->sum, b->fill);
     memset(b, 0, sizeof *b);
 }
 
