@@ -54,14 +54,8 @@ char *g_strdup(const char *s)
 
 void g_strs_add(g_strs *l, char *owned)
 {
-    if (l->n == l->cap) {
-        size_t cap = l->cap ? 2 * l->cap : 16;
-        char **v = realloc(l->v, cap * sizeof *v);
-        if (!v)
-            out_of_memory();
-        l->v = v;
-        l->cap = cap;
-    }
+    if (lu_reserve(&l->v, &l->cap, l->n + 1, sizeof *l->v, 16) != 0)
+        out_of_memory();
     l->v[l->n++] = owned;
 }
 

@@ -13,6 +13,7 @@
 
 #include "atomic_file.h"
 #include "sweep.h"
+#include "util.h"
 
 static char *path_in(const char *folder, const char *file)
 {
@@ -144,12 +145,7 @@ void sw_row_free(sw_row *row)
         free(row->rnames[i]);
         free(row->rvalues[i]);
     }
-    free(row->pnames);
-    free(row->pvalues);
-    free(row->rnames);
-    free(row->rvalues);
-    free(row->label);
-    free(row->error);
+    LU_FREE_ALL(row->pnames, row->pvalues, row->rnames, row->rvalues, row->label, row->error);
     memset(row, 0, sizeof *row);
 }
 

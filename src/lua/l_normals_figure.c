@@ -927,7 +927,7 @@ static int l_write(lua_State *L)
         text[4].value = lr_backend_name(f->view3d);
         ntext = 5;
     }
-    int rc = lr_png_write(file, f->width, f->height, rgba, text, ntext, err, sizeof err);
+    int rc = lr_image_write(file, f->width, f->height, rgba, text, ntext, err, sizeof err);
     free(rgba);
     if (rc)
         return luaL_error(L, "%s: %s", fn, err);

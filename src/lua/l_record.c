@@ -102,71 +102,74 @@ static int sorted_keys(lua_State *L, int idx, const char *what, const char ***ou
     return n;
 }
 
-static void read_points(lua_State *L, la_record *r, lm_sim *sim)
+/* What the readers of sim:record's named tables share. */
+typedef struct entries {
+    la_record *r;
+    lm_sim *sim;
+    int fns;                    /* the recorder's function table (values) */
+} entries;
+
+/* Calls one(L, e, name) for each entry of option table `what` (argument 2)
+ * in name order, with the entry on top of the stack; one may push more,
+ * the stack is put back after it. Nothing when the option is absent. */
+static void each_entry(lua_State *L, const char *what, const entries *e,
+                       void (*one)(lua_State *L, const entries *e, const char *name))
 {
-    if (la_getfield(L, 2, "points") == LUA_TNIL) { lua_pop(L, 1); return; }
+    if (la_getfield(L, 2, what) == LUA_TNIL) { lua_pop(L, 1); return; }
     int t = lua_gettop(L);
     const char **k;
-    int n = sorted_keys(L, t, "points", &k);
+    int n = sorted_keys(L, t, what, &k);
     for (int i = 0; i < n; i++) {
+        int top = lua_gettop(L);
         la_getfield(L, t, k[i]);
-        if (!lua_istable(L, -1) || lua_rawlen(L, -1) != 2)
-            luaL_error(L, "sim:record: points.%s must be {body, index}", k[i]);
-        lua_rawgeti(L, -1, 1);
-        lm_sim *bs;
-        int b = la_check_body(L, -1, &bs);
-        if (bs != sim) luaL_error(L, "sim:record: points.%s: the body belongs to another sim", k[i]);
-        lua_rawgeti(L, -2, 2);
-        lua_Integer idx = luaL_checkinteger(L, -1);
-        long count = (long)sim->bodies[b].count;
-        long q = idx < 0 ? count + (long)idx : (long)idx - 1;
-        if (q < 0 || q >= count)
-            luaL_error(L, "sim:record: points.%s: index %d is outside the body's %d points",
-                       k[i], (int)idx, (int)count);
-        char name[64];
-        snprintf(name, sizeof name, "%s_x", k[i]);
-        la_column *c = add_column(L, r, name, SRC_POINT_X);
-        c->body = b; c->index = q;
-        snprintf(name, sizeof name, "%s_y", k[i]);
-        c = add_column(L, r, name, SRC_POINT_Y);
-        c->body = b; c->index = q;
-        lua_pop(L, 3);
+        one(L, e, k[i]);
+        lua_settop(L, top);
     }
     lua_pop(L, 2);
 }
 
-static void read_angles(lua_State *L, la_record *r, lm_sim *sim)
+/* points.NAME = {body, index}: columns NAME_x, NAME_y. */
+static void read_point(lua_State *L, const entries *e, const char *name)
 {
-    if (la_getfield(L, 2, "angle") == LUA_TNIL) { lua_pop(L, 1); return; }
-    int t = lua_gettop(L);
-    const char **k;
-    int n = sorted_keys(L, t, "angle", &k);
-    for (int i = 0; i < n; i++) {
-        la_getfield(L, t, k[i]);
-        lm_sim *bs;
-        int b = la_check_body(L, -1, &bs);
-        if (bs != sim || sim->bodies[b].count < 2)
-            luaL_error(L, "sim:record: angle.%s needs a body of this sim with 2 or more points", k[i]);
-        add_column(L, r, k[i], SRC_ANGLE)->body = b;
-        lua_pop(L, 1);
-    }
-    lua_pop(L, 2);
+    if (!lua_istable(L, -1) || lua_rawlen(L, -1) != 2)
+        luaL_error(L, "sim:record: points.%s must be {body, index}", name);
+    lua_rawgeti(L, -1, 1);
+    lm_sim *bs;
+    int b = la_check_body(L, -1, &bs);
+    if (bs != e->sim) luaL_error(L, "sim:record: points.%s: the body belongs to another sim", name);
+    lua_rawgeti(L, -2, 2);
+    lua_Integer idx = luaL_checkinteger(L, -1);
+    long count = (long)e->sim->bodies[b].count;
+    long q = idx < 0 ? count + (long)idx : (long)idx - 1;
+    if (q < 0 || q >= count)
+        luaL_error(L, "sim:record: points.%s: index %d is outside the body's %d points",
+                   name, (int)idx, (int)count);
+    char col[64];
+    snprintf(col, sizeof col, "%s_x", name);
+    la_column *c = add_column(L, e->r, col, SRC_POINT_X);
+    c->body = b; c->index = q;
+    snprintf(col, sizeof col, "%s_y", name);
+    c = add_column(L, e->r, col, SRC_POINT_Y);
+    c->body = b; c->index = q;
 }
 
-static void read_values(lua_State *L, la_record *r, int fns)
+/* angle.NAME = body: the line through its first and last points. */
+static void read_angle(lua_State *L, const entries *e, const char *name)
 {
-    if (la_getfield(L, 2, "values") == LUA_TNIL) { lua_pop(L, 1); return; }
-    int t = lua_gettop(L);
-    const char **k;
-    int n = sorted_keys(L, t, "values", &k);
-    for (int i = 0; i < n; i++) {
-        la_getfield(L, t, k[i]);
-        if (!lua_isfunction(L, -1))
-            luaL_error(L, "sim:record: values.%s must be a function(sim) -> number", k[i]);
-        la_column *c = add_column(L, r, k[i], SRC_VALUE);
-        c->which = luaL_ref(L, fns);
-    }
-    lua_pop(L, 2);
+    lm_sim *bs;
+    int b = la_check_body(L, -1, &bs);
+    if (bs != e->sim || e->sim->bodies[b].count < 2)
+        luaL_error(L, "sim:record: angle.%s needs a body of this sim with 2 or more points", name);
+    add_column(L, e->r, name, SRC_ANGLE)->body = b;
+}
+
+/* values.NAME = function(sim) -> number, kept in the function table. */
+static void read_value(lua_State *L, const entries *e, const char *name)
+{
+    if (!lua_isfunction(L, -1))
+        luaL_error(L, "sim:record: values.%s must be a function(sim) -> number", name);
+    la_column *c = add_column(L, e->r, name, SRC_VALUE);
+    c->which = luaL_ref(L, e->fns);
 }
 
 /* ---- sampling -------------------------------------------------------- */
@@ -475,11 +478,12 @@ int la_sim_record(lua_State *L)
      * damped as the recorder is made: undamped runs keep their columns */
     int nen = s->sim->def.damping > 0 ? 6 : 5;
     for (int i = 0; energy && i < nen; i++) add_column(L, r, energies[i], SRC_ENERGY)->which = i;
-    read_points(L, r, s->sim);
-    read_angles(L, r, s->sim);
     lua_getiuservalue(L, ridx, 2);
     la_getfield(L, -1, "fns");
-    read_values(L, r, lua_gettop(L));
+    const entries e = {r, s->sim, lua_gettop(L)};
+    each_entry(L, "points", &e, read_point);
+    each_entry(L, "angle", &e, read_angle);
+    each_entry(L, "values", &e, read_value);
     lua_pop(L, 2);
 
     /* the sim keeps its recorders (to flush them); the event samples */

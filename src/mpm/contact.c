@@ -24,6 +24,7 @@
 
 #include "contact.h"
 #include "step.h"
+#include "util.h"
 
 static const lm_cbox EMPTY = {0, -1, 0, -1};
 
@@ -39,14 +40,7 @@ void lm_contact_free(lm_contact *c)
 {
     if (!c) return;
     for (int k = 0; k < c->nf; k++) field_free(&c->f[k]);
-    free(c->f);
-    free(c->pairs);
-    free(c->of_body);
-    free(c->flag);
-    free(c->state);
-    free(c->qflag);
-    free(c->qi);
-    free(c);
+    LU_FREE_ALL(c->f, c->pairs, c->of_body, c->flag, c->state, c->qflag, c->qi, c);
 }
 
 /* Field index of body b, adding one if new; -1 on no memory. */

@@ -35,6 +35,7 @@
 
 #include "normals.h"
 #include "normals_bins.h"
+#include "util.h"
 #include "normals_work.h"
 
 void lm_nopts_default(lm_nopts *o)
@@ -91,26 +92,12 @@ long lm_ngrid_cell(const lm_ngrid *g, const double x[3], int c[3])
 
 void lm_nbins_free(lm_nbins *b)
 {
-    free(b->start);
-    free(b->order);
-    free(b->cell);
-    free(b->sum);
-    free(b->fill);
+    LU_FREE_ALL(b->start, b->order, b->cell, b->sum, b->fill);
     memset(b, 0, sizeof *b);
 }
 
-/* *p grown to n items of size sz when *cap is smaller (*cap updated). */
-static int grow(void **p, size_t *cap, size_t n, size_t sz)
-{
-    if (n <= *cap && *p)
-        return 0;
-    void *q = realloc(*p, (n ? n : 1) * sz);
-    if (!q)
-        return -1;
-    *p = q;
-    *cap = n;
-    return 0;
-}
+/* The bins' arrays grow by doubling from this many items (lu_reserve). */
+#define BINS_FIRST 64
 
 long lm_nbins_cell_id(const lm_ngrid *g, const int c[3])
 {
@@ -144,12 +131,14 @@ lm_nerr lm_nbins_make(const lm_ngrid *g, size_t n, const double *const x[3],
     int nz = g->dim == 3 ? g->n[2] : 1;
     b->ncells = (long)g->n[0] * g->n[1] * nz;
     size_t nsum = (size_t)(g->n[0] + 1) * (size_t)(g->n[1] + 1) * (size_t)(nz + 1);
-    size_t ncap = b->cap_cells, pcap = b->cap_points;
-    if (grow((void **)&b->start, &ncap, (size_t)b->ncells + 1, sizeof *b->start) ||
-        grow((void **)&b->fill, &b->cap_cells, (size_t)b->ncells + 1, sizeof *b->fill) ||
-        grow((void **)&b->order, &pcap, n, sizeof *b->order) ||
-        grow((void **)&b->cell, &b->cap_points, n, sizeof *b->cell) ||
-        grow((void **)&b->sum, &b->cap_sum, nsum, sizeof *b->sum)) {
+    /* start and fill share one capacity, order and cell another: each pair
+     * grows from the same capacity to the same size */
+    size_t ncap = b->cap_cells, pcap = b->cap_points, np = n ? n : 1;
+    if (lu_reserve(&b->start, &ncap, (size_t)b->ncells + 1, sizeof *b->start, BINS_FIRST) ||
+        lu_reserve(&b->fill, &b->cap_cells, (size_t)b->ncells + 1, sizeof *b->fill, BINS_FIRST) ||
+        lu_reserve(&b->order, &pcap, np, sizeof *b->order, BINS_FIRST) ||
+        lu_reserve(&b->cell, &b->cap_points, np, sizeof *b->cell, BINS_FIRST) ||
+        lu_reserve(&b->sum, &b->cap_sum, nsum, sizeof *b->sum, BINS_FIRST)) {
         snprintf(err, errlen, "out of memory binning %zu points", n);
         return LM_NERR_MEMORY;
     }

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "normals_work.h"
+#include "util.h"
 
 /* *p grown to hold n items of size sz (kept as is when it does). */
 static int grow(void **p, size_t n, size_t sz)
@@ -56,19 +57,8 @@ void lm_nwork_free(lm_nwork *w)
                 "angle %.3g degrees, mean %.3g; %lu fits fell back to the QR\n",
                 w->cmp_n, w->cmp_max, w->cmp_n ? w->cmp_sum / (double)w->cmp_n : 0.0,
                 w->fit.fallbacks);
-    free(w->idx);
-    free(w->sel);
-    free(w->sites);
-    free(w->sites_tmp);
-    free(w->nrm);
-    free(w->flags);
-    free(w->dist);
-    free(w->from);
-    free(w->done);
-    free(w->fit.S);
-    free(w->fit.rhs);
-    free(w->fit.cols);
-    free(w->fit.smooth);
+    LU_FREE_ALL(w->idx, w->sel, w->sites, w->sites_tmp, w->nrm, w->flags, w->dist, w->from,
+                w->done, w->fit.S, w->fit.rhs, w->fit.cols, w->fit.smooth);
     lm_nbins_free(&w->bins);
     memset(w, 0, sizeof *w);
 }

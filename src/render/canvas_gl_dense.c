@@ -27,6 +27,7 @@
  * to the shader as a table of what a pair of discs leaves uncovered.
  * Needs GLSL 1.30 (integer textures); an older context draws points. */
 #include "canvas_gl.h"
+#include "util.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -184,14 +185,9 @@ static void table(gl_engine *e, double r, double a)
 /* Keeps point i for later (its pixel has two). */
 static int defer(gl_engine *e, uint32_t i, size_t *nmore)
 {
-    if (*nmore == e->dense_morecap) {
-        size_t cap = e->dense_morecap ? 2 * e->dense_morecap : 4096;
-        uint32_t *p = realloc(e->dense_more, cap * sizeof *p);
-        if (!p)
-            return -1;
-        e->dense_more = p;
-        e->dense_morecap = cap;
-    }
+    if (lu_reserve(&e->dense_more, &e->dense_morecap, *nmore + 1, sizeof *e->dense_more,
+                   4096) != 0)
+        return -1;
     e->dense_more[(*nmore)++] = i;
     return 0;
 }

@@ -7,6 +7,7 @@
  * and text (a coverage texture rasterised by cairo). All output
  * premultiplied colour times coverage. */
 #include "canvas_gl.h"
+#include "util.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -370,32 +371,19 @@ void gl_flush(gl_canvas *c)
 /* A batch is drawn when it gets this big, to bound its memory. */
 #define BATCH_MAX_VERTS (6u << 16)
 
-static int grow(void **p, size_t *cap, size_t need, size_t size)
-{
-    if (need <= *cap)
-        return 0;
-    size_t n = *cap ? *cap : 1024;
-    while (n < need)
-        n *= 2;
-    void *q = realloc(*p, n * size);
-    if (!q)
-        return -1;
-    *p = q;
-    *cap = n;
-    return 0;
-}
+/* The batches grow by doubling from this many items (lu_reserve). */
+#define BATCH_FIRST 1024
 
 float *gl_shape_verts(gl_canvas *c, size_t n)
 {
     if (c->batch != LRGL_BATCH_SHAPES || c->nverts + n > BATCH_MAX_VERTS)
         gl_flush(c);
     c->batch = LRGL_BATCH_SHAPES;
-    void *p = c->verts;
-    if (grow(&p, &c->capverts, c->nverts + n, LRGL_VERT_FLOATS * sizeof(float))) {
+    if (lu_reserve(&c->verts, &c->capverts, c->nverts + n, LRGL_VERT_FLOATS * sizeof(float),
+                   BATCH_FIRST)) {
         c->failed = 1;
         return NULL;
     }
-    c->verts = p;
     float *v = c->verts + c->nverts * LRGL_VERT_FLOATS;
     c->nverts += n;
     return v;
@@ -412,18 +400,12 @@ int gl_points_room(gl_canvas *c, double r, size_t n)
     if (need > BATCH_MAX_POINTS)
         need = BATCH_MAX_POINTS;
     if (need > c->cappoints) {
-        size_t cap = c->cappoints, cap2 = c->cappoints;
-        void *a = c->pxy, *b = c->prgba;
-        if (grow(&a, &cap, need, 2 * sizeof(float))) {
+        size_t cap = c->cappoints, cap2 = c->cappoints;   /* one capacity for both */
+        if (lu_reserve(&c->pxy, &cap, need, 2 * sizeof(float), BATCH_FIRST) ||
+            lu_reserve(&c->prgba, &cap2, need, 4, BATCH_FIRST)) {
             c->failed = 1;
             return -1;
         }
-        c->pxy = a;
-        if (grow(&b, &cap2, need, 4)) {
-            c->failed = 1;
-            return -1;
-        }
-        c->prgba = b;
         c->cappoints = cap;
     }
     return 0;

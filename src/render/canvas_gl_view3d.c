@@ -25,6 +25,7 @@
  * Deterministic: one draw call in the scene's order, fixed sample grid,
  * integer averaging. */
 #include "canvas_gl.h"
+#include "util.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -118,17 +119,9 @@ static float *more(geo *g, size_t n)
 {
     if (g->failed)
         return NULL;
-    if (g->n + n > g->cap) {
-        size_t cap = g->cap ? g->cap : 1024;
-        while (cap < g->n + n)
-            cap *= 2;
-        float *q = realloc(g->v, cap * V3_FLOATS * sizeof *q);
-        if (!q) {
-            g->failed = 1;
-            return NULL;
-        }
-        g->v = q;
-        g->cap = cap;
+    if (lu_reserve(&g->v, &g->cap, g->n + n, V3_FLOATS * sizeof *g->v, 1024) != 0) {
+        g->failed = 1;
+        return NULL;
     }
     float *f = g->v + g->n * V3_FLOATS;
     g->n += n;

@@ -536,8 +536,8 @@ int lr_figure_write(const lr_figure *f, const char *path, char *err, size_t errl
         lu_err(err, errlen, "cannot write '%s': %s", path, why);
         return -1;
     }
-    int rc = lr_png_write(path, f->width, f->height, rgba, f->text, f->ntext,
-                          err, errlen);
+    int rc = lr_image_write(path, f->width, f->height, rgba, f->text, f->ntext,
+                            err, errlen);
     free(rgba);
     return rc;
 }

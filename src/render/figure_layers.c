@@ -45,34 +45,34 @@ static int clip(double *a, double *b, double lo, double hi)
 /* Lines exactly on the window's edge must survive rounding (x0 + n*h). */
 static double tolerance(double lo, double hi) { return 1e-9 * (hi - lo); }
 
-/* The part of world segment x = const, y in [ya, yb] inside the window. */
-static void draw_vline(lr_canvas *c, const fig_view *v, double x, double ya,
-                       double yb, const pen *p)
+/* The part of a grid line inside the window: x = at, y in [a, b] when
+ * vertical, else y = at, x in [a, b]. Its ends are snapped and lengthened
+ * by the pen's extend outwards (pixel y runs down, so a vertical line's
+ * low end is its larger pixel y). */
+static void draw_axis_line(lr_canvas *c, const fig_view *v, int vertical, double at,
+                           double a, double b, const pen *p)
 {
-    double t = tolerance(v->wx0, v->wx1);
-    if (x < v->wx0 - t || x > v->wx1 + t || !clip(&ya, &yb, v->wy0, v->wy1))
+    const double at0 = vertical ? v->wx0 : v->wy0, at1 = vertical ? v->wx1 : v->wy1;
+    const double lo = vertical ? v->wy0 : v->wx0, hi = vertical ? v->wy1 : v->wx1;
+    double t = tolerance(at0, at1);
+    if (at < at0 - t || at > at1 + t || !clip(&a, &b, lo, hi))
         return;
-    double px, pa, pb;
-    fig_to_pixel(v, x, ya, &px, &pa);
-    fig_to_pixel(v, x, yb, &px, &pb);
-    px = snap(px, p->width);
-    lr_canvas_line(c, px, snap(pa, p->width) + p->extend, px,
-                   snap(pb, p->width) - p->extend, p->width, p->colour, p->dash);
-}
-
-/* The part of world segment y = const, x in [xa, xb] inside the window. */
-static void draw_hline(lr_canvas *c, const fig_view *v, double y, double xa,
-                       double xb, const pen *p)
-{
-    double t = tolerance(v->wy0, v->wy1);
-    if (y < v->wy0 - t || y > v->wy1 + t || !clip(&xa, &xb, v->wx0, v->wx1))
-        return;
-    double py, pa, pb;
-    fig_to_pixel(v, xa, y, &pa, &py);
-    fig_to_pixel(v, xb, y, &pb, &py);
-    py = snap(py, p->width);
-    lr_canvas_line(c, snap(pa, p->width) - p->extend, py,
-                   snap(pb, p->width) + p->extend, py, p->width, p->colour, p->dash);
+    double pa[2], pb[2];   /* pixel x, y of the two ends */
+    if (vertical) {
+        fig_to_pixel(v, at, a, &pa[0], &pa[1]);
+        fig_to_pixel(v, at, b, &pb[0], &pb[1]);
+    } else {
+        fig_to_pixel(v, a, at, &pa[0], &pa[1]);
+        fig_to_pixel(v, b, at, &pb[0], &pb[1]);
+    }
+    const int along = vertical ? 1 : 0;
+    const double fixed = snap(pb[1 - along], p->width);
+    const double ext = vertical ? p->extend : -p->extend;
+    const double ea = snap(pa[along], p->width) + ext, eb = snap(pb[along], p->width) - ext;
+    if (vertical)
+        lr_canvas_line(c, fixed, ea, fixed, eb, p->width, p->colour, p->dash);
+    else
+        lr_canvas_line(c, ea, fixed, eb, fixed, p->width, p->colour, p->dash);
 }
 
 /* Interior line indices 1..n-1 whose position origin + i*h lies in
@@ -81,7 +81,7 @@ static void draw_hline(lr_canvas *c, const fig_view *v, double y, double xa,
 static void line_range(double origin, double h, int n, double lo, double hi,
                        int *i0, int *i1)
 {
-    /* the slack lets draw_vline/draw_hline judge lines on the window edge */
+    /* the slack lets draw_axis_line judge lines on the window edge */
     double a = ceil((lo - origin) / h - 1e-6), b = floor((hi - origin) / h + 1e-6);
     *i0 = a > 1.0 ? (a < n ? (int)a : n) : 1;
     *i1 = b < n - 1.0 ? (b > 0.0 ? (int)b : 0) : n - 1;
@@ -96,27 +96,26 @@ void fig_draw_grid(lr_canvas *c, const fig_view *v, const lr_grid *g, int skip)
     if (v->s * g->hx >= MIN_CELL_PX) {
         line_range(g->x0, g->hx, g->nx, v->wx0, v->wx1, &i0, &i1);
         for (int i = i0; i <= i1; i++)
-            draw_vline(c, v, g->x0 + i * g->hx, g->y0, gy1, &cell);
+            draw_axis_line(c, v, 1, g->x0 + i * g->hx, g->y0, gy1, &cell);
     }
     if (v->s * g->hy >= MIN_CELL_PX) {
         line_range(g->y0, g->hy, g->ny, v->wy0, v->wy1, &i0, &i1);
         for (int j = i0; j <= i1; j++)
-            draw_hline(c, v, g->y0 + j * g->hy, g->x0, gx1, &cell);
+            draw_axis_line(c, v, 0, g->y0 + j * g->hy, g->x0, gx1, &cell);
     }
-    /* a side on a mirror axis is no wall: a dashed line marks the axis */
+    /* The walls, left, right, bottom, top. A side skipped is no wall: on
+     * the left and the bottom it is a mirror axis, marked by a dashed line;
+     * on the right and the top it is left out. */
     const pen axis = { 1.0, 0.0, LR_FIG_OUTLINE, 6.0 };
-    if (skip & FIG_SKIP_LEFT)
-        draw_vline(c, v, g->x0, g->y0, gy1, &axis);
-    else
-        draw_vline(c, v, g->x0, g->y0, gy1, &outline);
-    if (!(skip & FIG_SKIP_RIGHT))
-        draw_vline(c, v, gx1, g->y0, gy1, &outline);
-    if (skip & FIG_SKIP_BOTTOM)
-        draw_hline(c, v, g->y0, g->x0, gx1, &axis);
-    else
-        draw_hline(c, v, g->y0, g->x0, gx1, &outline);
-    if (!(skip & FIG_SKIP_TOP))
-        draw_hline(c, v, gy1, g->x0, gx1, &outline);
+    const struct { int skip, mirror, vertical; double at, a, b; } side[4] = {
+        { FIG_SKIP_LEFT, 1, 1, g->x0, g->y0, gy1 }, { FIG_SKIP_RIGHT, 0, 1, gx1, g->y0, gy1 },
+        { FIG_SKIP_BOTTOM, 1, 0, g->y0, g->x0, gx1 }, { FIG_SKIP_TOP, 0, 0, gy1, g->x0, gx1 },
+    };
+    for (int k = 0; k < 4; k++) {
+        const pen *pn = !(skip & side[k].skip) ? &outline : side[k].mirror ? &axis : NULL;
+        if (pn)
+            draw_axis_line(c, v, side[k].vertical, side[k].at, side[k].a, side[k].b, pn);
+    }
 }
 
 /* ---- particles -------------------------------------------------------- */

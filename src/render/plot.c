@@ -982,7 +982,7 @@ int lr_plot_write(const lr_plot *p, const char *path, const lr_text_chunk *text,
         lu_err(err, errlen, "cannot write '%s': %s", path, why);
         return -1;
     }
-    int rc = lr_png_write(path, p->width, p->height, rgba, text, ntext, err, errlen);
+    int rc = lr_image_write(path, p->width, p->height, rgba, text, ntext, err, errlen);
     free(rgba);
     /* the plot is its picture and its data: a CSV that cannot be written
      * (a full disk) takes the picture with it (issue 31 item 6) */

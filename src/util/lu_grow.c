@@ -1,4 +1,4 @@
-/* lu_grow.c - growing arrays (util.h). */
+/* lu_grow.c - growing arrays, and freeing many at once (util.h). */
 #include "util.h"
 
 #include <stdint.h>
@@ -23,4 +23,10 @@ int lu_reserve(void *array, size_t *cap, size_t need, size_t elem, size_t first)
     memcpy(array, &p, sizeof p);
     *cap = c;
     return 0;
+}
+
+void lu_free_each(void *const *p, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        free(p[i]);
 }

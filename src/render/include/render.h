@@ -52,6 +52,15 @@ int lr_png_write(const char *path, int width, int height,
                  const unsigned char *rgba, const lr_text_chunk *text,
                  size_t ntext, char *err, size_t errlen);
 
+/* Writes drawn pixels (RGBA8, rows top-down) in the format the path names
+ * (lr_format_of): PNG through lr_png_write; for a .svg or .pdf name -1,
+ * "cannot write 'PATH': ...", since vector files are drawn, not made from
+ * pixels (lr_canvas_vector_new). The writer of frames, plots and figures
+ * (image_write.c). */
+int lr_image_write(const char *path, int width, int height,
+                   const unsigned char *rgba, const lr_text_chunk *text,
+                   size_t ntext, char *err, size_t errlen);
+
 /* Reads an 8-bit RGBA PNG (any PNG is converted to RGBA8). *rgba is malloc'd. */
 int lr_png_read(const char *path, int *width, int *height,
                 unsigned char **rgba, char *err, size_t errlen);
