@@ -10,6 +10,7 @@
 #include "normals_work.h"
 #include "particles.h"
 #include "step.h"
+#include "util.h"
 
 void lm_sim_def_default(lm_sim_def *def)
 {
@@ -51,6 +52,7 @@ static void grid_free(lm_grid *g)
     double *f[] = {g->m, g->px, g->py, g->fx, g->fy, g->vx, g->vy, g->ax, g->ay};
     for (size_t k = 0; k < sizeof f / sizeof f[0]; k++) lm_arr_free(f[k]);
     free(g->tbuf);
+    lu_budget_release(LU_MEM_ENGINE, g->tcap * sizeof(double));   /* threads.c */
 }
 
 lm_sim *lm_sim_new(const lm_sim_def *def, char *err, size_t errlen)
@@ -125,7 +127,7 @@ lm_sim *lm_sim_new(const lm_sim_def *def, char *err, size_t errlen)
     sim->p.ns = g->sw * g->sw;
     if (grid_alloc(g)) {
         lm_sim_free(sim);
-        snprintf(err, errlen, "out of memory for a %d x %d grid", g->nx, g->ny);
+        snprintf(err, errlen, "cannot make a %d x %d grid: %s", g->nx, g->ny, lu_budget_oom());
         return NULL;
     }
     return sim;
@@ -271,7 +273,8 @@ lm_status lm_sim_add_particle(lm_sim *sim, int body, double x, double y,
     }
     if (p->n == p->cap &&
         lm_particles_reserve(p, p->cap ? 2 * p->cap : 1024)) {
-        snprintf(sim->err, sizeof sim->err, "out of memory for %zu particles", p->n + 1);
+        snprintf(sim->err, sizeof sim->err, "no room for %zu particles: %s", p->n + 1,
+                 lu_budget_oom());
         return LM_ERR_MEMORY;
     }
     size_t q = p->n++;

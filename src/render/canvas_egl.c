@@ -14,6 +14,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "util.h"
+
 /* One display for the process, opened by the first EGL canvas or probe. */
 static EGLDisplay dpy = EGL_NO_DISPLAY;
 static const char *dpy_kind = "";     /* which EGL platform it came from */
@@ -229,7 +231,15 @@ const gl_platform gl_egl_platform = {
 
 lr_canvas *lr_canvas_egl_new(int width, int height, char *err, size_t errlen)
 {
-    return gl_canvas_new(&gl_egl_platform, width, height, err, errlen);
+    size_t charged;   /* the pixels, against the memory cap (canvas.c) */
+    if (lr_canvas_charge(width, height, &charged, err, errlen) != 0)
+        return NULL;
+    lr_canvas *c = gl_canvas_new(&gl_egl_platform, width, height, err, errlen);
+    if (c)
+        c->charged = charged;
+    else
+        lu_budget_release(LU_MEM_RENDER, charged);
+    return c;
 }
 
 /* Whether EGL works here, found once: a display, a context, and a pixel

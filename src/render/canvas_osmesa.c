@@ -8,6 +8,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "util.h"
+
 static int create(gl_engine *e, char *err, size_t errlen)
 {
     /* 8 stencil bits for fills' winding numbers; no depth, no accumulation */
@@ -75,5 +77,13 @@ const gl_platform gl_osmesa_platform = {
 
 lr_canvas *lr_canvas_osmesa_new(int width, int height, char *err, size_t errlen)
 {
-    return gl_canvas_new(&gl_osmesa_platform, width, height, err, errlen);
+    size_t charged;   /* the pixels, against the memory cap (canvas.c) */
+    if (lr_canvas_charge(width, height, &charged, err, errlen) != 0)
+        return NULL;
+    lr_canvas *c = gl_canvas_new(&gl_osmesa_platform, width, height, err, errlen);
+    if (c)
+        c->charged = charged;
+    else
+        lu_budget_release(LU_MEM_RENDER, charged);
+    return c;
 }
