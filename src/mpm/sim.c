@@ -75,8 +75,8 @@ lm_sim *lm_sim_new(const lm_sim_def *def, char *err, size_t errlen)
         snprintf(err, errlen, "unknown basis %d (linear, gimp, bspline2)", (int)def->basis);
         return NULL;
     }
-    if (!(def->courant > 0)) {
-        snprintf(err, errlen, "courant must be positive (got %g)", def->courant);
+    if (!(def->courant > 0) || !isfinite(def->courant)) {   /* inf: no check at all */
+        snprintf(err, errlen, "courant must be positive and finite (got %g)", def->courant);
         return NULL;
     }
     /* The axisymmetric form (axisym.c): the left side is the axis. */
@@ -404,7 +404,8 @@ lm_status lm_sim_set_pic(lm_sim *sim, double pic)
 
 lm_status lm_sim_set_courant(lm_sim *sim, double courant)
 {
-    if (!(courant > 0)) return refuse_setting(sim, "courant must be positive", courant);
+    if (!(courant > 0) || !isfinite(courant))
+        return refuse_setting(sim, "courant must be positive and finite", courant);
     sim->def.courant = courant;
     return LM_OK;
 }
