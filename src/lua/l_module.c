@@ -164,8 +164,12 @@ int lamina_run_script(lua_State *L, lamina_run *run)
     }
     if (rc != LUA_OK) {
         lamina_progress_clear_line();   /* the message starts a line of its own */
-        const char *msg = lua_tostring(L, -1);
-        fprintf(stderr, "lamina: %s\n", msg ? msg : "(error object is not a string)");
+        size_t len = 0;
+        const char *msg = lua_tolstring(L, -1, &len);
+        fputs("lamina: ", stderr);   /* the script's text, without terminal escapes */
+        if (msg) la_write_clean(stderr, msg, len);
+        else fputs("(error object is not a string)", stderr);
+        fputc('\n', stderr);
         if (msg && strstr(msg, "memory limit"))
             la_budget_hint();
         else if (msg && strstr(msg, "not enough memory") && lu_budget_refused())
