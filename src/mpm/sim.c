@@ -126,8 +126,11 @@ lm_sim *lm_sim_new(const lm_sim_def *def, char *err, size_t errlen)
     lm_grid_layout(g, def->basis);
     sim->p.ns = g->sw * g->sw;
     if (grid_alloc(g)) {
-        lm_sim_free(sim);
+        /* the message before the free: g is inside sim (the old message
+         * read it after, a use-after-free ASan found once the memory cap
+         * made this path common) */
         snprintf(err, errlen, "cannot make a %d x %d grid: %s", g->nx, g->ny, lu_budget_oom());
+        lm_sim_free(sim);
         return NULL;
     }
     return sim;
