@@ -57,6 +57,17 @@ static int parse_args(int argc, char **argv, lamina_run *run, const char **repor
                 return -1;
             }
             run->lua_mem_limit = (size_t)(mb * 1048576.0);
+        } else if (lu_opt_value(argc, argv, &i, "--memory", &v)) {
+            /* the process's one cap over the engine, the pictures and Lua
+             * (src/util/lu_budget.c), MB; over LAMINA_MEMORY_MB */
+            char *end = NULL;
+            double mb = v ? strtod(v, &end) : 0;
+            if (!v || !*v || *end || !(mb >= 16 && mb <= 1048576)) {
+                fprintf(stderr, "lamina run: --memory needs a size in MB from 16 to 1048576 "
+                        "(default %d, or LAMINA_MEMORY_MB)\n", LU_BUDGET_DEFAULT_MB);
+                return -1;
+            }
+            lu_budget_set_limit((size_t)(mb * 1048576.0));
         } else if (lu_opt_value(argc, argv, &i, "--backend", &v)) {
             /* sim:frame's default renderer for this run (docs/rendering.md) */
             lr_backend which;

@@ -140,7 +140,8 @@ static int run_once(const watch_opts *o, long k, watch_poll *poll, int *stopped)
             snprintf(line + n, sizeof line - (size_t)n, "; %s", report);
     }
     fflush(stderr);
-    printf("%s\n", line);
+    la_write_clean(stdout, line, strlen(line));   /* msg and report are the script's text */
+    fputc('\n', stdout);
     fflush(stdout);
     if (run.log) {
         /* a log that could not be written (--log /dev/full) is an error,

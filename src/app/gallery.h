@@ -163,6 +163,9 @@ int g_outputs(const char *dir, g_strs *images, g_strs *data, char *err, size_t e
 /* The image the index shows: the header's `thumb` if present, else the last. */
 const char *g_key_image(const g_script *s, const g_strs *images);
 void g_markdown_cell(FILE *f, const char *s);
+/* s in Markdown text: no raw HTML tag, no control character but line breaks
+ * and tabs (gallery_index.c). */
+void g_markdown_text(FILE *f, const char *s);
 void g_html(FILE *f, const char *s);
 /* s percent-encoded as one URL path segment (all but A-Z a-z 0-9 - . _ ~) */
 void g_url(FILE *f, const char *s);

@@ -51,6 +51,31 @@ const char *g_key_image(const g_script *s, const g_strs *images)
 
 /* ---- escaping ---------------------------------------------------------- */
 
+/* One character of a script's text in Markdown, which passes raw HTML on
+ * to the page: a '<' that could open a tag, comment or declaration is
+ * written &lt; (issue 31 item 8: "-- title: <img src=x onerror=...>" ran in
+ * a viewer); "r <= 0.1" stays as it is. Other control characters than the
+ * line breaks become spaces. 1 when c was written. */
+static int markdown_char(FILE *f, const char *s)
+{
+    unsigned char c = (unsigned char)*s, n = (unsigned char)s[1];
+    if (c == '<' && (n == '/' || n == '!' || n == '?' || (unsigned)((n | 0x20) - 'a') < 26u)) {
+        fputs("&lt;", f);
+        return 1;
+    }
+    if ((c < 0x20 && c != '\n' && c != '\r' && c != '\t') || c == 0x7f) {
+        fputc(' ', f);
+        return 1;
+    }
+    return 0;
+}
+
+void g_markdown_text(FILE *f, const char *s)
+{
+    for (; s && *s; s++)
+        if (!markdown_char(f, s)) fputc(*s, f);
+}
+
 void g_markdown_cell(FILE *f, const char *s)
 {
     for (; s && *s; s++) {
@@ -58,7 +83,7 @@ void g_markdown_cell(FILE *f, const char *s)
             fputs("\\|", f);
         else if (*s == '\n' || *s == '\r')
             fputc(' ', f);
-        else
+        else if (!markdown_char(f, s))
             fputc(*s, f);
     }
 }
@@ -198,8 +223,11 @@ static char *run_time(const lu_json *meta)
 
 static void page_field(FILE *f, const char *heading, const char *text)
 {
-    if (text && *text)
-        fprintf(f, "\n## %s\n\n%s\n", heading, text);
+    if (text && *text) {
+        fprintf(f, "\n## %s\n\n", heading);
+        g_markdown_text(f, text);
+        fputc('\n', f);
+    }
 }
 
 int g_write_page(const g_options *o, const g_script *s, const lu_json *meta, char *err,
@@ -214,9 +242,14 @@ int g_write_page(const g_options *o, const g_script *s, const lu_json *meta, cha
     FILE *f = t.f;
     fprintf(f, "<!-- written by `lamina gallery` from %s.lua: edit the script, not "
                "this page (docs/gallery.md) -->\n\n", s->stem);
-    fprintf(f, "# %s\n\n", s->h.title ? s->h.title : s->stem);
-    if (s->h.source)
-        fprintf(f, "**Source:** %s\n\n", s->h.source);
+    fputs("# ", f);
+    g_markdown_text(f, s->h.title ? s->h.title : s->stem);
+    fputs("\n\n", f);
+    if (s->h.source) {
+        fputs("**Source:** ", f);
+        g_markdown_text(f, s->h.source);
+        fputs("\n\n", f);
+    }
     fprintf(f, "**Script:** [`%s.lua`](%s) · lamina %s · run time %s\n\n", s->stem,
             rel ? rel : s->path, lu_json_string(meta, "version") ? lu_json_string(meta, "version")
                                                               : LAMINA_VERSION, rt);

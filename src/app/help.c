@@ -16,10 +16,12 @@ static const command_help commands[] = {
     {"run",
      "lamina run SCRIPT.lua [--set name=value ...] [--backend cairo|osmesa|egl|gl]\n"
      "           [--threads N] [--report FILE] [--out-root DIR] [--lua-mem MB]\n"
-     "           [--restart CHECKPOINT] [--quiet]",
+     "           [--memory MB] [--restart CHECKPOINT] [--quiet]",
      "run a scenario; its frames and files go where it says, under the working\n"
      "directory or --out-root DIR; --report FILE also writes lamina.report values\n"
      "as JSON; --lua-mem MB caps the script's Lua memory (default 1024);\n"
+     "--memory MB caps the engine, the pictures and Lua together (default 4096,\n"
+     "or LAMINA_MEMORY_MB);\n"
      "--restart continues a run from a sim:checkpoint file (docs/api.md)"},
     {"diff",
      "lamina diff EXPECTED.png ACTUAL.png [--out DIFF.png] [--threshold T]\n"

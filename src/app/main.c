@@ -1,12 +1,33 @@
 /* main.c - the `lamina` command: dispatch to its sub-commands. */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "app.h"
+#include "util.h"
+
+/* LAMINA_MEMORY_MB: the process's one memory cap (src/util/lu_budget.c;
+ * default LU_BUDGET_DEFAULT_MB), for every command. 0, or -1 after saying
+ * what is wrong with it. */
+static int memory_from_env(void)
+{
+    const char *v = getenv("LAMINA_MEMORY_MB");
+    if (!v) return 0;
+    char *end = NULL;
+    double mb = strtod(v, &end);
+    if (!*v || *end || !(mb >= 16 && mb <= 1048576)) {
+        fprintf(stderr, "lamina: LAMINA_MEMORY_MB='%s': needs a size in MB from 16 to 1048576 "
+                "(default %d)\n", v, LU_BUDGET_DEFAULT_MB);
+        return -1;
+    }
+    lu_budget_set_limit((size_t)(mb * 1048576.0));
+    return 0;
+}
 
 int main(int argc, char **argv)
 {
     app_wait_policy(argv);
+    if (memory_from_env() != 0) return 2;
     if (argc < 2) {
         app_usage(stderr);
         return 2;

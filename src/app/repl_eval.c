@@ -52,7 +52,10 @@ int repl_call(lua_State *L, lamina_run *run)
     lamina_progress_reset();
     if (rc != LUA_OK) {
         fflush(stdout);
-        fprintf(stderr, "%s\n", lua_tostring(L, -1));
+        size_t len = 0;
+        const char *msg = lua_tolstring(L, -1, &len);
+        if (msg) la_write_clean(stderr, msg, len);   /* the script's text: no escapes */
+        fputc('\n', stderr);
         fflush(stderr);
         lua_settop(L, fn - 1);
         return REPL_ERROR;

@@ -260,9 +260,15 @@ static void md_field(FILE *f, const char *s)
         if (!*end && snprintf(num, sizeof num, "%.6g", v) > 0) s = num;
     }
     fputs(" ", f);
+    /* a reported string is the script's: no raw HTML in the page (Markdown
+     * viewers render it: "<script>" ran in some), no terminal escape in the
+     * copy printed (issue 31 item 8) */
     for (; s && *s; s++) {
+        const char *ent = lu_xml_entity(*s);
         if (*s == '|') fputs("\\|", f);
-        else if (*s == '\n' || *s == '\r') fputc(' ', f);
+        else if (*s == '"') fputc('"', f);   /* text, not an attribute */
+        else if (ent) fputs(ent, f);
+        else if ((unsigned char)*s < 0x20 || *s == 0x7f) fputc(' ', f);
         else fputc(*s, f);
     }
     fputs(" |", f);

@@ -170,6 +170,7 @@ int la_sim_body(lua_State *L)
     const char *fn = "sim:body";
     la_sim *s = la_check_sim(L, 1);
     la_check_keys(L, 2, fn, keys);
+    la_opt_string(L, 2, fn, "name", NULL);   /* text or nothing (issue 31 item 7) */
     if (s->running) return luaL_error(L, "%s: bodies cannot be added during a run", fn);
     lm_sim *sim = s->sim;
 

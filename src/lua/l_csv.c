@@ -10,6 +10,7 @@
  * lines and lines starting with '#' are skipped). Reading is confined as
  * writing is (l_path.c: under the working directory or --out-root) and
  * bounded (a regular file of at most 256 MB, render/read_file.c). */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -91,11 +92,16 @@ int la_read_csv(lua_State *L)
             size_t n;
             s = field(s, eol, &f, &n);
             lua_pushlstring(L, f, n);
-            int isnum = lua_stringtonumber(L, lua_tostring(L, -1)) != 0;
-            if (!isnum || n == 0)
-                return luaL_error(L, "%s: '%s' line %d, column '%s': '%s' is not a number", fn,
-                                  path, line, (lua_rawgeti(L, names, c), lua_tostring(L, -1)),
-                                  lua_tostring(L, -3));
+            const char *text = lua_tostring(L, -1);
+            int isnum = lua_stringtonumber(L, text) != 0;
+            /* 1e999 reads as inf: refused as NaN is (issue 31 item 8); the
+             * value shown is the field (it was "(null)": the message read
+             * a stack slot that depended on argument order) */
+            if (!isnum || n == 0 || !isfinite(lua_tonumber(L, -1))) {
+                lua_rawgeti(L, names, c);
+                return luaL_error(L, "%s: '%s' line %d, column '%s': '%s' is not a finite "
+                                  "number", fn, path, line, lua_tostring(L, -1), text);
+            }
             lua_remove(L, -2);            /* the string; the number stays */
             lua_rawgeti(L, names, c);
             lua_rawget(L, res);           /* the column's table */

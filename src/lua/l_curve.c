@@ -56,7 +56,11 @@ static int l_arc(lua_State *L)
     c->r = la_number(L, 1, fn, "radius");
     c->a0 = la_opt_number(L, 1, fn, "from", 0);
     c->a1 = la_opt_number(L, 1, fn, "to", 360);
-    if (!(c->r > 0)) luaL_error(L, "%s: radius must be positive", fn);
+    if (!(c->r > 0) || !isfinite(c->r))
+        luaL_error(L, "%s: 'radius' must be a finite positive number (got %f)", fn, c->r);
+    if (!isfinite(c->a0) || !isfinite(c->a1) || !isfinite(c->cx) || !isfinite(c->cy))
+        luaL_error(L, "%s: 'center', 'from' and 'to' must be finite (got from = %f, to = %f)",
+                   fn, c->a0, c->a1);   /* NaN passed the span check (issue 31 item 7) */
     if (c->a0 == c->a1 || fabs(c->a1 - c->a0) > 360)
         luaL_error(L, "%s: from = %f, to = %f must differ by at most 360 degrees",
                    fn, c->a0, c->a1);

@@ -508,7 +508,7 @@ static field colours(lua_State *L, const la_frame_ctx *ctx, int fidx, int pidx,
     const char *map = string(L, ctx, fidx, pidx, "colourmap");
     char why[128];
     if (map && lr_cmap_parse(map, &p->cmap, why, sizeof why) != 0)
-        luaL_error(L, "%s: %s", ctx->fn, why);
+        luaL_error(L, "%s: 'colourmap': %s", ctx->fn, why);
     if (get(L, fidx, pidx, "range") != LUA_TNIL) {
         double r[2];
         numbers(L, ctx, lua_gettop(L), "range", "{min, max}", 2, r);
@@ -521,7 +521,7 @@ static field colours(lua_State *L, const la_frame_ctx *ctx, int fidx, int pidx,
     lua_pop(L, 1);
     p->colourbar = boolean(L, ctx, fidx, pidx, "colourbar", f != F_BODY || contours);
     if (p->colourbar && f == F_BODY && !contours)
-        luaL_error(L, "%s: a colour bar needs colour = a field (e.g. \"speed\"), "
+        luaL_error(L, "%s: 'colourbar' needs colour = a field (e.g. \"speed\"), "
                    "not \"body\"", ctx->fn);
     p->colourbar_label = field_label(f);
     return f;
@@ -712,10 +712,8 @@ void la_frame_panel(lua_State *L, la_frame_ctx *ctx, int fidx, int pidx, int sid
     scalebar(L, ctx, fidx, pidx, p);
     la_sim *lother = split(L, ctx, fidx, pidx, p);
     lm_sim *other = lother ? lother->sim : NULL;
-    /* grid: any Lua truth value, as sim:frame always took it */
-    get(L, fidx, pidx, "grid");
-    int grid = lua_isnil(L, -1) || lua_toboolean(L, -1);
-    lua_pop(L, 1);
+    /* grid = true | false (issue 31 item 7: any type was taken for true) */
+    int grid = boolean(L, ctx, fidx, pidx, "grid", 1);
     /* normals = true | false | k (every k-th point's); nil: thinned to the
      * spacing (issue 32: a frame shows what the papers show by default) */
     int with_normals = -1;
@@ -758,18 +756,20 @@ void la_frame_panel(lua_State *L, la_frame_ctx *ctx, int fidx, int pidx, int sid
             luaL_error(L, "%s: 'split_at' needs 'split' (the other simulation)", ctx->fn);
     }
     lua_pop(L, 1);
-    int nlevels = 0;
-    if (contours) {
-        nlevels = 10;
-        if (get(L, fidx, pidx, "contour_levels") != LUA_TNIL) {
-            int isnum;
-            double v = lua_tonumberx(L, -1, &isnum);
-            if (!isnum || v < 2 || v > 64 || v != floor(v))
-                luaL_error(L, "%s: 'contour_levels' must be a whole number in [2, 64]", ctx->fn);
-            nlevels = (int)v;
-        }
-        lua_pop(L, 1);
+    /* contour_levels: checked also without contours (issue 31 item 7: any
+     * value passed unseen), where it is refused as meaningless */
+    int nlevels = contours ? 10 : 0;
+    if (get(L, fidx, pidx, "contour_levels") != LUA_TNIL) {
+        int isnum;
+        double v = lua_tonumberx(L, -1, &isnum);
+        if (!isnum || !(v >= 2 && v <= 64) || v != floor(v))
+            luaL_error(L, "%s: 'contour_levels' must be a whole number in [2, 64] (got %s)",
+                       ctx->fn, isnum ? lua_tostring(L, -1) : luaL_typename(L, -1));
+        if (!contours)
+            luaL_error(L, "%s: 'contour_levels' needs contours = \"pressure\"", ctx->fn);
+        nlevels = (int)v;
     }
+    lua_pop(L, 1);
     /* particles = true | false | "membranes" */
     int which = 0;
     int pt = get(L, fidx, pidx, "particles");

@@ -4,6 +4,7 @@
 
 #include <lauxlib.h>
 #include <lua.h>
+#include <stdio.h>
 
 #include "lamina_lua.h"
 #include "mpm.h"
@@ -83,6 +84,8 @@ void la_guard_patterns(lua_State *L);
  * `key` (NULL when absent). la_check_text refuses control characters in a
  * name that goes into a file's text (CSV headers). */
 const char *la_check_output_path(lua_State *L, const char *fn, int idx);
+/* l_print.c: `print` writes as la_write_clean (lamina_lua.h) does. */
+void la_open_print(lua_State *L);
 /* the same confinement for a file a script reads (no ownership check) */
 const char *la_check_input_path(lua_State *L, const char *fn, int idx);
 /* l_outputs.c: whether lamina wrote the existing file `where` (rel: its

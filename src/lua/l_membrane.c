@@ -87,6 +87,7 @@ int la_sim_membrane(lua_State *L)
     const char *fn = "sim:membrane";
     la_sim *s = la_check_sim(L, 1);
     la_check_keys(L, 2, fn, keys);
+    la_opt_string(L, 2, fn, "name", NULL);   /* text or nothing (issue 31 item 7) */
     if (s->running) return luaL_error(L, "%s: membranes cannot be added during a run", fn);
     lm_sim *sim = s->sim;
     const lm_grid *g = &sim->grid;

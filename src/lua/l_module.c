@@ -11,6 +11,7 @@
 
 #include "l_analysis.h"
 #include "l_curve.h"
+#include "util.h"
 
 /* lamina.clock(): wall-clock seconds from an arbitrary start (monotonic),
  * for timing a run; os.clock counts processor time, which threads add up. */
@@ -97,8 +98,17 @@ static int check_sets(const lamina_run *run)
     return bad;
 }
 
+/* How the process's memory cap is raised (lu_budget.c, docs/security.md). */
+static void la_budget_hint(void)
+{
+    if (lu_budget_refused())
+        fprintf(stderr, "lamina: the cap counts the engine's arrays, the pictures and the "
+                "Lua heap together (LAMINA_MEMORY_MB=N or lamina run --memory N raises it)\n");
+}
+
 int lamina_run_script(lua_State *L, lamina_run *run)
 {
+    lu_budget_forget_refusal();
     lua_pushcfunction(L, lamina_msghandler);
     int base = lua_gettop(L);
     if (la_load_script(L, run->script) != LUA_OK) {
@@ -111,16 +121,29 @@ int lamina_run_script(lua_State *L, lamina_run *run)
     int rc = lua_pcall(L, 0, 0, base);
     if (rc == LUA_ERRMEM) {   /* no traceback: the handler is not called */
         lamina_progress_clear_line();
-        fprintf(stderr, "lamina: %s: the script's Lua memory reached its cap of %zu MB "
-                "(lamina run --lua-mem MB raises it)\n", run->script, run->lua_mem_limit >> 20);
+        if (lu_budget_refused())   /* the process's cap, not the Lua state's */
+            fprintf(stderr, "lamina: %s: %s\n", run->script, lu_budget_oom());
+        else
+            fprintf(stderr, "lamina: %s: the script's Lua memory reached its cap of %zu MB "
+                    "(lamina run --lua-mem MB raises it)\n", run->script,
+                    run->lua_mem_limit >> 20);
+        la_budget_hint();
         lua_settop(L, 0);
         return LAMINA_EXIT_USAGE;
     }
     if (rc != LUA_OK) {
         lamina_progress_clear_line();   /* the message starts a line of its own */
-        const char *msg = lua_tostring(L, -1);
-        fprintf(stderr, "lamina: %s\n", msg ? msg : "(error object is not a string)");
-        if (msg && strstr(msg, "not enough memory"))   /* raised again by a callback */
+        size_t len = 0;
+        const char *msg = lua_tolstring(L, -1, &len);
+        fputs("lamina: ", stderr);   /* the script's text, without terminal escapes */
+        if (msg) la_write_clean(stderr, msg, len);
+        else fputs("(error object is not a string)", stderr);
+        fputc('\n', stderr);
+        if (msg && strstr(msg, "memory limit"))
+            la_budget_hint();
+        else if (msg && strstr(msg, "not enough memory") && lu_budget_refused())
+            fprintf(stderr, "lamina: %s\n", lu_budget_oom());   /* raised again by a callback */
+        else if (msg && strstr(msg, "not enough memory"))
             fprintf(stderr, "lamina: the script's Lua memory is capped at %zu MB "
                     "(lamina run --lua-mem MB raises it)\n", run->lua_mem_limit >> 20);
         int status = la_exit_status_of(L, msg);

@@ -138,12 +138,21 @@ static void read_point(lua_State *L, const entries *e, const char *name)
     int b = la_check_body(L, -1, &bs);
     if (bs != e->sim) luaL_error(L, "sim:record: points.%s: the body belongs to another sim", name);
     lua_rawgeti(L, -2, 2);
-    lua_Integer idx = luaL_checkinteger(L, -1);
+    /* a number, shown as given: luaL_checkinteger said "bad argument #-1
+     * to '?'" of NaN and (int) made 1e18 -1486618624 (issue 31 item 7) */
+    int isnum;
+    double v = lua_tonumberx(L, -1, &isnum);
     long count = (long)e->sim->bodies[b].count;
-    long q = idx < 0 ? count + (long)idx : (long)idx - 1;
+    if (!isnum || v != floor(v) || !(fabs(v) <= (double)count))
+        luaL_error(L, "sim:record: points.%s: index %s is not a point of the body: a whole "
+                   "number from 1 to %d, or from -1 back to -%d", name,
+                   isnum ? lua_tostring(L, -1) : luaL_typename(L, -1), (int)count,
+                   (int)count);   /* at most LM_MAX_PARTICLES: an int */
+    long idx = (long)v;
+    long q = idx < 0 ? count + idx : idx - 1;
     if (q < 0 || q >= count)
         luaL_error(L, "sim:record: points.%s: index %d is outside the body's %d points",
-                   name, (int)idx, (int)count);
+                   name, (int)idx, (int)count);   /* |idx| <= count: an int */
     char col[64];
     snprintf(col, sizeof col, "%s_x", name);
     la_column *c = add_column(L, e->r, col, SRC_POINT_X);
@@ -309,6 +318,8 @@ static int rec_mean(lua_State *L)
     int c = find_column(r, name);
     if (c < 0) return luaL_error(L, "rec:mean: no column '%s'", name);
     double t0 = luaL_optnumber(L, 3, -HUGE_VAL), t1 = luaL_optnumber(L, 4, HUGE_VAL);
+    if (isnan(t0) || isnan(t1))   /* NaN compared false: the whole record (issue 31 item 7) */
+        return luaL_error(L, "rec:mean: the times must be numbers, not NaN (got %f, %f)", t0, t1);
     double area = 0, span = 0;
     for (size_t i = 1; i < r->nrows; i++) {
         double ta = r->rows[(i - 1) * r->ncols], tb = r->rows[i * r->ncols];
@@ -470,7 +481,9 @@ int la_sim_record(lua_State *L)
 
     add_column(L, r, "t", SRC_T);
     add_column(L, r, "step", SRC_STEP);
-    la_getfield(L, 2, "energy");
+    int et = la_getfield(L, 2, "energy");
+    if (et != LUA_TNIL && et != LUA_TBOOLEAN)   /* issue 31 item 7: any type was taken */
+        luaL_error(L, "%s: 'energy' must be true or false (got %s)", fn, luaL_typename(L, -1));
     int energy = lua_toboolean(L, -1);
     lua_pop(L, 1);
     r->energy = energy;

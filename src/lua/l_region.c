@@ -1,5 +1,6 @@
 /* l_region.c - lamina.disk, lamina.rect, lamina.polygon (and, handled where
  * regions are used, a plain function f(x, y) -> bool). */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -27,7 +28,9 @@ int la_disk(lua_State *L)
     double cx, cy;
     la_pair(L, 1, fn, "center", &cx, &cy);
     double r = la_number(L, 1, fn, "radius");
-    if (!(r > 0)) luaL_error(L, "%s: radius must be positive (got %f)", fn, r);
+    if (!(r > 0) || !isfinite(r) || !isfinite(cx) || !isfinite(cy))   /* issue 31 item 7 */
+        luaL_error(L, "%s: 'radius' must be a finite positive number and 'center' finite "
+                   "(got radius %f at {%f, %f})", fn, r, cx, cy);
     lm_region *g = push_region(L, LM_REGION_DISK);
     g->cx = cx;
     g->cy = cy;
@@ -53,8 +56,11 @@ int la_rect(lua_State *L)
         x1 = la_number(L, 1, fn, "x1");
         y1 = la_number(L, 1, fn, "y1");
     }
+    if (!isfinite(x0) || !isfinite(y0) || !isfinite(x1) || !isfinite(y1))   /* issue 31 item 7 */
+        luaL_error(L, "%s: 'x0', 'y0', 'x1', 'y1' must be finite (got {%f, %f, %f, %f})", fn,
+                   x0, y0, x1, y1);
     if (!(x1 > x0) || !(y1 > y0))
-        luaL_error(L, "%s: empty rectangle (need x1 > x0 and y1 > y0)", fn);
+        luaL_error(L, "%s: empty rectangle (need 'x1' > 'x0' and 'y1' > 'y0')", fn);
     lm_region *g = push_region(L, LM_REGION_RECT);
     g->x0 = x0; g->y0 = y0; g->x1 = x1; g->y1 = y1;
     return 1;

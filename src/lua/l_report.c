@@ -181,7 +181,10 @@ static void print_entry(lua_State *L, int e)
         luaL_addchar(&b, ')');
     }
     luaL_pushresult(&b);
-    printf("%s\n", lua_tostring(L, -1));
+    size_t len;
+    const char *line = lua_tolstring(L, -1, &len);
+    la_write_clean(stdout, line, len);   /* a value's text may hold escapes (l_print.c) */
+    fputc('\n', stdout);
     lua_settop(L, top - 6);
 }
 

@@ -302,7 +302,7 @@ static int sb_io_write(lua_State *L)
     for (int i = 1; i <= n; i++) {
         size_t len;
         const char *s = luaL_checklstring(L, i, &len);
-        fwrite(s, 1, len, stdout);
+        la_write_clean(stdout, s, len);   /* no terminal escapes (l_print.c) */
     }
     return 0;
 }
@@ -361,6 +361,7 @@ void la_open_sandbox(lua_State *L, const char *script)
     lua_setfield(L, -2, "write");
     lua_setglobal(L, "io");
 
+    la_open_print(L);
     wrap_global(L, "load", sb_load);
     wrap_global(L, "setmetatable", sb_setmetatable);
     wrap_global(L, "collectgarbage", sb_collectgarbage);

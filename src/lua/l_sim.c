@@ -564,8 +564,12 @@ static int sim_run(lua_State *L)
 static int sim_step(lua_State *L)
 {
     la_sim *s = la_check_sim(L, 1);
-    lua_Integer n = luaL_optinteger(L, 2, 1);
-    if (n < 0) return luaL_error(L, "sim:step: n must be >= 0 (got %d)", (int)n);
+    /* read as a number: luaL_optinteger said "bad argument #1 to 'step'
+     * (number has no integer representation)" of NaN (issue 31 item 7) */
+    double nd = lua_isnoneornil(L, 2) ? 1 : luaL_checknumber(L, 2);
+    if (!(nd >= 0 && nd <= STEP_CAP) || nd != floor(nd))
+        return luaL_error(L, "sim:step: n must be a whole number from 0 to 1e12 (got %f)", nd);
+    lua_Integer n = (lua_Integer)nd;
     if (!s->running) {
         /* --restart: the call's last step is the same; the steps the
          * checkpoint already took are not taken again */

@@ -299,7 +299,9 @@ int la_sim_vtk(lua_State *L)
     const char *fn = "sim:vtk";
     la_sim *s = la_check_sim(L, 1);
     la_check_keys(L, 2, fn, keys);
-    la_getfield(L, 2, "file");
+    int ft = la_getfield(L, 2, "file");
+    if (ft != LUA_TNIL && ft != LUA_TSTRING)   /* a number made "nan.pvd" (issue 31 item 7) */
+        return luaL_error(L, "%s: 'file' must be a string (got %s)", fn, luaL_typename(L, -1));
     size_t len;
     const char *file = lua_tolstring(L, -1, &len);
     if (!file || len == 0) return luaL_error(L, "%s: 'file' (a path without extension) is required", fn);

@@ -86,6 +86,11 @@ typedef struct lamina_run {
 
 /* A Lua state with the safe standard libraries and `lamina` as a global;
  * its memory is capped at run->lua_mem_limit (run must outlive it). */
+/* n bytes of a script's text to f with its control characters written as
+ * Lua escapes ("\27"): no terminal escape sequence gets through (l_print.c,
+ * docs/security.md). */
+void la_write_clean(FILE *f, const char *s, size_t n);
+
 lua_State *lamina_open_state(lamina_run *run);
 /* `lamina run --out-root DIR`: the folder every file a script writes must
  * stay in (else the working directory). 0, or -1 with err. */

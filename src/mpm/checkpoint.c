@@ -31,6 +31,7 @@
 
 #include "particles.h"
 #include "step.h"
+#include "util.h"
 
 #define MAGIC 0x4b434d4cu   /* "LMCK" */
 
@@ -359,7 +360,8 @@ lm_status lm_sim_state_load(lm_sim *sim, const unsigned char *buf, size_t len)
     b += sizeof c;
     /* everything checked: from here on nothing can fail but memory */
     if (n > sim->p.cap && lm_particles_reserve(&sim->p, n)) {
-        snprintf(sim->err, sizeof sim->err, "out of memory for the checkpoint's %zu particles", n);
+        snprintf(sim->err, sizeof sim->err, "no room for the checkpoint's %zu particles: %s", n,
+                 lu_budget_oom());
         return LM_ERR_MEMORY;
     }
     for (int k = 0; k < sim->nmats; k++) {

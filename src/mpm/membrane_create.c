@@ -87,7 +87,7 @@ static lm_status check(lm_sim *sim, const lm_membrane_def *def)
     for (size_t k = 0; def->strain && k < def->n; k++) {
         if (!(def->strain[k] > -5 && def->strain[k] < 5)) {
             snprintf(sim->err, sizeof sim->err,
-                     "%s initial strain %s at point %zu must lie in (-5, 5)", what,
+                     "%s: 'initial_strain' %s at point %zu must lie in (-5, 5)", what,
                      fmt(def->strain[k]).s, k + 1);
             return LM_ERR_INPUT;
         }

@@ -10,6 +10,7 @@
 #include "normals_work.h"
 #include "particles.h"
 #include "step.h"
+#include "util.h"
 
 void lm_sim_def_default(lm_sim_def *def)
 {
@@ -51,6 +52,7 @@ static void grid_free(lm_grid *g)
     double *f[] = {g->m, g->px, g->py, g->fx, g->fy, g->vx, g->vy, g->ax, g->ay};
     for (size_t k = 0; k < sizeof f / sizeof f[0]; k++) lm_arr_free(f[k]);
     free(g->tbuf);
+    lu_budget_release(LU_MEM_ENGINE, g->tcap * sizeof(double));   /* threads.c */
 }
 
 lm_sim *lm_sim_new(const lm_sim_def *def, char *err, size_t errlen)
@@ -73,8 +75,8 @@ lm_sim *lm_sim_new(const lm_sim_def *def, char *err, size_t errlen)
         snprintf(err, errlen, "unknown basis %d (linear, gimp, bspline2)", (int)def->basis);
         return NULL;
     }
-    if (!(def->courant > 0)) {
-        snprintf(err, errlen, "courant must be positive (got %g)", def->courant);
+    if (!(def->courant > 0) || !isfinite(def->courant)) {   /* inf: no check at all */
+        snprintf(err, errlen, "courant must be positive and finite (got %g)", def->courant);
         return NULL;
     }
     /* The axisymmetric form (axisym.c): the left side is the axis. */
@@ -124,8 +126,11 @@ lm_sim *lm_sim_new(const lm_sim_def *def, char *err, size_t errlen)
     lm_grid_layout(g, def->basis);
     sim->p.ns = g->sw * g->sw;
     if (grid_alloc(g)) {
+        /* the message before the free: g is inside sim (the old message
+         * read it after, a use-after-free ASan found once the memory cap
+         * made this path common) */
+        snprintf(err, errlen, "cannot make a %d x %d grid: %s", g->nx, g->ny, lu_budget_oom());
         lm_sim_free(sim);
-        snprintf(err, errlen, "out of memory for a %d x %d grid", g->nx, g->ny);
         return NULL;
     }
     return sim;
@@ -274,7 +279,8 @@ lm_status lm_sim_add_particle(lm_sim *sim, int body, double x, double y,
     }
     if (p->n == p->cap &&
         lm_particles_reserve(p, p->cap ? 2 * p->cap : 1024)) {
-        snprintf(sim->err, sizeof sim->err, "out of memory for %zu particles", p->n + 1);
+        snprintf(sim->err, sizeof sim->err, "no room for %zu particles: %s", p->n + 1,
+                 lu_budget_oom());
         return LM_ERR_MEMORY;
     }
     size_t q = p->n++;
@@ -404,7 +410,8 @@ lm_status lm_sim_set_pic(lm_sim *sim, double pic)
 
 lm_status lm_sim_set_courant(lm_sim *sim, double courant)
 {
-    if (!(courant > 0)) return refuse_setting(sim, "courant must be positive", courant);
+    if (!(courant > 0) || !isfinite(courant))
+        return refuse_setting(sim, "courant must be positive and finite", courant);
     sim->def.courant = courant;
     return LM_OK;
 }

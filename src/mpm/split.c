@@ -18,6 +18,7 @@
 
 #include "particles.h"
 #include "step.h"
+#include "util.h"
 
 static void copy_particle(lm_particles *p, size_t to, size_t from)
 {
@@ -255,7 +256,8 @@ lm_status lm_step_split(lm_sim *sim)
                        lm_particles_reserve(p, n_new > 2 * p->cap ? n_new : 2 * p->cap))) {
         free(flag);
         if (total == 0) return LM_OK;
-        snprintf(sim->err, sizeof sim->err, "out of memory splitting gas points (%zu)", n_new);
+        snprintf(sim->err, sizeof sim->err, "no room splitting gas points (%zu): %s", n_new,
+                 lu_budget_oom());
         return LM_ERR_MEMORY;
     }
     /* shift[b]: points inserted before body b. Bodies move up, the last

@@ -9,6 +9,7 @@
 
 #include "step.h"
 #include "threads.h"
+#include "util.h"
 
 int lm_sim_threads(const lm_sim *sim)
 {
@@ -89,10 +90,17 @@ lm_status lm_threads_reserve(lm_sim *sim)
     int nt = lm_sim_threads(sim);
     size_t need = (size_t)(nt - 1) * LM_SCATTER_FIELDS * lm_grid_nodes(&sim->grid);
     if (need <= sim->grid.tcap) return LM_OK;
-    double *b = realloc(sim->grid.tbuf, need * sizeof *b);
+    /* counted against the process's memory cap (lu_budget.c): with 8
+     * threads the copies are larger than the grid itself */
+    size_t more = (need - sim->grid.tcap) * sizeof(double);
+    double *b = NULL;
+    if (lu_budget_charge(LU_MEM_ENGINE, more) == 0) {
+        b = realloc(sim->grid.tbuf, need * sizeof *b);
+        if (!b) lu_budget_release(LU_MEM_ENGINE, more);
+    }
     if (!b) {
         snprintf(sim->err, sizeof sim->err,
-                 "out of memory for the grid copies of %d threads", nt);
+                 "cannot make the grid copies of %d threads: %s", nt, lu_budget_oom());
         return LM_ERR_MEMORY;
     }
     sim->grid.tbuf = b;

@@ -145,8 +145,23 @@ static int finite2(double a, double b) { return isfinite(a) && isfinite(b); }
 
 void lr_canvas_free(lr_canvas *c)
 {
-    if (c)
+    if (c) {
+        size_t charged = c->charged;
         c->ops->destroy(c);
+        lu_budget_release(LU_MEM_RENDER, charged);
+    }
+}
+
+int lr_canvas_charge(int width, int height, size_t *charged, char *err, size_t errlen)
+{
+    size_t bytes = 4 * (size_t)width * (size_t)height;
+    if (lu_budget_charge(LU_MEM_RENDER, bytes) != 0) {
+        lu_err(err, errlen, "cannot create a %d x %d canvas: %s", width, height,
+               lu_budget_oom());
+        return -1;
+    }
+    *charged = bytes;
+    return 0;
 }
 
 int lr_canvas_width(const lr_canvas *c) { return c ? c->width : 0; }

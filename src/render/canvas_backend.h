@@ -38,7 +38,14 @@ typedef struct lr_canvas_ops {
 struct lr_canvas {
     const lr_canvas_ops *ops;
     int width, height;
+    size_t charged;   /* bytes counted against the memory cap (lr_canvas_charge) */
 };
+
+/* A raster canvas's pixels (4 bytes each) counted against the process's
+ * memory cap (src/util/lu_budget.c, issue 31 item 5), before they are
+ * allocated: 0, or -1 with "cannot create a W x H canvas: memory limit ..."
+ * in err. lr_canvas_free gives c->charged back. */
+int lr_canvas_charge(int width, int height, size_t *charged, char *err, size_t errlen);
 
 /* ---- shared by the backends ------------------------------------------- */
 

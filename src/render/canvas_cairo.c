@@ -109,11 +109,16 @@ lr_canvas *lr_canvas_cairo_new(int width, int height, char *err, size_t errlen)
      * x 16384 image needs 1 GB (issue 18) */
     char what[64];
     snprintf(what, sizeof what, "cannot create a %d x %d canvas", width, height);
+    size_t charged;
+    if (lr_canvas_charge(width, height, &charged, err, errlen) != 0)
+        return NULL;
     cc_canvas *c = canvas_alloc(width, height);
     if (!c) {
+        lu_budget_release(LU_MEM_RENDER, charged);
         lu_err(err, errlen, "%s: %s", what, "out of memory");
         return NULL;
     }
+    c->base.charged = charged;   /* lr_canvas_free gives it back */
     c->surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height);
     cairo_status_t st = canvas_start(c);
     if (st != CAIRO_STATUS_SUCCESS) {

@@ -14,6 +14,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "util.h"
+
 /* One display for the process, opened by the first EGL canvas or probe. */
 static EGLDisplay dpy = EGL_NO_DISPLAY;
 static const char *dpy_kind = "";     /* which EGL platform it came from */

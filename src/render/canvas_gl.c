@@ -304,3 +304,17 @@ static unsigned char *gl_read(lr_canvas *base)
     }
 static const lr_canvas_ops osmesa_ops = GL_OPS(LR_BACKEND_OSMESA);
 static const lr_canvas_ops egl_ops = GL_OPS(LR_BACKEND_EGL);
+
+lr_canvas *gl_canvas_new_charged(const gl_platform *p, int width, int height, char *err,
+                                 size_t errlen)
+{
+    size_t charged;
+    if (lr_canvas_charge(width, height, &charged, err, errlen) != 0)
+        return NULL;
+    lr_canvas *c = gl_canvas_new(p, width, height, err, errlen);
+    if (c)
+        c->charged = charged;
+    else
+        lu_budget_release(LU_MEM_RENDER, charged);
+    return c;
+}

@@ -122,11 +122,19 @@ struct gl_platform {
     int slot;                   /* which spare context is its own: 0, 1 */
     /* A new context in e->ctx, not current yet. */
     int (*create)(gl_engine *e, char *err, size_t errlen);
-    /* Makes c's context current drawing into a new target of c's size (a
+    /* gl_canvas_new with its pixels counted against the memory cap
+ * (lr_canvas_charge, canvas.c), released again if it fails. */
+lr_canvas *gl_canvas_new_charged(const gl_platform *p, int width, int height, char *err,
+                                 size_t errlen);
+/* Makes c's context current drawing into a new target of c's size (a
      * buffer or a framebuffer object); checks the size against the
      * implementation's limits. */
     int (*target_new)(gl_canvas *c, char *err, size_t errlen);
-    /* Makes c's context current with its target (once target_new worked). */
+    /* gl_canvas_new with its pixels counted against the memory cap
+ * (lr_canvas_charge, canvas.c), released again if it fails. */
+lr_canvas *gl_canvas_new_charged(const gl_platform *p, int width, int height, char *err,
+                                 size_t errlen);
+/* Makes c's context current with its target (once target_new worked). */
     void (*use)(gl_canvas *c);
     /* Frees c's target (c's context is current). */
     void (*target_free)(gl_canvas *c);
@@ -147,13 +155,17 @@ struct gl_platform {
     };                                                                          \
     lr_canvas *ctor(int width, int height, char *err, size_t errlen)           \
     {                                                                           \
-        return gl_canvas_new(&var, width, height, err, errlen);                 \
+        return gl_canvas_new_charged(&var, width, height, err, errlen);         \
     }
 
 /* canvas_gl.c */
 /* A canvas of platform p; NULL with "cannot create canvas: ..." in err. */
 lr_canvas *gl_canvas_new(const gl_platform *p, int width, int height, char *err,
                          size_t errlen);
+/* gl_canvas_new with its pixels counted against the memory cap
+ * (lr_canvas_charge, canvas.c), released again if it fails. */
+lr_canvas *gl_canvas_new_charged(const gl_platform *p, int width, int height, char *err,
+                                 size_t errlen);
 /* Makes c's context current (one per thread at a time; cheap when it
  * already is). */
 void gl_use(gl_canvas *c);

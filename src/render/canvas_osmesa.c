@@ -8,6 +8,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "util.h"
+
 static int create(gl_engine *e, char *err, size_t errlen)
 {
     /* 8 stencil bits for fills' winding numbers; no depth, no accumulation */

@@ -77,4 +77,36 @@ void lu_free_each(void *const *p, size_t n);
  * last word (*i moves past a separate value). */
 int lu_opt_value(int argc, char **argv, int *i, const char *name, const char **value);
 
+/* ---- lu_budget.c: one memory cap over Lua, the engine and the renderer --- */
+
+/* What charged the memory: the engine's arrays, the Lua state, canvases. */
+typedef enum lu_mem_kind { LU_MEM_ENGINE, LU_MEM_LUA, LU_MEM_RENDER, LU_MEM_KINDS } lu_mem_kind;
+
+/* The process-wide cap unless LAMINA_MEMORY_MB or `lamina run --memory MB`
+ * says otherwise (docs/security.md "Memory"): a 10^7-particle run takes
+ * 2.6 GB (docs/performance.md), a 16384^2 canvas 1 GiB. */
+#define LU_BUDGET_DEFAULT_MB 4096
+
+void lu_budget_set_limit(size_t bytes);
+size_t lu_budget_limit(void);
+size_t lu_budget_used(lu_mem_kind k);
+size_t lu_budget_total(void);
+/* 0 with `bytes` counted, or -1 when they would pass the cap (after one
+ * reclaim, for the engine and the renderer): the caller fails as out of
+ * memory and reports lu_budget_oom(). */
+int lu_budget_charge(lu_mem_kind k, size_t bytes);
+void lu_budget_release(lu_mem_kind k, size_t bytes);
+/* fn(ud) frees what it can (the Lua state's full collection); called only
+ * on the registering thread, before an engine or renderer charge is
+ * refused. Cleared by lu_budget_clear_reclaim(ud). */
+void lu_budget_set_reclaim(void (*fn)(void *), void *ud);
+void lu_budget_clear_reclaim(void *ud);
+/* Whether a charge of this thread was refused since the last
+ * lu_budget_forget_refusal(), and why: "memory limit N MB reached (engine:
+ * .., lua: .., render: ..; KIND asked for M MB more)", or "out of memory"
+ * when none was. */
+int lu_budget_refused(void);
+const char *lu_budget_oom(void);
+void lu_budget_forget_refusal(void);
+
 #endif

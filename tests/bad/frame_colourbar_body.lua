@@ -1,5 +1,5 @@
 -- expect: 2
--- stderr: frame_colourbar_body\.lua:7: sim:frame: a colour bar needs colour = a field
+-- stderr: frame_colourbar_body\.lua:7: sim:frame: 'colourbar' needs colour = a field
 -- Colours by body have no scale to show.
 local sim = lamina.sim{ dt = 1e-3 }
 local m = lamina.elastic{ rho = 1, E = 1, nu = 0.3 }

@@ -37,5 +37,5 @@ sim:frame{ file = out .. "/contours_nobar.png", width = 240, height = 160, conto
 sim:frame{ file = out .. "/contours_speed.png", width = 240, height = 160, contours = "pressure",
            colour = "speed" }
 local ok, err = pcall(sim.frame, sim, { file = out .. "/x.png", colourbar = true })
-assert(not ok and tostring(err):find("a colour bar needs colour = a field"), err)
+assert(not ok and tostring(err):find("'colourbar' needs colour = a field"), err)
 print("frame_tension_contours: ok")
