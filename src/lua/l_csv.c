@@ -92,8 +92,8 @@ int la_read_csv(lua_State *L)
             size_t n;
             s = field(s, eol, &f, &n);
             lua_pushlstring(L, f, n);
-            const char *text = lua_tostring(L, -1);
-            int isnum = lua_stringtonumber(L, text) != 0;
+            const char *field_text = lua_tostring(L, -1);
+            int isnum = lua_stringtonumber(L, field_text) != 0;
             /* 1e999 reads as inf: refused as NaN is (issue 31 item 8); the
              * value shown is the field (it was "(null)": the message read
              * a stack slot that depended on argument order) */

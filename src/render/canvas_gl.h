@@ -122,19 +122,11 @@ struct gl_platform {
     int slot;                   /* which spare context is its own: 0, 1 */
     /* A new context in e->ctx, not current yet. */
     int (*create)(gl_engine *e, char *err, size_t errlen);
-    /* gl_canvas_new with its pixels counted against the memory cap
- * (lr_canvas_charge, canvas.c), released again if it fails. */
-lr_canvas *gl_canvas_new_charged(const gl_platform *p, int width, int height, char *err,
-                                 size_t errlen);
-/* Makes c's context current drawing into a new target of c's size (a
+    /* Makes c's context current drawing into a new target of c's size (a
      * buffer or a framebuffer object); checks the size against the
      * implementation's limits. */
     int (*target_new)(gl_canvas *c, char *err, size_t errlen);
-    /* gl_canvas_new with its pixels counted against the memory cap
- * (lr_canvas_charge, canvas.c), released again if it fails. */
-lr_canvas *gl_canvas_new_charged(const gl_platform *p, int width, int height, char *err,
-                                 size_t errlen);
-/* Makes c's context current with its target (once target_new worked). */
+    /* Makes c's context current with its target (once target_new worked). */
     void (*use)(gl_canvas *c);
     /* Frees c's target (c's context is current). */
     void (*target_free)(gl_canvas *c);
