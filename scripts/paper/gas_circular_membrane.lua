@@ -82,7 +82,7 @@ lamina.plot{ file = out .. "/fig13_pressure.png", csv = true, width = 640, heigh
              series = { { x = t, y = pr, label = "connectivity normals" } } }
 lamina.plot{ file = out .. "/hoop_stress.png", csv = true, width = 640, height = 360,
              title = "mean hoop stress", xlabel = "t", ylabel = "stress", legend = "top right",
-             yrange = {-500, 12500},
+             yrange = {-500, 14000},   -- headroom: the legend above the undamped peaks
              series = { { x = free.t, y = free.hoop, label = "MPM, mu = 0.2 alone (undamped)", color = 5 },
                         { x = t, y = hoop, label = string.format("MPM, damping %g", damping), color = 1 },
                         { x = t, y = prt, label = "p r / t", dashed = true, color = 8 } } }
