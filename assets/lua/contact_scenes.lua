@@ -52,20 +52,22 @@ function M.disks_wire(o)
   return sim, wire, d1, d2, h
 end
 
--- [T] §5.9 / A.1.6's ball and net as scripts/paper/contact_ball_net.lua
--- reads it: a plane-stress ball of radius 1.5 at (5.625, 5), speed 1, and
--- a straight unstressed uniaxial net at x = 7.5 held by the box's fixed
--- walls; o.cell (0.25; dt 1e-3 scaled with it), o.law ("release"), o.mu.
--- Returns sim, ball, net.
+-- [T] §5.9 / A.1.6's ball and net: by default the deck's ball (A.4.13, Box
+-- 16: rex = 1.5 at (5.625, 5)), speed 1, and a straight unstressed uniaxial
+-- net at x = 7.5 held by the box's fixed walls; o.R, o.x0 and o.xn move the
+-- ball's radius, its centre's x and the net's line (scripts/paper/
+-- contact_ball_net.lua runs the text's R = 3); o.cell (0.25; dt 1e-3 scaled
+-- with it), o.law ("release"), o.mu. Returns sim, ball, net.
 function M.ball_net(o)
   local h = o.cell or 0.25
   local sim = lamina.sim{ basis = "linear", domain = {0, 0, 10, 10}, cell = h, dt = 1e-3 * h / 0.25 }
   local ballm = lamina.elastic{ rho = 1, E = 1e4, nu = 0.3, plane = "stress" }
   local netm = lamina.membrane{ rho = 0.5, E = 1e4, nu = 0, thickness = 0.0125, law = "uniaxial" }
-  local net = sim:membrane{ material = netm, curve = lamina.segment{ from = {7.5, 0}, to = {7.5, 10} },
+  local R, x0, xn = o.R or 1.5, o.x0 or 5.625, o.xn or 7.5
+  local net = sim:membrane{ material = netm, curve = lamina.segment{ from = {xn, 0}, to = {xn, 10} },
                             spacing = h / 3, force = "segment", name = "net" }
   local ball = sim:body{ material = ballm, ppc = 4, velocity = {1, 0}, name = "ball",
-                         region = lamina.disk{ center = {5.625, 5}, radius = 1.5 } }
+                         region = lamina.disk{ center = {x0, 5}, radius = R } }
   sim:contact{ ball, net, law = o.law or "release", mu = o.mu }
   return sim, ball, net
 end

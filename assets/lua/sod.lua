@@ -49,7 +49,11 @@ end
 -- midway between the post-shock plateau and the right state (the last such
 -- crossing from the left, interpolated); the plateau's mean density and
 -- pressure over the particles between the contact and the shock, a fifth of
--- that gap kept clear at each end.
+-- that gap kept clear at each end; and the left plateau's (issue 32) mean
+-- density, pressure and velocity between the rarefaction's tail and the
+-- contact, likewise. The tail moves at u* - c*L, where c*L = cL (p*/pL)^((g-1)/(2g))
+-- is the sound speed behind the isentropic fan (Toro, Riemann Solvers,
+-- §4.4.3): x_tail = 0.5 + (u* - c*L) t, x_contact = 0.5 + u* t.
 function M.measure(f, t)
   local ex = M.exact
   local r = { x_shock = 0.5 + ex.shock_speed * t, x_contact = 0.5 + ex.u_star * t }
@@ -67,6 +71,20 @@ function M.measure(f, t)
     if f.x[i] > a and f.x[i] < b then sr, sp, n = sr + f.rho[i], sp + f.p[i], n + 1 end
   end
   r.n, r.rho_plateau, r.p_plateau = n, n > 0 and sr / n or nil, n > 0 and sp / n or nil
+  local g, rl, pl, cl = ex.gamma, ex.left[1], ex.left[3], ex.left[4]
+  local c_star_left = cl * (ex.p_star / pl)^((g - 1) / (2 * g))
+  r.x_tail = 0.5 + (ex.u_star - c_star_left) * t
+  local lgap = r.x_contact - r.x_tail
+  r.left_a, r.left_b = r.x_tail + 0.2 * lgap, r.x_contact - 0.2 * lgap
+  local lr, lp, lu, ln = 0, 0, 0, 0
+  for i = 1, #f.x do
+    if f.x[i] > r.left_a and f.x[i] < r.left_b then
+      lr, lp, lu, ln = lr + f.rho[i], lp + f.p[i], lu + f.u[i], ln + 1
+    end
+  end
+  if ln > 0 then
+    r.n_left, r.rho_left, r.p_left, r.u_left = ln, lr / ln, lp / ln, lu / ln
+  end
   return r
 end
 

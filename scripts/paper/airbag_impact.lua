@@ -94,17 +94,19 @@ local function series(field)
   for _, v in ipairs(names) do s[#s + 1] = { x = runs[v].t, y = runs[v][field], label = label[v] or v } end
   return s
 end
+-- legends placed off the curves (issue 32: they sat on the peaks)
 lamina.plot{ file = out .. "/probe_displacement.png", csv = true, width = 640, height = 360,
              title = "probe displacement into the bag (Fig 17's quantity; its curves unavailable)",
-             xlabel = "t (ms)", ylabel = "u (mm)", series = series("u") }
+             xlabel = "t (ms)", ylabel = "u (mm)", legend = "best", series = series("u") }
 lamina.plot{ file = out .. "/probe_velocity.png", csv = true, width = 640, height = 360,
              title = "probe velocity (positive: into the bag)", xlabel = "t (ms)",
-             ylabel = "v (m/s)", series = series("v") }
+             ylabel = "v (m/s)", legend = "best", series = series("v") }
 lamina.plot{ file = out .. "/bag_pressure.png", csv = true, width = 640, height = 360,
-             title = "mean bag pressure", xlabel = "t (ms)", ylabel = "p (Pa)", series = series("p") }
+             title = "mean bag pressure", xlabel = "t (ms)", ylabel = "p (Pa)", legend = "best",
+             series = series("p") }
 lamina.plot{ file = out .. "/energy.png", csv = true, width = 640, height = 360,
              title = "energy per radian (" .. (label[names[1]] or names[1]) .. ")", xlabel = "t (ms)",
-             ylabel = "J / rad",
+             ylabel = "J / rad", legend = "best",
              series = { { x = main.t, y = main.kin, label = "kinetic" },
                         { x = main.t, y = main.strain, label = "strain (bag, probe, tether)" },
                         { x = main.t, y = main.internal, label = "gas internal" },

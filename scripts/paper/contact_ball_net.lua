@@ -9,38 +9,51 @@
 --   close-up (right) shows the contact normals of the ball and the net at
 --   every other node where they meet ([T] Fig 101), with the node's state
 --   (grey: moved together, green: released, magenta: slid)
--- checks: the time the ball leaves the net (paper about 2.8: when its
---   velocity settles) and its speed afterwards (paper about -0.7, §5.9), the
+-- checks: the time the ball leaves the net (paper: "at about t=2.8 the ball
+--   releases", [T] §5.9, Figs 41-42) and its speed afterwards (paper:
+--   "constant at about -0.7", §5.9, Fig 42), each within 10 % of the
+--   paper's value (the text's "about", read as its last digit's 10 %); the
 --   total energy's spread once it has left (the net keeps ringing); beside
 --   them ours, a rigid ball in the potential of a massless string that
---   wraps it (assets/lua/ball_net_ref.lua): it turns at 2.92, settles at
---   4.75 and leaves at -1 (no loss); lamina turns and settles within 1 % of
---   it and leaves at -0.86, nearer -1 on finer cells (-0.92 at 0.125,
---   tests/physics/contact_ball_net_ref.lua) — so this net, not lamina's
---   contact, is why the release comes later than the paper's
--- assumed: the texts disagree (docs/physics.md V10). This page follows App.
---   A.1.6, whose deck it is: a plane-stress ball of radius 1.5 (the deck's
---   rex = 1.5; §5.9's "R = 3" would not fit the deck's 10 x 10 box with the
---   net) at (5.625, 5), v0 = 1, and a uniaxial net (§5.9 has a plane-strain
---   ball and a plane-stress net). The net's own deck (input file 2) is not
---   printed: here a straight net from (7.5, 0) to (7.5, 10), held by the
---   fixed walls at its ends, rho 0.5, E 1e4, thickness 0.0125, three points
---   per cell, tension along segments. Cell 0.25 (41 x 41 nodes), 4 ppc,
---   dt = 1e-3 as the deck, but to t = 6 (the deck stops at 4.02): with this
---   net the ball turns at t = 3 and leaves near t = 4.8, later than the
---   paper's 2.8 and faster (-0.85 against -0.7), so the missing net deck
---   was likely stiffer or tighter than this guess
+--   wraps it (assets/lua/ball_net_ref.lua), for this ball and net: it turns
+--   at 3.91, settles at 6.43 and leaves at -1 (no loss); the turn is checked
+--   against it within 2 % (what the reference leaves out: the net's mass,
+--   0.2 % of the ball's, and the ball's squeeze; tests/physics/
+--   contact_ball_net_ref.lua checks the deck's ball so). Measured: lamina
+--   turns at 3.82, 2.3 % before ours (a miss, shown: the contact begins up
+--   to a cell before the ball's edge reaches the net, and with this ball's
+--   longer stroke that moves the turn more than the deck ball's 1 %),
+--   settles at 6.04 and leaves at -0.85; the paper's 2.8 and -0.7 missed
+-- assumed: the texts disagree (docs/physics.md V10). App. A.1.6 says "a disk
+--   (called a ball) of radius R=3" and the page follows the text (issue 32):
+--   a plane-stress ball of radius 3, v0 = 1, and a uniaxial net (§5.9 has a
+--   plane-strain ball and a plane-stress net). The deck (A.4.13, Box 16) has
+--   rex = 1.5 at (5.625, 5): its R = 3 may be the diameter. A ball of radius
+--   3 does not fit the deck's 10 x 10 box beside a net at the deck's
+--   position, so here the ball sits at (3.625, 5) and the net at x = 7, the
+--   same 0.375 gap as the deck's ball to a net at 7.5: the ball's stroke
+--   (2.7, from ours) then ends 0.3 short of the right wall. The net's own
+--   deck (input file 2) is not printed: here a straight net from (7, 0) to
+--   (7, 10), held by the fixed walls at its ends, rho 0.5, E 1e4, thickness
+--   0.0125, three points per cell, tension along segments. Cell 0.25
+--   (41 x 41 nodes), 4 ppc, dt = 1e-3 as the deck, but to t = 8.2 (the deck
+--   stops at 4.02; the ball, four times the deck's mass, turns only at
+--   3.9), stopped before the ball reaches the left wall. With this net the
+--   ball leaves later than the paper's 2.8 and faster than its -0.7, so the
+--   missing net deck was likely stiffer or tighter than this guess
 -- visual: t_end=1.5
 -- thumb: ball_velocity.png
 local out = lamina.param("out", "out/contact_ball_net")
-local t_end = lamina.param("t_end", 6)
+local t_end = lamina.param("t_end", 8.2)
 local h = 0.25
+-- the text's ball (App. A.1.6: R = 3) and where it fits the box (header)
+local R, x0, xn = 3, 3.625, 7.0
 
 local ref_turn, ref_settle, _, ref_v, ref_t, ref_vt = require("ball_net_ref").run{
-  R = 1.5, mass = math.pi * 1.5 ^ 2, EA = 1e4 * 0.0125, L = 10, xn = 7.5, x0 = 5.625, v0 = 1 }
+  R = R, mass = math.pi * R ^ 2, EA = 1e4 * 0.0125, L = 10, xn = xn, x0 = x0, v0 = 1 }
 
 local function run(law, mu, frames)
-  local sim, ball = require("contact_scenes").ball_net{ cell = h, law = law, mu = mu }
+  local sim, ball = require("contact_scenes").ball_net{ cell = h, law = law, mu = mu, R = R, x0 = x0, xn = xn }
   local t, v, e, spin = {}, {}, {}, {}
   local function omega()
     local P = ball:particles()
@@ -62,7 +75,7 @@ local function run(law, mu, frames)
     spin[#spin + 1] = omega()
   end)
   if frames then
-    for _, ft in ipairs{0, 1, 2, 3, 4, 5, 6} do
+    for _, ft in ipairs{0, 2, 4, 6, 8} do
       if ft <= t_end then
         sim:at(ft, function(s)
           -- the whole box, and a close-up of where the ball meets the net
@@ -126,8 +139,9 @@ print(string.format("release: left the net at t = %s, then v = %s (paper -0.7); 
   .. "left at %s, v = %s, spin %.3f", tostring(rel.left), tostring(v_rel), tostring(fr.left),
   tostring(v_fr), fr.spin[#fr.spin]))
 lamina.report{
-  release_time = { rel.left or -1, paper = 2.8, ref = ref_settle, tol = 0.3, unit = "t" },
-  ball_velocity = { v_rel or 0, paper = -0.7, ref = ref_v, tol = 0.1 },
+  -- [T] §5.9: "at about t=2.8", "constant at about -0.7"; 10 % each (header)
+  release_time = { rel.left or -1, paper = 2.8, ref = ref_settle, tol = 0.28, unit = "t" },
+  ball_velocity = { v_rel or 0, paper = -0.7, ref = ref_v, tol = 0.07 },
   turn_time = { rel.turn or -1, ref = ref_turn, tol = 0.02 * ref_turn, unit = "t (ours: rigid ball, massless string)" },
   energy_spread_after = spread_rel and { 100 * spread_rel, unit = "%" } or "not left",
   friction_release_time = fr.left or -1,

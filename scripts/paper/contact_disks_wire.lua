@@ -78,7 +78,7 @@ lamina.plot{ file = out .. "/velocities.png", csv = true, title = "Disk velociti
              xlabel = "t", ylabel = "v_x",
              series = { { x = t, y = v1, label = "disk I" }, { x = t, y = v2, label = "disk II" } } }
 lamina.plot{ file = out .. "/clearance.png", csv = true,
-             title = "Distance from each disk to the wire (cells)", xlabel = "t", ylabel = "cells",
+             title = "Distance from each disk to the wire (cells)", xlabel = "t", ylabel = "cells", legend = "best",
              series = { { x = t, y = (function() local r = {} for i, c in ipairs(clear[1]) do r[i] = c / h end return r end)(), label = "disk I" },
                         { x = t, y = (function() local r = {} for i, c in ipairs(clear[2]) do r[i] = c / h end return r end)(), label = "disk II" } } }
 lamina.plot{ file = out .. "/energy.png", csv = true, title = "Total energy / initial",

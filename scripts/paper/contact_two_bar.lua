@@ -109,7 +109,7 @@ for k = 1, meshes do
 end
 lamina.plot{ file = out .. "/fig20c_difference.png", csv = true,
              title = "Fig 20(c): v_right - v_left with refinement (after the impact)", xlabel = "t",
-             legend = "best", xrange = { 0.18, 0.5 }, yrange = { 1.7, 1.9 },
+             legend = "bottom right", xrange = { 0.18, 0.5 }, yrange = { 1.55, 1.9 },   -- room below the plateaus for the legend
              ylabel = "v_right - v_left", series = series }
 
 local rise = 0

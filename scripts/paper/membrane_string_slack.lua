@@ -27,7 +27,8 @@ local rec = sim:record{ every = dt, energy = true, points = { mass = {s, -1} },
 for _, t in ipairs{0, 0.006, 0.013, 0.018, 0.023, 0.03, 0.0375} do
   sim:at(t, function(sm)
     sm:frame{ file = string.format("%s/fig15_t%.4f.png", out, t), width = 200, height = 640,
-              window = {0, 1.55, 0.2, 2.03}, discs = "spacing" }
+              window = {0, 1.55, 0.2, 2.03}, discs = "spacing",
+              title = string.format("Fig 15: t = %.4f", t) }
   end)
 end
 sim:run{ t_end = t_end }

@@ -50,7 +50,7 @@ local pa, ea = plane_points()
 local ra = lamina.normals{points = pa, box = cube, basis = "linear", seed = seed,
                           orient = {0.5, 0.5, 0}}
 local ma = errors(ra.normals, ea)
-fig:panel{index = 1, box = cube, title = "(a) 9 points on 0.5x + 0.25y - z = 0",
+fig:panel{index = 1, box = cube, axes = "outside", title = "(a) 9 points on 0.5x + 0.25y - z = 0",
           caption = string.format("max error %.1e rad (paper: exact), cond(T) %.2g", ma, ra.cond)}
 plane_outline(fig)
 fig:normals{result = ra, points = pa, exact = ea, length = 0.25}
@@ -60,7 +60,7 @@ local pb, eb = sphere_points(8, 0.8)
 local rb = lamina.normals{points = pb, box = cube, basis = "linear", seed = seed,
                           orient = {0, 0, 0}}
 local mb, rmsb, altb = errors(rb.normals, eb)
-fig:panel{index = 2, box = cube, title = "(b) 8 points on x^2 + y^2 + z^2 = 0.8^2",
+fig:panel{index = 2, box = cube, axes = "outside", title = "(b) 8 points on x^2 + y^2 + z^2 = 0.8^2",
           caption = string.format("max %.1f deg, rms %.1f deg, sqrt(sum e^2)/n %.1f deg "
             .. "(paper 13, 3)", math.deg(mb), math.deg(rmsb), math.deg(altb))}
 sphere_outline(fig, 0.8)

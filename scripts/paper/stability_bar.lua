@@ -27,14 +27,17 @@ local shown = { [0.5] = true, [0.9] = true, [1.0] = true, [1.05] = true, [1.1] =
                 [1.5] = true, [1.9] = true, [2.0] = true, [2.1] = true, [2.2] = true }
 local T_PLOT = 0.03   -- the deck's tmax, Fig 91's time axis
 
--- log10(E / E0) against t up to the deck's tmax, capped above the plot
+-- log10(E / E0) against t up to the deck's tmax; capped far above the
+-- plot's range (a blown-up energy may overflow), so that a curve leaves the
+-- plot steeply at its top edge instead of running along it flat, under the
+-- legend (issue 32)
 local function curve(rec)
   local t, e = rec:column("t"), rec:column("total")
   local x, y = {}, {}
   for i = 1, #t do
     if t[i] > T_PLOT + 1e-12 then break end
     x[#x + 1] = t[i]
-    y[#y + 1] = math.min(math.log(e[i] / e[1], 10), 6.4)
+    y[#y + 1] = math.min(math.log(e[i] / e[1], 10), 300)
   end
   return x, y
 end
@@ -58,7 +61,7 @@ for _, scheme in ipairs{ "musl", "usl" } do
     end
     local tag = scheme == "musl" and panel[case] or (case == "centres" and "c" or "d")
     lamina.plot{ file = string.format("%s/fig91%s_%s_%s.png", out, tag, case, scheme), csv = true,
-                 width = 640, height = 420, yrange = { -1, 6.5 }, legend = "best",
+                 width = 640, height = 420, xrange = { 0, T_PLOT }, yrange = { -1, 6.5 }, legend = "best",
                  title = string.format("Fig 91(%s): points at cell %s, %s", tag, case, scheme:upper()),
                  xlabel = "t", ylabel = "log10(E / E0)", series = series }
   end
