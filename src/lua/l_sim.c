@@ -151,6 +151,9 @@ int la_sim_new(lua_State *L)
         luaL_error(L, "%s: threads must be a whole number from 1 to %d (got %f)", fn,
                    LM_MAX_THREADS, threads);
     d.threads = (int)threads;
+    /* a measurement (docs/performance.md "Accuracy"): the centred normals'
+     * Cholesky fits against the QR, printed when the sim is collected */
+    d.normals_compare = getenv("LAMINA_NRM_CMP") != NULL;
 
     la_sim *s = lua_newuserdatauv(L, sizeof *s, 1);
     memset(s, 0, sizeof *s);
@@ -170,6 +173,11 @@ int la_sim_new(lua_State *L)
 static int sim_gc(lua_State *L)
 {
     la_sim *s = luaL_checkudata(L, 1, LA_SIM);
+    unsigned long n, fallbacks;
+    double worst, mean;
+    if (s->sim && lm_sim_normals_compare(s->sim, &n, &worst, &mean, &fallbacks) == 0)
+        fprintf(stderr, "LAMINA_NRM_CMP: %lu normals, Cholesky against QR: largest angle %.3g "
+                "degrees, mean %.3g; %lu fits fell back to the QR\n", n, worst, mean, fallbacks);
     lm_sim_free(s->sim);
     free(s->ev);
     free(s->pinf);
