@@ -122,53 +122,38 @@ static int init_report(lua_State *L, lamina_run *run, const char *path)
     return rc == LUA_OK ? 0 : -1;
 }
 
-int cmd_run(int argc, char **argv)
+/* Everything between the command line and the end of the script; the
+ * Lua state, once made, goes to *Lp for cmd_run to close. The exit status. */
+static int run_script(int argc, char **argv, lamina_run *run, lua_State **Lp)
 {
-    lamina_run run;
-    memset(&run, 0, sizeof run);
-    run.sets = calloc((size_t)argc + 1, sizeof *run.sets);
-    if (!run.sets) return LAMINA_EXIT_USAGE;
     const char *report = NULL, *out_root = NULL;
-    if (parse_args(argc, argv, &run, &report, &out_root)) {
-        wb_free_sets(&run);
-        return LAMINA_EXIT_USAGE;
-    }
+    if (parse_args(argc, argv, run, &report, &out_root)) return LAMINA_EXIT_USAGE;
     char why[1100];
-    if (lamina_check_script_file(run.script, why, sizeof why) != 0) {   /* before reading it */
+    if (lamina_check_script_file(run->script, why, sizeof why) != 0) {   /* before reading it */
         fprintf(stderr, "lamina run: %s\n", why);
-        wb_free_sets(&run);
         return LAMINA_EXIT_USAGE;
     }
-    if (hash_file(run.script, run.script_hash)) {
-        perror(run.script);
-        fprintf(stderr, "lamina run: cannot read script '%s'\n", run.script);
-        wb_free_sets(&run);
+    if (hash_file(run->script, run->script_hash)) {
+        perror(run->script);
+        fprintf(stderr, "lamina run: cannot read script '%s'\n", run->script);
         return LAMINA_EXIT_USAGE;
     }
-    lua_State *L = lamina_open_state(&run);
+    lua_State *L = *Lp = lamina_open_state(run);
     if (!L) {
         fprintf(stderr, "lamina run: cannot create a Lua state (out of memory)\n");
-        wb_free_sets(&run);
         return LAMINA_EXIT_USAGE;
     }
     if (out_root && lamina_set_output_root(L, out_root, why, sizeof why) != 0) {
         fprintf(stderr, "lamina run: %s\n", why);
-        lua_close(L);
-        wb_free_sets(&run);
         return LAMINA_EXIT_USAGE;
     }
-    if (report && init_report(L, &run, report)) {
-        lua_close(L);
-        wb_free_sets(&run);
-        lr_shutdown();
-        return LAMINA_EXIT_USAGE;
-    }
+    if (report && init_report(L, run, report)) return LAMINA_EXIT_USAGE;
     /* SIGINT, SIGTERM: stop at the next step boundary (or Lua instruction),
-     * write the records, exit 128 + the signal's number (docs/api.md) */
+     * write the records, exit 128 + the signal's number (docs/api.md; the
+     * status comes from the run's recorded failure, l_run_guard.c) */
     lamina_interrupt_install(L);
     lamina_interrupt_install_term();
-    int rc = lamina_run_script(L, &run);
-    if (run.stopped == LAMINA_STOP_SIGINT) rc = 128 + lamina_interrupt_signal();
+    int rc = lamina_run_script(L, run);
     /* what the script printed is output too: a full disk or a closed pipe
      * fails the run (issue 31: `lamina run s.lua > /dev/full` returned 0) */
     if ((fflush(stdout) != 0 || ferror(stdout)) && rc != 128 + SIGPIPE) {
@@ -176,8 +161,22 @@ int cmd_run(int argc, char **argv)
                 strerror(errno ? errno : EIO));
         if (rc == 0) rc = LAMINA_EXIT_USAGE;
     }
+    return rc;
+}
+
+/* One exit path (issue 33 item 4): whatever ended the run, the signal
+ * handlers, the Lua state, the --set list and the renderer are released
+ * here, once. */
+int cmd_run(int argc, char **argv)
+{
+    lamina_run run;
+    memset(&run, 0, sizeof run);
+    lua_State *L = NULL;
+    int rc = LAMINA_EXIT_USAGE;
+    run.sets = calloc((size_t)argc + 1, sizeof *run.sets);
+    if (run.sets) rc = run_script(argc, argv, &run, &L);
     lamina_interrupt_uninstall();
-    lua_close(L);
+    if (L) lua_close(L);
     if (run.frames && !run.quiet)
         fprintf(stderr, "lamina: %ld frame%s written to %s\n", run.frames,
                 run.frames == 1 ? "" : "s", run.frame_dir);

@@ -1,9 +1,13 @@
-/* main.c - the `lamina` command: dispatch to its sub-commands. */
+/* main.c - the `lamina` command: dispatch to its sub-commands. The exit
+ * status is the sub-command's (lamina run: from its run's recorded failure,
+ * lamina_failure_status in src/lua/l_run_guard.c); a wrong command line is
+ * LAMINA_EXIT_USAGE. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "app.h"
+#include "lamina_lua.h"
 #include "util.h"
 
 /* LAMINA_MEMORY_MB: the process's one memory cap (src/util/lu_budget.c;
@@ -27,10 +31,10 @@ static int memory_from_env(void)
 int main(int argc, char **argv)
 {
     app_wait_policy(argv);
-    if (memory_from_env() != 0) return 2;
+    if (memory_from_env() != 0) return LAMINA_EXIT_USAGE;
     if (argc < 2) {
         app_usage(stderr);
-        return 2;
+        return LAMINA_EXIT_USAGE;
     }
     const char *cmd = argv[1];
     static const char *const known[] = {"run", "animate", "bench", "diff", "gallery",
@@ -50,12 +54,12 @@ int main(int argc, char **argv)
     if (strcmp(cmd, "help") == 0 || strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0) {
         if (argc > 2) return app_command_help(stdout, argv[2], argc > 3 ? argv[3] : NULL);
         app_usage(stdout);
-        return 0;
+        return LAMINA_EXIT_OK;
     }
     if (strcmp(cmd, "--version") == 0 || strcmp(cmd, "version") == 0) {
         printf("lamina %s\n", LAMINA_VERSION);
-        return 0;
+        return LAMINA_EXIT_OK;
     }
     fprintf(stderr, "lamina: unknown command '%s' (try 'lamina help')\n", cmd);
-    return 2;
+    return LAMINA_EXIT_USAGE;
 }

@@ -97,7 +97,9 @@ static void write_checkpoint(lua_State *L, int sidx, la_sim *s)
     char err[600];
     int rc = lr_write_file(s->ck_file, buf, total, err, sizeof err);
     free(buf);
-    if (rc) luaL_error(L, "sim:checkpoint: %s", err);
+    if (rc) {   /* the run's failure (l_run_guard.c): the records are still written */
+        la_fail_raisef(L, LAMINA_FAIL_IO, "sim:checkpoint: %s", err);
+    }
 }
 
 void la_checkpoint_due(lua_State *L, int sidx, la_sim *s)

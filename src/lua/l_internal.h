@@ -236,11 +236,33 @@ void la_checkpoint_due(lua_State *L, int sidx, la_sim *s);
 void la_checkpoint_restore(lua_State *L, int sidx, la_sim *s);
 void la_sim_skip_due(la_sim *s);
 
-/* Raises "file:line: simulation failed: why" and remembers it; the exit
- * status of a script's final error msg: 1 when it is that failure (not
- * caught, or raised again), else 2. */
+/* Raises "simulation failed: why" as a LAMINA_FAIL_UNSTABLE failure. */
 void la_raise_sim_failure(lua_State *L, const char *why);
-int la_exit_status_of(lua_State *L, const char *msg);
+
+/* l_run_guard.c: the one way out of a run (issue 33 item 4). advance()
+ * calls la_run_guard_begin (the sim running), runs its steps in a protected
+ * call and then la_run_guard_end, failed or not: the running state cleared,
+ * the progress line ended (when g->progress), the records written; a
+ * failure (the error on top) recorded, then raised again. la_fail_raise
+ * raises the value on top as a failure of the code given (LAMINA_FAIL_*);
+ * any other error ending a run is LAMINA_FAIL_SCRIPT. la_fail_note_escape
+ * (the top-level message handler) notes whether the error at idx that ends
+ * the script is the recorded failure. */
+typedef struct la_run_guard {
+    la_sim *s;
+    int sidx;                   /* the sim's stack index */
+    int progress;               /* la_progress_begin has returned */
+    const lm_sim *outer;        /* the run that was active before */
+    struct la_run_guard *outer_guard;
+    char where[256];            /* "script.lua:12: ", where sim:run was called */
+} la_run_guard;
+void la_run_guard_begin(lua_State *L, la_run_guard *g, int sidx, la_sim *s);
+void la_run_guard_end(lua_State *L, la_run_guard *g, int failed);
+int la_fail_raise(lua_State *L, int code);
+/* la_fail_raise of a message formatted as luaL_error's, starting with where
+ * the script called the run in progress (else luaL_where(L, 1)). */
+int la_fail_raisef(lua_State *L, int code, const char *fmt, ...);
+void la_fail_note_escape(lua_State *L, int idx);
 
 /* l_record.c */
 int la_sim_record(lua_State *L);

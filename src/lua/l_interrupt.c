@@ -45,7 +45,8 @@ static void clear_hooks(void)
 }
 
 /* Raises the error for whatever stopped the run, after recording why in
- * run->stopped (the watch tells a stop from a failure by it). */
+ * run->stopped (the watch tells a stop from a failure by it): a signal is
+ * LAMINA_FAIL_SIGNAL, the workbench's stops LAMINA_FAIL_STOPPED. */
 int la_interrupt_raise(lua_State *L, const lm_sim *sim)
 {
     lamina_run *run = la_run(L);
@@ -53,16 +54,17 @@ int la_interrupt_raise(lua_State *L, const lm_sim *sim)
     if (run) run->stopped = why;
     pending = 0;
     clear_hooks();
-    if (!sim) return luaL_error(L, "interrupted");
+    int code = why == LAMINA_STOP_SIGINT ? LAMINA_FAIL_SIGNAL : LAMINA_FAIL_STOPPED;
+    if (!sim) return la_fail_raisef(L, code, "interrupted");
     if (why == LAMINA_STOP_STEPS)
-        return luaL_error(L, "stopped after %I steps (--steps) at t = %f, step %I",
-                          (lua_Integer)run->steps, sim->t, (lua_Integer)sim->step);
+        return la_fail_raisef(L, code, "stopped after %I steps (--steps) at t = %f, step %I",
+                              (lua_Integer)run->steps, sim->t, (lua_Integer)sim->step);
     if (why == LAMINA_STOP_POLL)
-        return luaL_error(L, "stopped at t = %f, step %I: %s", sim->t, (lua_Integer)sim->step,
-                          run->stop_why ? run->stop_why : "asked to stop");
+        return la_fail_raisef(L, code, "stopped at t = %f, step %I: %s", sim->t,
+                              (lua_Integer)sim->step, run->stop_why ? run->stop_why : "asked to stop");
     const char *name = signal_name(last_signal);
-    return luaL_error(L, "interrupted%s%s%s at t = %f, step %I", name ? " (" : "",
-                      name ? name : "", name ? ")" : "", sim->t, (lua_Integer)sim->step);
+    return la_fail_raisef(L, code, "interrupted%s%s%s at t = %f, step %I", name ? " (" : "",
+                           name ? name : "", name ? ")" : "", sim->t, (lua_Integer)sim->step);
 }
 
 /* The count hook: Lua code running when Ctrl-C came. Inside a run (a
@@ -83,7 +85,7 @@ static void hook(lua_State *L, lua_Debug *ar)
     luaL_where(L, 0);   /* the line the code was at */
     lua_pushliteral(L, "interrupted");
     lua_concat(L, 2);
-    lua_error(L);
+    la_fail_raise(L, LAMINA_FAIL_SIGNAL);
 }
 
 static void on_sigint(int sig)

@@ -79,6 +79,7 @@ int lamina_msghandler(lua_State *L)
             return 1;
         msg = lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
     }
+    la_fail_note_escape(L, 1);   /* the exit status: is this the run's failure? */
     const lamina_run *run = lua_touserdata(L, lua_upvalueindex(1));
     if (run && run->stopped) return 1;
     luaL_traceback(L, L, msg, 1);
@@ -146,11 +147,13 @@ int lamina_run_script(lua_State *L, lamina_run *run)
         else if (msg && strstr(msg, "not enough memory"))
             fprintf(stderr, "lamina: the script's Lua memory is capped at %zu MB "
                     "(lamina run --lua-mem MB raises it)\n", run->lua_mem_limit >> 20);
-        int status = la_exit_status_of(L, msg);
+        int status = lamina_failure_status(run);
         lua_settop(L, 0);
         return status;
     }
     lua_settop(L, 0);
+    /* a signal the script caught still ends `lamina run` with its status */
+    if (run->stopped == LAMINA_STOP_SIGINT) return lamina_failure_status(run);
     if (run->restart && !run->restored) {
         /* the checkpoint's simulation never ran: nothing was continued */
         fprintf(stderr, "lamina: --restart %s: the script never ran the simulation it was "

@@ -66,10 +66,8 @@ void la_progress_begin(lua_State *L, int sidx, long nsteps)
     la_set_last_sim(L, sidx);
     lamina_run *run = la_run(L);
     if (run && run->max_steps > 0 && run->steps >= run->max_steps && nsteps > 0) {
-        /* the step budget is spent: stop before stepping (advance() has
-         * marked the sim running; undo that as its own stops do) */
-        s->running = 0;
-        run->active = NULL;
+        /* the step budget is spent: stop before stepping (advance()'s run
+         * guard clears the running state) */
         run->stopped = LAMINA_STOP_STEPS;
         la_interrupt_raise(L, s->sim);
     }

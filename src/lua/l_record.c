@@ -399,8 +399,9 @@ static int write_csv(lua_State *L, int ridx)
     size_t len;
     const char *text = lua_tolstring(L, -1, &len);
     char err[512];
-    if (lr_write_file(file, text, len, err, sizeof err) != 0)
-        return luaL_error(L, "sim:record: %s", err);
+    if (lr_write_file(file, text, len, err, sizeof err) != 0) {
+        return la_fail_raisef(L, LAMINA_FAIL_IO, "sim:record: %s", err);
+    }
     r->dirty = 0;
     lua_pop(L, nav > 0 ? 4 : 3);
     return 1;

@@ -45,7 +45,7 @@ int lamina_run_watched(lua_State *L, lamina_run *run, char *msg, size_t len)
         if (!run->stopped) {
             lamina_progress_clear_line();
             fprintf(stderr, "lamina: %s\n", err ? err : "(error)");
-            status = la_exit_status_of(L, err);
+            status = lamina_failure_status(run);
         }
     } else {
         for (int i = 0; i < run->nsets; i++) {

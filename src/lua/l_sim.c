@@ -151,6 +151,9 @@ int la_sim_new(lua_State *L)
         luaL_error(L, "%s: threads must be a whole number from 1 to %d (got %f)", fn,
                    LM_MAX_THREADS, threads);
     d.threads = (int)threads;
+    /* a measurement (docs/performance.md "Accuracy"): the centred normals'
+     * Cholesky fits against the QR, printed when the sim is collected */
+    d.normals_compare = getenv("LAMINA_NRM_CMP") != NULL;
 
     la_sim *s = lua_newuserdatauv(L, sizeof *s, 1);
     memset(s, 0, sizeof *s);
@@ -170,6 +173,11 @@ int la_sim_new(lua_State *L)
 static int sim_gc(lua_State *L)
 {
     la_sim *s = luaL_checkudata(L, 1, LA_SIM);
+    unsigned long n, fallbacks;
+    double worst, mean;
+    if (s->sim && lm_sim_normals_compare(s->sim, &n, &worst, &mean, &fallbacks) == 0)
+        fprintf(stderr, "LAMINA_NRM_CMP: %lu normals, Cholesky against QR: largest angle %.3g "
+                "degrees, mean %.3g; %lu fits fell back to the QR\n", n, worst, mean, fallbacks);
     lm_sim_free(s->sim);
     free(s->ev);
     free(s->pinf);
@@ -308,12 +316,8 @@ static int fire_due(lua_State *L, la_sim *s)
         lua_remove(L, -2);
         lua_pushvalue(L, 1);
         fired++;
-        if (lua_pcall(L, 1, 0, 0) != LUA_OK) {
-            s->running = 0;
-            la_run(L)->active = NULL;
-            la_record_flush(L, 1);   /* what was recorded is kept (an error, Ctrl-C) */
-            lua_error(L);
-        }
+        /* an error goes to advance()'s run guard, which keeps the records */
+        lua_call(L, 1, 0);
     }
     return fired;
 }
@@ -345,30 +349,12 @@ void la_sim_skip_due(la_sim *s)
 
 /* ---- stepping -------------------------------------------------------- */
 
-/* "simulation failed: ..." (exit status 1). The message is remembered: a
- * script may catch it with pcall and then fail for another reason, which
- * is its own mistake (exit status 2), not the simulation's. */
+/* "simulation failed: ..." (exit status 1, LAMINA_FAIL_UNSTABLE): a script
+ * may catch it with pcall and then fail for another reason, which is its own
+ * mistake (exit status 2), not the simulation's (l_run_guard.c). */
 void la_raise_sim_failure(lua_State *L, const char *why)
 {
-    luaL_where(L, 1);
-    lua_pushfstring(L, "simulation failed: %s", why);
-    lua_concat(L, 2);
-    lua_pushvalue(L, -1);
-    lua_setfield(L, LUA_REGISTRYINDEX, "lamina.sim_failure");
-    la_run(L)->sim_failed = 1;
-    lua_error(L);
-}
-
-int la_exit_status_of(lua_State *L, const char *msg)
-{
-    lamina_run *run = la_run(L);
-    int failed = 0;
-    if (run && run->sim_failed && msg &&
-        lua_getfield(L, LUA_REGISTRYINDEX, "lamina.sim_failure") == LUA_TSTRING) {
-        failed = strstr(msg, lua_tostring(L, -1)) != NULL;
-    }
-    if (run && run->sim_failed) lua_pop(L, 1);
-    return failed ? LAMINA_EXIT_SIM : LAMINA_EXIT_USAGE;
+    la_fail_raisef(L, LAMINA_FAIL_UNSTABLE, "simulation failed: %s", why);
 }
 
 /* docs/design.md: a dt whose Courant number exceeds `courant` (times the
@@ -416,7 +402,7 @@ static int courant_exceeded(la_sim *s, char *msg, size_t len)
 static void check_courant(lua_State *L, la_sim *s)
 {
     char msg[900];
-    if (courant_exceeded(s, msg, sizeof msg)) luaL_error(L, "%s", msg);
+    if (courant_exceeded(s, msg, sizeof msg)) la_fail_raisef(L, LAMINA_FAIL_REFUSED, "%s", msg);
 }
 
 /* The steps left to t_end at the current dt: a dt changed by a callback
@@ -431,15 +417,28 @@ static long steps_to(const la_sim *s, double t_end)
     return n > 0 ? (long)fmin(n, STEP_CAP) : 0;
 }
 
-/* nsteps steps (sim:step), or up to t_end when it is a number (sim:run). */
-static void advance(lua_State *L, la_sim *s, long nsteps, double t_end)
+/* What advance() hands its protected steps. */
+typedef struct run_steps_arg {
+    la_run_guard *guard;
+    long nsteps;
+    double t_end;
+} run_steps_arg;
+
+/* The steps of one run, called protected by advance() with the sim at
+ * index 1: any error raised here - the Courant refusal, a callback's, a pin
+ * velocity function's, a failed checkpoint, a failed step, a signal - ends
+ * in advance()'s run guard. */
+static int run_steps(lua_State *L)
 {
-    if (s->running) luaL_error(L, "sim:run/sim:step called from inside a callback");
-    check_courant(L, s);
+    run_steps_arg *a = lua_touserdata(L, 2);
+    lua_settop(L, 1);
+    la_sim *s = a->guard->s;
+    long nsteps = a->nsteps;
+    double t_end = a->t_end;
     lamina_run *run = la_run(L);
-    s->running = 1;
-    run->active = s->sim;
+    check_courant(L, s);
     la_progress_begin(L, 1, nsteps);
+    a->guard->progress = 1;
     fire_due(L, s);
     la_checkpoint_due(L, 1, s);
     la_energy_watch watch;
@@ -459,13 +458,7 @@ static void advance(lua_State *L, la_sim *s, long nsteps, double t_end)
         int more = (isnan(t_end) ? n + 1 < nsteps : steps_to(s, t_end) > 1) &&
                    !due_after_step(s);
         lm_status st = lm_sim_step_then(s->sim, more);
-        if (st != LM_OK) {
-            s->running = 0;
-            run->active = NULL;
-            la_progress_end(L);
-            la_record_flush(L, 1);   /* the history up to the failure is kept */
-            la_raise_sim_failure(L, s->sim->err);
-        }
+        if (st != LM_OK) la_raise_sim_failure(L, s->sim->err);   /* the history is kept */
         if (fire_due(L, s)) lm_sim_forget_ahead(s->sim);   /* it may have changed the state */
         la_leak_watch(L, s);
         if (!isnan(t_end) && s->sim->def.dt != dt_was) {
@@ -474,14 +467,10 @@ static void advance(lua_State *L, la_sim *s, long nsteps, double t_end)
             dt_was = s->sim->def.dt;
             double left = floor((t_end - s->sim->t) / dt_was + 0.5);
             if (left > STEP_CAP) {
-                s->running = 0;
-                run->active = NULL;
-                la_progress_end(L);
-                la_record_flush(L, 1);
                 char msg[256];
                 snprintf(msg, sizeof msg, "dt = %g, set at t = %g, leaves %g steps to t_end = "
                          "%g (at most %g)", dt_was, s->sim->t, left, t_end, STEP_CAP);
-                luaL_error(L, "sim:run: %s", msg);
+                la_fail_raisef(L, LAMINA_FAIL_REFUSED, "sim:run: %s", msg);
             }
         }
         la_checkpoint_due(L, 1, s);
@@ -490,19 +479,28 @@ static void advance(lua_State *L, la_sim *s, long nsteps, double t_end)
         if (run->observer && run->observer->step &&
             run->observer->step(run->observer->ud, L, 1, s->sim))
             lm_sim_forget_ahead(s->sim);
-        if (la_progress_tick(L, s->sim)) {   /* Ctrl-C, watch: stop between steps */
-            s->running = 0;
-            run->active = NULL;
-            la_progress_end(L);
-            la_record_flush(L, 1);
+        if (la_progress_tick(L, s->sim))   /* Ctrl-C, watch: stop between steps */
             la_interrupt_raise(L, s->sim);
-        }
     }
-    s->running = 0;
-    run->active = NULL;
-    la_progress_end(L);
-    la_record_flush(L, 1);
     la_energy_watch_end(L, s, &watch);
+    return 0;
+}
+
+/* nsteps steps (sim:step), or up to t_end when it is a number (sim:run),
+ * the sim at index 1. Every way out goes through the run guard
+ * (l_run_guard.c): the sim is not left running, the records are written. */
+static void advance(lua_State *L, la_sim *s, long nsteps, double t_end)
+{
+    /* not the guard's: the run in progress goes on (a pcall may catch this) */
+    if (s->running) luaL_error(L, "sim:run/sim:step called from inside a callback");
+    la_run_guard g;
+    la_run_guard_begin(L, &g, 1, s);
+    run_steps_arg a = {&g, nsteps, t_end};
+    lua_pushcfunction(L, run_steps);
+    lua_pushvalue(L, 1);
+    lua_pushlightuserdata(L, &a);
+    int failed = lua_pcall(L, 2, 0, 0) != LUA_OK;
+    la_run_guard_end(L, &g, failed);
 }
 
 void la_sim_advance(lua_State *L, la_sim *s, long nsteps)

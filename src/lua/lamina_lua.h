@@ -18,6 +18,15 @@ enum { LAMINA_EXIT_OK = 0, LAMINA_EXIT_SIM = 1, LAMINA_EXIT_USAGE = 2 };
 /* Why a run stopped at a step boundary before its end (lamina_run.stopped). */
 enum { LAMINA_STOP_NONE = 0, LAMINA_STOP_SIGINT, LAMINA_STOP_STEPS, LAMINA_STOP_POLL };
 
+/* How a run ended early (lamina_run.failure; l_run_guard.c): an error in the
+ * script's code (a callback, a pin's velocity function, a recorder's
+ * value), the engine's step failing (NaN, an inverted particle, a tear),
+ * a refused step (the Courant limit), a signal, a stop at a step boundary
+ * asked by the workbench (--steps, a changed file), a failed write
+ * (checkpoint, records). lamina_failure_status gives the exit status. */
+enum { LAMINA_FAIL_NONE = 0, LAMINA_FAIL_SCRIPT, LAMINA_FAIL_UNSTABLE, LAMINA_FAIL_REFUSED,
+       LAMINA_FAIL_SIGNAL, LAMINA_FAIL_STOPPED, LAMINA_FAIL_IO };
+
 typedef struct lamina_set {
     const char *name, *value;   /* from --set name=value */
     int used;                   /* asked for by lamina.param */
@@ -48,7 +57,9 @@ typedef struct lamina_run {
     lamina_set *sets;
     int nsets;
     int quiet;
-    int sim_failed;             /* set when an engine error was raised */
+    int failure;                /* LAMINA_FAIL_* of the last failure a run recorded */
+    char failure_msg[512];      /* its message */
+    int failure_escaped;        /* the error that ended the script is that failure */
     const struct lm_sim *active;/* the simulation being stepped, for logs */
     long frames;                /* PNGs written */
     char frame_dir[512];        /* folder of the last one */
@@ -101,6 +112,10 @@ int lamina_check_script_file(const char *path, char *err, size_t len);
 /* Loads and runs run->script in L; prints errors with file:line and a
  * traceback to stderr; returns the exit status. */
 int lamina_run_script(lua_State *L, lamina_run *run);
+/* The exit status of a script that ended with an error (l_run_guard.c),
+ * from the code of the failure it ended with: 1 the simulation failed, 128
+ * + the number of a signal that stopped it, else 2. */
+int lamina_failure_status(const lamina_run *run);
 /* The message handler of every protected call of a script (run, watch,
  * repl): the message with a traceback; the message alone when upvalue 1 is
  * a lamina_run that was stopped (Ctrl-C, a watch's stop: it says where).

@@ -204,7 +204,7 @@ static lm_status without_connectivity(lm_sim *sim, int b)
     /* the sim's workspace: allocated by the first step, grown only for a
      * larger membrane, so later steps allocate nothing here */
     if (!sim->nwork)
-        sim->nwork = lm_nwork_new();
+        sim->nwork = lm_nwork_new(sim->def.normals_compare);
     if (!sim->nwork || lm_nwork_reserve(sim->nwork, n)) {
         snprintf(sim->err, sizeof sim->err, "out of memory for the normals of body %d", b + 1);
         return LM_ERR_MEMORY;
@@ -275,6 +275,18 @@ lm_status lm_membrane_tangents(lm_sim *sim)
         }
     }
     return LM_OK;
+}
+
+int lm_sim_normals_compare(const lm_sim *sim, unsigned long *n, double *max_deg,
+                           double *mean_deg, unsigned long *fallbacks)
+{
+    const lm_nwork *w = sim->nwork;
+    if (!w || !w->cmp) return -1;
+    *n = w->cmp_n;
+    *max_deg = w->cmp_max;
+    *mean_deg = w->cmp_n ? w->cmp_sum / (double)w->cmp_n : 0.0;
+    *fallbacks = w->fit.fallbacks;
+    return 0;
 }
 
 /* [T] eq 5.9 (uniaxial) and 5.15 (plane stress); [M] §3.2 / Fig 13 the

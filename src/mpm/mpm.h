@@ -282,6 +282,10 @@ typedef struct lm_sim_def {
     double damping;        /* c >= 0 (1/s): viscous damping of the grid
                               velocities, force -c m_i v_i (damping.c);
                               0: none, the undamped step to the bit */
+    int normals_compare;   /* a measurement (docs/performance.md): every
+                              Cholesky fit of the centred normals solved
+                              again by the QR and the two compared
+                              (lm_sim_normals_compare); the run is the same */
 } lm_sim_def;
 
 /* Fills a definition with lamina's defaults (unit square, cell 0.1, MUSL,
@@ -436,7 +440,7 @@ int lm_membrane_phi(const lm_sim *sim, int b, struct lm_nreport *rep, char *err,
 
 /* Builds what depends on whole bodies (membrane tangents and stresses from
  * their strains); called by the first step, and by anyone who needs the
- * tangents before it. */
+ * tangents before it. The sim is marked prepared only when it succeeds. */
 lm_status lm_sim_prepare(lm_sim *sim);
 
 /* Neighbouring membrane points may be at most a cell apart (docs/physics.md
@@ -597,5 +601,11 @@ double lm_gas_space_pressure(const lm_sim *sim, int body, size_t *nodes);
 size_t lm_grid_gas_pressure(const lm_sim *sim, double *out);
 /* FNV-1a hash of the particle state: equal hashes, equal states. */
 uint64_t lm_sim_hash(const lm_sim *sim);
+/* def.normals_compare's measurement so far: the normals compared, the
+ * largest and the mean angle between the Cholesky and the QR fit's
+ * (degrees), the Cholesky fits that fell back to the QR. 0, or -1 when it
+ * was not asked for or no normals were computed. */
+int lm_sim_normals_compare(const lm_sim *sim, unsigned long *n, double *max_deg,
+                           double *mean_deg, unsigned long *fallbacks);
 
 #endif

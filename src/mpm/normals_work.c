@@ -1,6 +1,5 @@
 /* normals_work.c - the normals engine's workspace (normals_work.h): sized
  * before the element loop, so that the loop itself never allocates. */
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -52,22 +51,17 @@ void lm_nwork_free(lm_nwork *w)
 {
     if (!w)
         return;
-    if (w->cmp)
-        fprintf(stderr, "LAMINA_NRM_CMP: %lu normals, Cholesky against QR: largest "
-                "angle %.3g degrees, mean %.3g; %lu fits fell back to the QR\n",
-                w->cmp_n, w->cmp_max, w->cmp_n ? w->cmp_sum / (double)w->cmp_n : 0.0,
-                w->fit.fallbacks);
     LU_FREE_ALL(w->idx, w->sel, w->sites, w->sites_tmp, w->nrm, w->flags, w->dist, w->from,
                 w->done, w->fit.S, w->fit.rhs, w->fit.cols, w->fit.smooth);
     lm_nbins_free(&w->bins);
     memset(w, 0, sizeof *w);
 }
 
-lm_nwork *lm_nwork_new(void)
+lm_nwork *lm_nwork_new(int cmp)
 {
     lm_nwork *w = calloc(1, sizeof(lm_nwork));
     if (w)
-        w->cmp = getenv("LAMINA_NRM_CMP") != NULL;
+        w->cmp = cmp != 0;
     return w;
 }
 

@@ -44,12 +44,13 @@ typedef struct lm_nwork {
     unsigned char *done;
     lm_nfit_scratch fit;            /* rows for cap points (+ 2 + smoothing) */
     lm_nbins bins;                  /* grown by lm_nbins_make */
-    /* A measurement (docs/performance.md): with LAMINA_NRM_CMP set in the
-     * environment when the workspace is made, every LM_NS_CHOLESKY fit of
-     * the centred elements is solved again by the QR and the angle between
-     * the two normals taken at each of its points; the largest, the sum
-     * and the count go to stderr when the workspace is freed. The normals
-     * used are the Cholesky ones, so the run is the same. */
+    /* A measurement (docs/performance.md): when the workspace is made with
+     * cmp (lm_sim_def.normals_compare, which the binding sets from
+     * LAMINA_NRM_CMP), every LM_NS_CHOLESKY fit of the centred elements is
+     * solved again by the QR and the angle between the two normals taken
+     * at each of its points: the largest, the sum and the count, which the
+     * caller reads (lm_sim_normals_compare) and prints. The normals used
+     * are the Cholesky ones, so the run is the same. */
     int cmp;
     double cmp_max, cmp_sum;
     unsigned long cmp_n;
@@ -60,8 +61,9 @@ typedef struct lm_nwork {
 lm_nerr lm_nwork_reserve(lm_nwork *w, size_t n);
 /* Frees what w holds and empties it (w itself is the caller's). */
 void lm_nwork_free(lm_nwork *w);
-/* A workspace on the heap, empty; NULL without memory. */
-lm_nwork *lm_nwork_new(void);
+/* A workspace on the heap, empty (cmp: the measurement above); NULL
+ * without memory. */
+lm_nwork *lm_nwork_new(int cmp);
 void lm_nwork_delete(lm_nwork *w);
 
 /* lm_normals_grid with the caller's workspace. */

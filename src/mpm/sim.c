@@ -133,6 +133,15 @@ lm_sim *lm_sim_new(const lm_sim_def *def, char *err, size_t errlen)
         lm_sim_free(sim);
         return NULL;
     }
+    /* stress = "cell": the per-cell sums of stress_cell.c, made here so that
+     * the step has no failure of its own to report */
+    if (def->stress == LM_STRESS_CELL &&
+        !(sim->cell_stress = malloc(3 * (size_t)g->nx * (size_t)g->ny * sizeof *sim->cell_stress))) {
+        lm_sim_free(sim);
+        snprintf(err, errlen, "out of memory for the cell stresses of a %d x %d grid", g->nx,
+                 g->ny);
+        return NULL;
+    }
     return sim;
 }
 

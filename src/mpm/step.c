@@ -538,10 +538,13 @@ void lm_sim_set_dt(lm_sim *sim, double dt)
     sim->def.dt = dt;
 }
 
+/* Marked prepared only when it succeeds (issue 33 item 1): a failure
+ * (a membrane's normals) leaves the next step or drawing to try again,
+ * e.g. after the script dropped or fixed the body. */
 lm_status lm_sim_prepare(lm_sim *sim)
 {
     lm_status st = lm_membrane_prepare(sim);
-    sim->prepared = 1;
+    sim->prepared = st == LM_OK;
     return st;
 }
 

@@ -24,8 +24,6 @@
  *
  * One thread: the cell sums are cheap beside the step, and one thread
  * keeps the state the same for every thread count. */
-#include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "step.h"
@@ -36,12 +34,8 @@ void lm_stress_cell_forces(lm_sim *sim)
     const lm_particles *p = &sim->p;
     size_t nc = (size_t)g->nx * (size_t)g->ny;
     /* per cell: sum V sigma_xx, sigma_xy, sigma_yy (V_c itself is not
-     * needed: V_c sigma_c is the sum); kept for the run, freed with sim */
-    if (!sim->cell_stress && !(sim->cell_stress = malloc(3 * nc * sizeof *sim->cell_stress))) {
-        /* the grid's own node arrays are larger: this cannot fail alone */
-        fprintf(stderr, "lamina: out of memory for the cell stresses\n");
-        abort();
-    }
+     * needed: V_c sigma_c is the sum); allocated with the grid by
+     * lm_sim_new, which reports a failure as its error */
     double *s = sim->cell_stress;
     memset(s, 0, 3 * nc * sizeof *s);
     int stride = g->nx + 1;
