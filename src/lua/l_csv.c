@@ -100,7 +100,7 @@ int la_read_csv(lua_State *L)
             if (!isnum || n == 0 || !isfinite(lua_tonumber(L, -1))) {
                 lua_rawgeti(L, names, c);
                 return luaL_error(L, "%s: '%s' line %d, column '%s': '%s' is not a finite "
-                                  "number", fn, path, line, lua_tostring(L, -1), text);
+                                  "number", fn, path, line, lua_tostring(L, -1), field_text);
             }
             lua_remove(L, -2);            /* the string; the number stays */
             lua_rawgeti(L, names, c);
