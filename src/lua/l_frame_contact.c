@@ -43,6 +43,54 @@ static unsigned char *shown_nodes(lua_State *L, la_frame_ctx *ctx, const lm_grid
     return shown;
 }
 
+/* Which shown nodes get an arrow and which way it points: a contact
+ * field's outward normal where the body has mass and the normal is not
+ * zero (nx set), or else a mark where the node's state is `state`, a bar
+ * along +x moved back by dx to centre it on the node. */
+typedef struct arrow_pick {
+    const double *m, *nx, *ny;
+    const unsigned char *state;
+    int want;
+    double dx;
+} arrow_pick;
+
+static int picked(const arrow_pick *a, long id, double *ux, double *uy)
+{
+    if (a->nx) {
+        *ux = a->nx[id];
+        *uy = a->ny[id];
+        return !(a->m[id] <= 0) && (*ux != 0 || *uy != 0);
+    }
+    *ux = 1;
+    *uy = 0;
+    return a->state[id] == a->want;
+}
+
+/* The arrows of `look` (length, width, head, colour) at the shown nodes
+ * `pick` takes, row by row, their points in frame scratch. */
+static lr_arrows node_arrows(lua_State *L, la_frame_ctx *ctx, const lm_grid *g,
+                             const unsigned char *shown, const arrow_pick *pick, lr_arrows look)
+{
+    size_t nodes = (size_t)(g->nx + 1) * (size_t)(g->ny + 1);
+    double *buf = la_frame_scratch(L, ctx, 4 * nodes * sizeof *buf);
+    double *x = buf, *y = buf + nodes, *ux = buf + 2 * nodes, *uy = buf + 3 * nodes;
+    size_t n = 0;
+    for (int j = 0; j <= g->ny; j++)
+        for (int i = 0; i <= g->nx; i++) {
+            long id = lm_grid_node(g, i, j);
+            if (!shown[id] || !picked(pick, id, &ux[n], &uy[n])) continue;
+            x[n] = g->x0 + i * g->hx - pick->dx;
+            y[n] = g->y0 + j * g->hy;
+            n++;
+        }
+    look.n = n;
+    look.x = x;
+    look.y = y;
+    look.ux = ux;
+    look.uy = uy;
+    return look;
+}
+
 void la_frame_contact(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int every,
                       double scale, int outlined, lr_layers *l)
 {
@@ -50,7 +98,6 @@ void la_frame_contact(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int every,
     if (!c || c->npairs == 0 || !c->state) return;
     const lm_grid *g = &sim->grid;
     double h = fmin(g->hx, g->hy);
-    size_t nodes = (size_t)(g->nx + 1) * (size_t)(g->ny + 1);
     const unsigned char *shown = shown_nodes(L, ctx, g, c->state, every);
     /* arrows: the old sets, one per paired body (each after its white
      * outline when outlined), three node marks */
@@ -60,23 +107,10 @@ void la_frame_contact(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int every,
     size_t k = l->narrows;
     for (int f = 0; f < c->nf; f++, k++) {
         const lm_contact_field *cf = &c->f[f];
-        double *buf = la_frame_scratch(L, ctx, 4 * nodes * sizeof *buf);
-        double *x = buf, *y = buf + nodes, *ux = buf + 2 * nodes, *uy = buf + 3 * nodes;
-        size_t n = 0;
-        for (int j = 0; j <= g->ny; j++)
-            for (int i = 0; i <= g->nx; i++) {
-                long id = lm_grid_node(g, i, j);
-                if (!shown[id] || cf->m[id] <= 0) continue;
-                if (cf->nx[id] == 0 && cf->ny[id] == 0) continue;
-                x[n] = g->x0 + i * g->hx;
-                y[n] = g->y0 + j * g->hy;
-                ux[n] = cf->nx[id];
-                uy[n] = cf->ny[id];
-                n++;
-            }
-        sets[k] = (lr_arrows){ .n = n, .x = x, .y = y, .ux = ux, .uy = uy,
-                               .length = 0.6 * h * scale, .width = 1.5, .head = 6.0,
-                               .colour = lr_palette(cf->body) };
+        const arrow_pick normals = { .m = cf->m, .nx = cf->nx, .ny = cf->ny };
+        sets[k] = node_arrows(L, ctx, g, shown, &normals,
+                              (lr_arrows){ .length = 0.6 * h * scale, .width = 1.5, .head = 6.0,
+                                           .colour = lr_palette(cf->body) });
         if (outlined) {
             sets[k + 1] = sets[k];
             sets[k + 1].width = 2.0;
@@ -90,22 +124,11 @@ void la_frame_contact(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int every,
     static const lr_rgba mark[3] = { {0.25, 0.25, 0.25, 1}, {0.0, 0.6, 0.3, 1},
                                      {0.85, 0.1, 0.75, 1} };
     for (int s = 0; s < 3; s++, k++) {
-        double *buf = la_frame_scratch(L, ctx, 4 * nodes * sizeof *buf);
-        double *x = buf, *y = buf + nodes, *ux = buf + 2 * nodes, *uy = buf + 3 * nodes;
-        size_t n = 0;
-        for (int j = 0; j <= g->ny; j++)
-            for (int i = 0; i <= g->nx; i++) {
-                long id = lm_grid_node(g, i, j);
-                if (!shown[id] || c->state[id] != s + 1) continue;
-                /* a short thick bar centred on the node: a square mark */
-                x[n] = g->x0 + i * g->hx - 0.08 * h;
-                y[n] = g->y0 + j * g->hy;
-                ux[n] = 1;
-                uy[n] = 0;
-                n++;
-            }
-        sets[k] = (lr_arrows){ .n = n, .x = x, .y = y, .ux = ux, .uy = uy, .length = 0.16 * h,
-                               .width = 5.0, .head = 0.0, .colour = mark[s] };
+        /* a short thick bar centred on the node: a square mark */
+        const arrow_pick marks = { .state = c->state, .want = s + 1, .dx = 0.08 * h };
+        sets[k] = node_arrows(L, ctx, g, shown, &marks,
+                              (lr_arrows){ .length = 0.16 * h, .width = 5.0, .head = 0.0,
+                                           .colour = mark[s] });
     }
     l->arrows = sets;
     l->narrows = nsets;

@@ -69,8 +69,9 @@ typedef struct clock_rec {
 } clock_rec;
 
 typedef struct pin_rec {
-    double vx, vy, rx, ry;
+    double vx, vy, rx, ry;   /* in this order: check_state and the restore read them by index */
 } pin_rec;
+_Static_assert(sizeof(pin_rec) == 4 * sizeof(double), "a pin's record is four doubles");
 
 /* A link's state: a script may remove it (or change nothing else) mid-run. */
 typedef struct link_rec {
@@ -95,6 +96,13 @@ size_t lm_sim_state_bytes(const lm_sim *sim)
 static unsigned char *put(unsigned char *b, const void *v, size_t n)
 {
     memcpy(b, v, n);
+    return b + n;
+}
+
+/* put's reverse, for the restore: n bytes at b into v, and the next place. */
+static const unsigned char *take(void *v, const unsigned char *b, size_t n)
+{
+    memcpy(v, b, n);
     return b + n;
 }
 
@@ -356,22 +364,17 @@ lm_status lm_sim_state_load(lm_sim *sim, const unsigned char *buf, size_t len)
     if (check_state(sim, buf + sizeof h, n, why, sizeof why) != 0) return refuse(sim, why);
     const unsigned char *b = buf + sizeof h;
     clock_rec c;
-    memcpy(&c, b, sizeof c);
-    b += sizeof c;
+    b = take(&c, b, sizeof c);
     /* everything checked: from here on nothing can fail but memory */
     if (n > sim->p.cap && lm_particles_reserve(&sim->p, n)) {
         snprintf(sim->err, sizeof sim->err, "no room for the checkpoint's %zu particles: %s", n,
                  lu_budget_oom());
         return LM_ERR_MEMORY;
     }
-    for (int k = 0; k < sim->nmats; k++) {
-        memcpy(sim->mats[k], b, sizeof(lm_material));
-        b += sizeof(lm_material);
-    }
+    for (int k = 0; k < sim->nmats; k++) b = take(sim->mats[k], b, sizeof(lm_material));
     for (int k = 0; k < sim->nbodies; k++) {
         body_rec r;
-        memcpy(&r, b, sizeof r);
-        b += sizeof r;
+        b = take(&r, b, sizeof r);
         lm_body *bd = &sim->bodies[k];
         bd->first = (size_t)r.first;
         bd->count = (size_t)r.count;
@@ -384,19 +387,17 @@ lm_status lm_sim_state_load(lm_sim *sim, const unsigned char *buf, size_t len)
         bd->oy = r.oy;
         bd->pe_ref = r.pe_ref;
     }
-    for (int k = 0; k < sim->npins; k++) {
-        pin_rec r;
-        memcpy(&r, b, sizeof r);
-        b += sizeof r;
-        sim->pins[k].vx = r.vx;
-        sim->pins[k].vy = r.vy;
-        sim->pins[k].rx = r.rx;
-        sim->pins[k].ry = r.ry;
+    /* a pin's record is its four doubles, read as check_state reads them */
+    for (int k = 0; k < sim->npins; k++, b += sizeof(pin_rec)) {
+        lm_pin *pn = &sim->pins[k];
+        pn->vx = get_double(b, 0);
+        pn->vy = get_double(b, 1);
+        pn->rx = get_double(b, 2);
+        pn->ry = get_double(b, 3);
     }
     for (int k = 0; k < sim->nlinks; k++) {
         link_rec r;
-        memcpy(&r, b, sizeof r);
-        b += sizeof r;
+        b = take(&r, b, sizeof r);
         sim->links[k].k = r.k;
         sim->links[k].L0 = r.L0;
         sim->links[k].active = r.active;
@@ -405,16 +406,12 @@ lm_status lm_sim_state_load(lm_sim *sim, const unsigned char *buf, size_t len)
     p->n = n;
     double *a[NDOUBLES];
     int nd = particle_doubles(p, a);
-    for (int k = 0; k < nd; k++) {
-        memcpy(a[k], b, n * sizeof(double));
-        b += n * sizeof(double);
-    }
+    for (int k = 0; k < nd; k++) b = take(a[k], b, n * sizeof(double));
     int *ia[3] = {p->body, p->mat, p->pin};
     for (int k = 0; k < 3; k++)
         for (size_t q = 0; q < n; q++) {
             int32_t v;
-            memcpy(&v, b, sizeof v);
-            b += sizeof v;
+            b = take(&v, b, sizeof v);
             ia[k][q] = v;
         }
     sim->t = c.t;

@@ -34,9 +34,7 @@ typedef enum lm_mass { LM_MASS_LUMPED = 0, LM_MASS_CORRECTED = 1 } lm_mass;
  * stencil), uGIMP (Bardenhagen & Kober 2004, shape_gimp.c) and the
  * node-centred quadratic B-spline (Steffen, Kirby & Berzins 2008,
  * shape_bspline.c), both on a 3 x 3 stencil. */
-typedef enum lm_basis {
-    LM_BASIS_LINEAR = 0, LM_BASIS_GIMP = 1, LM_BASIS_BSPLINE2 = 2
-} lm_basis;
+typedef enum lm_basis { LM_BASIS_LINEAR = 0, LM_BASIS_GIMP = 1, LM_BASIS_BSPLINE2 = 2 } lm_basis;
 
 /* Per-side boundary condition on the grid's outer nodes. */
 typedef enum lm_bc { LM_BC_FIXED = 0, LM_BC_SYMMETRY = 1, LM_BC_FREE = 2 } lm_bc;

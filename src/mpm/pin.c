@@ -102,6 +102,21 @@ void lm_sim_set_pin_velocity(lm_sim *sim, int pin, double vx, double vy)
     sim->pins[pin].vy = vy;
 }
 
+/* The stencil of pin pn's point j: its ns nodes in node[] and their
+ * weights N_ip in w[], row by row (the order every loop here sums in). */
+static void held_stencil(const lm_sim *sim, const lm_pin *pn, size_t j, int node[9],
+                         double w[9])
+{
+    const lm_grid *g = &sim->grid;
+    size_t q = sim->bodies[pn->body].first + pn->idx[j];
+    lm_weights wt;
+    lm_weights_of(sim, q, &wt);
+    for (int c = 0; c < g->sw * g->sw; c++) {
+        node[c] = lm_stencil_node(g, g->sw, sim->p.node[q], c);
+        w[c] = wt.N[c];
+    }
+}
+
 /* Does any pin hold its nodes this step? */
 static int holds_nodes(const lm_sim *sim)
 {
@@ -119,22 +134,19 @@ static int holds_nodes(const lm_sim *sim)
  * With contact every pin holds its nodes. Counts in pin_w, zeroed after. */
 static void classify(lm_sim *sim)
 {
-    const lm_grid *g = &sim->grid;
-    const lm_particles *p = &sim->p;
-    const int ns = g->sw * g->sw;
+    const int ns = sim->grid.sw * sim->grid.sw;
     const int point = lm_constraint_active(sim);
     for (int pass = 0; pass < 3; pass++) {
         for (int k = 0; k < sim->npins; k++) {
             lm_pin *pn = &sim->pins[k];
-            size_t first = sim->bodies[pn->body].first;
             if (pass == 1) pn->point = point;
             for (size_t j = 0; j < pn->n && point; j++) {
-                size_t q = first + pn->idx[j];
-                lm_weights wt;
-                lm_weights_of(sim, q, &wt);
+                int node[9];
+                double w[9];
+                held_stencil(sim, pn, j, node, w);
                 for (int c = 0; c < ns; c++) {
-                    if (!(wt.N[c] > 0)) continue;
-                    int i = lm_stencil_node(g, g->sw, p->node[q], c);
+                    if (!(w[c] > 0)) continue;
+                    int i = node[c];
                     if (pass == 0) sim->pin_w[i] += 1;
                     else if (pass == 1 && sim->pin_w[i] > 1) pn->point = 0;
                     else if (pass == 2) sim->pin_w[i] = 0;
@@ -161,25 +173,20 @@ void lm_pin_p2g(lm_sim *sim)
         }
     }
     if (!holds_nodes(sim)) return;
-    const lm_grid *g = &sim->grid;
-    const lm_particles *p = &sim->p;
-    size_t nn = lm_grid_nodes(g);
-    const int ns = g->sw * g->sw;
+    size_t nn = lm_grid_nodes(&sim->grid);
+    const int ns = sim->grid.sw * sim->grid.sw;
     memset(sim->pin_w, 0, 3 * nn * sizeof(double));
     for (int k = 0; k < sim->npins; k++) {
         const lm_pin *pn = &sim->pins[k];
         if (pn->point) continue;
-        size_t first = sim->bodies[pn->body].first;
         for (size_t j = 0; j < pn->n; j++) {
-            size_t q = first + pn->idx[j];
-            lm_weights wt;
-            lm_weights_of(sim, q, &wt);
+            int node[9];
+            double w[9];
+            held_stencil(sim, pn, j, node, w);
             for (int c = 0; c < ns; c++) {
-                int i = lm_stencil_node(g, g->sw, p->node[q], c);
-                double w = wt.N[c];
-                sim->pin_w[i] += w;
-                sim->pin_vx[i] += w * pn->vx;
-                sim->pin_vy[i] += w * pn->vy;
+                sim->pin_w[node[c]] += w[c];
+                sim->pin_vx[node[c]] += w[c] * pn->vx;
+                sim->pin_vy[node[c]] += w[c] * pn->vy;
             }
         }
     }
@@ -192,23 +199,20 @@ void lm_pin_grid(lm_sim *sim)
 {
     if (!holds_nodes(sim)) return;
     lm_grid *g = &sim->grid;
-    const lm_particles *p = &sim->p;
     double dt = sim->def.dt;
     const int ns = g->sw * g->sw;
     for (int k = 0; k < sim->npins; k++) {
         lm_pin *pn = &sim->pins[k];
         if (pn->point) continue;   /* its reaction is constraint.c's */
-        size_t first = sim->bodies[pn->body].first;
         pn->rx = pn->ry = 0;
         for (size_t j = 0; j < pn->n; j++) {
-            size_t q = first + pn->idx[j];
-            lm_weights wt;
-            lm_weights_of(sim, q, &wt);
+            int node[9];
+            double w[9];
+            held_stencil(sim, pn, j, node, w);
             for (int c = 0; c < ns; c++) {
-                int i = lm_stencil_node(g, g->sw, p->node[q], c);
-                double w = wt.N[c];
-                if (!(w > 0)) continue;
-                double s = w / sim->pin_w[i];
+                int i = node[c];
+                if (!(w[c] > 0)) continue;
+                double s = w[c] / sim->pin_w[i];
                 pn->rx += s * (g->m[i] * sim->pin_vx[i] / sim->pin_w[i] - g->px[i]) / dt;
                 pn->ry += s * (g->m[i] * sim->pin_vy[i] / sim->pin_w[i] - g->py[i]) / dt;
             }

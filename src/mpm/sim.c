@@ -150,22 +150,12 @@ void lm_sim_free(lm_sim *sim)
     if (!sim) return;
     grid_free(&sim->grid);
     lm_particles_free(&sim->p);
-    free(sim->mats);
-    free(sim->bodies);
-    free(sim->cell_rho);
-    free(sim->cell_stress);
-    for (int k = 0; k < sim->npins; k++) {
-        free(sim->pins[k].idx);
-        free(sim->pins[k].x0);
-    }
-    free(sim->pins);
-    free(sim->links);
-    free(sim->pin_w);
-    free(sim->cons);
+    for (int k = 0; k < sim->npins; k++) LU_FREE_ALL(sim->pins[k].idx, sim->pins[k].x0);
     lm_contact_free(sim->contact);
     lm_nwork_delete(sim->nwork);
     lm_ahead_free(sim->ahead);
-    free(sim);
+    LU_FREE_ALL(sim->mats, sim->bodies, sim->cell_rho, sim->cell_stress, sim->pins, sim->links,
+                sim->pin_w, sim->cons, sim);
 }
 
 int lm_sim_add_material(lm_sim *sim, lm_material *mat)
