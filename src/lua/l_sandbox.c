@@ -217,11 +217,21 @@ static int module_name_ok(const char *name, size_t len)
     return 1;
 }
 
+/* The cache's mark for a module being loaded: a second require of it
+ * before it returns is a loop (stock Lua recurses until "C stack
+ * overflow"; a copied script named like the module it requires finds
+ * itself first). */
+static const char loading_mark = 0;
+
 static int require_done(lua_State *L, int status, lua_KContext ctx)
 {
-    (void)status;
-    /* stack: name, cache, path, result */
     (void)ctx;
+    /* stack: name, cache, path, result (or the error) */
+    if (status != LUA_OK && status != LUA_YIELD) {
+        lua_pushnil(L);                    /* unmark: a later require may try again */
+        lua_setfield(L, 2, lua_tostring(L, 1));
+        return lua_error(L);
+    }
     if (lua_isnil(L, -1)) {
         lua_pop(L, 1);
         lua_pushboolean(L, 1);
@@ -241,7 +251,13 @@ static int sb_require(lua_State *L)
         return luaL_error(L, "require: bad module name '%s' (words of letters, digits, "
                           "'_' and '-', joined by dots)", name);
     lua_getfield(L, LUA_REGISTRYINDEX, MODULES);   /* 2: the cache */
-    if (lua_getfield(L, 2, name) != LUA_TNIL) return 1;
+    if (lua_getfield(L, 2, name) != LUA_TNIL) {
+        if (lua_touserdata(L, -1) == &loading_mark)
+            return luaL_error(L, "require: module '%s' requires itself while it loads (a loop of "
+                              "require calls; a script named '%s.lua' that requires '%s' finds "
+                              "itself first: rename the script)", name, name, name);
+        return 1;
+    }
     lua_pop(L, 1);
     char file[MAX_MODULE_NAME + 8];
     snprintf(file, sizeof file, "%s.lua", name);
@@ -256,10 +272,12 @@ static int sb_require(lua_State *L)
             lua_replace(L, 3);   /* 3: the path */
             lua_settop(L, 3);
             if (luaL_loadfilex(L, path, "t") != LUA_OK) return lua_error(L);
+            lua_pushlightuserdata(L, (void *)&loading_mark);
+            lua_setfield(L, 2, name);
             lua_pushvalue(L, 1);
             lua_pushvalue(L, 3);
-            lua_callk(L, 2, 1, 0, require_done);
-            return require_done(L, LUA_OK, 0);
+            int st = lua_pcallk(L, 2, 1, 0, 0, require_done);
+            return require_done(L, st, 0);
         }
         lua_pop(L, 2);
     }
