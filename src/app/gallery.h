@@ -169,6 +169,13 @@ void g_markdown_text(FILE *f, const char *s);
 void g_html(FILE *f, const char *s);
 /* s percent-encoded as one URL path segment (all but A-Z a-z 0-9 - . _ ~) */
 void g_url(FILE *f, const char *s);
+/* A reported value (an element of meta.json's "values") against what it is
+ * compared with - the paper's number, else lamina's own reference - and its
+ * tolerance: 1 within (the page's ✓), 0 outside (✗, a failing check), -1
+ * not comparable (no mark). */
+int g_value_check(const lu_json *e);
+/* "name: 0.27 % (paper 0.3 ± 0.05 %) ✓" (free it). */
+char *g_value_line(const lu_json *e);
 int g_write_page(const g_options *o, const g_script *s, const lu_json *meta, char *err,
                  size_t errlen);
 int g_write_index(const g_options *o, const g_scripts *all, char *err, size_t errlen);
@@ -180,8 +187,9 @@ int g_write_index(const g_options *o, const g_scripts *all, char *err, size_t er
  * "(fluid-membrane)" / "[F]", "normals paper" / "[N]", "dissertation" /
  * "[T]", and holds until another is named. */
 void g_source_refs(const char *source, g_strs *out);
-/* Problems of SCRIPTS/coverage.tsv against the scripts, added to problems
- * (none when the file does not exist). */
+/* Problems of SCRIPTS/coverage.tsv against the scripts and, for the rows
+ * marked reproduced, against their pages' checks in GALLERY/NAME/meta.json,
+ * added to problems (none when the file does not exist). */
 void g_coverage_check(const g_options *o, const g_scripts *all, g_strs *problems);
 /* The coverage section of the index (nothing when there is no data). */
 void g_coverage_markdown(FILE *f, const g_options *o);

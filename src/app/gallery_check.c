@@ -9,7 +9,8 @@
  *     in it points at a file that exists;
  *   - the papers' coverage (SCRIPTS/coverage.tsv, gallery_coverage.c) names
  *     only pages that exist, names every page, and gives each page the
- *     figures its source header cites; the index shows it as it is now.
+ *     figures its source header cites, and no row marked reproduced names
+ *     a page with a failing check; the index shows it as it is now.
  *
  * Exit 0 when all holds, 1 with the list of problems otherwise. */
 #include "gallery.h"

@@ -17,7 +17,8 @@
  * `lamina gallery` renders it under the index (per-paper counts, then a
  * table per paper); `lamina gallery --check` keeps it from going stale:
  * every page it names is a script, every script is named, and every figure
- * or table a script's `source:` header cites is a row that names it.
+ * or table a script's `source:` header cites is a row that names it, and
+ * no row marked reproduced names a page with a failing check (a ✗).
  * A scripts folder without coverage.tsv (the test scenes) has no coverage
  * section and nothing to check. */
 #include "gallery.h"
@@ -190,6 +191,32 @@ static int row_names(const cov_row *r, const char *stem)
         found = strcmp(l.v[i], stem) == 0;
     g_strs_free(&l);
     return found;
+}
+
+/* A row marked reproduced claims the page shows the paper's numbers: each
+ * of its pages' values that misses its tolerance (g_value_check, the rule
+ * behind the page's ✗) is a problem naming the row and the value (issue 32
+ * item 5). A page not rendered yet is gallery_check.c's problem, not this. */
+static void check_reproduced(const g_options *o, const char *path, const cov_row *r,
+                             const g_strs *pages, g_strs *problems)
+{
+    for (size_t k = 0; k < pages->n; k++) {
+        char *meta = g_fmt("%s/%s/%s", o->gallery, pages->v[k], G_META);
+        lu_json *m = g_exists(meta) ? gj_read(meta, NULL, 0) : NULL;
+        const lu_json *vals = m ? lu_json_get(m, "values") : NULL;
+        for (size_t i = 0; vals && vals->type == LU_JSON_ARRAY && i < vals->n; i++) {
+            if (g_value_check(&vals->kids[i]) != 0)
+                continue;
+            char *line = g_value_line(&vals->kids[i]);
+            g_strs_add(problems, g_fmt("%s:%d: [%c] %s is reproduced, but its page %s "
+                                       "fails a check: %s (mark the row partial with "
+                                       "what misses, or complete the page)", path,
+                                       r->line, r->paper, r->item, pages->v[k], line));
+            free(line);
+        }
+        lu_json_free(m);
+        free(meta);
+    }
 }
 
 /* ---- the figures a source header cites -------------------------------- */
@@ -370,6 +397,8 @@ void g_coverage_check(const g_options *o, const g_scripts *all, g_strs *problems
                                            r->paper, r->item, pages.v[k], o->scripts,
                                            pages.v[k]));
         }
+        if (st == 0)
+            check_reproduced(o, c.path, r, &pages, problems);
         g_strs_free(&pages);
     }
     g_strs_free(&seen);

@@ -156,20 +156,28 @@ static const lu_json *target(const lu_json *e)
     return p ? p : lu_json_get(e, "ref");
 }
 
-/* "✓" within tolerance of the paper (or of our reference when the paper
- * gives none), "✗" outside, "" when not comparable. */
-static const char *mark(const lu_json *e)
+/* Within tolerance of the paper (or of our reference when the paper gives
+ * none): 1, outside: 0, not comparable: -1. The one rule behind the pages'
+ * marks and `gallery --check`'s coverage rule (gallery_coverage.c). */
+int g_value_check(const lu_json *e)
 {
     const lu_json *v = lu_json_get(e, "value"), *p = target(e), *t = lu_json_get(e, "tol");
     if (!v || !p || !t || v->type != LU_JSON_NUMBER || p->type != LU_JSON_NUMBER ||
         t->type != LU_JSON_NUMBER)
-        return "";
-    return fabs(v->number - p->number) <= t->number ? " ✓" : " ✗";
+        return -1;
+    return fabs(v->number - p->number) <= t->number;
+}
+
+/* "✓", "✗" or "" for g_value_check's 1, 0, -1. */
+static const char *mark(const lu_json *e)
+{
+    int c = g_value_check(e);
+    return c < 0 ? "" : c ? " ✓" : " ✗";
 }
 
 /* "name: 0.27 % (paper 0.3 ± 0.05 %) ✓", or "(ours 0.3 ± 0.05 %)" for a
  * reference of lamina's own */
-static char *value_line(const lu_json *e)
+char *g_value_line(const lu_json *e)
 {
     const char *unit = lu_json_string(e, "unit");
     int is_paper = lu_json_get(e, "paper") != NULL;
@@ -199,7 +207,7 @@ static void put_values(FILE *f, const lu_json *meta, void (*put)(FILE *, const c
 {
     const lu_json *vals = values_of(meta);
     for (size_t k = 0; vals && k < vals->n; k++) {
-        char *line = value_line(&vals->kids[k]);
+        char *line = g_value_line(&vals->kids[k]);
         if (k)
             fputs("<br>", f);
         put(f, line);
