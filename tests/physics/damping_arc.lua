@@ -55,55 +55,11 @@ local mem = sim:membrane{ material = skin, spacing = 0.5 * h, name = "arc",
 return sim, left, right, mem
 end
 
--- least-squares circle through the points: Kasa's algebraic fit, then
--- Gauss-Newton on sum (|x - c| - R)^2
+-- the least-squares circle through the points (lamina.analysis, tested
+-- against exact circles in tests/analysis)
 local function circle(mem)
-local q = mem:particles()
-local n = q.n
-local mx, my = 0, 0
-for k = 1, n do mx, my = mx + q.x[k] / n, my + q.y[k] / n end
-local suu, suv, svv, b1, b2 = 0, 0, 0, 0, 0
-for k = 1, n do
-  local u, v = q.x[k] - mx, q.y[k] - my
-  suu, suv, svv = suu + u * u, suv + u * v, svv + v * v
-  b1, b2 = b1 + (u ^ 3 + u * v * v) / 2, b2 + (v ^ 3 + v * u * u) / 2
-end
-local det = suu * svv - suv * suv
-local cx, cy = mx + (b1 * svv - b2 * suv) / det, my + (suu * b2 - suv * b1) / det
-local R = 0
-for k = 1, n do R = R + math.sqrt((q.x[k] - cx) ^ 2 + (q.y[k] - cy) ^ 2) / n end
-for _ = 1, 20 do
-  -- normal equations of the residuals r_k = d_k - R in (cx, cy, R)
-  local A = { {0, 0, 0}, {0, 0, 0}, {0, 0, 0} }
-  local g = {0, 0, 0}
-  for k = 1, n do
-    local dx, dy = q.x[k] - cx, q.y[k] - cy
-    local d = math.sqrt(dx * dx + dy * dy)
-    local J = { -dx / d, -dy / d, -1 }
-    local r = d - R
-    for i = 1, 3 do
-      g[i] = g[i] + J[i] * r
-      for j = 1, 3 do A[i][j] = A[i][j] + J[i] * J[j] end
-    end
-  end
-  -- solve A s = -g (Cramer: 3 x 3)
-  local function d3(m)
-    return m[1][1] * (m[2][2] * m[3][3] - m[2][3] * m[3][2])
-         - m[1][2] * (m[2][1] * m[3][3] - m[2][3] * m[3][1])
-         + m[1][3] * (m[2][1] * m[3][2] - m[2][2] * m[3][1])
-  end
-  local D = d3(A)
-  local s = {}
-  for col = 1, 3 do
-    local M = { {}, {}, {} }
-    for i = 1, 3 do for j = 1, 3 do M[i][j] = j == col and -g[i] or A[i][j] end end
-    s[col] = d3(M) / D
-  end
-  cx, cy, R = cx + s[1], cy + s[2], R + s[3]
-end
-local rms = 0
-for k = 1, n do rms = rms + (math.sqrt((q.x[k] - cx) ^ 2 + (q.y[k] - cy) ^ 2) - R) ^ 2 / n end
-return R, cx, cy, math.sqrt(rms)
+  local cx, cy, R, rms = lamina.analysis.circle_fit(mem)
+  return R, cx, cy, rms
 end
 
 local sim, left, right, mem = scene(c)
