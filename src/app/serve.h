@@ -69,8 +69,9 @@ typedef struct serve_state {
     long step, rate_step;
     lm_energy energy;
     int have_energy;
+    double energy_t;        /* the time the energy was summed at (refreshed every REFRESH s) */
     double last_refresh;
-    char settings[4][96];   /* lamina_live_settings' values, as text */
+    char settings[5][96];   /* lamina_live_settings' values, as text */
     int have_settings;
     /* control */
     int paused, waiting;     /* asked to pause; the run waits at a step */

@@ -99,6 +99,8 @@ void serve_json_state(serve_state *st, sbuf *b)
         sb_num(b, st->energy.potential);
         sb_str(b, ",\"total\":");
         sb_num(b, st->energy.total);
+        sb_str(b, ",\"t\":");
+        sb_num(b, st->energy_t);
         sb_str(b, "}");
     } else {
         sb_str(b, ",\"energy\":null");
@@ -140,7 +142,7 @@ void serve_json_params(serve_state *st, sbuf *b)
         sb_str(b, "}");
     }
     sb_str(b, "],\"settings\":[");
-    for (int k = 0; st->have_settings && lamina_live_settings[k] && k < 4; k++) {
+    for (int k = 0; st->have_settings && lamina_live_settings[k] && k < 5; k++) {
         sb_str(b, k ? ",{\"name\":" : "{\"name\":");
         sb_json(b, lamina_live_settings[k]);
         sb_str(b, ",\"value\":");

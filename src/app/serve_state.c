@@ -134,8 +134,9 @@ static int apply_queued(serve_state *st, lua_State *L, int sidx)
 static void refresh(serve_state *st, lua_State *L, int sidx, const lm_sim *sim, double now)
 {
     st->energy = lm_sim_energy(sim);
+    st->energy_t = sim->t;
     st->have_energy = 1;
-    for (int k = 0; lamina_live_settings[k] && k < 4; k++)
+    for (int k = 0; lamina_live_settings[k] && k < 5; k++)
         setting_text(L, sidx, lamina_live_settings[k], st->settings[k], sizeof st->settings[k]);
     st->have_settings = 1;
     if (now > st->rate_wall) {
@@ -341,7 +342,7 @@ int serve_queue(serve_state *st, int kind, const char *name, const char *value, 
         int k = 0;
         while (lamina_live_settings[k] && strcmp(lamina_live_settings[k], name) != 0) k++;
         if (!lamina_live_settings[k]) {
-            snprintf(err, len, "'%s' is not a live setting (dt, gravity, pic, courant)", name);
+            snprintf(err, len, "'%s' is not a live setting (dt, gravity, pic, courant, damping)", name);
             return -1;
         }
     }

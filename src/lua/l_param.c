@@ -127,7 +127,7 @@ int lamina_set_param(lua_State *L, const char *name, const char *value, char *er
     return 0;
 }
 
-const char *const lamina_live_settings[] = {"dt", "gravity", "pic", "courant", NULL};
+const char *const lamina_live_settings[] = {"dt", "gravity", "pic", "courant", "damping", NULL};
 
 /* sim[key] = value, under lua_pcall: sim, key, value are arguments 1-3 */
 static int assign(lua_State *L)
@@ -142,7 +142,7 @@ int lamina_set_live(lua_State *L, int sidx, const char *key, const char *value, 
     int k = 0;
     while (lamina_live_settings[k] && strcmp(lamina_live_settings[k], key) != 0) k++;
     if (!lamina_live_settings[k]) {
-        snprintf(err, len, "'%s' is not a live setting (dt, gravity, pic, courant)", key);
+        snprintf(err, len, "'%s' is not a live setting (dt, gravity, pic, courant, damping)", key);
         return -1;
     }
     sidx = lua_absindex(L, sidx);

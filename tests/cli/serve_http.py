@@ -50,7 +50,7 @@ check(status == 200 and b"<" not in raw and b">" not in raw and b"&" not in raw 
 params = json.loads(raw)
 names = [p["name"] for p in params["params"]]
 check("tag<b>\"&'" in names and "amp" in names, "the names read back exactly (%s)" % names)
-check([x["name"] for x in params["settings"]] == ["dt", "gravity", "pic", "courant"], "live settings listed")
+check([x["name"] for x in params["settings"]] == ["dt", "gravity", "pic", "courant", "damping"], "live settings listed")
 
 # refusals
 check(s.request("GET", "/nope")[0] == 404, "unknown page: 404")
