@@ -37,6 +37,10 @@ typedef struct bench_bytes {
 int bench_bytes_count(lm_basis basis, lm_kind kind, lm_scheme scheme, int fused,
                       bench_bytes *out);
 
+/* Bytes a step moves per grid node in its passes over the whole grid
+ * (bench_bytes.c; the same on the fused and the phased paths). */
+double bench_bytes_grid(lm_scheme scheme);
+
 /* --sizes N,N,...: up to max particle counts in [100, 1e7] from arg into
  * sizes; their number, or -1 with the reason printed as `lamina bench CMD`. */
 int bench_sizes(const char *cmd, const char *arg, double *sizes, int max);

@@ -202,3 +202,24 @@ int bench_bytes_count(lm_basis basis, lm_kind kind, lm_scheme scheme, int fused,
     for (int k = 0; k < np; k++) add_pass(&ps[k], ns, out);
     return 0;
 }
+
+/* The passes over the whole grid (every node, empty or not): lm_step_clear
+ * or the fused path's memset of the sums made ahead (m, px, py, fx, fy
+ * written), lm_step_forces_rest (fx, fy += m g), lm_step_grid_update
+ * (px, py += dt f), lm_step_g2p_nodes (m, f, p in; a, v^L out), and step
+ * 5: USL v = p / m; MUSL v zeroed, re-mapped, then divided by m. The
+ * walls' folds and fills touch the edges only: not counted. */
+double bench_bytes_grid(lm_scheme scheme)
+{
+    const lm_grid *g = 0;
+    const double d = (double)sizeof *g->m;
+    double n = 5;       /* clear */
+    n += 3 + 2;         /* forces_rest: m, fx, fy read; fx, fy written */
+    n += 4 + 2;         /* grid update: px, py, fx, fy read; px, py written */
+    n += 5 + 4;         /* g2p nodes: m, fx, fy, px, py read; ax, ay, ux, uy written */
+    if (scheme == LM_MUSL)
+        n += 2 + 3 + 2; /* v zeroed; m, vx, vy read, vx, vy written */
+    else
+        n += 3 + 2;     /* m, px, py read; vx, vy written */
+    return n * d;
+}

@@ -4,7 +4,7 @@
  * moves more than the bilinear one, a membrane point more than an elastic
  * one (its tangent, strain and length, and the tangent passes), the fused
  * passes fewer than the phases, MUSL's re-map more than USL - and two of
- * them equal a count by hand (ours, from step_fused.c and
+ * them and the grid's passes a node equal a count by hand (ours, from step_fused.c and
  * lm_elastic_update_at: see the sums below). */
 #include "bench.h"
 #include "check.h"
@@ -55,6 +55,10 @@ int main(void)
     /* the quadratic B-spline: N, Gx, Gy (27 doubles) for xi, eta */
     bench_bytes_count(LM_BASIS_BSPLINE2, LM_ELASTIC, LM_USL, 1, &b);
     CHECK(b.particle == 2 * (4 * D + 5 * D + 27 * D + I) + D + I);  /* 596 */
+    /* the grid's passes a node: clear 5, gravity 5, update 6, g2p nodes
+     * 9, USL's v = p / m 5 doubles; MUSL's re-map 7 for those 5 */
+    CHECK(bench_bytes_grid(LM_USL) == 30 * D);
+    CHECK(bench_bytes_grid(LM_MUSL) == 32 * D);
     CHECK(bench_bytes_count((lm_basis)7, LM_ELASTIC, LM_USL, 1, &b) == -1);
     return CHECK_DONE();
 }
