@@ -11,6 +11,36 @@ int bench_threads(int argc, char **argv);
 /* The two elastic disks of bench engine at about `particles` particles on
  * nt threads, or NULL. */
 lm_sim *bench_two_disks(double particles, lm_scheme scheme, int nt);
+/* The basis bench engine's cases use (bench_engine.c; default linear). */
+void bench_set_basis(lm_basis b);
+/* bench engine's gas-filled quarter membrane (connectivity normals, MUSL)
+ * at about `particles` particles, or NULL. */
+lm_sim *bench_gas_membrane(double particles);
+/* `lamina bench roofline` (bench_roofline.c) */
+int bench_roofline(int argc, char **argv);
+/* One-core triad a[i] = b[i] + s c[i] over n doubles an array, best of
+ * `repeats`: GB/s counting 24 bytes an element (STREAM's convention). */
+double bench_triad_gbs(size_t n, int repeats);
+
+/* Bytes a step moves per particle (bench_bytes.c): `particle` bytes of the
+ * particle arrays over all passes (each array once a pass it is read in,
+ * once more a pass it is written in), `stencil` the node doubles its
+ * stencil reads or updates (from the caches, mostly), `passes` over the
+ * particles. */
+typedef struct bench_bytes {
+    double particle, stencil;
+    int passes;
+} bench_bytes;
+/* A particle of material `kind` stepped with `basis` and `scheme`, by the
+ * fused passes (fused: step_fused.c, one thread, next step following) or
+ * phase by phase (step.c). 0, or -1 for an unknown basis or kind. */
+int bench_bytes_count(lm_basis basis, lm_kind kind, lm_scheme scheme, int fused,
+                      bench_bytes *out);
+
+/* Bytes a step moves per grid node in its passes over the whole grid
+ * (bench_bytes.c; the same on the fused and the phased paths). */
+double bench_bytes_grid(lm_scheme scheme);
+
 /* --sizes N,N,...: up to max particle counts in [100, 1e7] from arg into
  * sizes; their number, or -1 with the reason printed as `lamina bench CMD`. */
 int bench_sizes(const char *cmd, const char *arg, double *sizes, int max);

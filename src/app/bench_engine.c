@@ -197,6 +197,21 @@ static lm_sim *build_gas(double h, void *ctx)
 static lm_material rubber = {.kind = LM_ELASTIC, .rho = 1000, .E = 1000, .nu = 0.3,
                               .plane = LM_PLANE_STRAIN};
 
+void bench_set_basis(lm_basis b) { basis = b; }
+
+/* the gas case's materials (bench engine's, file-wide so that
+ * bench_gas_membrane's sim can keep pointers to them) */
+static lm_material air = {.kind = LM_GAS, .rho = 1, .gamma = 1.4, .mu = 0.2,
+                          .e0 = 1000 / (0.4 * 1)};
+static lm_material skin = {.kind = LM_MEMBRANE, .rho = 0.5, .E = 1e6, .nu = 0.3,
+                           .thickness = 0.1, .law = LM_LAW_PLANE_STRESS};
+
+lm_sim *bench_gas_membrane(double particles)
+{
+    /* quarter disk of radius 0.5 at 16 ppc: about 3.14 / h^2 particles */
+    return make_gas(sqrt(3.14 / particles), &air, &skin, LM_NORMALS_CONNECTIVITY);
+}
+
 lm_sim *bench_two_disks(double particles, lm_scheme scheme, int nt)
 {
     /* two disks of radius 0.2, 4 ppc: about 1.005 / h^2 particles */
@@ -237,10 +252,6 @@ int bench_engine(int argc, char **argv)
                                  "[--threads N] [--basis linear|gimp|bspline2]");
         }
     }
-    lm_material air = {.kind = LM_GAS, .rho = 1, .gamma = 1.4, .mu = 0.2,
-                       .e0 = 1000 / (0.4 * 1)};
-    lm_material skin = {.kind = LM_MEMBRANE, .rho = 0.5, .E = 1e6, .nu = 0.3,
-                        .thickness = 0.1, .law = LM_LAW_PLANE_STRESS};
     printf("lamina bench engine: %d thread%s, basis %s, about %.3g particle-steps per case\n\n",
            threads, threads == 1 ? "" : "s", lm_basis_name(basis), work);
     printf("| case         | particles |   steps |       s | M p-steps/s | M p-steps/CPU-s |\n");

@@ -310,10 +310,12 @@ int cmd_bench(int argc, char **argv)
         return bench_engine(argc - 1, argv + 1);
     if (argc >= 1 && strcmp(argv[0], "threads") == 0)
         return bench_threads(argc - 1, argv + 1);
+    if (argc >= 1 && strcmp(argv[0], "roofline") == 0)
+        return bench_roofline(argc - 1, argv + 1);
     fprintf(stderr, "lamina bench: %s (usage: lamina bench render [--width W] "
             "[--height H] [--runs N] [--counts N,N,...] [--backend cairo|osmesa|egl|gl|all])\n",
             argc >= 1 ? "unknown benchmark" : "which benchmark?");
     if (argc >= 1)
-        fprintf(stderr, "lamina bench: '%s' is not a benchmark; known: render, engine, threads\n", argv[0]);
+        fprintf(stderr, "lamina bench: '%s' is not a benchmark; known: render, engine, threads, roofline\n", argv[0]);
     return 2;
 }

@@ -76,6 +76,12 @@ static const command_help commands[] = {
      "lamina bench threads [--sizes N,...] [--steps N] [--pairs N] [--threads N]\n"
      "                     [--idle | --loaded]",
      "1 thread against 2, idle and beside a busy loop (docs/performance.md, \"Threads\")"},
+    {"bench roofline",
+     "lamina bench roofline [--particles N] [--work PARTICLE_STEPS]\n"
+     "                      [--basis linear|gimp|bspline2|all] [--repeats N]\n"
+     "                      [--triad-mb MB]",
+     "bytes per particle-step (counted), one core's triad GB/s and the fraction\n"
+     "of it each step reaches (docs/performance.md, \"Roofline\")"},
     {"help", "lamina help [COMMAND]", "this text, or one command's"},
 };
 #define NCOMMANDS (sizeof commands / sizeof commands[0])
