@@ -70,7 +70,7 @@ local function probe(s)
 end
 
 local curves, rows, growth = {}, {}, {}
-local hash_sim
+local hashes = {}   -- every variant's state: the page's state_hash covers all of them
 local crossing
 for vi, v in ipairs(variants) do
   local sim, s = sp.setup(v.o)
@@ -90,6 +90,7 @@ for vi, v in ipairs(variants) do
       end)
     end
     local ok, err = pcall(sim.run, sim, { t_end = t_end })
+    hashes[#hashes + 1] = sim:hash()
     local worst, last = sp.growth(rec)
     local t, e = rec:column("t"), rec:column("total")
     local y = {}
@@ -100,7 +101,7 @@ for vi, v in ipairs(variants) do
     end
     growth[#growth + 1] = { v.label, worst, last, key = v.key,
                             ok and "" or ("failed: " .. tostring(err):sub(1, 80)) }
-    if vi == 1 then rows.p6, hash_sim = { t = t, y = rec:column("p6_y") }, sim end
+    if vi == 1 then rows.p6 = { t = t, y = rec:column("p6_y") } end
   end
 end
 
@@ -156,5 +157,13 @@ for _, g in ipairs(growth) do
 end
 report.edge_node_fy_before = fb[3]
 report.edge_node_fy_after = fa[3]
-report.state_hash = hash_sim:hash()
+-- all the variants' states (it was
+-- the linear run's alone, so a change of the segment variant's numbers
+-- passed the visual regression unseen), folded into one 16-digit hash as
+-- the regression reads it: FNV-1a over the variants' hashes
+local h = 0xcbf29ce484222325
+for _, c in ipairs(hashes) do
+  for i = 1, #c do h = (h ~ c:byte(i)) * 0x100000001b3 end
+end
+report.state_hash = string.format("%016x", h)
 lamina.report(report)

@@ -29,8 +29,8 @@ typedef struct outcome {
     int missing;                /* no baseline image */
     int image_same;
     int hash;                   /* enum hash_state */
-    char state_hash[17];        /* reported by the script */
-    char base_hash[17];         /* in the baseline */
+    char state_hash[65];        /* reported by the script (a longer one is refused) */
+    char base_hash[65];         /* in the baseline */
     char summary[1024];         /* the diff's summary line, or what went wrong */
 } outcome;
 
@@ -48,8 +48,15 @@ static void reported_hash(const char *report, outcome *c)
     for (size_t i = 0; vals && vals->type == LU_JSON_ARRAY && i < vals->n; i++) {
         const char *name = lu_json_string(&vals->kids[i], "name");
         const char *v = lu_json_string(&vals->kids[i], "value");
-        if (name && v && !strcmp(name, "state_hash"))
-            snprintf(c->state_hash, sizeof c->state_hash, "%s", v);
+        if (name && v && !strcmp(name, "state_hash")) {
+            /* whole or not at all: a hash cut short would compare equal
+             * where the state changed */
+            if (strlen(v) < sizeof c->state_hash)
+                snprintf(c->state_hash, sizeof c->state_hash, "%s", v);
+            else
+                snprintf(c->state_hash, sizeof c->state_hash, "(state_hash longer than %d characters)",
+                         (int)sizeof c->state_hash - 30);
+        }
     }
     lu_json_free(r);
 }
