@@ -22,7 +22,7 @@
 -- T dtheta = dp R dtheta; Timoshenko & Woinowsky-Krieger §105): T = dp R,
 -- with dp the difference of the gases' pressures as they are at rest (they
 -- compressed and expanded as the arc moved). Measured here: R by a least-
--- squares circle fit of all the membrane's points (the algebraic fit of
+-- squares circle fit of all the membrane's points (lamina.analysis.circle_fit: the algebraic fit of
 -- Kasa, then Gauss-Newton on the geometric distances); T, the mean of its
 -- points' tension sigma_t t (membrane:hoop_stress() x t); dp twice: from
 -- gas:pressure() and from the gas's energy over the space it fills (gas_arc's
@@ -111,4 +111,17 @@ do
     tostring(done), t_at, ratio, r2))
   assert(done and t_at < 0.5 and ratio <= 1e-2, "sim:relax did not get there")
   assert(math.abs(r2 - 1) < 0.01, "sim:relax: T = dp R: " .. r2)
+end
+
+-- The same arc with its two end points held by pins (body:pin, which holds
+-- only its points) as well as by the walls they lie on: the issue's
+-- "pinned membrane between two gases" reaches T = dp R as well.
+do
+  local sim3, left3, right3, mem3 = scene(c)
+  mem3:pin{ points = "ends" }
+  sim3:run{ t_end = 0.3 }
+  local R3 = circle(mem3)
+  local r3 = (left3:pressure() - right3:pressure()) * R3 / (mem3:hoop_stress() * t)
+  print(string.format("pinned ends: t = %.3f, R = %.5f, dp R / T = %.5f", sim3.t, R3, r3))
+  assert(math.abs(r3 - 1) < 0.01, "pinned ends: T = dp R: " .. r3)
 end
