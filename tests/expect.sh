@@ -3,7 +3,7 @@
 # Runs COMMAND and passes when it exits with STATUS and its stderr matches
 # every (extended) regular expression PATTERN; a PATTERN written !REGEX must
 # match no line (a scene the suite passes must not be warned of, issue 30
-# item 2). Used by the bad-input tests: a wrong input must fail with the
+# item 2) and one written =REGEX exactly one (a warning said once a process). Used by the bad-input tests: a wrong input must fail with the
 # right status and a message that says why.
 want=$1; shift
 n=0
@@ -27,6 +27,11 @@ while [ $i -le $n ]; do
     !*)
       if grep -Eq -- "${p#!}" "$err"; then
         echo "FAIL: stderr matches /${p#!}/, which it must not" >&2; rc=1
+      fi ;;
+    =*)
+      c=$(grep -Ec -- "${p#=}" "$err")
+      if [ "$c" != 1 ]; then
+        echo "FAIL: stderr matches /${p#=}/ on $c lines, not once" >&2; rc=1
       fi ;;
     *)
       if ! grep -Eq -- "$p" "$err"; then

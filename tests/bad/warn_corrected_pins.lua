@@ -1,5 +1,6 @@
 -- expect: 0
 -- stderr: warning: membrane 'string' \(body 1\) is pinned under mass = "corrected": .*22\.6 / 2\.7 %.*0\.64 % of a cell.*string_pin_\*, pinned_rest\); mass = "lumped" \(the default\) passes them
+-- stderr-once: lamina: warning:
 -- A pinned membrane under the corrected mass is warned of once (issue 30
 -- item 2; l_option_warn.c): the verification case pinned_rest's string at
 -- cell 1/16, two sims, one warning.

@@ -1,5 +1,6 @@
 -- expect: 0
 -- stderr: warning: body 'block' \(body 2\) slides with law = "friction" under scheme = "musl" .*case incline\); scheme = "usl" gives -0\.07 / -2\.44 / -0\.16 %
+-- stderr-once: lamina: warning:
 -- Friction under the default scheme is warned of once (issue 30 item 2;
 -- l_option_warn.c): the verification case incline's block, two sims, one
 -- warning.
