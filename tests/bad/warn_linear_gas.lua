@@ -1,5 +1,6 @@
 -- expect: 0
 -- stderr: warning: body 'gas' \(body 1\) on basis = "linear": .*sqrt\(\(gamma - 1\) p / rho\).*gas_acoustic
+-- stderr-once: lamina: warning:
 -- A gas on the bilinear basis is warned of once (issue 30 item 2; l_option_warn.c):
 -- two sims, one warning.
 for k = 1, 2 do
