@@ -73,11 +73,13 @@ function M.ball_net(o)
 end
 
 -- o.theta (degrees), o.mu, o.basis, o.threads, o.third (a third body in a
--- release pair with the block). Returns sim, block, g.
+-- release pair with the block), o.scheme, o.law ("friction" by default; a
+-- "release" pair takes no mu). Returns sim, block, g.
 function M.incline(o)
   local g, th = 10, math.rad(o.theta)
   local sim = lamina.sim{ domain = {0, 0, 4, 1.5}, cell = 0.1, dt = 2e-4, basis = o.basis,
-                          threads = o.threads, gravity = {g * math.sin(th), -g * math.cos(th)} }
+                          threads = o.threads, scheme = o.scheme,
+                          gravity = {g * math.sin(th), -g * math.cos(th)} }
   local mat = lamina.elastic{ rho = 1, E = 1e4, nu = 0.3, plane = "strain" }
   local plane = sim:body{ material = mat, ppc = 4, name = "plane",
                           region = lamina.rect{ min = {0.2, 0.2}, max = {3.8, 0.6} } }
@@ -86,7 +88,8 @@ function M.incline(o)
                           region = lamina.rect{ min = {0.5, 0.6}, max = {1.0, 0.9} } }
   local third = o.third and sim:body{ material = mat, ppc = 4, name = "third", velocity = {-1, 0},
                                       region = lamina.rect{ min = {1.6, 0.6}, max = {2.0, 0.9} } }
-  sim:contact{ block, plane, law = "friction", mu = o.mu }
+  local law = o.law or "friction"
+  sim:contact{ block, plane, law = law, mu = law == "friction" and o.mu or nil }
   if third then sim:contact{ third, block, law = "release" } end
   return sim, block, g
 end

@@ -12,6 +12,8 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from serve_lib import Server, check, finish, wait_until  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from png_text import png_texts  # noqa: E402
 
 try:
     from selenium import webdriver
@@ -92,31 +94,6 @@ s.proc.send_signal(signal.SIGTERM)
 check(s.wait() == 143, "SIGTERM ends the server (143)")
 with open(os.path.join(W, "out", "amp.csv")) as f:
     check("4.5" in f.read().splitlines()[-1].split(",")[-1], "amp.csv ends with amp = 4.5")
-
-
-def png_texts(path):
-    """The PNG's text chunks (tEXt, and iTXt / zTXt read as text), keyword -> text."""
-    import struct
-    import zlib
-    out = {}
-    with open(path, "rb") as f:
-        data = f.read()
-    i = 8
-    while i + 8 <= len(data):
-        n, kind = struct.unpack(">I4s", data[i:i + 8])
-        body = data[i + 8:i + 8 + n]
-        if kind in (b"tEXt", b"zTXt", b"iTXt"):
-            key, _, rest = body.partition(b"\0")
-            if kind == b"zTXt":
-                rest = zlib.decompress(rest[1:])
-            elif kind == b"iTXt":
-                flag = rest[0]
-                rest = rest[2:].split(b"\0", 2)[2]
-                if flag:
-                    rest = zlib.decompress(rest)
-            out[key.decode("latin-1")] = rest.decode("utf-8", "replace")
-        i += 12 + n
-    return out
 
 
 # the script's last frame (drawn after the change) says so in its own title
