@@ -64,6 +64,14 @@ static int pinned_membrane(const lm_sim *sim)
     return -1;
 }
 
+/* Says "lamina: warning: <body> <text>" once a process (*said counts). */
+static void say_once(const lm_sim *sim, int body, int *said, const char *text)
+{
+    char who[96];
+    if (body < 0 || (*said)++) return;
+    fprintf(stderr, "lamina: warning: %s %s\n", lm_body_label(sim, body, who, sizeof who), text);
+}
+
 void la_option_warn(const la_sim *s)
 {
     static int said_gas, said_point, said_friction, said_corrected;
@@ -75,38 +83,27 @@ void la_option_warn(const la_sim *s)
         if (kind == LM_GAS && gas < 0) gas = b;
         if (bd->membrane && bd->force == LM_MFORCE_POINT && point < 0) point = b;
     }
-    char who[96];
-    if (gas >= 0 && sim->def.basis == LM_BASIS_LINEAR && !said_gas++)
-        fprintf(stderr,
-                "lamina: warning: %s on basis = \"linear\": while its points stay in their "
-                "cells the bilinear basis gives the gas a sound speed of sqrt((gamma - 1) p / rho), "
-                "not sqrt(gamma p / rho) (docs/verification.md, case gas_acoustic: period +88 %%); "
-                "basis = \"bspline2\" (the default) or \"gimp\" do not\n",
-                lm_body_label(sim, gas, who, sizeof who));
-    if (point >= 0 && !said_point++)
-        fprintf(stderr,
-                "lamina: warning: %s has force = \"point\": with point forces the verification "
-                "suite's strings miss their periods by 3-50 %% and do not keep their energy, and "
-                "on the bilinear basis its chain, balloon and circles tear (docs/verification.md, "
-                "cases string_wall_*, string_pin_*, catenary, balloon_drop); force = \"segment\" "
-                "(the default) passes them\n",
-                lm_body_label(sim, point, who, sizeof who));
-    int fb = sim->def.scheme == LM_MUSL ? friction_body(sim) : -1;
-    if (fb >= 0 && !said_friction++)
-        fprintf(stderr,
-                "lamina: warning: %s slides with law = \"friction\" under scheme = \"musl\" "
-                "(the default): the verification suite's block on an incline is held back harder "
-                "than Coulomb allows as the cell shrinks, acceleration -0.32 / -13.6 / -11.9 %% at "
-                "cells 0.1 / 0.05 / 0.025 on basis = \"gimp\" (docs/verification.md, case "
-                "incline); scheme = \"usl\" gives -0.07 / -2.44 / -0.16 %%\n",
-                lm_body_label(sim, fb, who, sizeof who));
-    int pm = sim->def.mass == LM_MASS_CORRECTED ? pinned_membrane(sim) : -1;
-    if (pm >= 0 && !said_corrected++)
-        fprintf(stderr,
-                "lamina: warning: %s is pinned under mass = \"corrected\": the correction runs "
-                "before the pins' constraint, so pinned strings lose energy (mode 1: 22.6 / 2.7 %% "
-                "at cells 1/16 / 1/32) and a pinned membrane at rest moves 0.64 %% of a cell "
-                "(docs/robustness.md \"Corrected mass\", cases string_pin_*, pinned_rest); "
-                "mass = \"lumped\" (the default) passes them\n",
-                lm_body_label(sim, pm, who, sizeof who));
+    say_once(sim, sim->def.basis == LM_BASIS_LINEAR ? gas : -1, &said_gas,
+             "on basis = \"linear\": while its points stay in their "
+             "cells the bilinear basis gives the gas a sound speed of sqrt((gamma - 1) p / rho), "
+             "not sqrt(gamma p / rho) (docs/verification.md, case gas_acoustic: period +88 %); "
+             "basis = \"bspline2\" (the default) or \"gimp\" do not");
+    say_once(sim, point, &said_point,
+             "has force = \"point\": with point forces the verification "
+             "suite's strings miss their periods by 3-50 % and do not keep their energy, and "
+             "on the bilinear basis its chain, balloon and circles tear (docs/verification.md, "
+             "cases string_wall_*, string_pin_*, catenary, balloon_drop); force = \"segment\" "
+             "(the default) passes them");
+    say_once(sim, sim->def.scheme == LM_MUSL ? friction_body(sim) : -1, &said_friction,
+             "slides with law = \"friction\" under scheme = \"musl\" "
+             "(the default): the verification suite's block on an incline is held back harder "
+             "than Coulomb allows as the cell shrinks, acceleration -0.32 / -13.6 / -11.9 % at "
+             "cells 0.1 / 0.05 / 0.025 on basis = \"gimp\" (docs/verification.md, case "
+             "incline); scheme = \"usl\" gives -0.07 / -2.44 / -0.16 %");
+    say_once(sim, sim->def.mass == LM_MASS_CORRECTED ? pinned_membrane(sim) : -1, &said_corrected,
+             "is pinned under mass = \"corrected\": the correction runs "
+             "before the pins' constraint, so pinned strings lose energy (mode 1: 22.6 / 2.7 % "
+             "at cells 1/16 / 1/32) and a pinned membrane at rest moves 0.64 % of a cell "
+             "(docs/robustness.md \"Corrected mass\", cases string_pin_*, pinned_rest); "
+             "mass = \"lumped\" (the default) passes them");
 }
