@@ -11,20 +11,27 @@ are given.
 This test reads the other layers' C files and fails on any assignment
 (=, +=, ..., ++, --) whose target goes through the engine's structs: a
 variable declared as a pointer to a non-const lm_sim, lm_body,
-lm_particles, lm_grid or lm_pin, or a path through `->sim->` (the Lua
-layer's handle on its engine). A pointer declared const cannot be
+lm_particles, lm_grid, lm_pin, lm_link or lm_material, or a path through
+`->sim->` (the Lua layer's handle on its engine). A pointer declared const cannot be
 written through, so the way to pass it is to read through const pointers.
 Declaring an engine struct by value (lm_sim_def d; lm_membrane_def def) to
 fill it and hand it to the engine is the intended use and is allowed.
 
 Usage: engine_writes.py [REPO_ROOT]   (default: this file's ../)
-       engine_writes.py --self-test     (a source with four writes and three
-                                         reads must fail with those four) """
+       engine_writes.py --self-test     (a source with six writes and three
+                                         reads must fail with those six) """
 import os
 import re
 import sys
 
-ENGINE_TYPES = r"(?:lm_sim|lm_body|lm_particles|lm_grid|lm_pin)"
+ENGINE_TYPES = r"(?:lm_sim|lm_body|lm_particles|lm_grid|lm_pin|lm_link|lm_material)"
+# Files that still write engine state, each with the change that ends it.
+# l_material.c: a material's userdata is the lm_material a simulation
+# borrows (sim->mats); issue 33 item 1's setter, by which the engine copies
+# and owns its materials, takes this entry out.
+PENDING = {
+    "src/lua/l_material.c": "the engine borrows the material (issue 33 item 1: a setter)",
+}
 # `lm_body *bd`, `lm_sim *sim = ...`, `lm_particles *const p` - not `const lm_body *`
 DECL = re.compile(r"(?<![\w])(?<!const )" + ENGINE_TYPES + r"\s*\*\s*(?:const\s+)?(\w+)")
 PATHS = re.compile(r"->sim->")   # la_sim's engine pointer
@@ -102,7 +109,8 @@ def writes(path, text):
 
 
 SELF_TEST = """
-static void f(lm_sim *sim, const lm_sim *view, la_sim *s, lm_body *bd)
+static void f(lm_sim *sim, const lm_sim *view, la_sim *s, lm_body *bd,
+              lm_material *mat, const lm_material *seen)
 {
     sim->t = 1;                         /* write 1 */
     s->sim->def.pic = 0.5;              /* write 2 */
@@ -113,6 +121,8 @@ static void f(lm_sim *sim, const lm_sim *view, la_sim *s, lm_body *bd)
     d.dt = 1e-3;                        /* a definition by value: allowed */
     for (int b = 0; b < sim->nbodies; b++) x += sim->bodies[b].count;   /* read */
     s->sim->bodies[0].force = 1;        /* write 4 */
+    mat->E = 2 * seen->E;               /* write 5: a material's field */
+    sim->mats[0]->nu = 0.3;             /* write 6 */
 }
 """
 
@@ -121,14 +131,14 @@ def main():
     if "--self-test" in sys.argv:
         got = writes("self", SELF_TEST)
         lines = [int(l.split(":")[1]) for l in got]
-        ok = lines == [3, 4, 5, 11]   # the four writes' lines
+        ok = lines == [4, 5, 6, 12, 13, 14]   # the six writes' lines
         print("\n".join(got))
-        print("engine_writes self-test: lines %s, expected [3, 4, 5, 11]: %s"
+        print("engine_writes self-test: lines %s, expected [4, 5, 6, 12, 13, 14]: %s"
               % (lines, "ok" if ok else "FAILED"))
         return 0 if ok else 1
     args = [a for a in sys.argv[1:] if not a.startswith("--")]
     root = os.path.abspath(args[0] if args else os.path.join(os.path.dirname(__file__), ".."))
-    found, files = [], 0
+    found, pending, files = [], [], 0
     for layer in ("lua", "app", "render"):
         base = os.path.join(root, "src", layer)
         for dirpath, _, names in os.walk(base):
@@ -136,10 +146,15 @@ def main():
                 if not n.endswith(".c"):
                     continue
                 p = os.path.join(dirpath, n)
+                rel = os.path.relpath(p, root)
                 with open(p, encoding="utf-8") as f:
-                    found += writes(os.path.relpath(p, root), f.read())
+                    got = writes(rel, f.read())
+                if rel in PENDING:
+                    pending.append("%s: %d writes, pending: %s" % (rel, len(got), PENDING[rel]))
+                else:
+                    found += got
                 files += 1
-    for w in found:
+    for w in found + pending:
         print(w)
     print("engine_writes: %d files of src/lua, src/app, src/render; %d writes to engine state"
           % (files, len(found)))

@@ -1,7 +1,7 @@
 -- courant_string.lua - the largest stable dt c / h of a taut string with
 -- segment forces (sim:membrane{force = "segment"}) on fixed walls, lumped
 -- against corrected mass (lamina.sim{mass}; docs/robustness.md "Corrected
--- mass", LM_SEGMENT_COURANT and LM_CORRECTED_COURANT in src/mpm/mpm.h).
+-- mass", LM_SEGMENT_COURANT and LM_CORRECTED_COURANT in src/mpm/include/mpm.h).
 --
 -- The string of tests/verify/lib/string_modes.lua (E 5e4, rho 100,
 -- t 0.01, eps0 0.01, points h/2 apart, mode 1 of amplitude 2e-4), c =

@@ -28,9 +28,9 @@
 #include <string.h>
 #include <time.h>
 
-#include "contact.h"
 #include "bench.h"
 #include "mpm.h"
+#include "mpm_contact.h"
 
 static double clock_s(clockid_t id)
 {

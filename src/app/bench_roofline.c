@@ -20,7 +20,6 @@
 
 #include "bench.h"
 #include "mpm.h"
-#include "step.h"   /* lm_grid_nodes */
 
 static double now(void)
 {

@@ -9,7 +9,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "contact.h"
+#include "mpm_contact.h"
 #include "l_internal.h"
 
 static const char *const laws[] = {"release", "friction", NULL};
@@ -78,17 +78,17 @@ static int sim_contact(lua_State *L)
 static int sim_contact_info(lua_State *L)
 {
     la_sim *s = la_check_sim(L, 1);
-    const lm_contact *c = s->sim->contact;
-    if (!c || c->npairs == 0) {
+    lm_contact_info c;
+    if (lm_sim_contact_info(s->sim, &c) != 0) {
         lua_pushnil(L);
         return 1;
     }
     lua_createtable(L, 0, 5);
-    lua_pushinteger(L, c->nodes_stick); lua_setfield(L, -2, "stick");
-    lua_pushinteger(L, c->nodes_release); lua_setfield(L, -2, "release");
-    lua_pushinteger(L, c->nodes_slide); lua_setfield(L, -2, "slide");
-    lua_pushnumber(L, c->ke_before); lua_setfield(L, -2, "ke_before");
-    lua_pushnumber(L, c->ke_after); lua_setfield(L, -2, "ke_after");
+    lua_pushinteger(L, c.stick); lua_setfield(L, -2, "stick");
+    lua_pushinteger(L, c.release); lua_setfield(L, -2, "release");
+    lua_pushinteger(L, c.slide); lua_setfield(L, -2, "slide");
+    lua_pushnumber(L, c.ke_before); lua_setfield(L, -2, "ke_before");
+    lua_pushnumber(L, c.ke_after); lua_setfield(L, -2, "ke_after");
     return 1;
 }
 

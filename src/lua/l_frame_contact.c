@@ -1,7 +1,7 @@
 /* l_frame_contact.c - sim:frame{contact = true}: what contact did in the last
  * step, drawn over the particles (issue 14, item 4).
  *
- * At every node where a contact pair met (contact.h), each paired body with
+ * At every node where a contact pair met (mpm_contact.h), each paired body with
  * mass there gets its outward grid normal, -grad chi ([M] eqs 27-28, the
  * normals of [M] Fig 19 and [T] Fig 101), as an arrow 0.6 cell long in the
  * body's colour; and the node a mark in the colour of what happened there:
@@ -19,9 +19,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "contact.h"
 #include "l_frame_panel.h"
-#include "step.h"
+#include "mpm_contact.h"
 
 /* The nodes shown: 1 at a node where a pair met and which is the first
  * such node of its every x every block. */
@@ -94,23 +93,24 @@ static lr_arrows node_arrows(lua_State *L, la_frame_ctx *ctx, const lm_grid *g,
 void la_frame_contact(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int every,
                       double scale, int outlined, lr_layers *l)
 {
-    const lm_contact *c = sim->contact;
-    if (!c || c->npairs == 0 || !c->state) return;
+    const unsigned char *state = lm_sim_contact_state(sim);
+    if (!state) return;
+    int nf = lm_sim_contact_fields(sim);
     const lm_grid *g = &sim->grid;
     double h = fmin(g->hx, g->hy);
-    const unsigned char *shown = shown_nodes(L, ctx, g, c->state, every);
+    const unsigned char *shown = shown_nodes(L, ctx, g, state, every);
     /* arrows: the old sets, one per paired body (each after its white
      * outline when outlined), three node marks */
-    size_t nsets = l->narrows + (size_t)c->nf * (outlined ? 2 : 1) + 3;
+    size_t nsets = l->narrows + (size_t)nf * (outlined ? 2 : 1) + 3;
     lr_arrows *sets = la_frame_scratch(L, ctx, nsets * sizeof *sets);
     if (l->narrows) memcpy(sets, l->arrows, l->narrows * sizeof *sets);
     size_t k = l->narrows;
-    for (int f = 0; f < c->nf; f++, k++) {
-        const lm_contact_field *cf = &c->f[f];
-        const arrow_pick normals = { .m = cf->m, .nx = cf->nx, .ny = cf->ny };
+    for (int f = 0; f < nf; f++, k++) {
+        arrow_pick normals = { 0 };
+        int body = lm_sim_contact_field(sim, f, &normals.m, &normals.nx, &normals.ny);
         sets[k] = node_arrows(L, ctx, g, shown, &normals,
                               (lr_arrows){ .length = 0.6 * h * scale, .width = 1.5, .head = 6.0,
-                                           .colour = lr_palette(cf->body) });
+                                           .colour = lr_palette(body) });
         if (outlined) {
             sets[k + 1] = sets[k];
             sets[k + 1].width = 2.0;
@@ -125,7 +125,7 @@ void la_frame_contact(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int every,
                                      {0.85, 0.1, 0.75, 1} };
     for (int s = 0; s < 3; s++, k++) {
         /* a short thick bar centred on the node: a square mark */
-        const arrow_pick marks = { .state = c->state, .want = s + 1, .dx = 0.08 * h };
+        const arrow_pick marks = { .state = state, .want = s + 1, .dx = 0.08 * h };
         sets[k] = node_arrows(L, ctx, g, shown, &marks,
                               (lr_arrows){ .length = 0.16 * h, .width = 5.0, .head = 0.0,
                                            .colour = mark[s] });

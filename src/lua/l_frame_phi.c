@@ -17,7 +17,7 @@
 
 #include "l_frame_panel.h"
 #include "layers.h"
-#include "normals.h"
+#include "mpm_normals.h"
 
 #define SAMPLES 12      /* intervals per side of a sampled square */
 #define NLEVELS 4

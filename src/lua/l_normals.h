@@ -6,7 +6,7 @@
 
 #include <lua.h>
 
-#include "normals.h"
+#include "mpm_normals.h"
 
 #define LA_NFIELD "lamina.nfield"
 #define LA_FIGURE "lamina.figure"

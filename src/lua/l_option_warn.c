@@ -41,18 +41,8 @@
  * page that runs four cells says it once, not four times. */
 #include <stdio.h>
 
-#include "contact.h"
+#include "mpm_contact.h"
 #include "l_internal.h"
-
-/* The first body in a friction pair, or -1. */
-static int friction_body(const lm_sim *sim)
-{
-    const struct lm_contact *c = sim->contact;
-    if (!c) return -1;
-    for (int k = 0; k < c->npairs; k++)
-        if (c->pairs[k].law == LM_CONTACT_FRICTION) return c->f[c->pairs[k].a].body;
-    return -1;
-}
 
 /* The first membrane a pin holds, or -1. */
 static int pinned_membrane(const lm_sim *sim)
@@ -94,7 +84,7 @@ void la_option_warn(const la_sim *s)
              "on the bilinear basis its chain, balloon and circles tear (docs/verification.md, "
              "cases string_wall_*, string_pin_*, catenary, balloon_drop); force = \"segment\" "
              "(the default) passes them");
-    say_once(sim, sim->def.scheme == LM_MUSL ? friction_body(sim) : -1, &said_friction,
+    say_once(sim, sim->def.scheme == LM_MUSL ? lm_sim_contact_friction_body(sim) : -1, &said_friction,
              "slides with law = \"friction\" under scheme = \"musl\" "
              "(the default): the verification suite's block on an incline is held back harder "
              "than Coulomb allows as the cell shrinks, acceleration -0.32 / -13.6 / -11.9 % at "

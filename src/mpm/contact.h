@@ -17,19 +17,7 @@
 #include <string.h>
 
 #include "mpm.h"
-
-typedef enum lm_contact_law {
-    LM_CONTACT_RELEASE = 1,    /* [M] eq 26: own field when separating */
-    LM_CONTACT_FRICTION = 2    /* release, and Coulomb sliding when pressed */
-} lm_contact_law;
-
-/* What a node did in the last step (for frames and tests). */
-enum {
-    LM_CNODE_NONE = 0,     /* no pair meets here */
-    LM_CNODE_STICK = 1,    /* a pair met and moved in the centre-of-mass field */
-    LM_CNODE_RELEASE = 2,  /* a body moved in its own field */
-    LM_CNODE_SLIDE = 3     /* a friction pair slid along its common tangent */
-};
+#include "mpm_contact.h"   /* the public part: laws, node states, pairs */
 
 typedef struct lm_contact_pair {
     int a, b;              /* indices into lm_contact.f */
@@ -218,9 +206,6 @@ static inline void lm_contact_gradient_near(const lm_sim *sim, size_t q, double 
     if (c->of_body[sim->p.body[q]] >= 0 && c->qflag[q] & 2) lm_contact_gradient(sim, q, L);
 }
 
-/* Adds a pair (bodies a != b); -1 with sim->err naming the key if the
- * input is bad. mu only for friction (>= 0). */
-int lm_sim_add_contact(lm_sim *sim, int a, int b, lm_contact_law law, double mu);
 void lm_contact_free(lm_contact *c);
 
 /* The hooks of the step (lm_sim_step), each a no-op without pairs:

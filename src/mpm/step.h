@@ -130,12 +130,6 @@ static inline int lm_shape_nearest(double f, int n, double *d)
     if ((c == 0 || c == n) && fabs(*d) < 1e-9) *d = 0;
     return c;
 }
-/* Node (i, j) of the grid, -pad <= i <= nx + pad. */
-static inline long lm_grid_node(const lm_grid *g, int i, int j)
-{
-    return (long)(j + g->pad) * g->sx + (i + g->pad);
-}
-
 void lm_step_clear(lm_sim *sim);            /* 0. empty nodal sums (step 9) */
 void lm_step_shape(lm_sim *sim);            /* N_ip, G_ip at x^k */
 void lm_step_p2g(lm_sim *sim);              /* 1. m_i, p_i */
@@ -184,8 +178,6 @@ void lm_grid_apply_bc(const lm_grid *g, double *ux, double *uy);
  * step 5 (MUSL), the re-mapped velocities in (vx, vy), (sx, sy) scratch. */
 void lm_mass_correct_momentum_forces(lm_sim *sim);
 void lm_mass_correct_velocity(lm_sim *sim, double *sx, double *sy);
-/* Nodes of the arrays, ghosts included. */
-size_t lm_grid_nodes(const lm_grid *g);
 /* Sets the ghost ring and stride for the basis (lm_sim_new). */
 void lm_grid_layout(lm_grid *g, lm_basis basis);
 

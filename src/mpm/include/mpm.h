@@ -117,6 +117,14 @@ typedef struct lm_grid {
     long blo[LM_MAX_THREADS], bhi[LM_MAX_THREADS];   /* and its particles touch */
 } lm_grid;
 
+/* Node (i, j) of the grid's arrays, -pad <= i <= nx + pad. */
+static inline long lm_grid_node(const lm_grid *g, int i, int j)
+{
+    return (long)(j + g->pad) * g->sx + (i + g->pad);
+}
+/* Nodes of the arrays, ghosts included. */
+size_t lm_grid_nodes(const lm_grid *g);
+
 /* ---- particles (particles.c) -------------------------------------------- */
 
 typedef struct lm_particles {
@@ -426,7 +434,7 @@ double lm_link_tension(const lm_sim *sim, int k);   /* 0 when removed */
 size_t lm_membrane_segment_slack(const lm_sim *sim, int b, size_t *taut);
 
 /* The phi of membrane body b's normals construction ([N] §3) at its
- * present points, element by element, into rep (normals.h; free with
+ * present points, element by element, into rep (mpm_normals.h; free with
  * lm_nreport_free): for "isosurface", "hybrid", "linear" and
  * "mass_matrix" the fit the last step made (same points, same random
  * points: the same fit); for connectivity membranes the isosurface
