@@ -69,4 +69,31 @@ function M.growth(rec)
   return worst, last
 end
 
+-- Nodal force f_y of each node row (the string at mid-cell splits its
+-- weights half and half between the row's two nodes: the sum is shown)
+-- from the point stresses, as step 2 forms it with point quadrature:
+-- f_i = -sum_p V_p sigma_p . grad N_i(x_p) + m_i g (fi: the internal part
+-- alone); and each cell's volume-weighted mean sigma_y (the "sy" of Figs
+-- 103-104).
+M.Y0 = 1.4      -- the domain's bottom: node rows at Y0 + j h
+function M.probe(s)
+  local P = s:particles()
+  local f, fi, sy, vol = {}, {}, {}, {}
+  for q = 1, P.n do
+    local fy = (P.y[q] - M.Y0) / M.h
+    local j = math.max(0, math.floor(fy))
+    local eta = fy - j
+    local V = P.mass[q] / P.rho[q]
+    local push = V * P.syy[q] / M.h
+    f[j] = (f[j] or 0) + push - M.g * P.mass[q] * (1 - eta)
+    f[j + 1] = (f[j + 1] or 0) - push - M.g * P.mass[q] * eta
+    fi[j] = (fi[j] or 0) + push
+    fi[j + 1] = (fi[j + 1] or 0) - push
+    sy[j] = (sy[j] or 0) + V * P.syy[q]
+    vol[j] = (vol[j] or 0) + V
+  end
+  for j, v in pairs(vol) do sy[j] = sy[j] / v end
+  return { f = f, fi = fi, sy = sy, y6 = P.y[6], row6 = math.floor((P.y[6] - M.Y0) / M.h) }
+end
+
 return M
