@@ -11,12 +11,15 @@
 --   dying out, one colour range (850 to 1150) for every time
 -- checks: at t = 0.05 (the mean over its last 5 ms, about one and a half
 --   ringing periods) the hoop stress against p r / t of the run (ours, with
---   that window's p and radius) within 10 %: [T] §6.2 (Table 6) finds
---   "nominally a ten percent difference between the theoretical value and
---   the simulation value" for the gas-filled membrane ([N] §8 prints no
---   number); that it is at rest there, its hoop stress's swing over the
---   window (the undamped run's beside it); radius at 0 and 90 degrees equal;
---   no gas outside the membrane
+--   that window's p and radius; [N] §8 prints no number): lamina's
+--   membrane is a line, so at rest p r / t is its exact balance but for
+--   where the gas presses: the gas's outermost points lie up to half their
+--   spacing (h / 8 = 0.0125 at 16 per cell) inside the membrane's points,
+--   0.0125 / 0.5 = 2.5 % of r, which is the tolerance (the 10 % this page
+--   had was [T]'s words on the dog-bone, another run); that it is at rest
+--   there, its hoop stress's swing over the window (the undamped run's
+--   beside it); radius at 0 and 90 degrees equal; no gas outside the
+--   membrane
 -- assumed: the normals paper's set-up: radius 0.5, 91 points, E = 1e6,
 --   nu = 0.3, rho = 0.5, t = 0.1 (plane stress), initially slack (unstressed
 --   at radius 0.5, as §8 starts it), gas gamma = 1.4, p0 = 1000, rho = 1,
@@ -46,11 +49,13 @@ local t_end = lamina.param("t_end", 0.05)
 local damping = 400
 -- the same run undamped, for the grey curve: mu = 0.2 alone
 local free = {}
+local free_hash
 do
   local fsim, _, fmem = require("circle_membrane").setup()
   local frec = fsim:record{ every = 1e-4, values = { hoop = function() return fmem:hoop_stress() end } }
   fsim:run{ t_end = t_end }
   free.t, free.hoop = frec:column("t"), frec:column("hoop")
+  free_hash = fsim:hash()
 end
 local sim, gas, mem = require("circle_membrane").setup()
 sim.damping = damping
@@ -100,12 +105,21 @@ local function swing(ts, hs)
   return 100 * (hi - lo) / theory
 end
 lamina.report{
-  hoop_stress = { hm, ref = theory, tol = 0.10 * theory, unit = "(p r / t)" },
+  -- tol: the gas's edge known to half its point spacing, 0.0125 / 0.5 (header)
+  hoop_stress = { hm, ref = theory, tol = 0.025 * theory,
+                  unit = "(p r / t; tol 2.5 %: the gas's edge to half its spacing, h / 8 over r)" },
   hoop_swing = { swing(t, hoop), unit = "% of p r / t, last 5 ms" },
   hoop_swing_undamped = { swing(free.t, free.hoop), unit = "% of p r / t, last 5 ms, mu = 0.2 alone" },
   pressure = pm,
   radius_0 = rm, radius_90 = r90m,
   gas_outside = escaped,
   damping = damping,
-  state_hash = sim:hash(),
+  -- both runs' states (FNV-1a over their hashes, as noise_spring)
+  state_hash = (function()
+    local hv = 0xcbf29ce484222325
+    for _, x in ipairs{ sim:hash(), free_hash } do
+      for i = 1, #x do hv = (hv ~ x:byte(i)) * 0x100000001b3 end
+    end
+    return string.format("%016x", hv)
+  end)(),
 }

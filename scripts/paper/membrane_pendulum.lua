@@ -15,6 +15,13 @@
 --   rho = 1, t = 0.01 the light string's cell-crossing noise grows under
 --   pure FLIP; even here it does at cells <= 0.05 (the run fails near
 --   t = 1.2), so every refinement uses a 0.1 % PIC blend (pic = 0.001).
+--   The cause (membrane_pendulum_no_wrinkle's page): under the one-way law
+--   the point form's strains, sums of the grid's noisy t.de.t, ratchet
+--   down, since only a positive error is pushed back by its stress; the
+--   points by the end mass go slack and it pulls the string apart. The
+--   segment form (strain from the points' spacing) has no drift, but also
+--   none of the papers' amplitude loss (0.17-0.31 deg rms at every cell
+--   without PIC): the papers' convergence is shown on their point form.
 --   The pivot is the first point, on the fixed top wall.
 -- visual: finest=0.1
 -- thumb: fig12_theta.png

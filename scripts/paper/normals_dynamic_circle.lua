@@ -6,12 +6,20 @@
 --   arrows are fixed by orienting away from the centre); the gas coloured
 --   by its points' pressure (one range, 700-1300, for every frame), the
 --   membrane in its own colour; the gas pressure histories of the two runs
---   lie on top of each other
--- checks: the largest difference of the two pressure histories (the test
---   asks for 5 %); the worst normal error per step against the radial
---   direction and against each point's connectivity normal (median and
---   maximum, points away from the two ends)
--- assumed: V6's set-up (see gas_circular_membrane); normals = "isosurface":
+--   lie on top of each other, ring a few times and are at rest by t = 0.03
+--   (Fig 12's bottom row, t = 0.05, is the equilibrium), then drift apart
+--   a little ([N]: "a drift after a large number of timesteps")
+-- checks: the largest difference of the two pressure histories ([N] §8
+--   "quite similar, especially for early times", no number: ours, within
+--   2.5 %, the share of r by which the gas's edge is known, h / 8 over r,
+--   as gas_circular_membrane derives it); the worst normal error per step
+--   against the radial direction and against each point's connectivity
+--   normal (median and maximum, points away from the two ends; no
+--   tolerance: [N] says "quite accurately")
+-- assumed: V6's set-up (see gas_circular_membrane), with its grid damping
+--   (c = 400 1/s, lamina's, not the paper's: lamina's mu = 0.2 alone leaves
+--   the membrane ringing at t = 0.05, where [N] shows "the final
+--   configuration ... at equilibrium"); normals = "isosurface":
 --   [N] §3-6 on one-cell elements centred near each point, quadratic, with
 --   lamina's curvature rows and a random point kept clear of the membrane
 --   (docs/normals.md "Centred elements"; the paper's per-cell hybrid rule
@@ -29,6 +37,9 @@ local circle = require("circle_membrane")
 
 local iso, iso_gas, iso_mem = circle.setup{ normals = "isosurface" }
 local con, con_gas = circle.setup{ normals = "connectivity" }
+-- at rest by t = 0.05 as [N] Fig 12's bottom row (gas_circular_membrane's
+-- header: mu = 0.2 alone barely damps the membrane's breathing)
+iso.damping, con.damping = 400, 400
 local worst, worst_c = {}, {}
 local rec_i = iso:record{ every = 1e-4, values = { p = function() return iso_gas:pressure("particles") end,
   err = function()
@@ -69,9 +80,17 @@ lamina.plot{ file = out .. "/fig13_pressure.png", csv = true, width = 640, heigh
 table.sort(worst)
 table.sort(worst_c)
 lamina.report{
-  pressure_difference = { 100 * dev, unit = "% (largest)", ref = 0, tol = 5 },
+  pressure_difference = { 100 * dev, ref = 0, tol = 2.5,
+                          unit = "% (largest; ours: tol h / 8 over r, gas_circular_membrane's derivation)" },
   normal_error_median = { worst[math.ceil(0.5 * #worst)], unit = "deg" },
-  normal_error_max = { worst[#worst], unit = "deg", tol = 2 },
+  normal_error_max = { worst[#worst], unit = "deg" },
   normal_error_vs_connectivity_max = { worst_c[#worst_c], unit = "deg" },
-  state_hash = iso:hash(),
+  -- both runs' states (FNV-1a over their hashes, as noise_spring)
+  state_hash = (function()
+    local hv = 0xcbf29ce484222325
+    for _, x in ipairs{ iso:hash(), con:hash() } do
+      for i = 1, #x do hv = (hv ~ x:byte(i)) * 0x100000001b3 end
+    end
+    return string.format("%016x", hv)
+  end)(),
 }

@@ -6,7 +6,8 @@
 --       random point fell; (c) has 4 points and (d) 8.
 -- checks: the largest angle between computed and exact normals over every slope of Table I and
 --         100 random points each (paper: exact "to within roundoff"); min / max / median cond(T)
---         per slope beside Tables I-II (same order of magnitude expected); cond of panels (c), (d)
+--         per slope beside Tables I-II (the medians in the report, without tolerance: the paper
+--         states none; the largest log10 ratio within 1 is ours); cond of panels (c), (d)
 --         beside the paper's 3.4e+01 and 5.6e+02 (they depend on the random point).
 -- assumed: the paper does not place its points; here the line passes through the element centre
 --          (0.5, 0.5) and n points sit at fractions (k + 1/2)/n of its chord through the element.
@@ -57,6 +58,7 @@ local slopes = {0.1, 0.5, 1.0, 2.0, 10.0, -10.0, -2.0, -1.0, -0.5, -0.1}
 
 local worst = 0
 local med_ratio = 0           -- largest |log10(ours / paper)| of the medians
+local medians = {}            -- report rows: ours beside Table I-II's median
 print(string.format("Table I (3 points, %d random points per slope): cond(T)", trials))
 print("  slope   ours: min      max      median  | paper: min      max      median")
 local function table_row(s, n, paper)
@@ -69,6 +71,7 @@ local function table_row(s, n, paper)
   end
   local lo, hi, med = stats(conds)
   med_ratio = math.max(med_ratio, math.abs(math.log(med / paper[3], 10)))
+  medians[#medians + 1] = { s = s, n = n, med = med, paper = paper[3] }
   return string.format("%9.2e %9.2e %9.2e | %9.2e %9.2e %9.2e", lo, hi, med,
                        paper[1], paper[2], paper[3])
 end
@@ -109,6 +112,17 @@ end
 fig:write(out .. "/normals_fig3.png")
 
 if lamina.report then
-  lamina.report{ max_normal_error = {worst, paper = 0, unit = "rad", tol = 1e-10},
-                 cond_median_log10_ratio = {med_ratio, paper = 0, tol = 1} }
+  local rep = {
+    -- [N] §4: the normals are exact "to within roundoff"
+    max_normal_error = {worst, paper = 0, unit = "rad ([N] §4: exact 'to within roundoff')", tol = 1e-10},
+    -- the paper prints medians, no agreement: the order of magnitude is
+    -- ours (its random points and placements are not given; issue 32 item 4)
+    cond_median_log10_ratio = {med_ratio, ref = 0, tol = 1,
+      unit = "largest |log10(ours / [N] Tables I-II's median)|; ours: the same order of magnitude"},
+  }
+  for _, m in ipairs(medians) do
+    local key = string.format("cond_median_slope_%g_%d_points", m.s, m.n)
+    rep[key] = {m.med, paper = m.paper, unit = m.n == 3 and "[N] Table I" or "[N] Table II"}
+  end
+  lamina.report(rep)
 end
