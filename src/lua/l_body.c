@@ -1,5 +1,6 @@
 /* l_body.c - sim:body{...}: a region of one material filled with particles,
  * and the body handle (com, velocity, particles). */
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -19,12 +20,10 @@ static la_body *check_body(lua_State *L, int idx, lm_sim **sim)
     return b;
 }
 
-/* ppc = n (a square: 4 = 2x2, 16 = 4x4, as the papers count) or {nx, ny};
- * at most LA_MAX_PPC points per cell, named in the error. */
-#define LA_MAX_PPC 4096
-/* Trial points of one body (the particles of a simulation are at most
- * LM_MAX_PARTICLES, checked by lm_sim_add_particle). */
-#define LA_MAX_TRIALS 200000000
+/* ppc = n (a square: 4 = 2x2, 16 = 4x4, as the papers count) or {nx, ny}:
+ * what the script wrote, read here; the engine checks the pattern's limits
+ * (LM_MAX_PPC, LM_MAX_TRIALS: body_create.c). A number over the limit is
+ * named as written before it is asked to be a square. */
 static void read_ppc(lua_State *L, const char *fn, int *npx, int *npy)
 {
     int t = la_getfield(L, 2, "ppc");
@@ -34,23 +33,18 @@ static void read_ppc(lua_State *L, const char *fn, int *npx, int *npy)
     } else if (t == LUA_TTABLE) {
         double a, b;
         la_pair(L, 2, fn, "ppc", &a, &b);
-        if (a < 1 || b < 1 || a != floor(a) || b != floor(b))
+        if (a < 1 || b < 1 || a != floor(a) || b != floor(b) || a > INT_MAX || b > INT_MAX)
             luaL_error(L, "%s: ppc = {%f, %f} must be two positive integers", fn, a, b);
-        if (a * b > LA_MAX_PPC) {
-            char m[96];   /* lua_pushfstring knows no %g */
-            snprintf(m, sizeof m, "ppc = {%g, %g} gives %g points per cell", a, b, a * b);
-            luaL_error(L, "%s: %s, more than the limit of %d", fn, m, LA_MAX_PPC);
-        }
         *npx = (int)a;
         *npy = (int)b;
     } else {
         double n = la_number(L, 2, fn, "ppc");
         double r = floor(sqrt(n) + 0.5);
-        if (n > LA_MAX_PPC) {
+        if (n > LM_MAX_PPC) {
             char m[48];
             snprintf(m, sizeof m, "ppc = %g", n);
             luaL_error(L, "%s: %s is more than the limit of %d points per cell", fn, m,
-                       LA_MAX_PPC);
+                       LM_MAX_PPC);
         }
         if (n < 1 || r * r != n)
             luaL_error(L, "%s: ppc = %s is not a square number (1, 4, 9, 16, ...); "
@@ -60,26 +54,23 @@ static void read_ppc(lua_State *L, const char *fn, int *npx, int *npy)
     }
 }
 
-/* Region test at a trial point: a built-in shape, or a Lua function. */
-static int inside(lua_State *L, int ridx, const lm_region *r, double x, double y)
+/* The script's region and velocity functions as the engine's callbacks
+ * (lm_body_def): each called protected; an error stays on the stack, the
+ * callback returns -1, the engine takes the body out again and sim:body
+ * raises that error, so a script that catches it with pcall runs on
+ * without half a body. */
+typedef struct fill_ctx { lua_State *L; int ridx, vidx; } fill_ctx;
+
+static int region_fn(void *ctx, double x, double y)
 {
-    if (r) return lm_region_contains(r, x, y);
-    lua_pushvalue(L, ridx);
-    lua_pushnumber(L, x);
-    lua_pushnumber(L, y);
-    lua_call(L, 2, 1);
-    int in = lua_toboolean(L, -1);
-    lua_pop(L, 1);
+    fill_ctx *c = ctx;
+    lua_pushvalue(c->L, c->ridx);
+    lua_pushnumber(c->L, x);
+    lua_pushnumber(c->L, y);
+    if (lua_pcall(c->L, 2, 1, 0) != LUA_OK) return -1;
+    int in = lua_toboolean(c->L, -1);
+    lua_pop(c->L, 1);
     return in;
-}
-
-/* The region test for lm_seed_clip. */
-typedef struct { lua_State *L; int ridx; const lm_region *r; } clip_ctx;
-
-static int clip_inside(void *ctx, double x, double y)
-{
-    clip_ctx *c = ctx;
-    return inside(c->L, c->ridx, c->r, x, y);
 }
 
 /* fill = "centres" (the papers' rule) or "clipped" (seed.c). */
@@ -102,64 +93,25 @@ static int read_fill(lua_State *L, const char *fn)
     return clipped;
 }
 
-/* velocity = {vx, vy} or a function (x, y) -> vx, vy. */
-static void velocity_at(lua_State *L, int vidx, double x, double y, double *vx, double *vy)
+/* velocity = a function (x, y) -> vx, vy. */
+static int velocity_fn(void *ctx, double x, double y, double *vx, double *vy)
 {
-    if (vidx == 0) return;
-    if (lua_isfunction(L, vidx)) {
-        lua_pushvalue(L, vidx);
-        lua_pushnumber(L, x);
-        lua_pushnumber(L, y);
-        lua_call(L, 2, 2);
-        int ok1, ok2;
-        *vx = lua_tonumberx(L, -2, &ok1);
-        *vy = lua_tonumberx(L, -1, &ok2);
-        if (!ok1 || !ok2 || !isfinite(*vx) || !isfinite(*vy))
-            luaL_error(L, "sim:body: the velocity function must return two finite numbers "
-                       "(got %s, %s at (%f, %f))", luaL_tolstring(L, -2, NULL),
-                       luaL_tolstring(L, -2, NULL), x, y);
-        lua_pop(L, 2);
+    fill_ctx *c = ctx;
+    lua_State *L = c->L;
+    lua_pushvalue(L, c->vidx);
+    lua_pushnumber(L, x);
+    lua_pushnumber(L, y);
+    if (lua_pcall(L, 2, 2, 0) != LUA_OK) return -1;
+    int ok1, ok2;
+    *vx = lua_tonumberx(L, -2, &ok1);
+    *vy = lua_tonumberx(L, -1, &ok2);
+    if (!ok1 || !ok2 || !isfinite(*vx) || !isfinite(*vy)) {
+        const char *a = luaL_tolstring(L, -2, NULL), *b = luaL_tolstring(L, -2, NULL);
+        lua_pushfstring(L, "sim:body: the velocity function must return two finite numbers "
+                        "(got %s, %s at (%f, %f))", a, b, x, y);
+        return -1;
     }
-}
-
-/* What fill_body seeds: everything sim:body read from its table. */
-typedef struct fill_ctx {
-    lm_sim *sim;
-    int bi;
-    const lm_material *mat;
-    const lm_seed_range *range;
-    const lm_region *region;
-    int clipped, npx, npy;
-    double vx0, vy0, mass;
-    size_t total;
-} fill_ctx;
-
-/* fill_body(region, velocity, ctx), called protected: the particles of
- * the body. Index 1 is the region (a shape or a function), 2 the velocity
- * function or nil. */
-static int fill_body(lua_State *L)
-{
-    fill_ctx *c = lua_touserdata(L, 3);
-    lm_sim *sim = c->sim;
-    const lm_grid *g = &sim->grid;
-    int vidx = lua_isfunction(L, 2) ? 2 : 0;
-    clip_ctx cc = { L, 1, c->region };
-    for (size_t k = 0; k < c->total; k++) {   /* (the particle limit: lm_sim_add_particle) */
-        double x, y, vx = c->vx0, vy = c->vy0;
-        double part = 1;
-        lm_seed_point(g, c->range, k, &x, &y);
-        if (c->clipped) {
-            part = lm_seed_clip(g, c->npx, c->npy, x, y, clip_inside, &cc, &x, &y);
-            if (part == 0) continue;
-        } else if (!inside(L, 1, c->region, x, y)) continue;
-        velocity_at(L, vidx, x, y, &vx, &vy);
-        /* axisymmetric: per radian, rho r A (x the sub-cell's centroid) */
-        double m = sim->def.axisym ? part * c->mass * x : part * c->mass;
-        if (lm_sim_add_particle(sim, c->bi, x, y, vx, vy, m, c->mat->rho) != LM_OK)
-            return luaL_error(L, "sim:body: %s", sim->err);
-        /* uGIMP: the particle's square is its share of the cell */
-        lm_sim_set_particle_size(sim, sim->p.n - 1, 0.5 * g->hx / c->npx, 0.5 * g->hy / c->npy);
-    }
+    lua_pop(L, 2);
     return 0;
 }
 
@@ -178,8 +130,6 @@ int la_sim_body(lua_State *L)
     if (lua_isnil(L, -1)) return luaL_error(L, "%s: 'material' is required", fn);
     lm_material *mat = luaL_testudata(L, -1, LA_MATERIAL);
     if (!mat) return luaL_error(L, "%s: 'material' must be a material (lamina.elastic{...})", fn);
-    if (mat->kind == LM_MEMBRANE)
-        return luaL_error(L, "%s: a membrane material goes into sim:membrane{...}", fn);
     int midx = lua_gettop(L);
 
     la_getfield(L, 2, "region");
@@ -195,49 +145,28 @@ int la_sim_body(lua_State *L)
     double vx0 = 0, vy0 = 0;
     int vidx = la_opt_velocity(L, 2, fn, &vx0, &vy0);
 
-    const lm_grid *g = &sim->grid;
-    lm_seed_range range = region
-        ? lm_seed_range_for(g, npx, npy, region->x0, region->y0, region->x1, region->y1)
-        : lm_seed_range_for(g, npx, npy, g->x0, g->y0, g->x0 + g->nx * g->hx,
-                            g->y0 + g->ny * g->hy);
-    double mass = lm_seed_mass(g, npx, npy, mat->rho);
-    size_t total = lm_seed_count(&range);
-    /* ppc = 4096 on a 1000 x 1000 grid is 4e9 points: refused before the
-     * first is made (trial points, then the particles themselves below) */
-    if ((double)total > LA_MAX_TRIALS) {
-        char m[64];
-        snprintf(m, sizeof m, "%.0f", (double)total);
-        return luaL_error(L, "%s: the region's cells at ppc = %d hold %s trial points, more "
-                          "than the limit of %d (a smaller ppc, region or domain)", fn,
-                          npx * npy, m, LA_MAX_TRIALS);
-    }
-
-    /* the engine checks what a body of this material may be (the
-     * axisymmetric gas's rules, sim.c) */
+    /* the engine checks the body (body_create.c: the material's kind, the
+     * pattern's limits, the axisymmetric gas's rules, an empty region) */
     la_sim_keep(L, 1, midx);   /* first: the engine holds the material from here */
-    int mi = lm_sim_add_material(sim, mat);
-    if (mi < 0) return luaL_error(L, "%s: out of memory", fn);
-    int bi = lm_sim_add_body(sim, mi);
-    if (bi < 0) return luaL_error(L, "%s: %s", fn, sim->err);
-
-    /* All or nothing: the seeding calls the script's region and velocity
-     * functions, and any of them (or the engine) may fail part-way; the
-     * body is then taken out again before the error goes on, so a script
-     * that catches it with pcall runs on without half a body. */
-    fill_ctx fc = { sim, bi, mat, &range, region, clipped, npx, npy, vx0, vy0, mass, total };
-    lua_pushcfunction(L, fill_body);
-    lua_pushvalue(L, ridx);
-    if (vidx) lua_pushvalue(L, vidx);
-    else lua_pushnil(L);
-    lua_pushlightuserdata(L, &fc);
-    if (lua_pcall(L, 3, 0, 0) != LUA_OK) {
-        lm_sim_drop_last_body(sim);
-        return lua_error(L);
-    }
-    if (sim->bodies[bi].count == 0) {
-        lm_sim_drop_last_body(sim);
-        return luaL_error(L, "%s: the region holds no particles at ppc = %d "
-                          "(is it inside the domain, and larger than a cell?)", fn, npx * npy);
+    lm_body_def def;
+    lm_body_def_default(&def);
+    def.mat = lm_sim_add_material(sim, mat);
+    if (def.mat < 0) return luaL_error(L, "%s: out of memory", fn);
+    fill_ctx fc = { L, ridx, vidx };
+    def.region = region;
+    def.inside = region ? NULL : region_fn;
+    def.npx = npx;
+    def.npy = npy;
+    def.clipped = clipped;
+    def.vx = vx0;
+    def.vy = vy0;
+    def.velocity = vidx ? velocity_fn : NULL;
+    def.ctx = &fc;
+    int top = lua_gettop(L);
+    int bi = lm_sim_create_body(sim, &def);
+    if (bi < 0) {
+        if (lua_gettop(L) > top) return lua_error(L);   /* the script's function's error */
+        return luaL_error(L, "%s: %s", fn, sim->err);
     }
     la_getfield(L, 2, "name");
     la_push_body(L, 1, bi, lua_gettop(L));

@@ -554,6 +554,42 @@ typedef int (*lm_inside_fn)(void *ctx, double x, double y);
 double lm_seed_clip(const lm_grid *g, int npx, int npy, double x, double y,
                     lm_inside_fn inside, void *ctx, double *cx, double *cy);
 
+/* ---- bodies of one material (body_create.c) ---------------------------- */
+
+/* A body of one material filled with particles (sim:body): the trial
+ * points of the seeding pattern (npx x npy per cell, lm_seed_range) that
+ * lie in the region each become a particle of mass rho times its share of
+ * the cell, the papers' rule (fill = "centres"), or with clipped the part
+ * of each sub-cell inside the region at that part's centroid (seed.c).
+ * Everything the engine needs to create it, as lm_membrane_def: start from
+ * lm_body_def_default and set what differs. The callbacks are called
+ * during lm_sim_create_body only; one that fails returns -1 (its own error
+ * kept by the caller) and the creation stops, leaving nothing behind. */
+typedef int (*lm_velocity_fn)(void *ctx, double x, double y, double *vx, double *vy);
+/* Trial points of one body at most: 2e8 (the particles of a simulation are
+ * at most LM_MAX_PARTICLES, checked as they are added). */
+#define LM_MAX_TRIALS 200000000
+/* Trial points per cell at most (ppc = 64 x 64). */
+#define LM_MAX_PPC 4096
+typedef struct lm_body_def {
+    int mat;                  /* from lm_sim_add_material: not a membrane */
+    const lm_region *region;  /* the shape, or NULL: inside(ctx, x, y) */
+    lm_inside_fn inside;      /* 1 inside, 0 outside, -1 failed */
+    int npx, npy;             /* trial points per cell (default 2 x 2) */
+    int clipped;              /* fill = "clipped" (seed.c) */
+    double vx, vy;            /* the velocity of every particle ... */
+    lm_velocity_fn velocity;  /* ... unless given per point: 0, or -1 failed */
+    void *ctx;                /* for inside and velocity */
+    const char *name;         /* for messages; NULL or "" = unnamed */
+} lm_body_def;
+
+void lm_body_def_default(lm_body_def *def);
+/* Creates the body of def, all or nothing (body_create.c checks the
+ * material, the pattern's limits, the velocity and that the region holds
+ * particles); returns the body's index, or -1 with sim->err set and the
+ * simulation as it was. */
+int lm_sim_create_body(lm_sim *sim, const lm_body_def *def);
+
 /* ---- diagnostics (diag.c) ------------------------------------------------ */
 
 typedef struct lm_energy {
