@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "fields.h"
 #include "l_internal.h"
 
 typedef struct la_body { int index; } la_body;
@@ -350,64 +351,40 @@ static int body_escaped(lua_State *L)
     return 3;
 }
 
-static void push_array(lua_State *L, const double *a, size_t first, size_t n, const char *name)
+/* One component of a field over the body's particles, as key (and as
+ * alias when it has one). */
+static void push_field(lua_State *L, const lm_sim *sim, const lm_field *f, int comp,
+                       size_t first, size_t n)
 {
     lua_createtable(L, (int)n, 0);
     for (size_t i = 0; i < n; i++) {
-        lua_pushnumber(L, a[first + i]);
+        lua_pushnumber(L, lm_field_value(sim, f, comp, first + i));
         lua_rawseti(L, -2, (lua_Integer)i + 1);
     }
-    lua_setfield(L, -2, name);
+    if (f->ncomp == 1 && f->alias) {
+        lua_pushvalue(L, -1);
+        lua_setfield(L, -3, f->alias);
+    }
+    lua_setfield(L, -2, f->ncomp == 1 ? f->name : f->comp[comp]);
 }
 
-/* A table of arrays (docs/design.md): x, y, vx, vy, mass, rho, and the global
- * Cauchy stress sxx, syy, sxy, szz (out of plane; axisymmetric: the hoop
- * stress sigma_thth). */
+/* A table of arrays (docs/design.md): every field of the engine's table
+ * (fields.c) the body's kind has, each component under its name (x, y,
+ * vx, vy, mass, rho, the global Cauchy stress sxx, syy, szz, sxy, the
+ * pressure, ...), and under the older key where it had one (p: a gas's
+ * pressure; et: a membrane's strain), and n. */
 static int body_particles(lua_State *L)
 {
     lm_sim *sim;
     la_body *b = check_body(L, 1, &sim);
     const lm_body *bd = &sim->bodies[b->index];
-    const lm_particles *p = &sim->p;
     size_t a = bd->first, n = bd->count;
-    lua_createtable(L, 0, 11);
-    push_array(L, p->x, a, n, "x");
-    push_array(L, p->y, a, n, "y");
-    push_array(L, p->vx, a, n, "vx");
-    push_array(L, p->vy, a, n, "vy");
-    push_array(L, p->m, a, n, "mass");
-    push_array(L, p->rho, a, n, "rho");
-    push_array(L, p->sxx, a, n, "sxx");
-    push_array(L, p->syy, a, n, "syy");
-    push_array(L, p->sxy, a, n, "sxy");
-    push_array(L, p->szz, a, n, "szz");
-    const lm_material *mat = sim->mats[bd->mat];
-    if (mat->kind == LM_GAS) {
-        /* p without the artificial viscosity q (docs/design.md) */
-        lua_createtable(L, (int)n, 0);
-        for (size_t i = 0; i < n; i++) {
-            lua_pushnumber(L, (mat->gamma - 1) * p->rho[a + i] * p->e[a + i]);
-            lua_rawseti(L, -2, (lua_Integer)i + 1);
-        }
-        lua_setfield(L, -2, "p");
-        push_array(L, p->e, a, n, "e");
-        push_array(L, p->q, a, n, "q");
-    }
-    if (mat->kind == LM_LINEAR_FLUID) push_array(L, p->ev, a, n, "ev");
-    if (bd->membrane) {
-        /* normal = tangent turned +90 degrees */
-        lua_createtable(L, (int)n, 0);
-        lua_createtable(L, (int)n, 0);
-        for (size_t i = 0; i < n; i++) {
-            lua_pushnumber(L, -p->ty[a + i]);
-            lua_rawseti(L, -3, (lua_Integer)i + 1);
-            lua_pushnumber(L, p->tx[a + i]);
-            lua_rawseti(L, -2, (lua_Integer)i + 1);
-        }
-        lua_setfield(L, -3, "ny");
-        lua_setfield(L, -2, "nx");
-        push_array(L, p->et, a, n, "et");
-        push_array(L, p->ds, a, n, "ds");
+    unsigned kind = 1u << sim->mats[bd->mat]->kind;
+    lua_createtable(L, 0, 32);
+    for (int i = 0; i < lm_field_count(); i++) {
+        const lm_field *f = lm_field_get(i);
+        for (int c = 0; (f->kinds & kind) && c < f->ncomp; c++)
+            push_field(L, sim, f, c, a, n);
     }
     lua_pushinteger(L, (lua_Integer)n);
     lua_setfield(L, -2, "n");

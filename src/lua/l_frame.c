@@ -167,7 +167,21 @@ int la_sim_frame(lua_State *L)
     char layers[96];
     snprintf(layers, sizeof layers, "membranes=%d with_phi=%d phi=%d normals=%d", ctx.membranes,
              ctx.with_phi, ctx.phi, ctx.normals);
-    lr_text_chunk text[6];
+    /* lamina:range: each coloured panel's value range, the colour bar's
+     * ends, so that a check can compare it with the fields the other
+     * outputs write (tests/io/fields_agree.py) */
+    char range[MAX_PANELS * 56];
+    size_t used = 0;
+    range[0] = 0;
+    for (size_t k = 0; k < f.npanels; k++) {
+        if (!p[k].colourbar || used >= sizeof range - 1) continue;
+        double lo, hi;
+        lr_panel_value_range(&p[k], &lo, &hi);
+        int len = snprintf(range + used, sizeof range - used, "%s%.17g %.17g", used ? "; " : "",
+                           lo, hi);
+        used = len > 0 ? used + (size_t)len : used;
+    }
+    lr_text_chunk text[7];
     memcpy(text, prov.text, sizeof prov.text);
     text[4].key = "lamina:layers";
     text[4].value = layers;
@@ -177,6 +191,10 @@ int la_sim_frame(lua_State *L)
     text[5].value = f.title;
     f.text = text;
     f.ntext = f.title && *f.title ? 6 : 5;
+    if (range[0]) {
+        text[f.ntext].key = "lamina:range";
+        text[f.ntext++].value = range;
+    }
     char err[512];
     if (lr_figure_write(&f, file, err, sizeof err))
         return luaL_error(L, "%s: %s", fn, err);

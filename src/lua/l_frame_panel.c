@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fields.h"
 #include "l_frame_panel.h"
 
 void *la_frame_scratch(lua_State *L, la_frame_ctx *ctx, size_t n)
@@ -36,66 +37,48 @@ static int get(lua_State *L, int fidx, int pidx, const char *key)
 
 /* ---- what particles show ------------------------------------------------ */
 
-typedef enum field {
-    F_BODY, F_SPEED, F_VX, F_VY, F_PRESSURE, F_SXX, F_SYY, F_SXY, F_RHO, F_MASS,
-    F_STRAIN, F_TENSION, F_MEMBRANE_STRESS
+/* A colour: "body" (the palette, f = NULL) or a component of a field of
+ * the engine's table (fields.h), by the component's name. */
+typedef struct field {
+    const lm_field *f;
+    int comp;
 } field;
 
-static const char *const field_names[] = { "body", "speed", "vx", "vy", "pressure",
-                                           "sxx", "syy", "sxy", "rho", "mass",
-                                           "strain", "tension", "membrane_stress", NULL };
+#define MAX_COLOURS 64
+
+static const char *comp_name(const lm_field *f, int c)
+{
+    return f->ncomp == 1 ? f->name : f->comp[c];
+}
+
+/* "body" (the palette; the table's field "body", the index, is what the
+ * palette shows), then every component's name in the table's order: the
+ * option list of `colour` (and of its error message). */
+static void colour_names(const char *names[MAX_COLOURS])
+{
+    int k = 0;
+    names[k++] = "body";
+    for (int i = 0; i < lm_field_count(); i++) {
+        const lm_field *f = lm_field_get(i);
+        for (int c = 0; c < f->ncomp && k < MAX_COLOURS - 1; c++)
+            if (strcmp(comp_name(f, c), "body") != 0) names[k++] = comp_name(f, c);
+    }
+    names[k] = NULL;
+}
+
+static int is_field(field f, const char *name)
+{
+    return f.f && strcmp(comp_name(f.f, f.comp), name) == 0;
+}
 
 /* The colour bar's label: the field, and for the two membrane fields the
  * unit, since both are called "tension" somewhere (issue 35 item 4). */
 static const char *field_label(field f)
 {
-    return f == F_BODY ? "pressure"
-         : f == F_TENSION ? "tension (F/L)"
-         : f == F_MEMBRANE_STRESS ? "stress (F/A)"
-         : field_names[f];
-}
-
-/* Signed quantities get the diverging map by default (zero in the middle).
- * Pressure does not: it colours gas, whose pressure is positive, and on a
- * scale symmetric about 0 gas at p = 10 came out pale (issue 35 item 4). */
-static int signed_field(field f)
-{
-    return f == F_VX || f == F_VY || f == F_SXX || f == F_SYY || f == F_SXY ||
-           f == F_STRAIN || f == F_TENSION || f == F_MEMBRANE_STRESS;
-}
-
-/* t . sigma . t: a membrane point's tangential stress (0 off membranes,
- * whose tangent is 0) */
-static double tangential_stress(const lm_particles *p, size_t i)
-{
-    return p->tx[i] * p->tx[i] * p->sxx[i] + 2.0 * p->tx[i] * p->ty[i] * p->sxy[i] +
-           p->ty[i] * p->ty[i] * p->syy[i];
-}
-
-static double field_value(const lm_sim *sim, size_t i, field f)
-{
-    const lm_particles *p = &sim->p;
-    switch (f) {
-    case F_SPEED: return hypot(p->vx[i], p->vy[i]);
-    case F_VX: return p->vx[i];
-    case F_VY: return p->vy[i];
-    case F_PRESSURE: return -(p->sxx[i] + p->syy[i] + p->szz[i]) / 3.0;
-    case F_SXX: return p->sxx[i];
-    case F_SYY: return p->syy[i];
-    case F_SXY: return p->sxy[i];
-    case F_RHO: return p->rho[i];
-    case F_MASS: return p->m[i];
-    case F_STRAIN: return p->et[i];
-    case F_MEMBRANE_STRESS: return tangential_stress(p, i);
-    case F_TENSION:
-        /* force per length, sigma_t times the thickness: the engine's
-         * membrane keeps its thickness (its volume thickness ds e^eps_t
-         * carries the strain in its length, docs/physics.md), so the
-         * current thickness is the material's - the F = sigma_t thickness
-         * of the segment forces (membrane_force.c) */
-        return tangential_stress(p, i) * sim->mats[p->mat[i]]->thickness;
-    default: return 0.0;
-    }
+    return !f.f ? "pressure"
+         : is_field(f, "tension") ? "tension (F/L)"
+         : is_field(f, "membrane_stress") ? "stress (F/A)"
+         : comp_name(f.f, f.comp);
 }
 
 /* Particle radius in world units: half the smallest particle spacing, from
@@ -158,14 +141,15 @@ static void normals_every(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, const do
     double *buf = la_frame_scratch(L, ctx, 4 * (n ? n : 1) * sizeof *buf);
     double *x = buf, *y = buf + n, *ux = buf + 2 * n, *uy = buf + 3 * n;
     size_t k = 0;
+    const lm_field *normal = lm_field_find("nx", NULL);   /* the engine's (fields.c) */
     for (int b = 0; b < sim->nbodies; b++) {
         const lm_body *bd = &sim->bodies[b];
         for (size_t q = bd->first; bd->membrane && q < bd->first + bd->count;
              q += (size_t)every, k++) {
             x[k] = px[q];
             y[k] = py[q];
-            ux[k] = -sim->p.ty[q];
-            uy[k] = sim->p.tx[q];
+            ux[k] = lm_field_value(sim, normal, 0, q);
+            uy[k] = lm_field_value(sim, normal, 1, q);
         }
     }
     const lr_rgba dark = { 0.1, 0.1, 0.1, 1.0 };
@@ -327,7 +311,7 @@ static void fill_side(lua_State *L, la_frame_ctx *ctx, la_sim *ls, const side_op
         py = y;
     }
     if (o->contour_levels > 0) {
-        pressure_contours(L, ctx, sim, o->contour_levels, &st->field, p, o->f == F_BODY);
+        pressure_contours(L, ctx, sim, o->contour_levels, &st->field, p, !o->f.f);
         if (st->field.f) {
             l->fields = &st->field;
             l->nfields = 1;
@@ -350,14 +334,12 @@ static void fill_side(lua_State *L, la_frame_ctx *ctx, la_sim *ls, const side_op
     base.radius = particle_radius(sim);
     base.group_radius = o->own_discs ? body_radii(L, ctx, sim) : NULL;
     base.ngroups = o->own_discs ? sim->nbodies : 0;
-    if ((o->f == F_TENSION || o->f == F_MEMBRANE_STRESS) && !sim->prepared &&
-        lm_sim_prepare(sim) != LM_OK)
+    if (o->f.f && o->f.f->tangents && !sim->prepared && lm_sim_prepare(sim) != LM_OK)
         luaL_error(L, "sim:frame: %s", sim->err);   /* tangents before the first step */
     double *v = NULL;
-    if (o->f != F_BODY) {
+    if (o->f.f) {   /* the engine's definition (fields.c), 0 where a kind lacks it */
         v = la_frame_scratch(L, ctx, (sim->p.n ? sim->p.n : 1) * sizeof *v);
-        for (size_t i = 0; i < sim->p.n; i++)
-            v[i] = field_value(sim, i, o->f);
+        lm_field_fill(sim, o->f.f, o->f.comp, 0, sim->p.n, v);
     }
     l->points = st->points;
     l->npoints = la_frame_points(L, ctx, sim, v, &o->pts, &base, st->points);
@@ -503,8 +485,18 @@ static field colours(lua_State *L, const la_frame_ctx *ctx, int fidx, int pidx,
                      lr_panel *p, int contours)
 {
     const char *name = string(L, ctx, fidx, pidx, "colour");
-    field f = name ? (field)la_option(L, ctx->fn, "colour", name, field_names) : F_BODY;
-    p->cmap = signed_field(f) ? LR_CMAP_RDBU : LR_CMAP_VIRIDIS;
+    field f = { NULL, 0 };
+    if (name) {
+        const char *names[MAX_COLOURS];
+        colour_names(names);
+        if (la_option(L, ctx->fn, "colour", name, names) > 0)
+            f.f = lm_field_find(name, &f.comp);
+    }
+    /* Signed quantities get the diverging map by default (zero in the
+     * middle). Pressure does not: it colours gas, whose pressure is
+     * positive, and on a scale symmetric about 0 gas at p = 10 came out
+     * pale (issue 35 item 4). */
+    p->cmap = f.f && f.f->diverging ? LR_CMAP_RDBU : LR_CMAP_VIRIDIS;
     const char *map = string(L, ctx, fidx, pidx, "colourmap");
     char why[128];
     if (map && lr_cmap_parse(map, &p->cmap, why, sizeof why) != 0)
@@ -519,8 +511,8 @@ static field colours(lua_State *L, const la_frame_ctx *ctx, int fidx, int pidx,
         p->vmax = r[1];
     }
     lua_pop(L, 1);
-    p->colourbar = boolean(L, ctx, fidx, pidx, "colourbar", f != F_BODY || contours);
-    if (p->colourbar && f == F_BODY && !contours)
+    p->colourbar = boolean(L, ctx, fidx, pidx, "colourbar", f.f || contours);
+    if (p->colourbar && !f.f && !contours)
         luaL_error(L, "%s: 'colourbar' needs colour = a field (e.g. \"speed\"), "
                    "not \"body\"", ctx->fn);
     p->colourbar_label = field_label(f);
@@ -628,7 +620,7 @@ static unsigned char *colour_bodies(lua_State *L, la_frame_ctx *ctx, int fidx, i
         size_t n = lua_istable(L, idx) ? lua_rawlen(L, idx) : 0;
         if (n == 0)
             luaL_error(L, "%s: 'colour_bodies' must be a list of bodies", ctx->fn);
-        if (f == F_BODY)
+        if (!f.f)
             luaL_error(L, "%s: 'colour_bodies' needs colour = a field (e.g. \"pressure\")",
                        ctx->fn);
         int nb = sim->nbodies;
@@ -744,7 +736,7 @@ void la_frame_panel(lua_State *L, la_frame_ctx *ctx, int fidx, int pidx, int sid
     if (o.phi > 0) scale_refuse(L, ctx, "phi");
     o.pts.band = band_opt(L, ctx, fidx, pidx);
     o.pts.valued = colour_bodies(L, ctx, fidx, pidx, sim, other, f, &o.pts.nvalued);
-    if (f == F_PRESSURE && !o.pts.valued)
+    if (is_field(f, "pressure") && !o.pts.valued)
         o.pts.valued = fluid_bodies(L, ctx, sim, other, &o.pts.nvalued);
     p->split_x = 0.5 * (p->wx0 + p->wx1);
     if (get(L, fidx, pidx, "split_at") != LUA_TNIL) {

@@ -15,18 +15,22 @@
 #include <string.h>
 
 #include "atomic_file.h"
+#include "fields.h"
 #include "l_internal.h"
 
 #define LA_RECORD "lamina.record"
 
-enum { SRC_T, SRC_STEP, SRC_ENERGY, SRC_POINT_X, SRC_POINT_Y, SRC_ANGLE, SRC_VALUE };
+enum { SRC_T, SRC_STEP, SRC_ENERGY, SRC_FIELD, SRC_ANGLE, SRC_VALUE };
 
 typedef struct la_column {
     char name[64];
     int src;
-    int body;           /* points, angles */
-    long index;         /* points: particle within the body (0-based) */
-    int which;          /* energy component; value: ref in the uservalue */
+    int body;           /* points, fields, angles */
+    long index;         /* points, fields: particle within the body (0-based) */
+    int which;          /* energy component; value: ref in the uservalue;
+                           field: the component */
+    const lm_field *field;  /* points (position) and fields: the engine's
+                               table (fields.c) */
 } la_column;
 
 typedef struct la_record {
@@ -128,15 +132,18 @@ static void each_entry(lua_State *L, const char *what, const entries *e,
     lua_pop(L, 2);
 }
 
-/* points.NAME = {body, index}: columns NAME_x, NAME_y. */
-static void read_point(lua_State *L, const entries *e, const char *name)
+/* {body, index, ...} on top (option `what`, entry `name`, `shape` for the
+ * message): the body and the particle within it (0-based). */
+static long point_of(lua_State *L, const entries *e, const char *what, const char *name,
+                     const char *shape, int len, int *body)
 {
-    if (!lua_istable(L, -1) || lua_rawlen(L, -1) != 2)
-        luaL_error(L, "sim:record: points.%s must be {body, index}", name);
+    if (!lua_istable(L, -1) || lua_rawlen(L, -1) != (size_t)len)
+        luaL_error(L, "sim:record: %s.%s must be %s", what, name, shape);
     lua_rawgeti(L, -1, 1);
     lm_sim *bs;
     int b = la_check_body(L, -1, &bs);
-    if (bs != e->sim) luaL_error(L, "sim:record: points.%s: the body belongs to another sim", name);
+    if (bs != e->sim)
+        luaL_error(L, "sim:record: %s.%s: the body belongs to another sim", what, name);
     lua_rawgeti(L, -2, 2);
     /* a number, shown as given: luaL_checkinteger said "bad argument #-1
      * to '?'" of NaN and (int) made 1e18 -1486618624 (issue 31 item 7) */
@@ -144,22 +151,68 @@ static void read_point(lua_State *L, const entries *e, const char *name)
     double v = lua_tonumberx(L, -1, &isnum);
     long count = (long)e->sim->bodies[b].count;
     if (!isnum || v != floor(v) || !(fabs(v) <= (double)count))
-        luaL_error(L, "sim:record: points.%s: index %s is not a point of the body: a whole "
-                   "number from 1 to %d, or from -1 back to -%d", name,
+        luaL_error(L, "sim:record: %s.%s: index %s is not a point of the body: a whole "
+                   "number from 1 to %d, or from -1 back to -%d", what, name,
                    isnum ? lua_tostring(L, -1) : luaL_typename(L, -1), (int)count,
                    (int)count);   /* at most LM_MAX_PARTICLES: an int */
     long idx = (long)v;
     long q = idx < 0 ? count + idx : idx - 1;
     if (q < 0 || q >= count)
-        luaL_error(L, "sim:record: points.%s: index %d is outside the body's %d points",
-                   name, (int)idx, (int)count);   /* |idx| <= count: an int */
+        luaL_error(L, "sim:record: %s.%s: index %d is outside the body's %d points",
+                   what, name, (int)idx, (int)count);   /* |idx| <= count: an int */
+    lua_pop(L, 2);
+    *body = b;
+    return q;
+}
+
+static la_column *field_column(lua_State *L, const entries *e, const char *col, int b,
+                               long q, const lm_field *f, int comp)
+{
+    la_column *c = add_column(L, e->r, col, SRC_FIELD);
+    c->body = b;
+    c->index = q;
+    c->field = f;
+    c->which = comp;
+    return c;
+}
+
+/* points.NAME = {body, index}: columns NAME_x, NAME_y (the table's
+ * position). */
+static void read_point(lua_State *L, const entries *e, const char *name)
+{
+    int b;
+    long q = point_of(L, e, "points", name, "{body, index}", 2, &b);
+    int comp;
+    const lm_field *pos = lm_field_find("x", &comp);
     char col[64];
     snprintf(col, sizeof col, "%s_x", name);
-    la_column *c = add_column(L, e->r, col, SRC_POINT_X);
-    c->body = b; c->index = q;
+    field_column(L, e, col, b, q, pos, 0);
     snprintf(col, sizeof col, "%s_y", name);
-    c = add_column(L, e->r, col, SRC_POINT_Y);
-    c->body = b; c->index = q;
+    field_column(L, e, col, b, q, pos, 1);
+}
+
+/* fields.NAME = {body, index, field}: column NAME, the field (a name or a
+ * component's name of the engine's table, as body:particles() gives it)
+ * at that point; the body's kind must have it. */
+static void read_field(lua_State *L, const entries *e, const char *name)
+{
+    int b;
+    long q = point_of(L, e, "fields", name, "{body, index, field}", 3, &b);
+    if (lua_rawgeti(L, -1, 3) != LUA_TSTRING)
+        luaL_error(L, "sim:record: fields.%s: the field must be a name such as \"pressure\" "
+                   "(got %s)", name, luaL_typename(L, -1));
+    const char *fname = lua_tostring(L, -1);
+    int comp;
+    const lm_field *f = lm_field_find(fname, &comp);
+    if (!f)
+        luaL_error(L, "sim:record: fields.%s: no field '%s' (docs/api.md, \"Particle "
+                   "fields\")", name, fname);
+    lm_sim *sim = e->sim;
+    size_t at = sim->bodies[b].first + (size_t)q;
+    if (!lm_field_has(sim, f, at))
+        luaL_error(L, "sim:record: fields.%s: body %d has no field '%s' (not a quantity of "
+                   "its kind)", name, b + 1, fname);
+    field_column(L, e, name, b, q, f, comp);
 }
 
 /* angle.NAME = body: the line through its first and last points. */
@@ -194,8 +247,12 @@ static double sample(lua_State *L, const la_column *c, lm_sim *sim, const lm_ene
                              sim->damped};
         return v[c->which];
     }
-    case SRC_POINT_X: return p->x[sim->bodies[c->body].first + (size_t)c->index];
-    case SRC_POINT_Y: return p->y[sim->bodies[c->body].first + (size_t)c->index];
+    case SRC_FIELD:
+        /* the tangents before the first step, as frames want them */
+        if (c->field->tangents && !sim->prepared && lm_sim_prepare(sim) != LM_OK)
+            luaL_error(L, "sim:record: %s", sim->err);
+        return lm_field_value(sim, c->field, c->which,
+                              sim->bodies[c->body].first + (size_t)c->index);
     case SRC_ANGLE: {
         /* [M] §3.1.2: the line joining the first and last points, in
          * degrees from the downward vertical, positive towards +x */
@@ -451,7 +508,7 @@ static int rec_gc(lua_State *L)
 int la_sim_record(lua_State *L)
 {
     static const char *const keys[] = {"file", "every", "energy", "points", "angle",
-                                       "values", "average", NULL};
+                                       "values", "average", "fields", NULL};
     static const char *const energies[] = {"kinetic", "strain", "internal", "potential", "total",
                                            "damped"};
     const char *fn = "sim:record";
@@ -496,6 +553,7 @@ int la_sim_record(lua_State *L)
     la_getfield(L, -1, "fns");
     const entries e = {r, s->sim, lua_gettop(L)};
     each_entry(L, "points", &e, read_point);
+    each_entry(L, "fields", &e, read_field);
     each_entry(L, "angle", &e, read_angle);
     each_entry(L, "values", &e, read_value);
     lua_pop(L, 2);

@@ -14,6 +14,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "fields.h"
 #include "l_internal.h"
 #include "vtk.h"
 
@@ -43,13 +44,14 @@ static const char *base_of(const char *prefix)
     return s ? s + 1 : prefix;
 }
 
-/* Per-particle arrays gathered from the engine; one block, freed by caller. */
-typedef struct gathered {
-    double *xyz, *vel, *stress, *pressure, *rho, *e, *mass, *body, *normal, *cbody;
+/* The particles' cells: one vertex per particle of a solid or gas body, one
+ * line per segment of each membrane in curve order. */
+typedef struct cells_of {
+    double *cbody;
     int64_t *conn, *offs;
     uint8_t *types;
     size_t ncells;
-} gathered;
+} cells_of;
 
 static size_t cell_count(const lm_sim *sim)
 {
@@ -64,52 +66,8 @@ static size_t cell_count(const lm_sim *sim)
     return n;
 }
 
-static int gather(const lm_sim *sim, gathered *g, void **block)
+static void fill_cells(const lm_sim *sim, cells_of *g)
 {
-    const lm_particles *p = &sim->p;
-    size_t n = p->n, nc = cell_count(sim);
-    size_t nd = n * (3 + 3 + 6 + 1 + 1 + 1 + 1 + 1 + 3) + nc;
-    char *m = malloc(nd * sizeof(double) + 2 * nc * sizeof(int64_t) + nc * sizeof(int64_t) + nc + 8);
-    if (!m) return -1;
-    *block = m;
-    double *d = (double *)m;
-    g->xyz = d; d += 3 * n;
-    g->vel = d; d += 3 * n;
-    g->stress = d; d += 6 * n;
-    g->pressure = d; d += n;
-    g->rho = d; d += n;
-    g->e = d; d += n;
-    g->mass = d; d += n;
-    g->body = d; d += n;
-    g->normal = d; d += 3 * n;
-    g->cbody = d; d += nc;
-    g->conn = (int64_t *)d;
-    g->offs = g->conn + 2 * nc;
-    g->types = (uint8_t *)(g->offs + nc);
-    g->ncells = nc;
-    for (size_t q = 0; q < n; q++) {
-        const lm_material *mat = sim->mats[p->mat[q]];
-        g->xyz[3 * q] = p->x[q];
-        g->xyz[3 * q + 1] = p->y[q];
-        g->xyz[3 * q + 2] = 0;
-        g->vel[3 * q] = p->vx[q];
-        g->vel[3 * q + 1] = p->vy[q];
-        g->vel[3 * q + 2] = 0;
-        /* VTK's symmetric tensor order: XX, YY, ZZ, XY, YZ, XZ */
-        double *s = &g->stress[6 * q];
-        s[0] = p->sxx[q]; s[1] = p->syy[q]; s[2] = p->szz[q];
-        s[3] = p->sxy[q]; s[4] = 0; s[5] = 0;
-        g->pressure[q] = mat->kind == LM_GAS ? (mat->gamma - 1) * p->rho[q] * p->e[q]
-                                             : -(p->sxx[q] + p->syy[q] + p->szz[q]) / 3;
-        g->rho[q] = p->rho[q];
-        g->e[q] = p->e[q];
-        g->mass[q] = p->m[q];
-        g->body[q] = p->body[q] + 1;
-        int memb = mat->kind == LM_MEMBRANE;
-        g->normal[3 * q] = memb ? -p->ty[q] : 0;   /* the tangent turned +90 degrees */
-        g->normal[3 * q + 1] = memb ? p->tx[q] : 0;
-        g->normal[3 * q + 2] = 0;
-    }
     size_t c = 0, k = 0;
     for (int b = 0; b < sim->nbodies; b++) {
         const lm_body *bd = &sim->bodies[b];
@@ -133,25 +91,72 @@ static int gather(const lm_sim *sim, gathered *g, void **block)
             }
         }
     }
-    return 0;
 }
 
+/* VTK's width of a field: vectors in 3D (z = 0), the stress as the
+ * symmetric tensor's 6 (XX, YY, ZZ, XY, then YZ = XZ = 0). */
+static int vtk_width(const lm_field *f)
+{
+    return f->ncomp == 1 ? 1 : f->ncomp == 2 ? 3 : 6;
+}
+
+#define MAX_VTK_FIELDS 32
+
+/* The point fields are the engine's table's (fields.c): every field with a
+ * VTK name, in the table's order, each the engine's definition (a gas's
+ * pressure its equation of state, as everywhere). */
 static int write_particles(const lm_sim *sim, const char *path, char *err, size_t errlen)
 {
-    gathered g;
-    void *block;
-    if (gather(sim, &g, &block)) {
+    const lm_particles *p = &sim->p;
+    size_t n = p->n, nc = cell_count(sim), width = 3;
+    lr_vtk_field pf[MAX_VTK_FIELDS];
+    const lm_field *tf[MAX_VTK_FIELDS];
+    double *arr[MAX_VTK_FIELDS];
+    int nf = 0;
+    for (int i = 0; i < lm_field_count() && nf < MAX_VTK_FIELDS; i++)
+        if (lm_field_get(i)->vtk) {
+            tf[nf++] = lm_field_get(i);
+            width += (size_t)vtk_width(tf[nf - 1]);
+        }
+    char *m = calloc(1, (n * width + nc + LM_FIELD_MAX_COMP * (n ? n : 1)) * sizeof(double) +
+                            3 * nc * sizeof(int64_t) + nc + 8);
+    if (!m) {
         snprintf(err, errlen, "cannot write '%s': out of memory", path);
         return -1;
     }
-    lr_vtk_field pf[] = {{"velocity", 3, g.vel}, {"stress", 6, g.stress},
-                         {"pressure", 1, g.pressure}, {"density", 1, g.rho},
-                         {"energy", 1, g.e}, {"mass", 1, g.mass}, {"body", 1, g.body},
-                         {"normal", 3, g.normal}};
+    double *d = (double *)m, *xyz = d, *tmp;
+    d += 3 * n;
+    for (int k = 0; k < nf; k++) {
+        int w = vtk_width(tf[k]);
+        pf[k].name = tf[k]->vtk;
+        pf[k].ncomp = w;
+        pf[k].data = arr[k] = d;
+        d += (size_t)w * n;
+    }
+    tmp = d;
+    d += LM_FIELD_MAX_COMP * (n ? n : 1);
+    cells_of g;
+    g.cbody = d;
+    g.conn = (int64_t *)(d + nc);
+    g.offs = g.conn + 2 * nc;
+    g.types = (uint8_t *)(g.offs + nc);
+    g.ncells = nc;
+    for (size_t q = 0; q < n; q++) {
+        xyz[3 * q] = p->x[q];
+        xyz[3 * q + 1] = p->y[q];   /* z = 0 (calloc) */
+    }
+    for (int k = 0; k < nf; k++) {
+        int nk = tf[k]->ncomp, w = vtk_width(tf[k]);
+        lm_field_fill(sim, tf[k], -1, 0, n, tmp);
+        for (size_t q = 0; q < n; q++)
+            for (int c = 0; c < nk; c++)
+                arr[k][(size_t)w * q + (size_t)c] = tmp[(size_t)nk * q + (size_t)c];
+    }
+    fill_cells(sim, &g);
     lr_vtk_field cf[] = {{"body", 1, g.cbody}};
     lr_vtk_cells cells = {g.ncells, g.conn, g.offs, g.types};
-    int rc = lr_vtk_write_vtu(path, sim->p.n, g.xyz, &cells, pf, 8, cf, 1, err, errlen);
-    free(block);
+    int rc = lr_vtk_write_vtu(path, n, xyz, &cells, pf, nf, cf, 1, err, errlen);
+    free(m);
     return rc;
 }
 

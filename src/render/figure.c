@@ -146,6 +146,11 @@ static void value_range(const lr_panel *p, double *lo, double *hi)
     *hi = b;
 }
 
+void lr_panel_value_range(const lr_panel *p, double *lo, double *hi)
+{
+    value_range(p, lo, hi);
+}
+
 static void grid_shape(const lr_figure *f, int *rows, int *cols)
 {
     int n = (int)f->npanels;

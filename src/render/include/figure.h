@@ -123,6 +123,10 @@ typedef struct lr_panel {
 
 /* The window w = {x0, y0, x1, y1} grown to hold its mirror images. */
 void lr_panel_mirror_window(const lr_panel *p, double w[4]);
+/* The value range a panel's colours span (and its colour bar shows): its
+ * own range if set, else its coloured points' (symmetric about 0 for a
+ * diverging map), never empty. */
+void lr_panel_value_range(const lr_panel *p, double *lo, double *hi);
 
 typedef struct lr_figure {
     int width, height;          /* pixels (points for SVG / PDF) */
