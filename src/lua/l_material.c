@@ -11,7 +11,6 @@
 #include "l_internal.h"
 
 static const char *const planes[] = {"strain", "stress", NULL};
-static const char *const laws[] = {"uniaxial", "plane_stress", NULL};
 static const char *const densities[] = {"continuity", "cell", "quadratic", NULL};
 
 lm_material *la_check_material(lua_State *L, int idx)
@@ -37,6 +36,16 @@ static lm_material *new_material(lua_State *L, const char *fn, const char *const
     m->kind = kind;
     m->rho = la_number(L, 1, fn, "rho");
     return m;
+}
+
+/* The one place a Lua law name meets the engine's registry of membrane
+ * laws (membrane_law.c): the name to its lm_law, refused with the list of
+ * the laws there are. */
+static lm_law law_option(lua_State *L, const char *fn, const char *value)
+{
+    const char *names[LM_LAW_COUNT + 1];
+    for (int k = 0; k <= LM_LAW_COUNT; k++) names[k] = lm_law_name(k);
+    return (lm_law)la_option(L, fn, "law", value, names);
 }
 
 static void validate(lua_State *L, const char *fn, const lm_material *m)
@@ -69,7 +78,7 @@ int la_membrane_material(lua_State *L)
     m->E = la_number(L, 1, fn, "E");
     m->nu = la_opt_number(L, 1, fn, "nu", 0);
     m->thickness = la_number(L, 1, fn, "thickness");
-    m->law = (lm_law)la_option(L, fn, "law", la_opt_string(L, 1, fn, "law", "uniaxial"), laws);
+    m->law = law_option(L, fn, la_opt_string(L, 1, fn, "law", "uniaxial"));
     la_getfield(L, 1, "one_way");
     if (!lua_isnil(L, -1) && !lua_isboolean(L, -1))
         luaL_error(L, "%s: 'one_way' must be true or false", fn);
@@ -171,7 +180,7 @@ static int mat_index(lua_State *L)
     else if (strcmp(k, "density") == 0 && m->kind == LM_GAS) lua_pushstring(L, densities[m->density]);
     else if (strcmp(k, "beta") == 0 && m->kind == LM_LINEAR_FLUID) lua_pushnumber(L, m->beta);
     else if (strcmp(k, "thickness") == 0 && m->kind == LM_MEMBRANE) lua_pushnumber(L, m->thickness);
-    else if (strcmp(k, "law") == 0 && m->kind == LM_MEMBRANE) lua_pushstring(L, laws[m->law]);
+    else if (strcmp(k, "law") == 0 && m->kind == LM_MEMBRANE) lua_pushstring(L, lm_law_name(m->law));
     else if (strcmp(k, "one_way") == 0 && m->kind == LM_MEMBRANE) lua_pushboolean(L, m->one_way);
     else if (strcmp(k, "wave_speed") == 0) lua_pushnumber(L, lm_material_wave_speed(m));
     else return luaL_error(L, "material has no field '%s'", k);
@@ -196,7 +205,7 @@ static int mat_newindex(lua_State *L)
     else if (strcmp(k, "one_way") == 0 && m->kind == LM_MEMBRANE)
         next.one_way = lua_toboolean(L, 3);
     else if (strcmp(k, "law") == 0 && m->kind == LM_MEMBRANE)
-        next.law = (lm_law)la_option(L, "material", "law", luaL_checkstring(L, 3), laws);
+        next.law = law_option(L, "material", luaL_checkstring(L, 3));
     else
         return luaL_error(L, "material field '%s' cannot be changed (changeable: %s)", k,
                           m->kind == LM_MEMBRANE ? "E, nu, law, one_way"
@@ -224,7 +233,7 @@ static int mat_tostring(lua_State *L)
     if (m->kind == LM_MEMBRANE) {
         lua_pushfstring(L, "lamina.membrane{rho = %f, E = %f, nu = %f, thickness = %f, "
                         "law = \"%s\", one_way = %s}", m->rho, m->E, m->nu, m->thickness,
-                        laws[m->law], m->one_way ? "true" : "false");
+                        lm_law_name(m->law), m->one_way ? "true" : "false");
         return 1;
     }
     lua_pushfstring(L, "lamina.elastic{rho = %f, E = %f, nu = %f, plane = \"%s\"}",

@@ -37,6 +37,7 @@
 #include <math.h>
 
 #include "gather.h"
+#include "membrane_law.h"
 
 /* sum_i N_ip v_ri with the strain velocity (step 5), stencil W wide. */
 static inline double radial_velocity(const lm_sim *sim, size_t q)
@@ -107,9 +108,8 @@ double lm_axisym_membrane_energy(const lm_sim *sim, size_t q)
 {
     const lm_particles *p = &sim->p;
     const lm_material *mat = sim->mats[p->mat[q]];
-    double et = p->et[q], eh = lm_axisym_membrane_hoop(p, q), st, sh;
-    lm_membrane_stress_biaxial(mat, et, eh, &st, &sh);
-    return 0.5 * (p->m[q] / p->rho[q]) * (st * et + sh * eh);
+    return lm_membrane_ring_energy(mat, p->m[q] / p->rho[q], p->et[q],
+                                   lm_axisym_membrane_hoop(p, q));
 }
 
 /* ---- step 2: the hoop term of the internal force ------------------------ */

@@ -220,7 +220,7 @@ static int check_state(const lm_sim *sim, const unsigned char *b, size_t n, char
             return -1;
         }
         /* the switches lm_material_validate leaves to the constructors */
-        if ((unsigned)m.plane > LM_PLANE_STRESS || (unsigned)m.law > LM_LAW_PLANE_STRESS ||
+        if ((unsigned)m.plane > LM_PLANE_STRESS || (unsigned)m.law >= LM_LAW_COUNT ||
             (unsigned)m.density > LM_DENSITY_QUADRATIC || (m.one_way != 0 && m.one_way != 1) ||
             (m.av != 0 && m.av != 1) || !(isfinite(m.split) && m.split >= 0) ||
             !isfinite(m.av_g) || !isfinite(m.av_c1) || !isfinite(m.av_c2) ||

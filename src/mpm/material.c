@@ -2,11 +2,13 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "membrane_law.h"
 #include "mpm.h"
 #include "step.h"
 #include "util.h"
 
-/* docs/physics.md §5: the plane-strain P-wave or the plane-stress wave. */
+/* docs/physics.md §5: the plane-strain P-wave or the plane-stress wave;
+ * a membrane's from its law. */
 double lm_material_wave_speed(const lm_material *mat)
 {
     double E = mat->E, nu = mat->nu, rho = mat->rho;
@@ -16,8 +18,7 @@ double lm_material_wave_speed(const lm_material *mat)
             return sqrt(E * (1 - nu) / ((1 + nu) * (1 - 2 * nu) * rho));
         return sqrt(E / ((1 - nu * nu) * rho));
     case LM_MEMBRANE:
-        if (mat->law == LM_LAW_PLANE_STRESS) return sqrt(E / ((1 - nu * nu) * rho));
-        return sqrt(E / rho);
+        return lm_membrane_wave_speed(mat);   /* its law's (membrane_law.h) */
     case LM_GAS:
         return lm_gas_sound_speed(mat, mat->e0);
     case LM_LINEAR_FLUID:
@@ -52,7 +53,8 @@ int lm_material_validate(const lm_material *mat, char *err, size_t errlen)
                   err, errlen) ||
             check(mat->nu > -1 && mat->nu < 1, mat->nu, "nu must lie in (-1, 1)", err, errlen) ||
             check(mat->thickness > 0 && isfinite(mat->thickness), mat->thickness,
-                  "thickness must be positive", err, errlen))
+                  "thickness must be positive", err, errlen) ||
+            lm_membrane_law_validate(mat, err, errlen))
             return -1;
         break;
     case LM_GAS:

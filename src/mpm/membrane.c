@@ -14,6 +14,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "membrane_law.h"
 #include "normals.h"
 #include "normals_work.h"
 
@@ -289,47 +290,13 @@ int lm_sim_normals_compare(const lm_sim *sim, unsigned long *n, double *max_deg,
     return 0;
 }
 
-/* [T] eq 5.9 (uniaxial) and 5.15 (plane stress); [M] §3.2 / Fig 13 the
- * one-way law: E_t = 0 while eps_t < 0, the compressive strain kept. */
-double lm_membrane_stress(const lm_material *mat, double et)
-{
-    if (mat->one_way && et < 0) return 0;
-    if (mat->law == LM_LAW_PLANE_STRESS) return mat->E * et / (1 - mat->nu * mat->nu);
-    return mat->E * et;
-}
-
-void lm_membrane_stress_biaxial(const lm_material *mat, double et, double eh, double *st,
-                                double *sh)
-{
-    if (mat->law != LM_LAW_PLANE_STRESS) {
-        *st = lm_membrane_stress(mat, et);
-        *sh = 0;
-        return;
-    }
-    double Ep = mat->E / (1 - mat->nu * mat->nu);
-    *st = Ep * (et + mat->nu * eh);
-    *sh = Ep * (eh + mat->nu * et);
-    if (!mat->one_way || (*st >= 0 && *sh >= 0)) return;
-    /* one-way ([M] §3.2) in two directions, the tension-field rule: a
-     * membrane that would carry compression wrinkles across it and is
-     * pulled only along its larger strain, uniaxially; slack when neither
-     * strain is positive. Continuous where the smaller stress reaches 0. */
-    if (et >= eh) {
-        *st = et > 0 ? mat->E * et : 0;
-        *sh = 0;
-    } else {
-        *sh = eh > 0 ? mat->E * eh : 0;
-        *st = 0;
-    }
-}
-
 static void rebuild(const lm_material *mat, double st, double tx, double ty,
                     double *sxx, double *syy, double *sxy, double *szz)
 {
     *sxx = st * tx * tx;
     *syy = st * ty * ty;
     *sxy = st * tx * ty;
-    *szz = mat->law == LM_LAW_PLANE_STRESS ? mat->nu * st : 0;
+    *szz = lm_membrane_szz(mat, st);
 }
 
 void lm_membrane_set_strain(const lm_material *mat, double e, double tx, double ty, double m,
@@ -357,11 +324,6 @@ void lm_membrane_update_at(lm_sim *sim, size_t q, const lm_rate *r)
     lm_membrane_update(sim->mats[p->mat[q]], r->dexx, r->deyy, r->dexy, p->tx[q], p->ty[q],
                        p->m[q], p->ds[q], &p->et[q], &p->rho[q], &p->sxx[q], &p->syy[q],
                        &p->sxy[q], &p->szz[q]);
-}
-
-double lm_membrane_energy(const lm_material *mat, double V, double et)
-{
-    return 0.5 * V * lm_membrane_stress(mat, et) * et;
 }
 
 lm_status lm_membrane_prepare(lm_sim *sim)

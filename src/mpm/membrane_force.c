@@ -28,6 +28,7 @@
 
 #include "contact.h"
 #include "gather.h"
+#include "membrane_law.h"
 #include "step.h"
 
 /* Neighbour after q in curve order, or SIZE_MAX at an open end. */
@@ -208,8 +209,9 @@ void lm_membrane_segment_strains(lm_sim *sim)
 }
 
 /* Stored energy of the segments: thickness * int sigma(eps) dl with
- * l = L0 exp(eps), the work of the force F = sigma thickness; for the
- * linear law E' L0 thickness [(eps - 1) e^eps + 1] (~ 1/2 E' A L0 eps^2). */
+ * l = L0 exp(eps), the work of the force F = sigma thickness, as the law
+ * gives it (membrane_law.h: thickness L0 W(lambda); for the linear law
+ * E' L0 thickness [(eps - 1) e^eps + 1] ~ 1/2 E' A L0 eps^2). */
 double lm_membrane_segment_energy(const lm_sim *sim, int b)
 {
     if (!segment_body(sim, b)) return 0;
@@ -225,14 +227,12 @@ double lm_membrane_segment_energy(const lm_sim *sim, int b)
     const lm_particles *p = &sim->p;
     const lm_body *bd = &sim->bodies[b];
     const lm_material *mat = sim->mats[bd->mat];
-    double Ep = mat->law == LM_LAW_PLANE_STRESS ? mat->E / (1 - mat->nu * mat->nu) : mat->E;
     double w = 0;
     for (size_t q = bd->first; q < bd->first + bd->count; q++) {
         size_t r = next_of(bd, q);
         if (r == (size_t)-1 || !(p->L0[q] > 0)) continue;
         double eps = log(seg_len(p, q, r) / p->L0[q]);
-        if (mat->one_way && eps < 0) continue;
-        w += Ep * p->L0[q] * mat->thickness * ((eps - 1) * exp(eps) + 1);
+        w += lm_membrane_segment_energy_of(mat, p->L0[q], eps);
     }
     return w;
 }

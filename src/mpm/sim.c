@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "arrays.h"
+#include "membrane_law.h"
 #include "contact.h"
 #include "mpm.h"
 #include "normals_work.h"
@@ -249,7 +250,7 @@ lm_status lm_sim_set_membrane_point(lm_sim *sim, size_t q, double ds, double et)
     p->rho[q] = p->m[q] / (mat->thickness * ds * exp(et));
     double st = lm_membrane_stress(mat, et);
     p->sxx[q] = p->syy[q] = p->sxy[q] = 0;
-    p->szz[q] = mat->law == LM_LAW_PLANE_STRESS ? mat->nu * st : 0;
+    p->szz[q] = lm_membrane_szz(mat, st);
     if (sim->def.axisym) lm_axisym_membrane_point(sim, q);   /* a ring (axisym.c) */
     /* the tangent is not known until the body is complete: the stress
      * tensor is rebuilt from eps_t at the first step (lm_membrane_prepare) */

@@ -396,27 +396,6 @@ static void rate_at(const lm_sim *sim, size_t q, lm_rate *r, int moved, double r
     r->hoop = sim->def.axisym ? lm_axisym_hoop_rate(sim, q) : 0;
 }
 
-/* Step 8 by the particle's material and the form: one signature
- * (lm_update_fn, step.h). */
-static inline void update_at(lm_sim *sim, size_t q, const lm_rate *r)
-{
-    int axi = sim->def.axisym;
-    switch (sim->mats[sim->p.mat[q]]->kind) {
-    case LM_ELASTIC:
-        (axi ? lm_axisym_elastic_update_at : lm_elastic_update_at)(sim, q, r);
-        break;
-    case LM_MEMBRANE:
-        (axi ? lm_axisym_membrane_update_at : lm_membrane_update_at)(sim, q, r);
-        break;
-    case LM_GAS:
-        (axi ? lm_axisym_gas_update_at : lm_gas_update_at)(sim, q, r);
-        break;
-    case LM_LINEAR_FLUID:
-        (axi ? lm_axisym_linear_fluid_update_at : lm_linear_fluid_update_at)(sim, q, r);
-        break;
-    }
-}
-
 /* Steps 7-8 ([F] eqs 14-23): each particle's rate from the grid velocity
  * and its material's update; density rho / (1 + tr de) ([F] eq 16) or, for
  * a gas that asks, from the cells (phase 6b). A membrane with segment
@@ -437,7 +416,7 @@ void lm_step_stress(lm_sim *sim, double max_div, double c_max)
         r.max_div = max_div;
         r.c_max = c_max;
         r.h = h;
-        update_at(sim, (size_t)q, &r);
+        lm_update_at(sim, (size_t)q, &r, sim->def.axisym);   /* step 8: material_update.c */
     }
 }
 

@@ -207,8 +207,8 @@ typedef struct lm_rate {
 } lm_rate;
 
 /* Every material's update of particle q from its rate (step 8) has this
- * signature; lm_step_stress picks it by the material's kind and the form
- * (plane, or axisymmetric: axisym.c). */
+ * signature; the steps pick it by the material's kind and the form
+ * (plane, or axisymmetric: axisym.c) from one table. */
 typedef void lm_update_fn(lm_sim *sim, size_t q, const lm_rate *r);
 lm_update_fn lm_elastic_update_at;        /* material_elastic.c */
 lm_update_fn lm_membrane_update_at;       /* membrane.c */
@@ -218,6 +218,13 @@ lm_update_fn lm_axisym_elastic_update_at; /* axisym.c: the same with the hoop te
 lm_update_fn lm_axisym_membrane_update_at;
 lm_update_fn lm_axisym_gas_update_at;
 lm_update_fn lm_axisym_linear_fluid_update_at;
+/* material_update.c: the table, by form (0 the plane, 1 axisymmetric) and
+ * kind; the phased (step.c) and the fused step (step_fused.c) call it. */
+extern lm_update_fn *const lm_material_updates[2][LM_LINEAR_FLUID + 1];
+static inline void lm_update_at(lm_sim *sim, size_t q, const lm_rate *r, int axisym)
+{
+    lm_material_updates[axisym != 0][sim->mats[sim->p.mat[q]]->kind](sim, q, r);
+}
 
 /* Objective stress update of an elastic solid, [F] eq 19 (Jaumann rate). */
 void lm_elastic_update(const lm_material *mat, double dexx, double deyy,
@@ -233,7 +240,8 @@ double lm_elastic_energy_density(const lm_material *mat, double sxx,
  * one-sided at open ends), or the normal of a construction without
  * connectivity (normals.h) turned -90 degrees. */
 lm_status lm_membrane_tangents(lm_sim *sim);
-/* sigma_t from eps_t by the law (one-way: none in compression). */
+/* sigma_t from eps_t by the material's law (membrane_law.c, the contract in
+ * membrane_law.h; one-way: none in compression). */
 double lm_membrane_stress(const lm_material *mat, double et);
 /* eps_t += t.de.t with the current tangent; sigma rebuilt as sigma_t t(x)t;
  * the volume from the tangential stretch, kept as rho = m / V. */
@@ -244,7 +252,8 @@ void lm_membrane_update(const lm_material *mat, double dexx, double deyy, double
 void lm_membrane_set_strain(const lm_material *mat, double e, double tx, double ty, double m,
                             double ds, double *et, double *rho, double *sxx, double *syy,
                             double *sxy, double *szz);
-/* Strain energy 1/2 V sigma_t eps_t. */
+/* Strain energy of a point of volume V by its law (membrane_law.c; the
+ * papers' 1/2 V sigma_t eps_t for the linear laws). */
 double lm_membrane_energy(const lm_material *mat, double V, double et);
 /* Rebuilds the stress tensors of the membrane points from eps_t along the
  * current tangents (before the first step, once bodies are complete). */
@@ -319,13 +328,15 @@ void lm_axisym_membrane_set(lm_sim *sim, size_t q, double et);
 void lm_axisym_membrane_point(lm_sim *sim, size_t q);
 /* Stresses and volumes of every membrane point (lm_membrane_prepare). */
 void lm_axisym_membrane_prepare(lm_sim *sim);
-/* 1/2 V (sigma_t eps_t + sigma_thth eps_thth) of membrane point q. */
+/* The stored energy of membrane point q, a ring, by its law (1/2 V
+ * (sigma_t eps_t + sigma_thth eps_thth) for the linear laws). */
 double lm_axisym_membrane_energy(const lm_sim *sim, size_t q);
-/* membrane.c: the in-surface law of a ring (axisymmetric form): a
- * plane-stress membrane is biaxial, sigma_t = E' (eps_t + nu eps_h),
- * sigma_h = E' (eps_h + nu eps_t), E' = E / (1 - nu^2) ([T] eq 5.15 with
- * the hoop strain); a string (uniaxial) carries sigma_t = E eps_t only
- * (meridional cords). One-way: the tension-field rule. */
+/* membrane_law.c: the in-surface law of a ring (axisymmetric form), by
+ * the material's law: a plane-stress membrane is biaxial, sigma_t = E'
+ * (eps_t + nu eps_h), sigma_h = E' (eps_h + nu eps_t), E' = E / (1 - nu^2)
+ * ([T] eq 5.15 with the hoop strain); a string (uniaxial) carries sigma_t
+ * = E eps_t only (meridional cords). One-way: the tension-field rule
+ * (membrane_wrinkle.c). */
 void lm_membrane_stress_biaxial(const lm_material *mat, double et, double eh, double *st,
                                 double *sh);
 

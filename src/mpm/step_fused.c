@@ -146,12 +146,7 @@ static LM_FORCE_INLINE void stress_at(lm_sim *sim, size_t q, double rx, double r
     r.max_div = md;
     r.c_max = cm;
     r.h = h;
-    switch (sim->mats[sim->p.mat[q]]->kind) {
-    case LM_ELASTIC: lm_elastic_update_at(sim, q, &r); break;
-    case LM_MEMBRANE: lm_membrane_update_at(sim, q, &r); break;
-    case LM_GAS: lm_gas_update_at(sim, q, &r); break;
-    case LM_LINEAR_FLUID: lm_linear_fluid_update_at(sim, q, &r); break;
-    }
+    lm_update_at(sim, q, &r, 0);   /* the plane form's row (material_update.c) */
 }
 
 /* After the stress at particle q: the check, then (ahead) its shape at

@@ -21,7 +21,9 @@ static lm_sim *scene(int *mb)
     char err[256];
     lm_sim *sim = lm_sim_new(&d, err, sizeof err);
     if (!sim) return NULL;
-    lm_material skin = {.kind = LM_MEMBRANE, .rho = 0.5, .E = 1e6, .nu = 0.3,
+    /* static: the sim borrows the material (a local would dangle once
+     * scene returns: read as garbage by the step's material-update table) */
+    static lm_material skin = {.kind = LM_MEMBRANE, .rho = 0.5, .E = 1e6, .nu = 0.3,
                         .thickness = 0.01, .law = LM_LAW_UNIAXIAL};
     int si = lm_sim_add_material(sim, &skin);
     *mb = lm_sim_add_membrane(sim, si, 1);

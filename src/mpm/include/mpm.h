@@ -49,9 +49,20 @@ typedef enum lm_kind {
     LM_LINEAR_FLUID = 4    /* p = -beta div U, the piston problem, [F] eq 26 */
 } lm_kind;
 typedef enum lm_plane { LM_PLANE_STRAIN = 0, LM_PLANE_STRESS = 1 } lm_plane;
-/* Membrane laws ([T] eqs 5.9, 5.15): a string/wire carries only the
- * tangential stress; a plane-stress membrane also sigma_z = nu sigma_t. */
-typedef enum lm_law { LM_LAW_UNIAXIAL = 0, LM_LAW_PLANE_STRESS = 1 } lm_law;
+/* Membrane laws, one file each (membrane_law_*.c, the contract in
+ * membrane_law.h): a string/wire carries only the tangential stress ([T]
+ * eq 5.9); a plane-stress membrane also sigma_z = nu sigma_t ([T] eq
+ * 5.15); the incompressible neo-Hookean membrane, W = mu/2 (l1^2 + l2^2 +
+ * 1/(l1 l2)^2 - 3) with mu = E/3, for large stretch. */
+typedef enum lm_law {
+    LM_LAW_UNIAXIAL = 0, LM_LAW_PLANE_STRESS = 1, LM_LAW_NEO_HOOKEAN = 2,
+    LM_LAW_COUNT
+} lm_law;
+/* The registry (membrane_law.c): a law's name in Lua ("uniaxial",
+ * "plane_stress", "neo_hookean"; NULL past the last), and the law of a
+ * name (-1 if none). */
+const char *lm_law_name(int law);
+int lm_law_lookup(const char *name);
 
 /* How a gas point's density is found ([T] §4): the continuity equation
  * (eq 4.7, the papers' runs), the gas mass of its cell (eq 4.5), or that
