@@ -7,8 +7,7 @@
  * of them derives physics of its own (a gas particle has one pressure
  * everywhere: its equation of state, [F] eq 22).
  *
- * Public: the bindings include it (a new header, so that the engine's
- * public include directory can take it whole). */
+ * Public (src/mpm/include): the bindings include it. */
 #ifndef LAMINA_FIELDS_H
 #define LAMINA_FIELDS_H
 
