@@ -4,7 +4,6 @@
  * Adding a law: its file membrane_law_NAME.c, its lm_law value (mpm.h) and
  * its line in `laws` below; docs/contributing.md walks through it. */
 #include <math.h>
-#include <string.h>
 
 #include "membrane_law.h"
 #include "step.h"
@@ -26,13 +25,6 @@ const lm_membrane_law *lm_membrane_law_of(lm_law law)
 const char *lm_law_name(int law)
 {
     return law >= 0 && law < LM_LAW_COUNT ? laws[law]->name : NULL;
-}
-
-int lm_law_lookup(const char *name)
-{
-    for (int k = 0; k < LM_LAW_COUNT; k++)
-        if (strcmp(name, laws[k]->name) == 0) return k;
-    return -1;
 }
 
 /* [M] §3.2 / Fig 13, the one-way law: E_t = 0 while eps_t < 0, the

@@ -59,10 +59,8 @@ typedef enum lm_law {
     LM_LAW_COUNT
 } lm_law;
 /* The registry (membrane_law.c): a law's name in Lua ("uniaxial",
- * "plane_stress", "neo_hookean"; NULL past the last), and the law of a
- * name (-1 if none). */
+ * "plane_stress", "neo_hookean"; NULL past the last). */
 const char *lm_law_name(int law);
-int lm_law_lookup(const char *name);
 
 /* How a gas point's density is found ([T] §4): the continuity equation
  * (eq 4.7, the papers' runs), the gas mass of its cell (eq 4.5), or that
