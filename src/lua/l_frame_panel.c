@@ -52,14 +52,16 @@ static const char *comp_name(const lm_field *f, int c)
 }
 
 /* "body" (the palette; the table's field "body", the index, is what the
- * palette shows), then every component's name in the table's order: the
- * option list of `colour` (and of its error message). */
+ * palette shows), then every component's name in the table's order but
+ * the position's (where a point is drawn is no colour): the option list
+ * of `colour` (and of its error message). */
 static void colour_names(const char *names[MAX_COLOURS])
 {
     int k = 0;
     names[k++] = "body";
     for (int i = 0; i < lm_field_count(); i++) {
         const lm_field *f = lm_field_get(i);
+        if (strcmp(f->name, "position") == 0) continue;
         for (int c = 0; c < f->ncomp && k < MAX_COLOURS - 1; c++)
             if (strcmp(comp_name(f, c), "body") != 0) names[k++] = comp_name(f, c);
     }
