@@ -103,7 +103,19 @@ int la_elastic(lua_State *L);
 int la_membrane_material(lua_State *L);
 int la_gas(lua_State *L);
 int la_linear_fluid(lua_State *L);
-lm_material *la_check_material(lua_State *L, int idx);
+/* A material as the script holds it: its definition, which each sim it is
+ * given to copies (lm_sim_add_material); a live change (mat.E = 2000)
+ * goes to every such sim through lm_sim_set_material. */
+typedef struct la_material { lm_material def; } la_material;
+la_material *la_check_material(lua_State *L, int idx);
+/* The engine's index of the material at midx in the sim at sidx, added
+ * to it (and remembered, for live changes) the first time; a Lua error
+ * prefixed fn if the engine refuses it. */
+int la_sim_material(lua_State *L, int sidx, int midx, const char *fn);
+/* After a checkpoint's restore replaced the sim's materials: the
+ * script's materials take the restored values, and so do the other sims
+ * they were given to. */
+void la_material_sync(lua_State *L, int sidx);
 
 /* l_region.c */
 void la_open_region(lua_State *L);

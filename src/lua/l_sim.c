@@ -2,7 +2,8 @@
  *
  * Callbacks (sim:every, sim:at) run between steps, so a live parameter
  * change made in one is applied exactly at a step boundary. Their functions
- * and the materials the engine borrows live in the sim's uservalue table. */
+ * and the script's materials (by engine index, field "mats": the engine
+ * has its own copies) live in the sim's uservalue table. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

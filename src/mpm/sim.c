@@ -154,23 +154,62 @@ void lm_sim_free(lm_sim *sim)
     lm_contact_free(sim->contact);
     lm_nwork_delete(sim->nwork);
     lm_ahead_free(sim->ahead);
+    for (int k = 0; k < sim->nmats; k++) free(sim->mats[k]);
     LU_FREE_ALL(sim->mats, sim->bodies, sim->cell_rho, sim->cell_stress, sim->pins, sim->links,
                 sim->pin_w, sim->cons, sim);
 }
 
-int lm_sim_add_material(lm_sim *sim, lm_material *mat)
+/* The sim owns its materials: each is a copy, checked, and changes only
+ * through lm_sim_set_material (issue 33 item 1). */
+int lm_sim_add_material(lm_sim *sim, const lm_material *mat)
 {
-    for (int k = 0; k < sim->nmats; k++)
-        if (sim->mats[k] == mat) return k;
+    char why[256];
+    if (lm_material_validate(mat, why, sizeof why)) {
+        snprintf(sim->err, sizeof sim->err, "%s", why);
+        return -1;
+    }
     if (sim->nmats == sim->capmats) {
         int cap = sim->capmats ? 2 * sim->capmats : 4;
         lm_material **q = realloc(sim->mats, cap * sizeof *q);
-        if (!q) return -1;
+        if (!q) {
+            snprintf(sim->err, sizeof sim->err, "out of memory");
+            return -1;
+        }
         sim->mats = q;
         sim->capmats = cap;
     }
-    sim->mats[sim->nmats] = mat;
+    lm_material *own = malloc(sizeof *own);
+    if (!own) {
+        snprintf(sim->err, sizeof sim->err, "out of memory");
+        return -1;
+    }
+    *own = *mat;
+    sim->mats[sim->nmats] = own;
     return sim->nmats++;
+}
+
+lm_status lm_sim_set_material(lm_sim *sim, int k, const lm_material *mat)
+{
+    char why[256];
+    if (k < 0 || k >= sim->nmats) {
+        snprintf(sim->err, sizeof sim->err, "material %d was not added", k + 1);
+        return LM_ERR_INPUT;
+    }
+    const lm_material *now = sim->mats[k];
+    if (mat->kind != now->kind) {
+        snprintf(sim->err, sizeof sim->err, "material %d cannot change its kind", k + 1);
+        return LM_ERR_INPUT;
+    }
+    if (mat->rho != now->rho) {   /* the particles' masses were seeded from it */
+        snprintf(sim->err, sizeof sim->err, "material %d cannot change rho", k + 1);
+        return LM_ERR_INPUT;
+    }
+    if (lm_material_validate(mat, why, sizeof why)) {
+        snprintf(sim->err, sizeof sim->err, "%s", why);
+        return LM_ERR_INPUT;
+    }
+    *sim->mats[k] = *mat;
+    return LM_OK;
 }
 
 /* The axisymmetric form counts a gas's mass per radian, r dA: the cell

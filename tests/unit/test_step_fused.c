@@ -105,7 +105,10 @@ static lm_sim *build(const setup *s)
         return sim;
     }
     static lm_material gas[2] = {
-        {.kind = LM_GAS, .rho = 1, .gamma = 1.4, .mu = 0.02, .e0 = 2.5, .av = 1},
+        /* the artificial viscosity's constants as lamina.gas{av = true} sets
+         * them (the engine checks a material it is given) */
+        {.kind = LM_GAS, .rho = 1, .gamma = 1.4, .mu = 0.02, .e0 = 2.5, .av = 1, .av_c1 = 1,
+         .av_c2 = 1, .av_lambda = 0.75},
         {.kind = LM_GAS, .rho = 1, .gamma = 1.4, .mu = 0.02, .e0 = 2.5,
          .density = LM_DENSITY_CELL},
     };

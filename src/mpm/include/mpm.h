@@ -302,7 +302,7 @@ typedef struct lm_sim {
     lm_sim_def def;
     lm_grid grid;
     lm_particles p;
-    lm_material **mats;    /* borrowed: the caller keeps them alive */
+    lm_material **mats;    /* the sim's own copies (lm_sim_add_material) */
     int nmats, capmats;
     lm_body *bodies;
     int nbodies, capbodies;
@@ -343,8 +343,15 @@ typedef struct lm_sim {
 lm_sim *lm_sim_new(const lm_sim_def *def, char *err, size_t errlen);
 void lm_sim_free(lm_sim *sim);
 
-/* Registers a material (borrowed pointer); returns its index or -1. */
-int lm_sim_add_material(lm_sim *sim, lm_material *mat);
+/* Registers a copy of mat, which the sim owns (checked by
+ * lm_material_validate); returns its index, or -1 with sim->err. Each call
+ * adds one: a caller that gives two bodies one material keeps its index. */
+int lm_sim_add_material(lm_sim *sim, const lm_material *mat);
+/* Replaces material k's parameters between steps (a live change: mat.E =
+ * 2000 from a callback), checked as lm_sim_add_material; its kind and rho
+ * cannot change (the particles' masses were seeded from rho). LM_ERR_INPUT
+ * with sim->err and the material unchanged otherwise. */
+lm_status lm_sim_set_material(lm_sim *sim, int k, const lm_material *mat);
 /* Starts a body of material index `mat`; returns its index or -1. */
 int lm_sim_add_body(lm_sim *sim, int mat);
 /* Appends one particle to the last body (bodies are contiguous). */
