@@ -110,10 +110,13 @@ lm_sim *lm_sim_new(const lm_sim_def *def, char *err, size_t errlen)
         return NULL;
     }
     lm_sim *sim = calloc(1, sizeof *sim);
-    if (!sim) {
+    lm_work *work = calloc(1, sizeof *work);   /* the scratch (sim_work.h) */
+    if (!sim || !work) {
+        LU_FREE_ALL(sim, work);
         snprintf(err, errlen, "out of memory");
         return NULL;
     }
+    sim->work = work;
     sim->def = *def;
     lm_grid *g = &sim->grid;
     g->x0 = def->x0;
@@ -136,7 +139,7 @@ lm_sim *lm_sim_new(const lm_sim_def *def, char *err, size_t errlen)
     /* stress = "cell": the per-cell sums of stress_cell.c, made here so that
      * the step has no failure of its own to report */
     if (def->stress == LM_STRESS_CELL &&
-        !(sim->cell_stress = malloc(3 * (size_t)g->nx * (size_t)g->ny * sizeof *sim->cell_stress))) {
+        !(work->cell_stress = malloc(3 * (size_t)g->nx * (size_t)g->ny * sizeof *work->cell_stress))) {
         lm_sim_free(sim);
         snprintf(err, errlen, "out of memory for the cell stresses of a %d x %d grid", g->nx,
                  g->ny);
@@ -152,11 +155,12 @@ void lm_sim_free(lm_sim *sim)
     lm_particles_free(&sim->p);
     for (int k = 0; k < sim->npins; k++) LU_FREE_ALL(sim->pins[k].idx, sim->pins[k].x0);
     lm_contact_free(sim->contact);
-    lm_nwork_delete(sim->nwork);
-    lm_ahead_free(sim->ahead);
+    lm_work *w = sim->work;
+    lm_nwork_delete(w->nwork);
+    lm_ahead_free(w->ahead);
     for (int k = 0; k < sim->nmats; k++) free(sim->mats[k]);
-    LU_FREE_ALL(sim->mats, sim->bodies, sim->cell_rho, sim->cell_stress, sim->pins, sim->links,
-                sim->pin_w, sim->cons, sim);
+    LU_FREE_ALL(sim->mats, sim->bodies, w->cell_rho, w->cell_stress, sim->pins, sim->links,
+                w->pin_w, w->cons, w, sim);
 }
 
 /* The sim owns its materials: each is a copy, checked, and changes only

@@ -314,29 +314,14 @@ typedef struct lm_sim {
     double damped;         /* the work the grid damping took out so far
                               (damping.c); not in the checkpoint */
     int prepared;          /* membrane stresses built from eps_t */
-    double *cell_rho;      /* density.c: gas density per cell (nx * ny) */
-    double *cell_stress;   /* stress_cell.c: sum V sigma per cell (3 nx ny) */
     lm_pin *pins;          /* pin.c */
     int npins;
-    double *pin_w, *pin_vx, *pin_vy;   /* per node: sum of the held particles'
-                              N_ip and N_ip v_p (allocated with the first pin) */
-    struct lm_con *cons;   /* constraint.c: the heavy end points of the step */
-    size_t ncons, capcons;
     lm_link *links;        /* link.c */
     int nlinks;
     struct lm_contact *contact;   /* pairs in contact (contact.h); NULL: none */
-    struct lm_nwork *nwork;       /* the normals' scratch (normals_work.h), made
-                                     by the first step that needs it; NULL: none */
-    struct lm_ahead *ahead;       /* the fused pass's nodal arrays (step_fused.c);
-                                     NULL until a plain run's first step */
-    struct {                      /* the OS threads of the loops (threads.c) */
-        int team;                 /* now; 0: not yet chosen */
-        int fixed;                /* > 0: held there (lm_sim_fix_team) */
-        int phase;                /* timing the whole team, one thread, or holding */
-        int left;                 /* steps left of the window or the hold */
-        double wall0, cpu0;       /* the clocks at the window's start */
-        double t_full;            /* the whole team's wall time a step */
-    } pace;
+    struct lm_work *work;         /* the step's scratch: work arrays, the
+                                     threads' timing (private to the engine,
+                                     src/mpm/sim_work.h) */
     char err[512];
 } lm_sim;
 
