@@ -212,6 +212,10 @@ lm_status lm_sim_set_material(lm_sim *sim, int k, const lm_material *mat)
         snprintf(sim->err, sizeof sim->err, "%s", why);
         return LM_ERR_INPUT;
     }
+    /* a change of the wave speed moves the Courant number (a gas's mu or
+     * av, which do not, leave the check as it was) */
+    if (lm_material_wave_speed(mat) != lm_material_wave_speed(now))
+        sim->work->courant_checked = 0;
     *sim->mats[k] = *mat;
     return LM_OK;
 }
@@ -256,6 +260,7 @@ int lm_sim_add_body(lm_sim *sim, int mat)
     }
     lm_body *b = &sim->bodies[sim->nbodies];
     memset(b, 0, sizeof *b);
+    sim->work->courant_checked = 0;   /* its material's wave speed counts now */
     b->mat = mat;
     b->first = sim->p.n;
     b->count = 0;
@@ -455,6 +460,7 @@ lm_status lm_sim_set_courant(lm_sim *sim, double courant)
     if (!(courant > 0) || !isfinite(courant))
         return refuse_setting(sim, "courant must be positive and finite", courant);
     sim->def.courant = courant;
+    sim->work->courant_checked = 0;
     return LM_OK;
 }
 
@@ -467,6 +473,7 @@ lm_status lm_sim_set_membrane_force(lm_sim *sim, int b, lm_mforce force)
     }
     sim->bodies[b].force = force;
     sim->prepared = 0;   /* segments' rest lengths are found by the next prepare */
+    sim->work->courant_checked = 0;   /* a segment form's c counts / LM_SEGMENT_COURANT */
     return LM_OK;
 }
 

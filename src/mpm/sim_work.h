@@ -22,6 +22,9 @@ typedef struct lm_work {
                                      by the first step that needs it; NULL: none */
     struct lm_ahead *ahead;       /* the fused pass's nodal arrays (step_fused.c);
                                      NULL until a plain run's first step */
+    int courant_checked;          /* the Courant check passed and nothing that
+                                     moves the number changed since
+                                     (courant_check.c) */
     struct {                      /* the OS threads of the loops (threads.c) */
         int team;                 /* now; 0: not yet chosen */
         int fixed;                /* > 0: held there (lm_sim_fix_team) */
