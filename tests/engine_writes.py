@@ -25,13 +25,11 @@ import re
 import sys
 
 ENGINE_TYPES = r"(?:lm_sim|lm_body|lm_particles|lm_grid|lm_pin|lm_link|lm_material)"
-# Files that still write engine state, each with the change that ends it.
-# l_material.c: a material's userdata is the lm_material a simulation
-# borrows (sim->mats); issue 33 item 1's setter, by which the engine copies
-# and owns its materials, takes this entry out.
-PENDING = {
-    "src/lua/l_material.c": "the engine borrows the material (issue 33 item 1: a setter)",
-}
+# Files that still write engine state, each with the change that ends it
+# (none now: since issue 33 item 1 the engine owns copies of its materials,
+# and a script's material is a definition, la_material, changed live
+# through lm_sim_set_material).
+PENDING = {}
 # `lm_body *bd`, `lm_sim *sim = ...`, `lm_particles *const p` - not `const lm_body *`
 DECL = re.compile(r"(?<![\w])(?<!const )" + ENGINE_TYPES + r"\s*\*\s*(?:const\s+)?(\w+)")
 PATHS = re.compile(r"->sim->")   # la_sim's engine pointer

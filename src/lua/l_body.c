@@ -129,8 +129,7 @@ int la_sim_body(lua_State *L)
 
     la_getfield(L, 2, "material");
     if (lua_isnil(L, -1)) return luaL_error(L, "%s: 'material' is required", fn);
-    lm_material *mat = luaL_testudata(L, -1, LA_MATERIAL);
-    if (!mat) return luaL_error(L, "%s: 'material' must be a material (lamina.elastic{...})", fn);
+    if (!luaL_testudata(L, -1, LA_MATERIAL)) return luaL_error(L, "%s: 'material' must be a material (lamina.elastic{...})", fn);
     int midx = lua_gettop(L);
 
     la_getfield(L, 2, "region");
@@ -148,11 +147,9 @@ int la_sim_body(lua_State *L)
 
     /* the engine checks the body (body_create.c: the material's kind, the
      * pattern's limits, the axisymmetric gas's rules, an empty region) */
-    la_sim_keep(L, 1, midx);   /* first: the engine holds the material from here */
     lm_body_def def;
     lm_body_def_default(&def);
-    def.mat = lm_sim_add_material(sim, mat);
-    if (def.mat < 0) return luaL_error(L, "%s: out of memory", fn);
+    def.mat = la_sim_material(L, 1, midx, fn);   /* the engine's copy */
     fill_ctx fc = { L, ridx, vidx };
     def.region = region;
     def.inside = region ? NULL : region_fn;

@@ -287,6 +287,7 @@ void la_checkpoint_restore(lua_State *L, int sidx, la_sim *s)
         }
     }
     free(buf);
+    la_material_sync(L, sidx);   /* the script's materials take the restored values */
     /* Say where the run goes on from (issue 35 item 5): without it a
      * restarted run looks like a fresh one. */
     if (!run->quiet)

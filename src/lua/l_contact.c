@@ -83,10 +83,13 @@ static int sim_contact_info(lua_State *L)
         lua_pushnil(L);
         return 1;
     }
+    static const char *const states[] = {"stick", "release", "slide"};
+    const long nodes[] = {c.stick, c.release, c.slide};
     lua_createtable(L, 0, 5);
-    lua_pushinteger(L, c.stick); lua_setfield(L, -2, "stick");
-    lua_pushinteger(L, c.release); lua_setfield(L, -2, "release");
-    lua_pushinteger(L, c.slide); lua_setfield(L, -2, "slide");
+    for (int k = 0; k < 3; k++) {   /* the nodes of each state */
+        lua_pushinteger(L, nodes[k]);
+        lua_setfield(L, -2, states[k]);
+    }
     lua_pushnumber(L, c.ke_before); lua_setfield(L, -2, "ke_before");
     lua_pushnumber(L, c.ke_after); lua_setfield(L, -2, "ke_after");
     return 1;

@@ -103,7 +103,19 @@ int la_elastic(lua_State *L);
 int la_membrane_material(lua_State *L);
 int la_gas(lua_State *L);
 int la_linear_fluid(lua_State *L);
-lm_material *la_check_material(lua_State *L, int idx);
+/* A material as the script holds it: its definition, which each sim it is
+ * given to copies (lm_sim_add_material); a live change (mat.E = 2000)
+ * goes to every such sim through lm_sim_set_material. */
+typedef struct la_material { lm_material def; } la_material;
+la_material *la_check_material(lua_State *L, int idx);
+/* The engine's index of the material at midx in the sim at sidx, added
+ * to it (and remembered, for live changes) the first time; a Lua error
+ * prefixed fn if the engine refuses it. */
+int la_sim_material(lua_State *L, int sidx, int midx, const char *fn);
+/* After a checkpoint's restore replaced the sim's materials: the
+ * script's materials take the restored values, and so do the other sims
+ * they were given to. */
+void la_material_sync(lua_State *L, int sidx);
 
 /* l_region.c */
 void la_open_region(lua_State *L);
@@ -144,7 +156,7 @@ typedef struct la_sim {
     int index;                  /* 1 + the sims the script made before it */
     char *ck_file;              /* sim:checkpoint (l_checkpoint.c) */
     unsigned long long warned_bunched;   /* bodies warned of bunched points (bit b) */
-    int warned_energy;          /* said once: the energy rose (l_energy_watch.c) */
+    int warned_energy;          /* said once: the energy rose (energy_watch.c) */
     int warned_leak;            /* said once: gas crossed a membrane (l_leak_watch.c) */
     signed char *leak_side;     /* leak_nb^2: which side of membrane m gas g keeps */
     int leak_nb;
@@ -169,21 +181,6 @@ void la_ref_free(la_sim *s);
 void la_leak_watch(lua_State *L, la_sim *s);
 void la_option_warn(const la_sim *s);
 
-/* The total energy over one sim:run (l_energy_watch.c): a rise by a tenth
- * with no driven pin is said once, as a warning. */
-typedef struct la_energy_watch {
-    double seen0;               /* the energy at the start, as the grid sees it */
-    double scale;               /* the most energy in play so far */
-    double floor;               /* rounding: M c_max^2 x 1e-12 */
-    double t0;
-    long step0;
-    double gx, gy;              /* gravity at the start: a callback that
-                                   changes it does work, as a driven pin */
-    int driven;
-} la_energy_watch;
-void la_energy_watch_begin(const la_sim *s, la_energy_watch *w);
-void la_energy_watch_step(const la_sim *s, la_energy_watch *w);
-void la_energy_watch_end(lua_State *L, la_sim *s, const la_energy_watch *w);
 /* A warning line to stderr (clearing the progress line) and the run log. */
 void la_warn(lua_State *L, const char *line);
 

@@ -1,8 +1,10 @@
 /* l_material.c - lamina.elastic{...} and live parameter changes.
  *
- * A material is a userdata holding an lm_material; simulations borrow a
- * pointer to it and keep the userdata alive through their uservalue, so a
- * change made from a callback (mat.E = 2000) reaches the engine at the next
+ * A material is a userdata holding an lm_material, the script's
+ * definition; each simulation it is given to owns a copy (issue 33 item
+ * 1). The userdata's uservalue is a weak-keyed table, sim -> the engine's
+ * index of it there, so a change made from a callback (mat.E = 2000)
+ * reaches every such engine, through lm_sim_set_material, at the next
  * step. Live changes are echoed to stderr with the time and step so that a
  * run can be replayed (docs/design.md, "Conventions"). */
 #include <stdio.h>
@@ -13,28 +15,114 @@
 static const char *const planes[] = {"strain", "stress", NULL};
 static const char *const densities[] = {"continuity", "cell", "quadratic", NULL};
 
-lm_material *la_check_material(lua_State *L, int idx)
+la_material *la_check_material(lua_State *L, int idx)
 {
     return luaL_checkudata(L, idx, LA_MATERIAL);
 }
 
-static lm_material *push_material(lua_State *L)
+static void push_material(lua_State *L, const lm_material *def)
 {
-    lm_material *m = lua_newuserdatauv(L, sizeof *m, 0);
-    memset(m, 0, sizeof *m);
+    la_material *u = lua_newuserdatauv(L, sizeof *u, 1);
+    u->def = *def;
     luaL_setmetatable(L, LA_MATERIAL);
-    return m;
+    lua_newtable(L);                       /* sim -> index, the sims weakly */
+    lua_createtable(L, 0, 1);
+    lua_pushliteral(L, "k");
+    lua_setfield(L, -2, "__mode");
+    lua_setmetatable(L, -2);
+    lua_setiuservalue(L, -2, 1);
+}
+
+/* The sims' list of their materials, by engine index (sim uservalue's
+ * field "mats"), pushed; made when absent. */
+static void push_sim_materials(lua_State *L, int sidx)
+{
+    lua_getiuservalue(L, sidx, 1);
+    if (lua_getfield(L, -1, "mats") != LUA_TTABLE) {
+        lua_pop(L, 1);
+        lua_newtable(L);
+        lua_pushvalue(L, -1);
+        lua_setfield(L, -3, "mats");
+    }
+    lua_remove(L, -2);
+}
+
+int la_sim_material(lua_State *L, int sidx, int midx, const char *fn)
+{
+    sidx = lua_absindex(L, sidx);
+    midx = lua_absindex(L, midx);
+    la_sim *s = la_check_sim(L, sidx);
+    la_material *u = la_check_material(L, midx);
+    lua_getiuservalue(L, midx, 1);
+    lua_pushvalue(L, sidx);
+    if (lua_rawget(L, -2) == LUA_TNUMBER) {   /* given to this sim before */
+        int k = (int)lua_tointeger(L, -1);
+        lua_pop(L, 2);
+        return k;
+    }
+    lua_pop(L, 1);
+    int k = lm_sim_add_material(s->sim, &u->def);
+    if (k < 0) return luaL_error(L, "%s: %s", fn, s->sim->err);
+    lua_pushvalue(L, sidx);
+    lua_pushinteger(L, k);
+    lua_rawset(L, -3);
+    lua_pop(L, 1);
+    push_sim_materials(L, sidx);   /* the sim keeps the material, for restores */
+    lua_pushvalue(L, midx);
+    lua_rawseti(L, -2, k + 1);
+    lua_pop(L, 1);
+    return k;
+}
+
+/* Gives next to every sim the material at midx was given to (all or
+ * nothing: each is checked before any changes), then to the material. */
+static void set_everywhere(lua_State *L, int midx, const lm_material *next)
+{
+    la_material *u = la_check_material(L, midx);
+    for (int pass = 0; pass < 2; pass++) {
+        lua_getiuservalue(L, midx, 1);
+        lua_pushnil(L);
+        while (lua_next(L, -2)) {
+            la_sim *s = lua_touserdata(L, -2);
+            int k = (int)lua_tointeger(L, -1);
+            lua_pop(L, 1);
+            if (!s || !s->sim) continue;   /* collected, its key not yet cleared */
+            const lm_material *now = s->sim->mats[k];
+            if (pass == 0 && (next->kind != now->kind || next->rho != now->rho))
+                luaL_error(L, "material: sim %d's copy has another kind or rho", s->index);
+            if (pass == 1 && lm_sim_set_material(s->sim, k, next) != LM_OK)
+                luaL_error(L, "material: %s", s->sim->err);
+        }
+        lua_pop(L, 1);
+    }
+    u->def = *next;
+}
+
+void la_material_sync(lua_State *L, int sidx)
+{
+    sidx = lua_absindex(L, sidx);
+    la_sim *s = la_check_sim(L, sidx);
+    push_sim_materials(L, sidx);
+    for (int k = 0; k < s->sim->nmats; k++) {
+        if (lua_rawgeti(L, -1, k + 1) == LUA_TUSERDATA) {
+            lm_material now = *s->sim->mats[k];
+            set_everywhere(L, lua_gettop(L), &now);
+        }
+        lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
 }
 
 /* A material constructor's start: its options (argument 1) checked
- * against keys, the material pushed with its kind and density rho. */
-static lm_material *new_material(lua_State *L, const char *fn, const char *const keys[],
-                                 lm_kind kind)
+ * against keys, the definition with its kind and density rho. */
+static lm_material new_material(lua_State *L, const char *fn, const char *const keys[],
+                                lm_kind kind)
 {
     la_check_keys(L, 1, fn, keys);
-    lm_material *m = push_material(L);
-    m->kind = kind;
-    m->rho = la_number(L, 1, fn, "rho");
+    lm_material m;
+    memset(&m, 0, sizeof m);
+    m.kind = kind;
+    m.rho = la_number(L, 1, fn, "rho");
     return m;
 }
 
@@ -55,17 +143,24 @@ static void validate(lua_State *L, const char *fn, const lm_material *m)
         luaL_error(L, "%s: %s", fn, err);
 }
 
+/* A constructor's end: the definition checked and pushed as the material. */
+static int push_new(lua_State *L, const char *fn, const lm_material *m)
+{
+    validate(L, fn, m);
+    push_material(L, m);
+    return 1;
+}
+
 int la_elastic(lua_State *L)
 {
     static const char *const keys[] = {"rho", "E", "nu", "plane", NULL};
     const char *fn = "lamina.elastic";
-    lm_material *m = new_material(L, fn, keys, LM_ELASTIC);
-    m->E = la_number(L, 1, fn, "E");
-    m->nu = la_opt_number(L, 1, fn, "nu", 0.3);
-    m->plane = (lm_plane)la_option(L, fn, "plane",
+    lm_material m = new_material(L, fn, keys, LM_ELASTIC);
+    m.E = la_number(L, 1, fn, "E");
+    m.nu = la_opt_number(L, 1, fn, "nu", 0.3);
+    m.plane = (lm_plane)la_option(L, fn, "plane",
                                    la_opt_string(L, 1, fn, "plane", "strain"), planes);
-    validate(L, fn, m);
-    return 1;
+    return push_new(L, fn, &m);
 }
 
 /* lamina.membrane{rho, E, nu, thickness, law, one_way} ([M] §3, [T] §5.1):
@@ -74,18 +169,17 @@ int la_membrane_material(lua_State *L)
 {
     static const char *const keys[] = {"rho", "E", "nu", "thickness", "law", "one_way", NULL};
     const char *fn = "lamina.membrane";
-    lm_material *m = new_material(L, fn, keys, LM_MEMBRANE);
-    m->E = la_number(L, 1, fn, "E");
-    m->nu = la_opt_number(L, 1, fn, "nu", 0);
-    m->thickness = la_number(L, 1, fn, "thickness");
-    m->law = law_option(L, fn, la_opt_string(L, 1, fn, "law", "uniaxial"));
+    lm_material m = new_material(L, fn, keys, LM_MEMBRANE);
+    m.E = la_number(L, 1, fn, "E");
+    m.nu = la_opt_number(L, 1, fn, "nu", 0);
+    m.thickness = la_number(L, 1, fn, "thickness");
+    m.law = law_option(L, fn, la_opt_string(L, 1, fn, "law", "uniaxial"));
     la_getfield(L, 1, "one_way");
     if (!lua_isnil(L, -1) && !lua_isboolean(L, -1))
         luaL_error(L, "%s: 'one_way' must be true or false", fn);
-    m->one_way = lua_toboolean(L, -1);
+    m.one_way = lua_toboolean(L, -1);
     lua_pop(L, 1);
-    validate(L, fn, m);
-    return 1;
+    return push_new(L, fn, &m);
 }
 
 /* lamina.gas{rho, e | p, gamma = 1.4, mu = 0, av} ([F] §3.3): av = true is
@@ -97,48 +191,47 @@ int la_gas(lua_State *L)
                                        "density", NULL};
     static const char *const avkeys[] = {"c1", "c2", "lambda", "g", NULL};
     const char *fn = "lamina.gas";
-    lm_material *m = new_material(L, fn, keys, LM_GAS);
-    m->gamma = la_opt_number(L, 1, fn, "gamma", 1.4);
-    m->mu = la_opt_number(L, 1, fn, "mu", 0);
-    m->split = la_opt_number(L, 1, fn, "split", 0);
+    lm_material m = new_material(L, fn, keys, LM_GAS);
+    m.gamma = la_opt_number(L, 1, fn, "gamma", 1.4);
+    m.mu = la_opt_number(L, 1, fn, "mu", 0);
+    m.split = la_opt_number(L, 1, fn, "split", 0);
     /* split = n keeps about n points per cell: past the particles-per-cell
      * limit (l_body.c) it would split every point at every step (1e308) */
-    if (!(m->split >= 0) || !(m->split <= 4096))
+    if (!(m.split >= 0) || !(m.split <= 4096))
         luaL_error(L, "%s: split must be >= 0 and at most 4096, the limit of points per "
-                   "cell (got %f)", fn, m->split);
-    m->density = (lm_density)la_option(L, fn, "density",
+                   "cell (got %f)", fn, m.split);
+    m.density = (lm_density)la_option(L, fn, "density",
                                        la_opt_string(L, 1, fn, "density", "continuity"), densities);
     int has_e = la_has(L, 1, "e"), has_p = la_has(L, 1, "p");
     if (has_e == has_p) luaL_error(L, "%s: give exactly one of 'e' (specific internal "
                                    "energy) and 'p' (pressure)", fn);
-    if (!(m->rho > 0)) luaL_error(L, "%s: rho must be positive (got %f)", fn, m->rho);
-    if (!(m->gamma > 1)) luaL_error(L, "%s: gamma must be greater than 1 (got %f)", fn, m->gamma);
+    if (!(m.rho > 0)) luaL_error(L, "%s: rho must be positive (got %f)", fn, m.rho);
+    if (!(m.gamma > 1)) luaL_error(L, "%s: gamma must be greater than 1 (got %f)", fn, m.gamma);
     if (has_e) {
-        m->e0 = la_number(L, 1, fn, "e");
+        m.e0 = la_number(L, 1, fn, "e");
     } else {
         double pr = la_number(L, 1, fn, "p");
         if (!(pr >= 0)) luaL_error(L, "%s: p must be >= 0 (got %f)", fn, pr);
-        m->e0 = pr / ((m->gamma - 1) * m->rho);   /* [F] eq 22 */
+        m.e0 = pr / ((m.gamma - 1) * m.rho);   /* [F] eq 22 */
     }
-    m->av_c1 = m->av_c2 = 1;
-    m->av_lambda = 0.75;
-    m->av_g = 0;
+    m.av_c1 = m.av_c2 = 1;
+    m.av_lambda = 0.75;
+    m.av_g = 0;
     int t = la_getfield(L, 1, "av");
     if (t == LUA_TBOOLEAN) {
-        m->av = lua_toboolean(L, -1);
+        m.av = lua_toboolean(L, -1);
     } else if (t == LUA_TTABLE) {
         la_check_keys(L, -1, "lamina.gas av", avkeys);
-        m->av = 1;
-        m->av_c1 = la_opt_number(L, -1, fn, "c1", 1);
-        m->av_c2 = la_opt_number(L, -1, fn, "c2", 1);
-        m->av_lambda = la_opt_number(L, -1, fn, "lambda", 0.75);
-        m->av_g = la_opt_number(L, -1, fn, "g", 0);
+        m.av = 1;
+        m.av_c1 = la_opt_number(L, -1, fn, "c1", 1);
+        m.av_c2 = la_opt_number(L, -1, fn, "c2", 1);
+        m.av_lambda = la_opt_number(L, -1, fn, "lambda", 0.75);
+        m.av_g = la_opt_number(L, -1, fn, "g", 0);
     } else if (t != LUA_TNIL) {
         luaL_error(L, "%s: 'av' must be true/false or {c1, c2, lambda, g}", fn);
     }
     lua_pop(L, 1);
-    validate(L, fn, m);
-    return 1;
+    return push_new(L, fn, &m);
 }
 
 /* lamina.linear_fluid{rho, beta}: p = -beta div U ([F] eq 26). */
@@ -146,10 +239,9 @@ int la_linear_fluid(lua_State *L)
 {
     static const char *const keys[] = {"rho", "beta", NULL};
     const char *fn = "lamina.linear_fluid";
-    lm_material *m = new_material(L, fn, keys, LM_LINEAR_FLUID);
-    m->beta = la_number(L, 1, fn, "beta");
-    validate(L, fn, m);
-    return 1;
+    lm_material m = new_material(L, fn, keys, LM_LINEAR_FLUID);
+    m.beta = la_number(L, 1, fn, "beta");
+    return push_new(L, fn, &m);
 }
 
 static const char *kind_name(const lm_material *m)
@@ -164,7 +256,7 @@ static const char *kind_name(const lm_material *m)
 
 static int mat_index(lua_State *L)
 {
-    lm_material *m = la_check_material(L, 1);
+    const lm_material *m = &la_check_material(L, 1)->def;
     const char *k = luaL_checkstring(L, 2);
     if (strcmp(k, "rho") == 0) lua_pushnumber(L, m->rho);
     else if (strcmp(k, "E") == 0) lua_pushnumber(L, m->E);
@@ -190,7 +282,7 @@ static int mat_index(lua_State *L)
 /* rho is not live: particle masses were fixed from it at seeding. */
 static int mat_newindex(lua_State *L)
 {
-    lm_material *m = la_check_material(L, 1);
+    const lm_material *m = &la_check_material(L, 1)->def;
     const char *k = luaL_checkstring(L, 2);
     lm_material next = *m;
     if (strcmp(k, "mu") == 0 && m->kind == LM_GAS) next.mu = luaL_checknumber(L, 3);
@@ -212,14 +304,14 @@ static int mat_newindex(lua_State *L)
                           : m->kind == LM_GAS ? "mu, av"
                           : m->kind == LM_LINEAR_FLUID ? "beta" : "E, nu, plane");
     validate(L, "material", &next);
-    *m = next;
+    set_everywhere(L, 1, &next);
     la_log_change(L, "material", k, 3);   /* l_runlog.c: stderr and the run log */
     return 0;
 }
 
 static int mat_tostring(lua_State *L)
 {
-    lm_material *m = la_check_material(L, 1);
+    const lm_material *m = &la_check_material(L, 1)->def;
     if (m->kind == LM_GAS) {
         lua_pushfstring(L, "lamina.gas{rho = %f, e = %f, gamma = %f, mu = %f, av = %s, "
                         "density = \"%s\"}", m->rho, m->e0, m->gamma, m->mu,

@@ -93,8 +93,8 @@ int la_sim_membrane(lua_State *L)
     const lm_grid *g = &sim->grid;
 
     la_getfield(L, 2, "material");
-    lm_material *mat = luaL_testudata(L, -1, LA_MATERIAL);
-    if (!mat || mat->kind != LM_MEMBRANE)
+    const la_material *mat = luaL_testudata(L, -1, LA_MATERIAL);
+    if (!mat || mat->def.kind != LM_MEMBRANE)
         return luaL_error(L, "%s: 'material' must be lamina.membrane{...}", fn);
     int midx = lua_gettop(L);
     la_getfield(L, 2, "name");
@@ -178,9 +178,7 @@ int la_sim_membrane(lua_State *L)
         pux[k] = ux;
         puy[k] = uy;
     }
-    la_sim_keep(L, 1, midx);   /* first: the engine holds the material from here */
-    int mi = lm_sim_add_material(sim, mat);
-    if (mi < 0) return luaL_error(L, "%s: out of memory", fn);
+    int mi = la_sim_material(L, 1, midx, fn);   /* the engine's copy */
     lm_membrane_def def;
     lm_membrane_def_default(&def);
     def.mat = mi;

@@ -48,7 +48,7 @@ static int sim_relax(lua_State *L)
     }
     la_checkpoint_restore(L, 1, s);   /* --restart: as sim:run */
     /* a body at rest holds rounding only: below the energy watch's floor,
-     * 1e-12 M c_max^2 (l_energy_watch.c), the motion counts as gone */
+     * 1e-12 M c_max^2 (src/mpm/energy_watch.c), the motion counts as gone */
     double M = 0, cm = 0;
     for (size_t q = 0; q < sim->p.n; q++) M += sim->p.m[q];
     lm_sim_courant(sim, &cm);

@@ -2,7 +2,8 @@
  *
  * Callbacks (sim:every, sim:at) run between steps, so a live parameter
  * change made in one is applied exactly at a step boundary. Their functions
- * and the materials the engine borrows live in the sim's uservalue table. */
+ * and the script's materials (by engine index, field "mats": the engine
+ * has its own copies) live in the sim's uservalue table. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -358,51 +359,23 @@ void la_raise_sim_failure(lua_State *L, const char *why)
 }
 
 /* docs/design.md: a dt whose Courant number exceeds `courant` (times the
- * basis' factor, lm_basis_courant_factor) is refused with the limit
- * printed, naming the body whose wave speed sets it. */
-static int courant_exceeded(la_sim *s, char *msg, size_t len)
-{
-    double c;
-    int b;
-    double cn = lm_sim_courant_body(s->sim, &c, &b);
-    double limit = lm_sim_courant_limit(s->sim);
-    if (!(cn > limit * (1 + 1e-12))) return 0;
-    double h = fmin(s->sim->grid.hx, s->sim->grid.hy);
-    char basis[320] = "", who[96] = "", why[200] = "";
-    double fb = lm_basis_courant_factor(s->sim->def.basis);
-    if (fb != 1)
-        snprintf(basis, sizeof basis, " x %g for basis = \"%s\"", fb,
-                 lm_basis_name(s->sim->def.basis));
-    if (s->sim->def.scheme == LM_USL) {
-        size_t k = strlen(basis);
-        snprintf(basis + k, sizeof basis - k, " x %g for scheme = \"usl\" (USL divides each "
-                 "node's momentum by its own mass: less stable than MUSL)", LM_USL_COURANT);
-    }
-    if (s->sim->def.mass == LM_MASS_CORRECTED) {
-        size_t k = strlen(basis);
-        snprintf(basis + k, sizeof basis - k, " x %g for mass = \"corrected\" (its highest "
-                 "grid mode is faster)", LM_CORRECTED_COURANT);
-    }
-    if (b >= 0) {
-        const lm_body *bd = &s->sim->bodies[b];
-        lm_body_label(s->sim, b, who, sizeof who);
-        if (bd->membrane && bd->force == LM_MFORCE_SEGMENT)
-            snprintf(why, sizeof why, "; its tension acts along segments, stable to "
-                     "dt*c/h = %g, so c counts as its wave speed / %g",
-                     LM_SEGMENT_COURANT, LM_SEGMENT_COURANT);
-    }
-    snprintf(msg, len,
-             "dt = %g is too large: Courant number dt*c/h = %g exceeds "
-             "courant = %g%s (c_max = %g from %s%s, h = %g); use dt <= %g or raise courant",
-             s->sim->def.dt, cn, s->sim->def.courant, basis, c, b >= 0 ? who : "no body", why,
-             h, limit * h / c);
-    return 1;
-}
-
+ * basis' factor) is refused: the engine's decision and message
+ * (lm_sim_check_courant, courant_check.c), reported here as a refusal. */
 static void check_courant(lua_State *L, la_sim *s)
 {
-    char msg[900];
-    if (courant_exceeded(s, msg, sizeof msg)) la_fail_raisef(L, LAMINA_FAIL_REFUSED, "%s", msg);
+    if (lm_sim_check_courant(s->sim) != LM_OK)
+        la_fail_raisef(L, LAMINA_FAIL_REFUSED, "%s", s->sim->err);
+}
+
+/* The engine's energy watch (energy_watch.c) over one sim:run: its
+ * warning said once a sim. */
+static void energy_report(lua_State *L, la_sim *s, const lm_energy_watch *w)
+{
+    char msg[1200], line[1300];
+    if (s->warned_energy || !lm_energy_watch_end(s->sim, w, msg, sizeof msg)) return;
+    s->warned_energy = 1;
+    snprintf(line, sizeof line, "lamina: warning: %s\n", msg);
+    la_warn(L, line);
 }
 
 /* The steps left to t_end at the current dt: a dt changed by a callback
@@ -441,8 +414,8 @@ static int run_steps(lua_State *L)
     a->guard->progress = 1;
     fire_due(L, s);
     la_checkpoint_due(L, 1, s);
-    la_energy_watch watch;
-    la_energy_watch_begin(s, &watch);
+    lm_energy_watch watch;
+    lm_energy_watch_begin(s->sim, &watch);
     la_leak_watch(L, s);   /* the sides are judged before the first step */
     la_option_warn(s);
     /* the script may have changed anything since the last step */
@@ -451,13 +424,15 @@ static int run_steps(lua_State *L)
     double dt_was = s->sim->def.dt;
     for (long n = 0; isnan(t_end) ? n < nsteps : steps_to(s, t_end) > 0; n++) {
         la_pins_update(L, 1, s);
-        la_energy_watch_step(s, &watch);
+        lm_energy_watch_step(s->sim, &watch);
         /* another step follows at once unless this is the last or a
          * callback runs in between (and one that does makes the engine
          * forget, below) */
         int more = (isnan(t_end) ? n + 1 < nsteps : steps_to(s, t_end) > 1) &&
                    !due_after_step(s);
         lm_status st = lm_sim_step_then(s->sim, more);
+        if (st == LM_ERR_COURANT)   /* a live change moved the Courant number past it */
+            la_fail_raisef(L, LAMINA_FAIL_REFUSED, "%s", s->sim->err);
         if (st != LM_OK) la_raise_sim_failure(L, s->sim->err);   /* the history is kept */
         if (fire_due(L, s)) lm_sim_forget_ahead(s->sim);   /* it may have changed the state */
         la_leak_watch(L, s);
@@ -482,7 +457,7 @@ static int run_steps(lua_State *L)
         if (la_progress_tick(L, s->sim))   /* Ctrl-C, watch: stop between steps */
             la_interrupt_raise(L, s->sim);
     }
-    la_energy_watch_end(L, s, &watch);
+    energy_report(L, s, &watch);
     return 0;
 }
 
@@ -678,15 +653,9 @@ static int sim_newindex(lua_State *L)
     if (strcmp(k, "dt") == 0) {
         double dt = luaL_checknumber(L, 3);
         if (!(dt > 0) || !isfinite(dt)) return luaL_error(L, "sim.dt must be positive (got %f)", dt);
-        double old = m->def.dt;
-        lm_sim_set_dt(m, dt);
         /* checked as at the start of a run (s.dt = 1e300 was not): a dt
          * past the Courant limit is refused and the old one kept */
-        char msg[900];
-        if (courant_exceeded(s, msg, sizeof msg)) {
-            lm_sim_set_dt(m, old);
-            return luaL_error(L, "sim.%s", msg);
-        }
+        if (lm_sim_try_dt(m, dt) != LM_OK) return luaL_error(L, "sim.%s", m->err);
     } else if (strcmp(k, "gravity") == 0) {
         luaL_checktype(L, 3, LUA_TTABLE);
         lua_rawgeti(L, 3, 1);

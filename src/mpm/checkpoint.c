@@ -425,5 +425,6 @@ lm_status lm_sim_state_load(lm_sim *sim, const unsigned char *buf, size_t len)
     sim->step = (long)c.step;
     sim->step_base = (long)c.step_base;
     sim->prepared = c.prepared;
+    sim->work->courant_checked = 0;   /* dt, courant and materials as restored */
     return LM_OK;
 }

@@ -220,14 +220,14 @@ static size_t count(const lm_sim *sim)
 lm_status lm_constraint_reserve(lm_sim *sim)
 {
     size_t n = count(sim);
-    if (n <= sim->capcons) return LM_OK;
-    lm_con *c = realloc(sim->cons, n * sizeof *c);
+    if (n <= sim->work->capcons) return LM_OK;
+    lm_con *c = realloc(sim->work->cons, n * sizeof *c);
     if (!c) {
         snprintf(sim->err, sizeof sim->err, "out of memory for %zu heavy points", n);
         return LM_ERR_MEMORY;
     }
-    sim->cons = c;
-    sim->capcons = n;
+    sim->work->cons = c;
+    sim->work->capcons = n;
     return LM_OK;
 }
 
@@ -235,8 +235,8 @@ lm_status lm_constraint_reserve(lm_sim *sim)
  * is the pin's). */
 static void gather(lm_sim *sim)
 {
-    lm_con *c = sim->cons;
-    size_t j = 0, cap = sim->capcons;
+    lm_con *c = sim->work->cons;
+    size_t j = 0, cap = sim->work->capcons;
     for (int b = 0; b < sim->nbodies && j < cap; b++) {
         size_t q;
         double e = heavy_extra(sim, b, &q);
@@ -249,7 +249,7 @@ static void gather(lm_sim *sim)
         for (size_t i = 0; i < pn->n && j < cap && pn->point; i++)
             c[j++] = (lm_con){first + pn->idx[i], 0, 0, 0, k, 0, 0};
     }
-    sim->ncons = j;
+    sim->work->ncons = j;
 }
 
 /* What M' brings to the field solved next: its velocity, or its own
@@ -261,8 +261,8 @@ static void targets(lm_sim *sim, int accel)
 {
     const lm_particles *p = &sim->p;
     double dt = sim->def.dt;
-    for (size_t a = 0; a < sim->ncons; a++) {
-        lm_con *c = &sim->cons[a];
+    for (size_t a = 0; a < sim->work->ncons; a++) {
+        lm_con *c = &sim->work->cons[a];
         const lm_pin *pn = c->pin >= 0 ? &sim->pins[c->pin] : NULL;
         if (!accel) {
             c->vx = p->vx[c->q];
@@ -284,12 +284,13 @@ static void targets(lm_sim *sim, int accel)
 static void solve(lm_sim *sim, int vel, double *ux, double *uy)
 {
     const double *m = sim->grid.m;
-    lm_con *c = sim->cons;
+    lm_con *c = sim->work->cons;
     double scale = 0;
-    for (size_t a = 0; a < sim->ncons; a++) scale = fmax(scale, fmax(fabs(c[a].vx), fabs(c[a].vy)));
+    for (size_t a = 0; a < sim->work->ncons; a++)
+        scale = fmax(scale, fmax(fabs(c[a].vx), fabs(c[a].vy)));
     for (int sweep = 0; sweep < 1000; sweep++) {
         double worst = 0;
-        for (size_t a = 0; a < sim->ncons; a++) {
+        for (size_t a = 0; a < sim->work->ncons; a++) {
             cw w[16];
             int n = weights(sim, c[a].q, w);
             double sx = 0, sy = 0, Sx = 0, Sy = 0;
@@ -325,7 +326,7 @@ static void solve(lm_sim *sim, int vel, double *ux, double *uy)
             c[a].vy -= dy * minv;
         }
         /* one point: its residual is rounding after one sweep */
-        if (sim->ncons < 2 || !(worst > 1e-12 * scale)) break;
+        if (sim->work->ncons < 2 || !(worst > 1e-12 * scale)) break;
     }
 }
 
@@ -347,8 +348,8 @@ static void massless_share(lm_sim *sim, double *W, int pass)
 {
     const lm_grid *g = &sim->grid;
     const int ns = g->sw * g->sw;
-    for (size_t a = 0; a < sim->ncons; a++) {
-        const lm_con *c = &sim->cons[a];
+    for (size_t a = 0; a < sim->work->ncons; a++) {
+        const lm_con *c = &sim->work->cons[a];
         if (c->pin < 0) continue;
         lm_pin *pn = &sim->pins[c->pin];
         lm_weights wt;
@@ -386,8 +387,8 @@ void lm_constraint_grid(lm_sim *sim)
         if (sim->pins[k].point) sim->pins[k].rx = sim->pins[k].ry = 0;
     targets(sim, 1);
     solve(sim, 0, g->fx, g->fy);
-    for (size_t a = 0; a < sim->ncons; a++) {
-        const lm_con *c = &sim->cons[a];
+    for (size_t a = 0; a < sim->work->ncons; a++) {
+        const lm_con *c = &sim->work->cons[a];
         if (c->pin < 0) continue;
         lm_pin *pn = &sim->pins[c->pin];
         double mq = p->m[c->q];

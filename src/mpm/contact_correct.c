@@ -48,7 +48,7 @@
 
 static inline int pinned_node(const lm_sim *sim, long i)
 {
-    return sim->pin_w && sim->pin_w[i] > 0;
+    return sim->work->pin_w && sim->work->pin_w[i] > 0;
 }
 
 /* Is pair k present at node i (both bodies with mass)? */
@@ -387,9 +387,9 @@ static void pin_field(const lm_sim *sim, lm_contact_field *f)
     double dt = sim->def.dt;
     for (int j = b->j0; j <= b->j1; j++)
         for (long i = (long)j * c->sx + b->i0; i <= (long)j * c->sx + b->i1; i++) {
-            if (!(sim->pin_w[i] > 0) || f->m[i] <= 0) continue;
-            double hx = f->m[i] * sim->pin_vx[i] / sim->pin_w[i];
-            double hy = f->m[i] * sim->pin_vy[i] / sim->pin_w[i];
+            if (!(sim->work->pin_w[i] > 0) || f->m[i] <= 0) continue;
+            double hx = f->m[i] * sim->work->pin_vx[i] / sim->work->pin_w[i];
+            double hy = f->m[i] * sim->work->pin_vy[i] / sim->work->pin_w[i];
             f->fx[i] += (hx - f->px[i]) / dt;
             f->fy[i] += (hy - f->py[i]) / dt;
             f->px[i] = hx;

@@ -74,11 +74,11 @@ lm_status lm_gas_cell_density(lm_sim *sim)
         wanted |= sim->mats[k]->kind == LM_GAS && sim->mats[k]->density != LM_DENSITY_CONTINUITY;
     if (!wanted) return LM_OK;
     size_t nc = (size_t)g->nx * g->ny;
-    if (!sim->cell_rho && !(sim->cell_rho = malloc(nc * sizeof *sim->cell_rho))) {
+    if (!sim->work->cell_rho && !(sim->work->cell_rho = malloc(nc * sizeof *sim->work->cell_rho))) {
         snprintf(sim->err, sizeof sim->err, "out of memory for the cell densities");
         return LM_ERR_MEMORY;
     }
-    double *rc = sim->cell_rho;
+    double *rc = sim->work->cell_rho;
     memset(rc, 0, nc * sizeof *rc);
     for (size_t q = 0; q < p->n; q++) {
         if (sim->mats[p->mat[q]]->kind != LM_GAS) continue;

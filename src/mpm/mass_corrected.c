@@ -82,10 +82,10 @@ static void correct_weighted(lm_sim *sim, double *rx, double *ry, int momentum, 
         double r = g->m[i] > 0 ? 1.0 / g->m[i] : 0;
         ux[i] = rx[i] * r;
         uy[i] = ry[i] * r;
-        if (sim->npins && sim->pin_w[i] > 0) {
-            double w = sim->pin_w[i];
-            ux[i] = momentum ? sim->pin_vx[i] / w : 0;
-            uy[i] = momentum ? sim->pin_vy[i] / w : 0;
+        if (sim->npins && sim->work->pin_w[i] > 0) {
+            double w = sim->work->pin_w[i];
+            ux[i] = momentum ? sim->work->pin_vx[i] / w : 0;
+            uy[i] = momentum ? sim->work->pin_vy[i] / w : 0;
         }
     }
     lm_grid_apply_bc(g, ux, uy);
@@ -97,7 +97,7 @@ static void correct_weighted(lm_sim *sim, double *rx, double *ry, int momentum, 
         /* a held node keeps its own sums: pin.c reads the reaction from
          * them (correcting them doubled a hanging chain's end tension,
          * measured: +100 %), and holds its momentum whatever they are */
-        if (!(g->m[i] > 0) || (sim->npins && sim->pin_w[i] > 0)) continue;
+        if (!(g->m[i] > 0) || (sim->npins && sim->work->pin_w[i] > 0)) continue;
         rx[i] = 2 * rx[i] - bx[i];
         ry[i] = 2 * ry[i] - by[i];
     }

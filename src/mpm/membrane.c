@@ -204,14 +204,14 @@ static lm_status without_connectivity(lm_sim *sim, int b)
     body_nopts(sim, b, bd->normals, sim->step, &g, &o);
     /* the sim's workspace: allocated by the first step, grown only for a
      * larger membrane, so later steps allocate nothing here */
-    if (!sim->nwork)
-        sim->nwork = lm_nwork_new(sim->def.normals_compare);
-    if (!sim->nwork || lm_nwork_reserve(sim->nwork, n)) {
+    if (!sim->work->nwork)
+        sim->work->nwork = lm_nwork_new(sim->def.normals_compare);
+    if (!sim->work->nwork || lm_nwork_reserve(sim->work->nwork, n)) {
         snprintf(sim->err, sizeof sim->err, "out of memory for the normals of body %d", b + 1);
         return LM_ERR_MEMORY;
     }
-    double *nx = sim->nwork->nrm, *ny = nx + n;
-    unsigned char *flags = sim->nwork->flags;
+    double *nx = sim->work->nwork->nrm, *ny = nx + n;
+    unsigned char *flags = sim->work->nwork->flags;
     const double *x[3] = {p->x + bd->first, p->y + bd->first, NULL};
     double *nrm[3] = {nx, ny, NULL};
     char why[256] = "";
@@ -224,7 +224,7 @@ static lm_status without_connectivity(lm_sim *sim, int b)
         e = lm_normals_quadratic_colour(&g, n, x, nrm, flags, why, sizeof why);
         break;
     default:
-        e = lm_normals_grid_ws(&g, n, x, &o, nrm, flags, NULL, sim->nwork, why, sizeof why);
+        e = lm_normals_grid_ws(&g, n, x, &o, nrm, flags, NULL, sim->work->nwork, why, sizeof why);
         break;
     }
     if (e == LM_NERR_NONE && (bd->normals == LM_NORMALS_COLOUR ||
@@ -281,7 +281,7 @@ lm_status lm_membrane_tangents(lm_sim *sim)
 int lm_sim_normals_compare(const lm_sim *sim, unsigned long *n, double *max_deg,
                            double *mean_deg, unsigned long *fallbacks)
 {
-    const lm_nwork *w = sim->nwork;
+    const lm_nwork *w = sim->work->nwork;
     if (!w || !w->cmp) return -1;
     *n = w->cmp_n;
     *max_deg = w->cmp_max;

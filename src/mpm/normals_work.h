@@ -1,7 +1,7 @@
 /* normals_work.h - internal to the normals engine: scratch memory kept
  * between calls, so that the normals of a simulation step allocate nothing
  * once the first step has sized it (issue 17 item 3: "no allocation inside
- * the step"). A simulation owns one (lm_sim.nwork, made with the first
+ * the step"). A simulation owns one (lm_sim.work->nwork, made with the first
  * isosurface step, grown only when a membrane holds more points than any
  * before; freed with the sim). The normals run on one thread, body after
  * body, so one workspace serves every body. Not part of the API. */

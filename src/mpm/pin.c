@@ -63,11 +63,11 @@ int lm_sim_add_pin(lm_sim *sim, int b, const size_t *idx, size_t n, double vx, d
         }
     }
     size_t nn = lm_grid_nodes(&sim->grid);
-    if (!sim->pin_w) {
-        sim->pin_w = calloc(3 * nn, sizeof(double));
-        if (!sim->pin_w) goto oom;
-        sim->pin_vx = sim->pin_w + nn;
-        sim->pin_vy = sim->pin_w + 2 * nn;
+    if (!sim->work->pin_w) {
+        sim->work->pin_w = calloc(3 * nn, sizeof(double));
+        if (!sim->work->pin_w) goto oom;
+        sim->work->pin_vx = sim->work->pin_w + nn;
+        sim->work->pin_vy = sim->work->pin_w + 2 * nn;
     }
     lm_pin *pins = realloc(sim->pins, (size_t)(sim->npins + 1) * sizeof *pins);
     if (!pins) goto oom;
@@ -147,9 +147,9 @@ static void classify(lm_sim *sim)
                 for (int c = 0; c < ns; c++) {
                     if (!(w[c] > 0)) continue;
                     int i = node[c];
-                    if (pass == 0) sim->pin_w[i] += 1;
-                    else if (pass == 1 && sim->pin_w[i] > 1) pn->point = 0;
-                    else if (pass == 2) sim->pin_w[i] = 0;
+                    if (pass == 0) sim->work->pin_w[i] += 1;
+                    else if (pass == 1 && sim->work->pin_w[i] > 1) pn->point = 0;
+                    else if (pass == 2) sim->work->pin_w[i] = 0;
                 }
             }
         }
@@ -175,7 +175,7 @@ void lm_pin_p2g(lm_sim *sim)
     if (!holds_nodes(sim)) return;
     size_t nn = lm_grid_nodes(&sim->grid);
     const int ns = sim->grid.sw * sim->grid.sw;
-    memset(sim->pin_w, 0, 3 * nn * sizeof(double));
+    memset(sim->work->pin_w, 0, 3 * nn * sizeof(double));
     for (int k = 0; k < sim->npins; k++) {
         const lm_pin *pn = &sim->pins[k];
         if (pn->point) continue;
@@ -184,9 +184,9 @@ void lm_pin_p2g(lm_sim *sim)
             double w[9];
             held_stencil(sim, pn, j, node, w);
             for (int c = 0; c < ns; c++) {
-                sim->pin_w[node[c]] += w[c];
-                sim->pin_vx[node[c]] += w[c] * pn->vx;
-                sim->pin_vy[node[c]] += w[c] * pn->vy;
+                sim->work->pin_w[node[c]] += w[c];
+                sim->work->pin_vx[node[c]] += w[c] * pn->vx;
+                sim->work->pin_vy[node[c]] += w[c] * pn->vy;
             }
         }
     }
@@ -212,9 +212,10 @@ void lm_pin_grid(lm_sim *sim)
             for (int c = 0; c < ns; c++) {
                 int i = node[c];
                 if (!(w[c] > 0)) continue;
-                double s = w[c] / sim->pin_w[i];
-                pn->rx += s * (g->m[i] * sim->pin_vx[i] / sim->pin_w[i] - g->px[i]) / dt;
-                pn->ry += s * (g->m[i] * sim->pin_vy[i] / sim->pin_w[i] - g->py[i]) / dt;
+                const double *pw = sim->work->pin_w;
+                double s = w[c] / pw[i];
+                pn->rx += s * (g->m[i] * sim->work->pin_vx[i] / pw[i] - g->px[i]) / dt;
+                pn->ry += s * (g->m[i] * sim->work->pin_vy[i] / pw[i] - g->py[i]) / dt;
             }
         }
     }
@@ -227,9 +228,9 @@ void lm_pin_hold(const lm_sim *sim, const double *m, double *px, double *py, dou
     size_t nn = lm_grid_nodes(&sim->grid);
     double dt = sim->def.dt;
     for (size_t i = 0; i < nn; i++) {
-        if (!(sim->pin_w[i] > 0) || m[i] <= 0) continue;
-        double hx = m[i] * sim->pin_vx[i] / sim->pin_w[i];
-        double hy = m[i] * sim->pin_vy[i] / sim->pin_w[i];
+        if (!(sim->work->pin_w[i] > 0) || m[i] <= 0) continue;
+        double hx = m[i] * sim->work->pin_vx[i] / sim->work->pin_w[i];
+        double hy = m[i] * sim->work->pin_vy[i] / sim->work->pin_w[i];
         fx[i] += (hx - px[i]) / dt;
         fy[i] += (hy - py[i]) / dt;
         px[i] = hx;
@@ -267,8 +268,8 @@ void lm_pin_velocity(lm_sim *sim)
     lm_grid *g = &sim->grid;
     size_t nn = lm_grid_nodes(g);
     for (size_t i = 0; i < nn; i++) {
-        if (!(sim->pin_w[i] > 0)) continue;
-        g->vx[i] = sim->pin_vx[i] / sim->pin_w[i];
-        g->vy[i] = sim->pin_vy[i] / sim->pin_w[i];
+        if (!(sim->work->pin_w[i] > 0)) continue;
+        g->vx[i] = sim->work->pin_vx[i] / sim->work->pin_w[i];
+        g->vy[i] = sim->work->pin_vy[i] / sim->work->pin_w[i];
     }
 }

@@ -111,10 +111,13 @@ lm_sim *lm_sim_new(const lm_sim_def *def, char *err, size_t errlen)
         return NULL;
     }
     lm_sim *sim = calloc(1, sizeof *sim);
-    if (!sim) {
+    lm_work *work = calloc(1, sizeof *work);   /* the scratch (sim_work.h) */
+    if (!sim || !work) {
+        LU_FREE_ALL(sim, work);
         snprintf(err, errlen, "out of memory");
         return NULL;
     }
+    sim->work = work;
     sim->def = *def;
     lm_grid *g = &sim->grid;
     g->x0 = def->x0;
@@ -137,7 +140,7 @@ lm_sim *lm_sim_new(const lm_sim_def *def, char *err, size_t errlen)
     /* stress = "cell": the per-cell sums of stress_cell.c, made here so that
      * the step has no failure of its own to report */
     if (def->stress == LM_STRESS_CELL &&
-        !(sim->cell_stress = malloc(3 * (size_t)g->nx * (size_t)g->ny * sizeof *sim->cell_stress))) {
+        !(work->cell_stress = malloc(3 * (size_t)g->nx * (size_t)g->ny * sizeof *work->cell_stress))) {
         lm_sim_free(sim);
         snprintf(err, errlen, "out of memory for the cell stresses of a %d x %d grid", g->nx,
                  g->ny);
@@ -153,25 +156,69 @@ void lm_sim_free(lm_sim *sim)
     lm_particles_free(&sim->p);
     for (int k = 0; k < sim->npins; k++) LU_FREE_ALL(sim->pins[k].idx, sim->pins[k].x0);
     lm_contact_free(sim->contact);
-    lm_nwork_delete(sim->nwork);
-    lm_ahead_free(sim->ahead);
-    LU_FREE_ALL(sim->mats, sim->bodies, sim->cell_rho, sim->cell_stress, sim->pins, sim->links,
-                sim->pin_w, sim->cons, sim);
+    lm_work *w = sim->work;
+    lm_nwork_delete(w->nwork);
+    lm_ahead_free(w->ahead);
+    for (int k = 0; k < sim->nmats; k++) free(sim->mats[k]);
+    LU_FREE_ALL(sim->mats, sim->bodies, w->cell_rho, w->cell_stress, sim->pins, sim->links,
+                w->pin_w, w->cons, w, sim);
 }
 
-int lm_sim_add_material(lm_sim *sim, lm_material *mat)
+/* The sim owns its materials: each is a copy, checked, and changes only
+ * through lm_sim_set_material (issue 33 item 1). */
+int lm_sim_add_material(lm_sim *sim, const lm_material *mat)
 {
-    for (int k = 0; k < sim->nmats; k++)
-        if (sim->mats[k] == mat) return k;
+    char why[256];
+    if (lm_material_validate(mat, why, sizeof why)) {
+        snprintf(sim->err, sizeof sim->err, "%s", why);
+        return -1;
+    }
     if (sim->nmats == sim->capmats) {
         int cap = sim->capmats ? 2 * sim->capmats : 4;
         lm_material **q = realloc(sim->mats, cap * sizeof *q);
-        if (!q) return -1;
+        if (!q) {
+            snprintf(sim->err, sizeof sim->err, "out of memory");
+            return -1;
+        }
         sim->mats = q;
         sim->capmats = cap;
     }
-    sim->mats[sim->nmats] = mat;
+    lm_material *own = malloc(sizeof *own);
+    if (!own) {
+        snprintf(sim->err, sizeof sim->err, "out of memory");
+        return -1;
+    }
+    *own = *mat;
+    sim->mats[sim->nmats] = own;
     return sim->nmats++;
+}
+
+lm_status lm_sim_set_material(lm_sim *sim, int k, const lm_material *mat)
+{
+    char why[256];
+    if (k < 0 || k >= sim->nmats) {
+        snprintf(sim->err, sizeof sim->err, "material %d was not added", k + 1);
+        return LM_ERR_INPUT;
+    }
+    const lm_material *now = sim->mats[k];
+    if (mat->kind != now->kind) {
+        snprintf(sim->err, sizeof sim->err, "material %d cannot change its kind", k + 1);
+        return LM_ERR_INPUT;
+    }
+    if (mat->rho != now->rho) {   /* the particles' masses were seeded from it */
+        snprintf(sim->err, sizeof sim->err, "material %d cannot change rho", k + 1);
+        return LM_ERR_INPUT;
+    }
+    if (lm_material_validate(mat, why, sizeof why)) {
+        snprintf(sim->err, sizeof sim->err, "%s", why);
+        return LM_ERR_INPUT;
+    }
+    /* a change of the wave speed moves the Courant number (a gas's mu or
+     * av, which do not, leave the check as it was) */
+    if (lm_material_wave_speed(mat) != lm_material_wave_speed(now))
+        sim->work->courant_checked = 0;
+    *sim->mats[k] = *mat;
+    return LM_OK;
 }
 
 /* The axisymmetric form counts a gas's mass per radian, r dA: the cell
@@ -214,6 +261,7 @@ int lm_sim_add_body(lm_sim *sim, int mat)
     }
     lm_body *b = &sim->bodies[sim->nbodies];
     memset(b, 0, sizeof *b);
+    sim->work->courant_checked = 0;   /* its material's wave speed counts now */
     b->mat = mat;
     b->first = sim->p.n;
     b->count = 0;
@@ -413,6 +461,7 @@ lm_status lm_sim_set_courant(lm_sim *sim, double courant)
     if (!(courant > 0) || !isfinite(courant))
         return refuse_setting(sim, "courant must be positive and finite", courant);
     sim->def.courant = courant;
+    sim->work->courant_checked = 0;
     return LM_OK;
 }
 
@@ -425,6 +474,7 @@ lm_status lm_sim_set_membrane_force(lm_sim *sim, int b, lm_mforce force)
     }
     sim->bodies[b].force = force;
     sim->prepared = 0;   /* segments' rest lengths are found by the next prepare */
+    sim->work->courant_checked = 0;   /* a segment form's c counts / LM_SEGMENT_COURANT */
     return LM_OK;
 }
 

@@ -515,6 +515,7 @@ void lm_sim_set_dt(lm_sim *sim, double dt)
     sim->t_base = sim->t;
     sim->step_base = sim->step;
     sim->def.dt = dt;
+    sim->work->courant_checked = 0;
 }
 
 /* Marked prepared only when it succeeds (issue 33 item 1): a failure
@@ -573,6 +574,8 @@ lm_status lm_sim_step_then(lm_sim *sim, int more)
         advance_clock(sim);
         return LM_OK;
     }
+    /* the Courant refusal, for every caller (courant_check.c) */
+    if (!sim->work->courant_checked && lm_sim_check_courant(sim) != LM_OK) return LM_ERR_COURANT;
     lm_status st = sim->prepared ? LM_OK : lm_sim_prepare(sim);
     if (st == LM_OK) st = lm_threads_reserve(sim);
     if (st != LM_OK) return st;

@@ -6,6 +6,7 @@
 #include <math.h>
 
 #include "mpm.h"
+#include "sim_work.h"   /* the scratch behind lm_sim.work */
 
 /* Bilinear basis at (x, y): lower-left node, weights and gradients in the
  * order (i,j) (i+1,j) (i,j+1) (i+1,j+1). The caller guarantees the point is

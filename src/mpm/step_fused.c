@@ -77,7 +77,7 @@ void lm_ahead_free(struct lm_ahead *a)
 
 void lm_sim_forget_ahead(lm_sim *sim)
 {
-    if (sim->ahead) sim->ahead->valid = 0;
+    if (sim->work->ahead) sim->work->ahead->valid = 0;
 }
 
 /* The arrays for the grid as it is: made once (seven nodal fields, as
@@ -85,10 +85,10 @@ void lm_sim_forget_ahead(lm_sim *sim)
 lm_status lm_ahead_reserve(lm_sim *sim)
 {
     size_t nn = lm_grid_nodes(&sim->grid);
-    struct lm_ahead *a = sim->ahead;
+    struct lm_ahead *a = sim->work->ahead;
     if (a && a->nn == nn) return LM_OK;
     lm_ahead_free(a);
-    sim->ahead = a = calloc(1, sizeof *a);
+    sim->work->ahead = a = calloc(1, sizeof *a);
     if (!a) return LM_ERR_MEMORY;
     a->nn = nn;
     int ok = 1;
@@ -99,7 +99,7 @@ lm_status lm_ahead_reserve(lm_sim *sim)
     ok &= (a->uy = lm_arr_alloc(nn, sizeof(double), 15, 1)) != NULL;
     if (ok) return LM_OK;
     lm_ahead_free(a);
-    sim->ahead = NULL;
+    sim->work->ahead = NULL;
     return LM_ERR_MEMORY;
 }
 
@@ -109,7 +109,7 @@ lm_status lm_ahead_reserve(lm_sim *sim)
  * its scatter. 0: the step must make its own. */
 int lm_step_take_ahead(lm_sim *sim)
 {
-    struct lm_ahead *a = sim->ahead;
+    struct lm_ahead *a = sim->work->ahead;
     lm_grid *g = &sim->grid;
     /* made on one thread (a split scatter would sum in another order) */
     if (!a || !a->valid || a->n != sim->p.n || a->nn != lm_grid_nodes(g) ||
@@ -226,7 +226,7 @@ static LM_FORCE_INLINE size_t pass_w(lm_sim *sim, double *const *next, lm_status
 {
     lm_grid *g = &sim->grid;
     lm_particles *p = &sim->p;
-    const struct lm_ahead *a = sim->ahead;
+    const struct lm_ahead *a = sim->work->ahead;
     const size_t n = p->n, nn = lm_grid_nodes(g);
     const double dt = sim->def.dt, pic = sim->def.pic;
     const double rx = 1.0 / g->hx, ry = 1.0 / g->hy, h = fmin(g->hx, g->hy);
@@ -270,7 +270,7 @@ static size_t passes_mt(lm_sim *sim, lm_status *st)
 {
     const lm_grid *g = &sim->grid;
     mt_ctx c = {sim->def.dt, sim->def.pic, 1.0 / g->hx, 1.0 / g->hy, fmin(g->hx, g->hy), 0, 0,
-                sim->ahead->ux, sim->ahead->uy, lm_k_box_of(g)};
+                sim->work->ahead->ux, sim->work->ahead->uy, lm_k_box_of(g)};
     if (sim->def.scheme == LM_USL && one_pass(sim)) return mt_pass(sim, MT_USL, &c);
     mt_pass(sim, MT_G2P, &c);
     if (sim->def.scheme == LM_MUSL) lm_step_strain_velocity(sim);   /* the re-map */
@@ -280,7 +280,7 @@ static size_t passes_mt(lm_sim *sim, lm_status *st)
 
 size_t lm_step_fused_particles(lm_sim *sim, int ahead, lm_status *st)
 {
-    struct lm_ahead *a = sim->ahead;
+    struct lm_ahead *a = sim->work->ahead;
     const int one = lm_sim_threads(sim) == 1;
     double *const *next = ahead && one ? a->f : NULL;
     *st = LM_OK;

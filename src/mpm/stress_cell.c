@@ -36,7 +36,7 @@ void lm_stress_cell_forces(lm_sim *sim)
     /* per cell: sum V sigma_xx, sigma_xy, sigma_yy (V_c itself is not
      * needed: V_c sigma_c is the sum); allocated with the grid by
      * lm_sim_new, which reports a failure as its error */
-    double *s = sim->cell_stress;
+    double *s = sim->work->cell_stress;
     memset(s, 0, 3 * nc * sizeof *s);
     int stride = g->nx + 1;
     for (size_t q = 0; q < p->n; q++) {

@@ -25,13 +25,13 @@ int lm_sim_threads(const lm_sim *sim)
 int lm_sim_team(const lm_sim *sim)
 {
     int nt = lm_sim_threads(sim);
-    if (sim->pace.fixed > 0) return sim->pace.fixed < nt ? sim->pace.fixed : nt;
-    return sim->pace.team >= 1 && sim->pace.team < nt ? sim->pace.team : nt;
+    if (sim->work->pace.fixed > 0) return sim->work->pace.fixed < nt ? sim->work->pace.fixed : nt;
+    return sim->work->pace.team >= 1 && sim->work->pace.team < nt ? sim->work->pace.team : nt;
 }
 
 void lm_sim_fix_team(lm_sim *sim, int team)
 {
-    sim->pace.fixed = team > 0 ? team : 0;
+    sim->work->pace.fixed = team > 0 ? team : 0;
 }
 
 static double clock_of(clockid_t id)
@@ -44,25 +44,25 @@ static double clock_of(clockid_t id)
 /* A window of `steps` steps on `team` OS threads, timed. */
 static void window(lm_sim *sim, int team, int phase, int steps)
 {
-    sim->pace.team = team;
-    sim->pace.phase = phase;
-    sim->pace.left = steps;
-    sim->pace.wall0 = clock_of(CLOCK_MONOTONIC);
-    sim->pace.cpu0 = clock_of(CLOCK_PROCESS_CPUTIME_ID);
+    sim->work->pace.team = team;
+    sim->work->pace.phase = phase;
+    sim->work->pace.left = steps;
+    sim->work->pace.wall0 = clock_of(CLOCK_MONOTONIC);
+    sim->work->pace.cpu0 = clock_of(CLOCK_PROCESS_CPUTIME_ID);
 }
 
 void lm_pace_step(lm_sim *sim)
 {
     int nt = lm_sim_threads(sim);
-    if (nt == 1 || sim->pace.fixed > 0 || sim->p.n < LM_PARTICLE_LOOP_MIN) return;
-    if (sim->pace.team == 0) {
+    if (nt == 1 || sim->work->pace.fixed > 0 || sim->p.n < LM_PARTICLE_LOOP_MIN) return;
+    if (sim->work->pace.team == 0) {
         window(sim, nt, LM_PACE_FULL, LM_PACE_PROBE);
         return;
     }
-    if (--sim->pace.left > 0) return;
-    double wall = clock_of(CLOCK_MONOTONIC) - sim->pace.wall0;
-    double cpu = clock_of(CLOCK_PROCESS_CPUTIME_ID) - sim->pace.cpu0;
-    switch (sim->pace.phase) {
+    if (--sim->work->pace.left > 0) return;
+    double wall = clock_of(CLOCK_MONOTONIC) - sim->work->pace.wall0;
+    double cpu = clock_of(CLOCK_PROCESS_CPUTIME_ID) - sim->work->pace.cpu0;
+    switch (sim->work->pace.phase) {
     case LM_PACE_FULL:
         /* the team got its cores (idle: two threads ~1.9 of 2): go on;
          * else (beside a busy process ~1.4, or a step with long serial
@@ -70,14 +70,14 @@ void lm_pace_step(lm_sim *sim)
         if (!(cpu < (nt - 0.25) * wall)) {
             window(sim, nt, LM_PACE_FULL, LM_PACE_PROBE);
         } else {
-            sim->pace.t_full = wall / LM_PACE_PROBE;
+            sim->work->pace.t_full = wall / LM_PACE_PROBE;
             window(sim, 1, LM_PACE_ONE, LM_PACE_PROBE_ONE);
         }
         break;
     case LM_PACE_ONE:   /* keep the faster, one thread only if clearly so */
-        sim->pace.team = wall / LM_PACE_PROBE_ONE < 0.95 * sim->pace.t_full ? 1 : nt;
-        sim->pace.phase = LM_PACE_HOLD;
-        sim->pace.left = LM_PACE_HOLD_STEPS;
+        sim->work->pace.team = wall / LM_PACE_PROBE_ONE < 0.95 * sim->work->pace.t_full ? 1 : nt;
+        sim->work->pace.phase = LM_PACE_HOLD;
+        sim->work->pace.left = LM_PACE_HOLD_STEPS;
         break;
     default:            /* the hold is over: time the whole team again */
         window(sim, nt, LM_PACE_FULL, LM_PACE_PROBE);

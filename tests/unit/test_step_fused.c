@@ -105,7 +105,10 @@ static lm_sim *build(const setup *s)
         return sim;
     }
     static lm_material gas[2] = {
-        {.kind = LM_GAS, .rho = 1, .gamma = 1.4, .mu = 0.02, .e0 = 2.5, .av = 1},
+        /* the artificial viscosity's constants as lamina.gas{av = true} sets
+         * them (the engine checks a material it is given) */
+        {.kind = LM_GAS, .rho = 1, .gamma = 1.4, .mu = 0.02, .e0 = 2.5, .av = 1, .av_c1 = 1,
+         .av_c2 = 1, .av_lambda = 0.75},
         {.kind = LM_GAS, .rho = 1, .gamma = 1.4, .mu = 0.02, .e0 = 2.5,
          .density = LM_DENSITY_CELL},
     };
@@ -224,6 +227,10 @@ static void blow_up(lm_scheme scheme)
     setup s = {LM_BASIS_LINEAR, scheme, {LM_BC_FIXED, LM_BC_FIXED, LM_BC_FIXED, LM_BC_FIXED},
                0, 0.05, 1, 0, 0, 0};
     lm_sim *ref = build(&s), *ahead = build(&s);
+    /* the engine refuses such a dt before its first step (courant_check.c):
+     * the limit raised out of the way, the step itself is what is compared */
+    CHECK(lm_sim_check_courant(ahead) == LM_ERR_COURANT);
+    CHECK(lm_sim_set_courant(ahead, 1e9) == LM_OK);
     lm_status a = LM_OK, b = LM_OK;
     int ka = -1, kb = -1;
     for (int k = 0; k < 400 && (a == LM_OK || b == LM_OK); k++) {

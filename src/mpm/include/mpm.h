@@ -21,7 +21,8 @@ typedef enum lm_status {
     LM_ERR_INPUT,      /* a bad value given to the engine */
     LM_ERR_UNSTABLE,   /* NaN/inf, or a cell compressed to nothing */
     LM_ERR_DOMAIN,     /* a particle left the grid */
-    LM_ERR_MEMORY
+    LM_ERR_MEMORY,
+    LM_ERR_COURANT     /* dt past the Courant limit (courant_check.c): refused */
 } lm_status;
 
 typedef enum lm_scheme { LM_MUSL = 0, LM_USL = 1 } lm_scheme;
@@ -311,7 +312,7 @@ typedef struct lm_sim {
     lm_sim_def def;
     lm_grid grid;
     lm_particles p;
-    lm_material **mats;    /* borrowed: the caller keeps them alive */
+    lm_material **mats;    /* the sim's own copies (lm_sim_add_material) */
     int nmats, capmats;
     lm_body *bodies;
     int nbodies, capbodies;
@@ -323,37 +324,29 @@ typedef struct lm_sim {
     double damped;         /* the work the grid damping took out so far
                               (damping.c); not in the checkpoint */
     int prepared;          /* membrane stresses built from eps_t */
-    double *cell_rho;      /* density.c: gas density per cell (nx * ny) */
-    double *cell_stress;   /* stress_cell.c: sum V sigma per cell (3 nx ny) */
     lm_pin *pins;          /* pin.c */
     int npins;
-    double *pin_w, *pin_vx, *pin_vy;   /* per node: sum of the held particles'
-                              N_ip and N_ip v_p (allocated with the first pin) */
-    struct lm_con *cons;   /* constraint.c: the heavy end points of the step */
-    size_t ncons, capcons;
     lm_link *links;        /* link.c */
     int nlinks;
     struct lm_contact *contact;   /* pairs in contact (contact.h); NULL: none */
-    struct lm_nwork *nwork;       /* the normals' scratch (normals_work.h), made
-                                     by the first step that needs it; NULL: none */
-    struct lm_ahead *ahead;       /* the fused pass's nodal arrays (step_fused.c);
-                                     NULL until a plain run's first step */
-    struct {                      /* the OS threads of the loops (threads.c) */
-        int team;                 /* now; 0: not yet chosen */
-        int fixed;                /* > 0: held there (lm_sim_fix_team) */
-        int phase;                /* timing the whole team, one thread, or holding */
-        int left;                 /* steps left of the window or the hold */
-        double wall0, cpu0;       /* the clocks at the window's start */
-        double t_full;            /* the whole team's wall time a step */
-    } pace;
-    char err[512];
+    struct lm_work *work;         /* the step's scratch: work arrays, the
+                                     threads' timing (private to the engine,
+                                     src/mpm/sim_work.h) */
+    char err[1024];        /* the Courant refusal names the limit's factors */
 } lm_sim;
 
 lm_sim *lm_sim_new(const lm_sim_def *def, char *err, size_t errlen);
 void lm_sim_free(lm_sim *sim);
 
-/* Registers a material (borrowed pointer); returns its index or -1. */
-int lm_sim_add_material(lm_sim *sim, lm_material *mat);
+/* Registers a copy of mat, which the sim owns (checked by
+ * lm_material_validate); returns its index, or -1 with sim->err. Each call
+ * adds one: a caller that gives two bodies one material keeps its index. */
+int lm_sim_add_material(lm_sim *sim, const lm_material *mat);
+/* Replaces material k's parameters between steps (a live change: mat.E =
+ * 2000 from a callback), checked as lm_sim_add_material; its kind and rho
+ * cannot change (the particles' masses were seeded from rho). LM_ERR_INPUT
+ * with sim->err and the material unchanged otherwise. */
+lm_status lm_sim_set_material(lm_sim *sim, int k, const lm_material *mat);
 /* Starts a body of material index `mat`; returns its index or -1. */
 int lm_sim_add_body(lm_sim *sim, int mat);
 /* Appends one particle to the last body (bodies are contiguous). */
@@ -492,6 +485,17 @@ double lm_sim_courant_body(const lm_sim *sim, double *c_max, int *body);
  * linear basis and MUSL) times the basis' factor, and LM_USL_COURANT for
  * USL. */
 double lm_sim_courant_limit(const lm_sim *sim);
+/* The Courant refusal (courant_check.c): LM_OK, or LM_ERR_COURANT with
+ * sim->err "dt = ... is too large: Courant number dt*c/h = ... exceeds
+ * courant = ... (c_max = ... from <body>, h = ...); use dt <= ... or raise
+ * courant". lm_sim_step makes it before its first step and again after
+ * anything that moves the number (dt, courant, a material's wave speed, a
+ * body, a membrane's force form, a restored state), and refuses to step;
+ * sim:run makes it at every start. */
+lm_status lm_sim_check_courant(lm_sim *sim);
+/* Changes dt between steps if the new one passes the Courant check; else
+ * LM_ERR_COURANT with sim->err and dt as it was (sim.dt = ...). */
+lm_status lm_sim_try_dt(lm_sim *sim, double dt);
 
 /* Changes the time step between steps (the clock keeps counting exactly). */
 void lm_sim_set_dt(lm_sim *sim, double dt);
@@ -650,6 +654,25 @@ double lm_gas_space_pressure(const lm_sim *sim, int body, size_t *nodes);
 /* The gas pressure interpolated to the grid nodes (mass-weighted; NaN
  * where no gas is): (nx+1)(ny+1) values, x fastest. */
 size_t lm_grid_gas_pressure(const lm_sim *sim, double *out);
+/* A run whose total energy grows (energy_watch.c): nothing in lamina's
+ * models makes energy, so a rise of the energy the grid sees by a tenth
+ * of the most the run held, over 100 steps or more, with no pin driving a
+ * body and gravity unchanged, is the numerics feeding the motion. begin
+ * at the run's start, step before each step (after the pins' velocities
+ * are set), end after the last: 1 with the warning's text in msg (no
+ * "warning:" before it, no newline), else 0. */
+typedef struct lm_energy_watch {
+    double seen0;               /* the energy at the start, as the grid sees it */
+    double scale;               /* the most energy in play so far */
+    double floor;               /* rounding: M c_max^2 x 1e-12 */
+    double t0;
+    long step0;
+    double gx, gy;              /* gravity at the start: a change does work */
+    int driven;                 /* a pin drove a body, or gravity changed */
+} lm_energy_watch;
+void lm_energy_watch_begin(const lm_sim *sim, lm_energy_watch *w);
+void lm_energy_watch_step(const lm_sim *sim, lm_energy_watch *w);
+int lm_energy_watch_end(const lm_sim *sim, const lm_energy_watch *w, char *msg, size_t len);
 /* FNV-1a hash of the particle state: equal hashes, equal states. */
 uint64_t lm_sim_hash(const lm_sim *sim);
 /* def.normals_compare's measurement so far: the normals compared, the

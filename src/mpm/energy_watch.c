@@ -1,12 +1,14 @@
-/* l_energy_watch.c - a run whose total energy grows says so.
+/* energy_watch.c - a run whose total energy grows says so (issue 33 item 1:
+ * in the engine, so a C caller of the step can watch as sim:run does; the
+ * Lua layer only prints the warning, once a sim).
  *
  * Nothing in lamina's models makes energy: gravity's work is in the
  * potential energy, the gas's in its internal energy, the springs' and
  * membranes' in their strain; contact and artificial viscosity only take it
- * away. So a total that rises by a tenth over one sim:run with no pin
- * driving a body is the numerics feeding the motion. Measured (2026-12-02):
- * an elastic disk ringing a little while it flies across the grid at speed
- * 1 (radius 1.5, E 1e4, cell 0.0625, bilinear basis, MUSL, Courant number
+ * away. So a total that rises by a tenth over one run with no pin driving
+ * a body is the numerics feeding the motion. Measured (2026-12-02): an
+ * elastic disk ringing a little while it flies across the grid at speed 1
+ * (radius 1.5, E 1e4, cell 0.0625, bilinear basis, MUSL, Courant number
  * 0.42) gained 79 % in 8 s with no sign in its velocity; the ball of the
  * ball-and-net page at that cell nearly doubled its energy after leaving
  * the net. The bilinear basis' cell-crossing noise pumps the vibration of
@@ -14,13 +16,13 @@
  * bilinear basis"); the quadratic B-spline and uGIMP keep it.
  *
  * It is a warning, not a failure: the run's numbers may still serve, and
- * the script may have put energy in itself (a callback that sets
+ * the caller may have put energy in itself (a callback that sets
  * velocities). Runs of fewer than WATCH_MIN_STEPS steps are not judged
  * (their energy is two O(N) sums, negligible beside that many steps). */
 #include <math.h>
 #include <stdio.h>
 
-#include "l_internal.h"
+#include "mpm.h"
 
 #define WATCH_MIN_STEPS 100
 #define WATCH_RISE 0.1   /* of the energy's scale: see energy_scale */
@@ -54,35 +56,32 @@ static double seen_energy(const lm_sim *sim, lm_energy e)
     return e.total - e.kinetic + lm_sim_grid_kinetic(sim) + sim->damped;
 }
 
-void la_energy_watch_begin(const la_sim *s, la_energy_watch *w)
+void lm_energy_watch_begin(const lm_sim *sim, lm_energy_watch *w)
 {
-    const lm_particles *p = &s->sim->p;
+    const lm_particles *p = &sim->p;
     double M = 0, c = 0;
     for (size_t q = 0; q < p->n; q++) M += p->m[q];
-    lm_sim_courant(s->sim, &c);
+    lm_sim_courant(sim, &c);
     w->floor = WATCH_FLOOR * M * c * c;
-    lm_energy e = lm_sim_energy(s->sim);
-    w->seen0 = seen_energy(s->sim, e);
+    lm_energy e = lm_sim_energy(sim);
+    w->seen0 = seen_energy(sim, e);
     w->scale = energy_scale(e);
-    w->t0 = s->sim->t;
-    w->step0 = s->sim->step;
-    w->gx = s->sim->def.gx;
-    w->gy = s->sim->def.gy;
+    w->t0 = sim->t;
+    w->step0 = sim->step;
+    w->gx = sim->def.gx;
+    w->gy = sim->def.gy;
     w->driven = 0;
 }
 
-/* Has a callback changed gravity since the run began? It did work on the
+/* Has the caller changed gravity since the run began? It did work on the
  * run: the potential energy's datum moved. */
-static int gravity_changed(const lm_sim *sim, const la_energy_watch *w)
+static int gravity_changed(const lm_sim *sim, const lm_energy_watch *w)
 {
     return sim->def.gx != w->gx || sim->def.gy != w->gy;
 }
 
-/* After the pins' velocities are set for the step: a driven pin does work,
- * and so does a change of gravity. */
-void la_energy_watch_step(const la_sim *s, la_energy_watch *w)
+void lm_energy_watch_step(const lm_sim *sim, lm_energy_watch *w)
 {
-    const lm_sim *sim = s->sim;
     for (int k = 0; k < sim->npins && !w->driven; k++)
         w->driven = sim->pins[k].vx != 0 || sim->pins[k].vy != 0;
     if (gravity_changed(sim, w)) w->driven = 1;
@@ -90,23 +89,20 @@ void la_energy_watch_step(const la_sim *s, la_energy_watch *w)
         w->scale = fmax(w->scale, energy_scale(lm_sim_energy(sim)));
 }
 
-void la_energy_watch_end(lua_State *L, la_sim *s, const la_energy_watch *w)
+int lm_energy_watch_end(const lm_sim *sim, const lm_energy_watch *w, char *msg, size_t len)
 {
-    const lm_sim *sim = s->sim;
-    if (s->warned_energy || w->driven || gravity_changed(sim, w) ||
-        sim->step - w->step0 < WATCH_MIN_STEPS)
-        return;
+    if (w->driven || gravity_changed(sim, w) || sim->step - w->step0 < WATCH_MIN_STEPS)
+        return 0;
     lm_energy e1 = lm_sim_energy(sim);
     double seen1 = seen_energy(sim, e1);
     double scale = fmax(w->scale, energy_scale(e1));
     double rise = seen1 - w->seen0;
-    if (!(rise > w->floor) || !(rise > WATCH_RISE * scale)) return;
-    s->warned_energy = 1;
+    if (!(rise > w->floor) || !(rise > WATCH_RISE * scale)) return 0;
     double cn = lm_sim_courant(sim, NULL);
     double usual = lm_basis_courant_factor(sim->def.basis) *
                    (sim->def.scheme == LM_USL ? LM_USL_COURANT : 1);
-    char why[600], line[1200];
-    if (cn > usual)   /* the script raised lamina.sim{courant} */
+    char why[600];
+    if (cn > usual)   /* the caller raised lamina.sim{courant} */
         snprintf(why, sizeof why, "a step past the stable limit (Courant number dt*c/h = %.3g, "
                  "above the %.3g lamina allows unless lamina.sim{courant} is raised): a "
                  "smaller dt", cn, usual);
@@ -119,10 +115,10 @@ void la_energy_watch_end(lua_State *L, la_sim *s, const la_energy_watch *w)
     else
         snprintf(why, sizeof why, "a step too near the stability limit (Courant number %.3g): "
                  "try a smaller dt", cn);
-    snprintf(line, sizeof line,
-             "lamina: warning: the total energy rose by %.1f %% of the most the run held (%.6g) "
+    snprintf(msg, len,
+             "the total energy rose by %.1f %% of the most the run held (%.6g) "
              "during sim:run, from %.6g to %.6g between t = %.6g and %.6g (steps %ld to %ld), "
-             "with no pin driving a body (kinetic energy as the grid sees it); likely cause: %s\n",
+             "with no pin driving a body (kinetic energy as the grid sees it); likely cause: %s",
              100 * rise / scale, scale, w->seen0, seen1, w->t0, sim->t, w->step0, sim->step, why);
-    la_warn(L, line);
+    return 1;
 }
