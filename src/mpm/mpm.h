@@ -284,7 +284,15 @@ typedef struct lm_sim_def {
                               Cholesky fit of the centred normals solved
                               again by the QR and the two compared
                               (lm_sim_normals_compare); the run is the same */
+    int substeps;          /* multi-rate stepping (subcycle.c): 0 off; k > 0:
+                              each step the membranes take k sub-steps of
+                              dt / k; LM_SUBSTEPS_AUTO: k from the membranes'
+                              Courant limit, step by step */
 } lm_sim_def;
+
+#define LM_SUBSTEPS_AUTO (-1)
+/* Most sub-steps a step may take (a typo's 10^9 would hang the run). */
+#define LM_SUBSTEPS_MAX 100000
 
 /* Fills a definition with lamina's defaults (unit square, cell 0.1, MUSL,
  * no gravity, fixed walls, courant 1). */
@@ -321,6 +329,8 @@ typedef struct lm_sim {
                                      by the first step that needs it; NULL: none */
     struct lm_ahead *ahead;       /* the fused pass's nodal arrays (step_fused.c);
                                      NULL until a plain run's first step */
+    struct lm_subcycle *sub;      /* multi-rate stepping's nodal arrays
+                                     (subcycle.c); NULL until its first step */
     struct {                      /* the OS threads of the loops (threads.c) */
         int team;                 /* now; 0: not yet chosen */
         int fixed;                /* > 0: held there (lm_sim_fix_team) */
@@ -475,6 +485,11 @@ double lm_sim_courant_body(const lm_sim *sim, double *c_max, int *body);
  * linear basis and MUSL) times the basis' factor, and LM_USL_COURANT for
  * USL. */
 double lm_sim_courant_limit(const lm_sim *sim);
+
+/* Multi-rate stepping (lamina.sim{substeps}, subcycle.c): the sub-steps
+ * the membranes take in a step of the present dt (1 when off or when there
+ * is no membrane). */
+int lm_subcycle_count(const lm_sim *sim);
 
 /* Changes the time step between steps (the clock keeps counting exactly). */
 void lm_sim_set_dt(lm_sim *sim, double dt);

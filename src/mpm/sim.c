@@ -154,6 +154,7 @@ void lm_sim_free(lm_sim *sim)
     lm_contact_free(sim->contact);
     lm_nwork_delete(sim->nwork);
     lm_ahead_free(sim->ahead);
+    lm_subcycle_free(sim->sub);
     LU_FREE_ALL(sim->mats, sim->bodies, sim->cell_rho, sim->cell_stress, sim->pins, sim->links,
                 sim->pin_w, sim->cons, sim);
 }
@@ -356,6 +357,8 @@ double lm_sim_courant_body(const lm_sim *sim, double *c_max, int *body)
             }
         }
         if (bd->membrane && bd->force == LM_MFORCE_SEGMENT) cb /= LM_SEGMENT_COURANT;
+        /* multi-rate stepping: a membrane steps dt / k (subcycle.c) */
+        if (bd->membrane) cb /= lm_subcycle_count(sim);
         if (cb > c) {
             c = cb;
             if (body) *body = b;
