@@ -14,12 +14,14 @@
 --    sigma t = p r within 1 % at the end, no gas out, and the total energy
 --    (no damping here) changes by no more than 1e-5 of itself, as the plain
 --    step's.
--- 3. substeps = 1 with USL is the plain USL step (the groups' split only
+-- 3. substeps = 1 is the plain step, USL and MUSL (the groups' split only
 --    re-adds the same nodal sums): the same radius and hoop to 1e-9.
 -- 4. Deterministic: the same run twice, the same state hash.
 -- Measured (2026-12-05): string -0.26 % plain, -0.26 % with 4 sub-steps;
--- circle radius 0.0119 / 0.0120 / 0.0120 %, hoop 0.056 / 0.057 / 0.060 %
--- (plain / 4 / 10 sub-steps), energy change < 1e-6 of itself.
+-- circle radius 0.0119 / 0.0119 / 0.0120 %, hoop 0.056 / 0.058 / 0.061 %
+-- (plain / 4 / 10 sub-steps), energy change 2.1e-9 / 2.9e-7 / 7.9e-7 of
+-- itself (the gas steps 4 and 10 times longer: its time error grows; the
+-- moving case, tests/physics/substeps_energy.lua, is an expected failure).
 local sm = require("string_modes")
 
 -- 1. the string
@@ -77,11 +79,13 @@ for _, k in ipairs{4, 10} do
          string.format("substeps %d: energy changed by %.2e (plain %.2e)", k, c.dE, c0.dE))
 end
 
--- 3. one sub-step, USL: the plain USL step
-local u0, u1 = circle(nil, "usl", 3e-5), circle(1, "usl", 3e-5)
-assert(math.abs(u1.r - u0.r) < 1e-9 and math.abs(u1.hoop / u0.hoop - 1) < 1e-9,
-       string.format("substeps = 1 (USL): radius %.12g vs %.12g, hoop %.12g vs %.12g", u1.r, u0.r,
-                     u1.hoop, u0.hoop))
+-- 3. one sub-step is the plain step, USL and MUSL
+for _, sc in ipairs{ {"usl", 3e-5}, {"musl", 0.5e-4} } do
+  local u0, u1 = circle(nil, sc[1], sc[2]), circle(1, sc[1], sc[2])
+  assert(math.abs(u1.r - u0.r) < 1e-9 and math.abs(u1.hoop / u0.hoop - 1) < 1e-9,
+         string.format("substeps = 1 (%s): radius %.12g vs %.12g, hoop %.12g vs %.12g", sc[1], u1.r,
+                       u0.r, u1.hoop, u0.hoop))
+end
 
 -- 4. determinism
 assert(circle(4).hash == circle(4).hash, "two runs with substeps = 4 differ")
