@@ -29,8 +29,12 @@
  *     and 4 (a_i = F_i / M_i, v^L_i = P^L_i / M_i); the membrane points'
  *     FLIP update v_p += dt_s sum_i N_ip a_i, x_p += dt_s sum_i N_ip v^L_i,
  *     their strain velocity (MUSL: the re-map of their new momenta plus
- *     the slow group's nodal momentum p^G_i, over M_i; USL: v^L) and their
- *     stress update over dt_s. The slow group's nodal momentum moves with
+ *     the slow group's, over M_i; USL: v^L) and their stress update over
+ *     dt_s. The slow group's particles do not move within the step, so its
+ *     re-map after the velocity change A so far is p^G(x^n) + C A with C
+ *     its consistent mass matrix sum_p m_p N_ip N_jp, built once a step on
+ *     the rows the membranes can reach: the re-map without visiting its
+ *     particles, and with k = 1 the plain step's. The slow group's nodal momentum moves with
  *     the node, by its share of the nodal impulse: p^G_i += dt_s m^G_i a_i;
  *     the step keeps A_i = sum_s dt_s a_i (its velocity change) and
  *     X_i = sum_s dt_s v^L_i (its displacement).
@@ -44,8 +48,9 @@
  *     and a strain from their velocity at its end (one phase of the
  *     ringing, times dt) does not match the work f^G . X the held force
  *     did: on Box 9's dog-bone that mismatch fed the gas's FLIP noise
- *     until a gas point inverted (k = 4 at t = 0.86, k = 5 at t = 0.72),
- *     where the displacement's strain runs (k = 4 to 35 measured).
+ *     until a gas point inverted (k = 4 at t = 0.86, k = 5 at t = 0.72);
+ *     strained by the displacement k = 4 runs to t = 5.1 (phase 2 below,
+ *     docs/performance.md "Multi-rate stepping").
  *
  * What is conserved. Momentum: the membranes gain sum_s sum_i m^M_i a_i
  * dt_s (sum_p m_p N_ip = m^M_i, lumped mass), the slow group
@@ -74,7 +79,14 @@
  * the single-rate step with dt for a material whose waves c_G satisfy
  * dt c_G / h within the limit; the coupling lags by at most one step the
  * slow group's response to the membrane's motion, a force change of order
- * dt c_G / h of the pressure, which the same limit keeps small.
+ * dt c_G / h of the pressure, which the same limit keeps small. What it
+ * costs: the held force's energy error is the slow group's at its own
+ * (k times longer) step, first order in dt per unit time as any explicit
+ * step's (tests/physics/substeps_energy.lua: +0.030 % over 0.05 s with
+ * k = 4 where the plain step gains +0.0042 %); where the slow group's own
+ * particle speeds approach its Courant limit (the dog-bone's FLIP noise)
+ * that error grows until a point inverts. dt must be chosen for the slow
+ * group's sound speed plus its particles' speeds.
  *
  * Not with what changes the grid's forces by the node (contact's own
  * fields, pins, links, heavy end points, damping, the corrected mass, the
