@@ -17,6 +17,7 @@
 -- 3. substeps = 1 is the plain step, USL and MUSL (the groups' split only
 --    re-adds the same nodal sums): the same radius and hoop to 1e-9.
 -- 4. Deterministic: the same run twice, the same state hash.
+-- 5. substeps = "auto" picks the fewest sub-steps within the Courant limit.
 -- Measured (2026-12-05): string -0.26 % plain, -0.26 % with 4 sub-steps;
 -- circle radius 0.0119 / 0.0119 / 0.0120 %, hoop 0.056 / 0.058 / 0.061 %
 -- (plain / 4 / 10 sub-steps), energy change 2.1e-9 / 2.9e-7 / 7.9e-7 of
@@ -89,3 +90,18 @@ end
 
 -- 4. determinism
 assert(circle(4).hash == circle(4).hash, "two runs with substeps = 4 differ")
+
+-- 5. "auto": the fewest sub-steps within the Courant limit (1): the
+-- segment membrane's c counts as sqrt(E / ((1 - nu^2) rho)) / 0.75
+-- (docs/api.md), so at dt = 5e-4 on cell 0.1 k = ceil(5e-4 c / 0.1)
+do
+  local c = math.sqrt(E / ((1 - nu * nu) * 0.5)) / 0.75
+  local sim = lamina.sim{ domain = {0, 0, 1, 1}, cell = 0.1, dt = 5e-4, substeps = "auto" }
+  local skin = lamina.membrane{ rho = 0.5, E = E, nu = nu, thickness = t, law = "plane_stress" }
+  sim:membrane{ material = skin, count = 91,
+                curve = lamina.arc{ center = {0.5, 0.5}, radius = 0.3, from = 0, to = 90 } }
+  local want = math.ceil(5e-4 * c / 0.1)
+  assert(sim.substeps == want, string.format("auto: %d sub-steps, want %d", sim.substeps, want))
+  sim:run{ t_end = 2e-3 }   -- passes the Courant check
+  print(string.format("auto: %d sub-steps at dt = 5e-4 (membrane c = %.0f)", sim.substeps, c))
+end
