@@ -238,12 +238,15 @@ function M.dt(h) return M.deck.dt * h / M.deck.cell end
 function M.setup(h, o)
   o = o or {}
   local d = M.deck
-  local sim = lamina.sim{ domain = {0, 0, d.width, d.width}, cell = h, dt = M.dt(h),
+  -- o.substeps = k: multi-rate stepping (docs/api.md `substeps`), the gas
+  -- stepping k times the deck's dt and the membrane k sub-steps of it
+  local k = o.substeps
+  local sim = lamina.sim{ domain = {0, 0, d.width, d.width}, cell = h, dt = M.dt(h) * (k or 1),
                           courant = 1.05,   -- the deck's dt c / h = 1.04 (above)
                           boundary = { left = "symmetry", bottom = "symmetry",
                                        right = "symmetry", top = "symmetry" },
                           pic = o.pic or 0, threads = o.threads,
-                          basis = o.basis or "linear" }
+                          basis = o.basis or "linear", substeps = k }
   local air = lamina.gas{ rho = d.rho_gas, e = d.e, gamma = d.gamma, mu = d.mu, split = o.split,
                           density = o.density }
   local skin = lamina.membrane{ rho = d.rho_membrane, E = d.E, nu = d.nu, thickness = d.thickness,

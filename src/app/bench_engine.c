@@ -12,7 +12,11 @@
  *            and the same with the membrane's normals from the isosurface
  *            construction (normals "isosurface", normals_centred.c), whose
  *            cost over the row before is the construction's (issue 17
- *            item 3, docs/performance.md).
+ *            item 3, docs/performance.md). And the first with multi-rate stepping
+ *            (lamina.sim{substeps = 16}: the gas steps 16 times the
+ *            membrane's dt, subcycle.c), its particle-steps counted as the
+ *            16 a single-rate run takes: the row's rate over the first
+ *            row's is the speed-up to the same simulated time.
  * `--basis NAME` runs them with that basis (lamina.sim{basis}: linear,
  * gimp, bspline2; default linear).
  * Each case runs for about `work` particle-steps (default 4e6) after one
@@ -84,7 +88,10 @@ static lm_sim *make_disks(double h, lm_scheme scheme, lm_material *mat, int nt)
     return sim;
 }
 
-static lm_sim *make_gas(double h, lm_material *gas, lm_material *skin, lm_normals normals)
+/* substeps = k > 0: multi-rate stepping, the gas at k times the
+ * membrane's dt and the membrane in k sub-steps of it (subcycle.c) */
+static lm_sim *make_gas(double h, lm_material *gas, lm_material *skin, lm_normals normals,
+                        int substeps)
 {
     lm_sim_def d;
     lm_sim_def_default(&d);
@@ -92,7 +99,8 @@ static lm_sim *make_gas(double h, lm_material *gas, lm_material *skin, lm_normal
     d.basis = basis;
     d.hx = d.hy = h;
     d.bc[LM_LEFT] = d.bc[LM_BOTTOM] = LM_BC_SYMMETRY;
-    d.dt = 0.5 * h / lm_material_wave_speed(skin);
+    d.dt = 0.5 * h / lm_material_wave_speed(skin) * (substeps > 0 ? substeps : 1);
+    d.substeps = substeps;
     char err[256];
     lm_sim *sim = lm_sim_new(&d, err, sizeof err);
     if (!sim) return NULL;
@@ -151,7 +159,9 @@ static int time_case(const char *name, builder make, double h, void *ctx, double
             if (lm_sim_step_then(sim, s + 1 < steps) != LM_OK) goto failed;
         secs += now() - t0;
         cpu += cpu_now() - c0;
-        done += (double)n * (double)steps;
+        /* multi-rate: each step counts as the k steps a single-rate run
+         * would take (the membrane's dt) */
+        done += (double)n * (double)steps * lm_subcycle_count(sim);
         steps_total += steps;
         lm_sim_free(sim);
         continue;
@@ -171,6 +181,7 @@ typedef struct bench_ctx {
     lm_scheme scheme;
     int contact;
     lm_normals normals;    /* the gas case's membrane */
+    int substeps;          /* the gas case: lamina.sim{substeps} (0: off) */
 } bench_ctx;
 
 static lm_sim *build_disks(double h, void *ctx)
@@ -191,7 +202,7 @@ static lm_sim *build_disks(double h, void *ctx)
 static lm_sim *build_gas(double h, void *ctx)
 {
     bench_ctx *c = ctx;
-    return make_gas(h, c->a, c->b, c->normals);
+    return make_gas(h, c->a, c->b, c->normals, c->substeps);
 }
 
 static lm_material rubber = {.kind = LM_ELASTIC, .rho = 1000, .E = 1000, .nu = 0.3,
@@ -209,7 +220,7 @@ static lm_material skin = {.kind = LM_MEMBRANE, .rho = 0.5, .E = 1e6, .nu = 0.3,
 lm_sim *bench_gas_membrane(double particles)
 {
     /* quarter disk of radius 0.5 at 16 ppc: about 3.14 / h^2 particles */
-    return make_gas(sqrt(3.14 / particles), &air, &skin, LM_NORMALS_CONNECTIVITY);
+    return make_gas(sqrt(3.14 / particles), &air, &skin, LM_NORMALS_CONNECTIVITY, 0);
 }
 
 lm_sim *bench_two_disks(double particles, lm_scheme scheme, int nt)
@@ -260,17 +271,20 @@ int bench_engine(int argc, char **argv)
     for (int k = 0; k < nsizes; k++) {
         /* two disks of radius 0.2, 4 ppc: about 1.005 / h^2 particles */
         double h = sqrt(1.005 / sizes[k]);
-        bench_ctx musl = {&rubber, NULL, LM_MUSL, 0, LM_NORMALS_CONNECTIVITY};
-        bench_ctx usl = {&rubber, NULL, LM_USL, 0, LM_NORMALS_CONNECTIVITY};
-        bench_ctx rel = {&rubber, NULL, LM_MUSL, 1, LM_NORMALS_CONNECTIVITY};
+        bench_ctx musl = {&rubber, NULL, LM_MUSL, 0, LM_NORMALS_CONNECTIVITY, 0};
+        bench_ctx usl = {&rubber, NULL, LM_USL, 0, LM_NORMALS_CONNECTIVITY, 0};
+        bench_ctx rel = {&rubber, NULL, LM_MUSL, 1, LM_NORMALS_CONNECTIVITY, 0};
         bad |= time_case("disks MUSL", build_disks, h, &musl, 0.8, work);
         bad |= time_case("disks USL", build_disks, h, &usl, 0.8, work);
         if (basis != LM_BASIS_BSPLINE2)   /* contact refuses it (contact.c) */
             bad |= time_case("disks release", build_disks, h, &rel, 0.8, work);
         /* quarter disk of radius 0.5 at 16 ppc: about 3.14 / h^2 */
         double hg = sqrt(3.14 / sizes[k]);
-        bench_ctx gm = {&air, &skin, LM_MUSL, 0, LM_NORMALS_CONNECTIVITY};
-        bench_ctx gi = {&air, &skin, LM_MUSL, 0, LM_NORMALS_ISOSURFACE};
+        bench_ctx gm = {&air, &skin, LM_MUSL, 0, LM_NORMALS_CONNECTIVITY, 0};
+        bench_ctx gi = {&air, &skin, LM_MUSL, 0, LM_NORMALS_ISOSURFACE, 0};
+        /* multi-rate: the gas at 16 times the membrane's dt (its Courant
+         * number 16 x 0.5 x 37 / 1482 = 0.2), the membrane in 16 sub-steps */
+        bench_ctx gs = {&air, &skin, LM_MUSL, 0, LM_NORMALS_CONNECTIVITY, 16};
         /* the papers' point forces, three membrane points a cell, on the
          * bilinear basis: the skin tears from t = 0.0032 at 1e5 particles
          * (0.0041 at 1e4, 0.009 at 1e3; segment forces or more points a
@@ -278,6 +292,7 @@ int bench_engine(int argc, char **argv)
          * is rebuilt at t = 0.002, as the disks are before they meet */
         bad |= time_case("gas+membrane", build_gas, hg, &gm, 0.002, work);
         bad |= time_case("gas+isosurf", build_gas, hg, &gi, 0.002, work);
+        bad |= time_case("gas+mem k=16", build_gas, hg, &gs, 0.002, work);
     }
     return bad ? 1 : 0;
 }

@@ -93,7 +93,7 @@ int la_sim_new(lua_State *L)
     static const char *const keys[] = {"domain", "cell", "dt", "scheme", "gravity",
                                        "boundary", "courant", "pic", "seed", "threads",
                                        "basis", "stress", "axisymmetric", "mass", "damping",
-                                       NULL};
+                                       "substeps", NULL};
     const char *fn = "lamina.sim";
     la_check_keys(L, 1, fn, keys);
     lm_sim_def d;
@@ -139,6 +139,26 @@ int la_sim_new(lua_State *L)
     d.damping = la_opt_number(L, 1, fn, "damping", 0.0);
     if (!(d.damping >= 0) || !isfinite(d.damping))
         luaL_error(L, "%s: damping must be a finite number >= 0 (1/s) (got %f)", fn, d.damping);
+    /* substeps = "auto" or k: the membranes in k sub-steps of each step
+     * (multi-rate stepping, src/mpm/subcycle.c) */
+    int st_type = lua_getfield(L, 1, "substeps");
+    if (st_type == LUA_TSTRING) {
+        const char *v = lua_tostring(L, -1);
+        if (strcmp(v, "auto") != 0)
+            luaL_error(L, "%s: substeps must be \"auto\" or a whole number from 1 to %d (got "
+                       "\"%s\")", fn, LM_SUBSTEPS_MAX, v);
+        d.substeps = LM_SUBSTEPS_AUTO;
+    } else if (st_type == LUA_TNUMBER) {
+        double k = lua_tonumber(L, -1);
+        if (!(k >= 1 && k <= LM_SUBSTEPS_MAX) || k != floor(k))
+            luaL_error(L, "%s: substeps must be \"auto\" or a whole number from 1 to %d (got "
+                       "%f)", fn, LM_SUBSTEPS_MAX, k);
+        d.substeps = (int)k;
+    } else if (st_type != LUA_TNIL) {
+        luaL_error(L, "%s: substeps must be \"auto\" or a whole number from 1 to %d (got a %s)",
+                   fn, LM_SUBSTEPS_MAX, lua_typename(L, st_type));
+    }
+    lua_pop(L, 1);
     /* threads: the key, else lamina run --threads (the run's configuration,
      * passed in explicitly), else the user's LAMINA_THREADS, else 1; the
      * state is bit-identical for the same count (docs/decisions.md) */
@@ -626,6 +646,7 @@ static int sim_index(lua_State *L)
     else if (strcmp(k, "axisymmetric") == 0) lua_pushboolean(L, m->def.axisym);
     else if (strcmp(k, "courant") == 0) lua_pushnumber(L, m->def.courant);
     else if (strcmp(k, "damping") == 0) lua_pushnumber(L, m->def.damping);
+    else if (strcmp(k, "substeps") == 0) lua_pushinteger(L, lm_subcycle_count(m));
     else if (strcmp(k, "gravity") == 0) {
         lua_createtable(L, 2, 0);
         lua_pushnumber(L, m->def.gx);

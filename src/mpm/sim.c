@@ -159,6 +159,7 @@ void lm_sim_free(lm_sim *sim)
     lm_work *w = sim->work;
     lm_nwork_delete(w->nwork);
     lm_ahead_free(w->ahead);
+    lm_subcycle_free(w->sub);
     for (int k = 0; k < sim->nmats; k++) free(sim->mats[k]);
     LU_FREE_ALL(sim->mats, sim->bodies, w->cell_rho, w->cell_stress, sim->pins, sim->links,
                 w->pin_w, w->cons, w, sim);
@@ -405,6 +406,8 @@ double lm_sim_courant_body(const lm_sim *sim, double *c_max, int *body)
             }
         }
         if (bd->membrane && bd->force == LM_MFORCE_SEGMENT) cb /= LM_SEGMENT_COURANT;
+        /* multi-rate stepping: a membrane steps dt / k (subcycle.c) */
+        if (bd->membrane) cb /= lm_subcycle_count(sim);
         if (cb > c) {
             c = cb;
             if (body) *body = b;

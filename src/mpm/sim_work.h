@@ -10,6 +10,7 @@
 struct lm_con;
 struct lm_ahead;
 struct lm_nwork;
+struct lm_subcycle;
 
 typedef struct lm_work {
     double *cell_rho;      /* density.c: gas density per cell (nx * ny) */
@@ -22,6 +23,8 @@ typedef struct lm_work {
                                      by the first step that needs it; NULL: none */
     struct lm_ahead *ahead;       /* the fused pass's nodal arrays (step_fused.c);
                                      NULL until a plain run's first step */
+    struct lm_subcycle *sub;      /* multi-rate stepping's nodal arrays
+                                     (subcycle.c); NULL until its first step */
     int courant_checked;          /* the Courant check passed and nothing that
                                      moves the number changed since
                                      (courant_check.c) */

@@ -402,6 +402,13 @@ static void rate_at(const lm_sim *sim, size_t q, lm_rate *r, int moved, double r
  * forces takes its strain from its lengths after this (membrane_force.c). */
 void lm_step_stress(lm_sim *sim, double max_div, double c_max)
 {
+    lm_step_stress_part(sim, max_div, c_max, 0);
+}
+
+/* The same for every particle but the membranes' (slow_only): multi-rate
+ * stepping has updated those in its sub-steps (subcycle.c). */
+void lm_step_stress_part(lm_sim *sim, double max_div, double c_max, int slow_only)
+{
     const lm_grid *g = &sim->grid;
     double h = fmin(g->hx, g->hy);
     const double rx = 1.0 / g->hx, ry = 1.0 / g->hy;
@@ -410,6 +417,7 @@ void lm_step_stress(lm_sim *sim, double max_div, double c_max)
 #pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
     for (long q = 0; q < n; q++) {
         if (lm_k_segment_point(sim, (size_t)q)) continue;   /* from lengths */
+        if (slow_only && sim->bodies[sim->p.body[q]].membrane) continue;
         lm_rate r;
         rate_at(sim, (size_t)q, &r, moved, rx, ry);
         r.dt = sim->def.dt;
@@ -580,6 +588,14 @@ lm_status lm_sim_step_then(lm_sim *sim, int more)
     if (st == LM_OK) st = lm_threads_reserve(sim);
     if (st != LM_OK) return st;
     lm_pace_step(sim);                          /* the OS threads for this step */
+    if (sim->def.substeps) {                    /* multi-rate (subcycle.c) */
+        lm_sim_forget_ahead(sim);
+        st = lm_subcycle_step(sim);
+        advance_clock(sim);
+        if (st != LM_OK) return st;
+        st = lm_step_check(sim);
+        return st != LM_OK ? st : lm_step_split(sim);
+    }
     /* without the pass's arrays (out of memory) the step goes phase by phase */
     const int fused = lm_step_fusable(sim) && lm_ahead_reserve(sim) == LM_OK;
     if (!fused || !lm_step_take_ahead(sim)) {

@@ -145,6 +145,12 @@ void lm_step_strain_velocity_end(lm_sim *sim, int remap);   /* 5's divide, pins,
 lm_status lm_gas_cell_density(lm_sim *sim); /* 6b. [T] eqs 4.5-4.6 (density.c) */
 void lm_step_gas_maxima(lm_sim *sim, double *max_div, double *c_max); /* 6c. [F] eq 24 */
 void lm_step_stress(lm_sim *sim, double max_div, double c_max);     /* 7-8. rate, update */
+/* 7-8 for all particles but the membranes' (slow_only != 0). */
+void lm_step_stress_part(lm_sim *sim, double max_div, double c_max, int slow_only);
+/* subcycle.c: one step with the membranes in sub-steps (steps 0-8, before
+ * the clock, the check and splitting); its refusals name what it cannot do. */
+lm_status lm_subcycle_step(lm_sim *sim);
+void lm_subcycle_free(struct lm_subcycle *s);
 lm_status lm_step_check(lm_sim *sim);       /* NaN, inversion, domain */
 /* The check's verdict when particle `first` is the lowest-numbered one in
  * trouble (first >= n: none), with the contact's and the membranes' own. */

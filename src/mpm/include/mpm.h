@@ -302,7 +302,15 @@ typedef struct lm_sim_def {
                               Cholesky fit of the centred normals solved
                               again by the QR and the two compared
                               (lm_sim_normals_compare); the run is the same */
+    int substeps;          /* multi-rate stepping (subcycle.c): 0 off; k > 0:
+                              each step the membranes take k sub-steps of
+                              dt / k; LM_SUBSTEPS_AUTO: k from the membranes'
+                              Courant limit, step by step */
 } lm_sim_def;
+
+#define LM_SUBSTEPS_AUTO (-1)
+/* Most sub-steps a step may take (a typo's 10^9 would hang the run). */
+#define LM_SUBSTEPS_MAX 100000
 
 /* Fills a definition with lamina's defaults (unit square, cell 0.1, MUSL,
  * no gravity, fixed walls, courant 1). */
@@ -496,6 +504,11 @@ lm_status lm_sim_check_courant(lm_sim *sim);
 /* Changes dt between steps if the new one passes the Courant check; else
  * LM_ERR_COURANT with sim->err and dt as it was (sim.dt = ...). */
 lm_status lm_sim_try_dt(lm_sim *sim, double dt);
+
+/* Multi-rate stepping (lamina.sim{substeps}, subcycle.c): the sub-steps
+ * the membranes take in a step of the present dt (1 when off or when there
+ * is no membrane). */
+int lm_subcycle_count(const lm_sim *sim);
 
 /* Changes the time step between steps (the clock keeps counting exactly). */
 void lm_sim_set_dt(lm_sim *sim, double dt);
