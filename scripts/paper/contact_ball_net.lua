@@ -147,5 +147,6 @@ lamina.report{
   friction_release_time = fr.left or -1,
   friction_velocity = v_fr or 0,
   friction_spin = fr.spin[#fr.spin],
-  state_hash = rel.sim:hash(),
+  -- both runs' states (assets/lua/hashes.lua)
+  state_hash = require("hashes").fold{ rel.sim:hash(), fr.sim:hash() },
 }

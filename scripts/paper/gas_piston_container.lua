@@ -25,7 +25,7 @@ local function theory(m)
   return 2 * math.pi / (0.5 * (a + b))
 end
 
-local report, hash = {}, nil
+local report, hashes = {}, {}
 for _, m in ipairs{0.1, 1.0} do
   local Ls, n = 2, 3
   local sim = lamina.sim{ basis = "linear", domain = {0, 0, L + Ls, 1}, cell = h, dt = 0.5 * h / c,
@@ -67,7 +67,8 @@ for _, m in ipairs{0.1, 1.0} do
   local table_I = { [0.1] = 0.00709, [1.0] = 0.02234 }
   report[string.format("period_m%.1f", m)] = { period, paper = table_I[m], ref = T, unit = "s",
                                                 tol = 0.02 * T }
-  hash = sim:hash()
+  hashes[#hashes + 1] = sim:hash()
 end
-report.state_hash = hash
+-- both masses' runs (assets/lua/hashes.lua)
+report.state_hash = require("hashes").fold(hashes)
 lamina.report(report)
