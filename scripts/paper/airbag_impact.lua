@@ -120,7 +120,12 @@ local rep = {
   gas_outside = main.escaped,
   pre_run_tether = { main.tension, unit = "N" },
   paper_curves = "unavailable (Fig 17's curves are not in the text)",
-  state_hash = main.hash,
+  -- every variant's state (assets/lua/hashes.lua)
+  state_hash = require("hashes").fold((function()
+    local h = {}
+    for _, v in ipairs(names) do h[#h + 1] = runs[v].hash end
+    return h
+  end)()),
 }
 if runs.removed and runs.kept then
   -- [F] §4.4 in words: with the tether kept the probe went "about 20 mm

@@ -168,5 +168,6 @@ lamina.report{
   offset2_omega_end = wB[#wB],
   offset2_angle_stopped = { theta_stop or 0, unit = "rad" },
   offset2_angle_leaving = { theta_leave or 0, unit = "rad" },
-  state_hash = sim:hash(),
+  -- both set-ups' states (assets/lua/hashes.lua)
+  state_hash = require("hashes").fold{ sim:hash(), simB:hash() },
 }

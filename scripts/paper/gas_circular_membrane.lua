@@ -114,12 +114,6 @@ lamina.report{
   radius_0 = rm, radius_90 = r90m,
   gas_outside = escaped,
   damping = damping,
-  -- both runs' states (FNV-1a over their hashes, as noise_spring)
-  state_hash = (function()
-    local hv = 0xcbf29ce484222325
-    for _, x in ipairs{ sim:hash(), free_hash } do
-      for i = 1, #x do hv = (hv ~ x:byte(i)) * 0x100000001b3 end
-    end
-    return string.format("%016x", hv)
-  end)(),
+  -- both runs' states (assets/lua/hashes.lua)
+  state_hash = require("hashes").fold{ sim:hash(), free_hash },
 }

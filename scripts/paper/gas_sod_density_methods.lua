@@ -139,12 +139,6 @@ for k, v in pairs{
     diff < 0.005 and "" or ": columns of points crossing cell edges make the cell densities jump; "
       .. "the quadratic average only damps it"),
   -- every method's run (FNV-1a over their hashes, as noise_spring)
-  state_hash = (function()
-    local hv = 0xcbf29ce484222325
-    for _, x in ipairs(hashes) do
-      for i = 1, #x do hv = (hv ~ x:byte(i)) * 0x100000001b3 end
-    end
-    return string.format("%016x", hv)
-  end)(),
+  state_hash = require("hashes").fold(hashes),
 } do report[k] = v end
 lamina.report(report)

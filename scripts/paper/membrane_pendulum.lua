@@ -60,7 +60,7 @@ lamina.plot{ file = out .. "/fig11_fem.png", width = 480, height = 400,
              title = "Fig 11: bar-element FEM (ours), 20 elements", xlabel = "x", ylabel = "y",
              xrange = {0, 1.2}, yrange = {0, 1.0}, legend = "bottom left", series = fseries }
 
-local series, report, hash = {}, {}, nil
+local series, report, hashes = {}, {}, {}
 local prev_err
 for _, r in ipairs{ {0.2, 20}, {0.1, 40}, {0.05, 80}, {0.025, 320} } do
   local h, n = r[1], r[2]
@@ -97,11 +97,12 @@ for _, r in ipairs{ {0.2, 20}, {0.1, 40}, {0.05, 80}, {0.025, 320} } do
   report.amplitude_finest = { amp, ref = amp_fem, unit = "deg", tol = 0.1 * amp_fem }
   report.error_falls = (prev_err == nil) and true or (report.error_falls and err < prev_err)
   prev_err = err
-  hash = sim:hash()
+  hashes[#hashes + 1] = sim:hash()
 end
 series[#series + 1] = { x = fem.t, y = fem.theta, label = "bar-element FEM", dashed = true, color = 8 }
 lamina.plot{ file = out .. "/fig12_theta.png", csv = true, title = "Fig 12: angle theta",
              xlabel = "t", ylabel = "theta (deg)", legend = "bottom left", series = series }
 report.fem_20_vs_40_elements = { fem_change, unit = "deg, largest theta difference ([M]: 'does not change')" }
-report.state_hash = hash
+-- every refinement's state (assets/lua/hashes.lua)
+report.state_hash = require("hashes").fold(hashes)
 lamina.report(report)

@@ -171,14 +171,8 @@ local function kv(a, b, upto)
   return string.format("%s: mean kink over t <= %.1f %.4f without, %.4f with ([T]: alignment 'not as good' without)",
                        ok and "pass" or "FAIL", upto, a.kmean, b.kmean)
 end
--- every run's state, one hash (FNV-1a over the runs' hashes, as noise_spring)
-local function fold(hashes)
-  local hv = 0xcbf29ce484222325
-  for _, s in ipairs(hashes) do
-    for i = 1, #s do hv = (hv ~ s:byte(i)) * 0x100000001b3 end
-  end
-  return string.format("%016x", hv)
-end
+-- every run's state in the page's one hash (assets/lua/hashes.lua)
+local fold = require("hashes").fold
 lamina.report{
   run_without = w.outcome,
   run_with = wi.outcome,

@@ -85,12 +85,6 @@ lamina.report{
   normal_error_median = { worst[math.ceil(0.5 * #worst)], unit = "deg" },
   normal_error_max = { worst[#worst], unit = "deg" },
   normal_error_vs_connectivity_max = { worst_c[#worst_c], unit = "deg" },
-  -- both runs' states (FNV-1a over their hashes, as noise_spring)
-  state_hash = (function()
-    local hv = 0xcbf29ce484222325
-    for _, x in ipairs{ iso:hash(), con:hash() } do
-      for i = 1, #x do hv = (hv ~ x:byte(i)) * 0x100000001b3 end
-    end
-    return string.format("%016x", hv)
-  end)(),
+  -- both runs' states (assets/lua/hashes.lua)
+  state_hash = require("hashes").fold{ iso:hash(), con:hash() },
 }

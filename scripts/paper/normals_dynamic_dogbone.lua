@@ -82,14 +82,8 @@ lamina.plot{ file = out .. "/fig15_pressure.png", csv = true, width = 640, heigh
                         { x = rec_c:column("t"), y = pc, label = "connectivity normals", dashed = true } } }
 local t0 = math.max(0, t_end - 0.5)
 local p_h, p_c = rec_i:mean("p", t0, t_end), rec_c:mean("p", t0, t_end)
--- both runs' states in one hash (FNV-1a over their hashes, as noise_spring)
-local function fold(hashes)
-  local hv = 0xcbf29ce484222325
-  for _, x in ipairs(hashes) do
-    for i = 1, #x do hv = (hv ~ x:byte(i)) * 0x100000001b3 end
-  end
-  return string.format("%016x", hv)
-end
+-- every run's state in the page's one hash (assets/lua/hashes.lua)
+local fold = require("hashes").fold
 lamina.report{
   pressure_difference_after_0_5 = { 100 * dev, unit = "% (largest)" },
   pressure_hybrid = { p_h, unit = string.format("mean over t in [%.1f, %.1f]", t0, t_end) },

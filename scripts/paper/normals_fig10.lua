@@ -5,8 +5,9 @@
 --       0.2, smaller than the element: the contour cannot follow the wiggle and several normals
 --       are far off.
 -- checks: max angle error, paper (a) about 1 degree, (b) 32 degrees with an rms of about 5
---         degrees (the paper's rms is sqrt(sum e^2)/n, see normals_fig4.lua; both printed);
---         medians over 100 random points.
+--         degrees (the paper's rms is sqrt(sum e^2)/n, see normals_fig4.lua; both printed),
+--         each within half a degree (the printed precision: [N] states no agreement; it was
+--         1 +- 1 and 32 +- 16); medians over 100 random points.
 -- assumed: the curve runs from (0, 0.5) to (1, 1.5), corner to corner of the element
 --          [0, 1] x [0.5, 1.5], which is taken as the element (in [0,1]^2 it would leave through
 --          the top at x = 0.77 or 0.88); n = 10 points evenly spaced in x, ends included.
@@ -64,9 +65,17 @@ for i, c in ipairs({{c = 2, paper = "1", tag = "a"}, {c = 4, paper = "32, rms 5"
     .. "(paper: %s deg); median max over 100 random points %.2f deg", c.tag, c.c, m, rms, alt,
     c.paper, med))
   if lamina.report then
-    lamina.report{ ["fig10" .. c.tag .. "_max_error"] = {m, paper = c.c == 2 and 1 or 32, unit = "deg",
-                                                         tol = c.c == 2 and 1 or 16},
-                   ["fig10" .. c.tag .. "_median_max_error"] = {med, unit = "deg"} }
+    -- [N] prints whole degrees ("about 1", "32", "rms of about 5") and no
+    -- agreement: half a degree, its precision (issue 32: was 1 +- 1, 32 +- 16)
+    local rep = { ["fig10" .. c.tag .. "_max_error"] = {m, paper = c.c == 2 and 1 or 32, tol = 0.5,
+                                                        unit = "deg (tol: half the printed degree)"},
+                  ["fig10" .. c.tag .. "_median_max_error"] = {med, unit = "deg"} }
+    if c.c == 4 then
+      rep.fig10b_rms_paper_style = {alt, paper = 5, tol = 0.5,
+        unit = "deg, sqrt(sum e^2) / n as [N]'s Table III fits ([N]: 'about 5'; tol: half the printed degree)"}
+      rep.fig10b_rms_usual = {rms, unit = "deg, sqrt(sum e^2 / n): the usual rms"}
+    end
+    lamina.report(rep)
   end
 end
 fig:write(out .. "/normals_fig10.png")

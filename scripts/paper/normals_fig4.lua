@@ -4,10 +4,15 @@
 --       computed normals cover the dashed exact ones; (b) on the circle the phi = 1 contour is a
 --       hyperbola-like curve close to the arc and the computed normals (solid) lean away from the
 --       exact ones (dashed), most at the ends of the arc.
--- checks: (a) exact to round-off; (b) max error (paper 7 degrees); Table III: max and rms error
---         for 3, 4, 8, 16, 32 points with the random point fixed (paper 0.1211 ... 0.1308 rad max,
---         rms 0.0571 -> 0.0092); cond(T) over 100 random points with 3 points (paper min 1.8e+01,
---         max 4.1e+06, median 1.1e+02).
+-- checks: (a) exact to round-off; (b) max error (paper 7 degrees, within half a degree, the
+--         printed precision); Table III: max and rms error for 3, 4, 8, 16, 32 points with the
+--         random point fixed (paper 0.1211 ... 0.1308 rad max, rms 0.0571 -> 0.0092), each within
+--         9 %: [N] calls the maximum "unaffected" by the number of points while its own maxima
+--         differ by +-9 % of their mean, a difference it counts as none; the rms as [N]'s
+--         numbers fit (below) checked, the usual rms printed beside it; cond(T) over 100 random
+--         points with 3 points (paper min 1.8e+01, max 4.1e+06, median 1.1e+02). Our maxima are
+--         about 40 % above [N]'s: the paper places its points and random point where it does not
+--         say (ours: both ends of the quarter arc), so the misses show as x.
 -- assumed: (a) the printed curve xy + 0.1x + 0.3 = 0 never enters the unit square [0,1]^2 (x > 0
 --          gives y < -0.1); it runs through [-1, 0] x [0, 1], the element used here (the same
 --          curve mirrored is xy + 0.1x - 0.3 = 0 in [0,1]^2). Its three points are at x = -1 + (k +
@@ -89,11 +94,19 @@ for _, n in ipairs({3, 4, 8, 16, 32}) do
   print(string.format("                %2d   %.4f %.4f %.4f          | %.4f %.4f", n, m, rms, alt,
                       paper[n][1], paper[n][2]))
   if lamina.report then
-    lamina.report{ ["table3_max_" .. n] = {m, paper = paper[n][1], unit = "rad", tol = 0.1},
-                   ["table3_rms_" .. n] = {alt, paper = paper[n][2], unit = "rad", tol = 0.03} }
+    -- tol: [N] §4 calls the maximum "unaffected" by the number of points
+    -- while its own maxima span 0.1091-0.1308, +-9 % of their mean: a
+    -- difference the paper counts as none (issue 32: was +-0.1 / +-0.03)
+    lamina.report{ ["table3_max_" .. n] = {m, paper = paper[n][1], tol = 0.09 * paper[n][1],
+                     unit = "rad (tol 9 %: the spread of [N]'s own maxima it calls unaffected)"},
+                   ["table3_rms_" .. n] = {alt, paper = paper[n][2], tol = 0.09 * paper[n][2],
+                     unit = "rad, sqrt(sum e^2) / n as [N]'s numbers fit (tol 9 %, as the max)"},
+                   ["table3_rms_usual_" .. n] = {rms, unit = "rad, sqrt(sum e^2 / n): the usual rms"} }
   end
 end
 if lamina.report then
   lamina.report{ fig4a_max_error = {ma, paper = 0, unit = "rad", tol = 1e-10},
-                 fig4b_max_error = {math.deg(mb), paper = 7, unit = "deg", tol = 5} }
+                 -- "7" printed to the degree (Table III's 0.1211 rad = 6.94 deg is it): +-0.5
+                 fig4b_max_error = {math.deg(mb), paper = 7, tol = 0.5,
+                                    unit = "deg (tol: half the printed degree)"} }
 end

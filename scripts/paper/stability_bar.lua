@@ -98,8 +98,12 @@ print(string.format("first unstable dt c/h: MUSL centres %.2f (paper 2.0), sides
   .. "USL centres %.2f, sides %.2f", results.musl_centres, results.musl_sides,
   results.usl_centres, results.usl_sides))
 lamina.report{
-  first_unstable_centres_musl = { results.musl_centres, paper = 2.0, tol = 0.1 },
-  first_unstable_sides_musl = { results.musl_sides, paper = 1.1, tol = 0.1 },
+  -- tol: the sweep's step there (0.1 about 2.0, 0.05 about 1.1): the first
+  -- unstable factor is known to one step
+  first_unstable_centres_musl = { results.musl_centres, paper = 2.0, tol = 0.1,
+                                  unit = "(tol: the sweep's step)" },
+  first_unstable_sides_musl = { results.musl_sides, paper = 1.1, tol = 0.05,
+                                unit = "(tol: the sweep's step)" },
   first_unstable_centres_usl = results.usl_centres,
   first_unstable_sides_usl = results.usl_sides,
   state_hash = select(3, bar.run("centres", 1.0, "musl", 0.03)):hash(),
