@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "mpm3.h"
+#include "util.h"
 
 static const char *const face_name[LM3_FACES] = {"x0", "x1", "y0", "y1", "z0", "z1"};
 
@@ -104,17 +105,9 @@ void lm3_sim_free(lm3_sim *sim)
 {
     if (!sim) return;
     lm3_particles *p = &sim->p;
-    for (int a = 0; a < 3; a++) {
-        free(p->x[a]);
-        free(p->v[a]);
-        free(p->d[a]);
-    }
-    for (int c = 0; c < 6; c++) free(p->s[c]);
-    free(p->m);
-    free(p->rho);
-    free(p->node);
-    free(p->mat);
-    free(sim->grid.m);
+    LU_FREE_ALL(p->x[0], p->x[1], p->x[2], p->v[0], p->v[1], p->v[2], p->m, p->rho, p->s[0],
+                p->s[1], p->s[2], p->s[3], p->s[4], p->s[5], p->d[0], p->d[1], p->d[2],
+                p->node, p->mat, sim->grid.m);
     free(sim);
 }
 
@@ -140,27 +133,23 @@ int lm3_material_add(lm3_sim *sim, const lm3_material *mat, char *err, size_t er
     return sim->nmat++;
 }
 
-/* Room for n more particles: every array grown or none (the old ones stay
- * valid on failure). */
+/* Room for `more` particles: each array grown with lu_reserve (the old
+ * ones stay valid when one fails; the common capacity is raised only when
+ * all have it). */
 static int reserve(lm3_particles *p, size_t more)
 {
-    if (p->n + more <= p->cap) return 1;
-    size_t cap = p->cap ? p->cap : 1024;
-    while (cap < p->n + more) cap *= 2;
-    double **dbl[] = {&p->x[0], &p->x[1], &p->x[2], &p->v[0], &p->v[1], &p->v[2], &p->m,
-                      &p->rho, &p->s[0], &p->s[1], &p->s[2], &p->s[3], &p->s[4], &p->s[5],
-                      &p->d[0], &p->d[1], &p->d[2]};
-    for (size_t i = 0; i < sizeof dbl / sizeof *dbl; i++) {
-        double *r = realloc(*dbl[i], cap * sizeof(double));
-        if (!r) return 0;
-        *dbl[i] = r;
+    size_t need = p->n + more;
+    if (need <= p->cap) return 1;
+    void *arr[] = {&p->x[0], &p->x[1], &p->x[2], &p->v[0], &p->v[1], &p->v[2], &p->m,
+                   &p->rho, &p->s[0], &p->s[1], &p->s[2], &p->s[3], &p->s[4], &p->s[5],
+                   &p->d[0], &p->d[1], &p->d[2], &p->node, &p->mat};
+    size_t elem[] = {8, 8, 8, 8, 8, 8, 8, 8, 8, 8, 8, 8, 8, 8, 8, 8, 8, sizeof(int32_t), 1};
+    size_t cap = p->cap;
+    for (size_t i = 0; i < sizeof arr / sizeof *arr; i++) {
+        size_t c = p->cap;
+        if (lu_reserve(arr[i], &c, need, elem[i], 1024) != 0) return 0;
+        cap = c;
     }
-    int32_t *nd = realloc(p->node, cap * sizeof *nd);
-    if (!nd) return 0;
-    p->node = nd;
-    uint8_t *mt = realloc(p->mat, cap * sizeof *mt);
-    if (!mt) return 0;
-    p->mat = mt;
     p->cap = cap;
     return 1;
 }
