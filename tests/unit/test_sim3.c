@@ -1,6 +1,8 @@
 /* test_sim3.c - the 3D core (docs/3d.md "Tests"): the bases' partition of
  * unity and gradient sums at random points, a block translating, a block
- * falling, an elastic bar's axial period, and refused definitions. */
+ * falling, an elastic bar's axial period, the 3D law against the 2D one in
+ * plane strain, a symmetry face against the full run, and refused
+ * definitions. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -8,6 +10,7 @@
 
 #include "check.h"
 #include "mpm3.h"
+#include "step.h"   /* the 2D law, to compare */
 
 static lm3_def make_def(lm_basis basis, double h, double dt)
 {
@@ -208,6 +211,102 @@ static void bar_period(lm_basis basis, double h)
     lm3_sim_free(sim);
 }
 
+/* The 3D law restricted to plane strain (in-plane strain increments, a
+ * spin about z, no out-of-plane shear) is the 2D plane-strain law of
+ * material_elastic.c: the slab cases of issue 34 item 3 rest on it. */
+static void law_plane_strain(void)
+{
+    lm_material m2;
+    memset(&m2, 0, sizeof m2);
+    m2.E = 2.5e6;
+    m2.nu = 0.3;
+    m2.plane = LM_PLANE_STRAIN;
+    lm3_material m3 = {1000, m2.E, m2.nu};
+    unsigned long long seed = 99;
+    double worst = 0, scale = 0;
+    for (int t = 0; t < 200; t++) {
+        double sxx = 1e4 * (rnd(&seed) - 0.5), syy = 1e4 * (rnd(&seed) - 0.5);
+        double sxy = 1e4 * (rnd(&seed) - 0.5), szz = 1e4 * (rnd(&seed) - 0.5);
+        double dexx = 1e-3 * (rnd(&seed) - 0.5), deyy = 1e-3 * (rnd(&seed) - 0.5);
+        double dexy = 1e-3 * (rnd(&seed) - 0.5), w = 10 * (rnd(&seed) - 0.5), dt = 1e-4;
+        double s3[6] = {sxx, syy, szz, 0, 0, sxy}, de[6] = {dexx, deyy, 0, 0, 0, dexy};
+        double W[9] = {0, w, 0, -w, 0, 0, 0, 0, 0};
+        lm3_elastic_update(&m3, de, W, dt, s3);
+        lm_elastic_update(&m2, dexx, deyy, dexy, w, dt, &sxx, &syy, &sxy, &szz);
+        double d[4] = {s3[0] - sxx, s3[1] - syy, s3[2] - szz, s3[5] - sxy};
+        for (int k = 0; k < 4; k++) worst = fmax(worst, fabs(d[k]));
+        worst = fmax(worst, fmax(fabs(s3[3]), fabs(s3[4])));
+        scale = fmax(scale, fmax(fabs(sxx), fabs(syy)));
+        /* and the energy densities agree */
+        double e2 = lm_elastic_energy_density(&m2, sxx, syy, sxy, szz);
+        double e3 = lm3_elastic_energy_density(&m3, s3);
+        CHECK_NEAR(e3, e2, 1e-12 * e2);
+    }
+    printf("law: 3D in plane strain against 2D, worst |d sigma| %.2g Pa of %.3g\n", worst, scale);
+    CHECK(worst < 1e-12 * scale);
+}
+
+/* A half-domain run with a symmetry face equals the full run's half: the
+ * block (symmetric about x = 0.5, spreading in x, drifting in y) falls on
+ * a fixed floor. The particles of the half run against their twins in
+ * the full run. */
+static void half_symmetry(lm_basis basis)
+{
+    double h = 0.1, dt = 1e-3;
+    lm3_def full = make_def(basis, h, dt), half;
+    full.gravity[2] = -9.81;
+    full.bc[LM3_ZLO] = LM_BC_FIXED;
+    half = full;
+    half.lo[0] = 0.5;
+    half.bc[LM3_XLO] = LM_BC_SYMMETRY;
+    char err[200];
+    lm3_sim *a = lm3_sim_create(&full, err, sizeof err), *b = lm3_sim_create(&half, err, sizeof err);
+    lm3_material mat = {1000, 1e5, 0.3};
+    int ma = lm3_material_add(a, &mat, err, sizeof err), mb = lm3_material_add(b, &mat, err, sizeof err);
+    double lo[3] = {0.3, 0.3, 0.1}, hi[3] = {0.7, 0.6, 0.4}, v[3] = {0, 0.2, 0};
+    lm3_seed_box(a, ma, lo, hi, 2, v);
+    lm3_seed_box(b, mb, lo, hi, 2, v);
+    size_t *twin = calloc(b->p.n, sizeof *twin), found = 0;
+    for (size_t q = 0; q < b->p.n; q++) {
+        /* the two seedings count sub-cells from different origins: the
+         * same places to rounding */
+        for (size_t r = 0; r < a->p.n; r++)
+            if (fabs(a->p.x[0][r] - b->p.x[0][q]) < 1e-12 &&
+                fabs(a->p.x[1][r] - b->p.x[1][q]) < 1e-12 &&
+                fabs(a->p.x[2][r] - b->p.x[2][q]) < 1e-12) {
+                twin[q] = r;
+                found++;
+            }
+        b->p.v[0][q] = b->p.x[0][q] - 0.5;
+    }
+    for (size_t r = 0; r < a->p.n; r++) a->p.v[0][r] = a->p.x[0][r] - 0.5;
+    for (int k = 0; k < 300; k++) {
+        CHECK(lm3_step(a) == LM_OK);
+        CHECK(lm3_step(b) == LM_OK);
+    }
+    double dx = 0, ds = 0, smax = 0, zmin = 1;
+    for (size_t q = 0; q < b->p.n; q++) {
+        size_t r = twin[q];
+        for (int c = 0; c < 3; c++) dx = fmax(dx, fabs(a->p.x[c][r] - b->p.x[c][q]));
+        for (int c = 0; c < 6; c++) {
+            ds = fmax(ds, fabs(a->p.s[c][r] - b->p.s[c][q]));
+            smax = fmax(smax, fabs(a->p.s[c][r]));
+        }
+        zmin = fmin(zmin, b->p.x[2][q]);
+    }
+    printf("half %s: %zu of %zu particles, |dx| %.2g m, |d sigma| %.2g Pa of %.3g, lowest z "
+           "%.4f\n", basis == LM_BASIS_LINEAR ? "trilinear" : "bspline2", b->p.n, a->p.n, dx, ds,
+           smax, zmin);
+    CHECK(2 * b->p.n == a->p.n);
+    CHECK(found == b->p.n);
+    CHECK(smax > 100);    /* the floor was reached: a test of the walls */
+    CHECK(dx < 1e-10);
+    CHECK(ds < 1e-9 * smax);
+    free(twin);
+    lm3_sim_free(a);
+    lm3_sim_free(b);
+}
+
 static void refusals(void)
 {
     char err[200];
@@ -253,6 +352,9 @@ int main(int argc, char **argv)
     fall(LM_BASIS_BSPLINE2);
     bar_period(LM_BASIS_LINEAR, 0.05);
     bar_period(LM_BASIS_BSPLINE2, 0.05);
+    law_plane_strain();
+    half_symmetry(LM_BASIS_LINEAR);
+    half_symmetry(LM_BASIS_BSPLINE2);
     refusals();
     return CHECK_DONE();
 }
