@@ -189,10 +189,19 @@ static void bar_period(lm_basis basis, double h)
     int nc = 0;
     lm3_energy e0, e;
     lm3_energy_of(sim, &e0);
+    /* the total energy where all of it is kinetic (t = T/2, T, ...): the
+     * scheme staggers v and sigma by a step, so in between the sum swings
+     * by up to omega dt (1.6 % here) and says nothing */
+    double next_half = 0.5 * T, drift = 0;
     while (sim->t < 2.6 * T && nc < 8) {
         if (lm3_step(sim) != LM_OK) {
             CHECK(0);
             break;
+        }
+        if (sim->t >= next_half) {
+            lm3_energy_of(sim, &e);
+            drift = fmax(drift, fabs(e.total - e0.total) / e0.total);
+            next_half += 0.5 * T;
         }
         double P[3];
         lm3_momentum(sim, P);
@@ -201,13 +210,17 @@ static void bar_period(lm_basis basis, double h)
         prev = P[0];
         tprev = sim->t;
     }
-    lm3_energy_of(sim, &e);
     double Tm = nc >= 5 ? (cross[4] - cross[0]) / 2 : 0;
     printf("bar %s: %ld particles, h %g, period %.6g s, 4L/c %.6g s, error %.3f %%, energy "
-           "%.6g -> %.6g J\n", basis == LM_BASIS_LINEAR ? "trilinear" : "bspline2", n, h, Tm, T,
-           100 * (Tm - T) / T, e0.total, e.total);
+           "%.6g J, at the kinetic maxima within %.3f %%\n",
+           basis == LM_BASIS_LINEAR ? "trilinear" : "bspline2", n, h, Tm, T,
+           100 * (Tm - T) / T, e0.total, 100 * drift);
     CHECK(nc >= 5);
     CHECK_NEAR(Tm, T, 0.01 * T);
+    /* measured 0.09 % (trilinear), 0.15 % (B-spline) by 2.5 T; the
+     * trilinear one halves with dt (an O(dt) drift of the scheme: 0.035 %
+     * at dt c / h = 0.1); held to 0.2 % */
+    CHECK(drift < 2e-3);
     lm3_sim_free(sim);
 }
 
