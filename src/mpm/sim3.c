@@ -59,6 +59,10 @@ static int def_ok(const lm3_def *d, int n[3], char *err, size_t len)
             snprintf(err, len, "boundary.%s: must be fixed, symmetry or free", face_name[f]);
             return 0;
         }
+    if (!(d->courant >= 0) || !isfinite(d->courant)) {
+        snprintf(err, len, "courant = %g: must be a positive number", d->courant);
+        return 0;
+    }
     for (int a = 0; a < 3; a++)
         if (!isfinite(d->gravity[a])) {
             snprintf(err, len, "gravity: component %d is not finite", a + 1);

@@ -3,6 +3,7 @@
  * 10-13 for MUSL, [N] §7 for USL). The weights are those at x^k, rebuilt
  * from the particle's place in each pass (sim3_shape.c). */
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "mpm3.h"
@@ -281,29 +282,73 @@ static int step_stress(lm3_sim *sim)
 }
 
 /* Every particle finite and inside the grid (the stencils of the next
- * step must lie on it). */
-static lm_status check(const lm3_sim *sim)
+ * step must lie on it); the message names the particle, where and when. */
+static lm_status check(lm3_sim *sim)
 {
     const lm3_particles *p = &sim->p;
     const lm3_grid *g = &sim->grid;
     for (size_t q = 0; q < p->n; q++)
         for (int a = 0; a < 3; a++) {
             double x = p->x[a][q];
-            if (!isfinite(x) || !isfinite(p->v[a][q])) return LM_ERR_UNSTABLE;
-            if (!(x >= g->lo[a] && x <= g->lo[a] + g->n[a] * g->h)) return LM_ERR_DOMAIN;
+            if (!isfinite(x) || !isfinite(p->v[a][q])) {
+                snprintf(sim->err, sizeof sim->err,
+                         "t = %g (step %ld): particle %zu has a non-finite position or "
+                         "velocity: unstable (dt above the stable step?)", sim->t, sim->nstep, q);
+                return LM_ERR_UNSTABLE;
+            }
+            if (!(x >= g->lo[a] && x <= g->lo[a] + g->n[a] * g->h)) {
+                snprintf(sim->err, sizeof sim->err,
+                         "t = %g (step %ld): particle %zu left the grid at %c = %g "
+                         "(the domain is %g to %g)", sim->t, sim->nstep, q, "xyz"[a], x,
+                         g->lo[a], g->lo[a] + g->n[a] * g->h);
+                return LM_ERR_DOMAIN;
+            }
         }
     return LM_OK;
 }
 
+double lm3_courant_limit(const lm3_sim *sim)
+{
+    double c = sim->def.courant > 0 ? sim->def.courant : 1.0;
+    return c * LM3_COURANT_FACTOR * (sim->def.scheme == LM_USL ? LM_USL_COURANT : 1);
+}
+
+double lm3_courant(const lm3_sim *sim, double *c_max)
+{
+    double c = 0;
+    for (int k = 0; k < sim->nmat; k++) {
+        const lm3_material *m = &sim->mats[k];
+        double G = m->E / (2 * (1 + m->nu)), lam = m->E * m->nu / ((1 + m->nu) * (1 - 2 * m->nu));
+        double ck = sqrt((lam + 2 * G) / m->rho);
+        if (ck > c) c = ck;
+    }
+    if (c_max) *c_max = c;
+    return sim->def.dt * c / sim->grid.h;
+}
+
 lm_status lm3_step(lm3_sim *sim)
 {
+    if (sim->nstep == 0) {
+        double c, cn = lm3_courant(sim, &c), lim = lm3_courant_limit(sim);
+        if (cn > lim) {
+            snprintf(sim->err, sizeof sim->err,
+                     "dt = %g: the Courant number dt c / h = %g (c = %g, h = %g) is above the "
+                     "limit %g; take dt <= %g or raise courant", sim->def.dt, cn, c,
+                     sim->grid.h, lim, lim * sim->grid.h / c);
+            return LM_ERR_INPUT;
+        }
+    }
     lm_status st = check(sim);
     if (st != LM_OK) return st;
     step_p2g_forces(sim);
     step_grid_update(sim);
     step_g2p_remap(sim);
     step_strain_velocity(sim);
-    if (!step_stress(sim)) return LM_ERR_UNSTABLE;
+    if (!step_stress(sim)) {
+        snprintf(sim->err, sizeof sim->err, "t = %g (step %ld): a particle's volume went to "
+                 "nothing (1 + tr de <= 0): unstable", sim->t, sim->nstep);
+        return LM_ERR_UNSTABLE;
+    }
     sim->nstep++;
     sim->t = sim->nstep * sim->def.dt;   /* from the count, as in 2D */
     return check(sim);

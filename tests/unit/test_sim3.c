@@ -345,6 +345,25 @@ static void refusals(void)
     lm_status st = LM_OK;
     for (int k = 0; k < 10 && st == LM_OK; k++) st = lm3_step(sim);
     CHECK(st == LM_ERR_DOMAIN);
+    CHECK(strstr(sim->err, "particle 0 left the grid at x = 1.0") != NULL);
+    lm3_sim_free(sim);
+    /* dt above the Courant limit: refused before the first step, naming
+     * the limit and the largest dt. c = sqrt((lambda + 2G) / rho) =
+     * 36.7 m/s; dt c / h = 0.734 > 1 / sqrt(3) */
+    d = make_def(LM_BASIS_LINEAR, 0.1, 2e-3);
+    sim = lm3_sim_create(&d, err, sizeof err);
+    m = lm3_material_add(sim, &ok, err, sizeof err);
+    double xc[3] = {0.53, 0.47, 0.51}, v0[3] = {0, 0, 0};
+    CHECK(lm3_particle_add(sim, m, xc, v0, 1e-3) == LM_OK);
+    double c;
+    CHECK_NEAR(lm3_courant(sim, &c), 2e-3 * sqrt(1e6 * 0.7 / (1.3 * 0.4) / 1000) / 0.1, 1e-12);
+    CHECK(lm3_step(sim) == LM_ERR_INPUT);
+    CHECK(strstr(sim->err, "above the limit 0.57735") != NULL);
+    CHECK(sim->nstep == 0);
+    sim->def.courant = 1.3;   /* a script's courant = 1.3 lets it run */
+    st = lm3_step(sim);
+    if (st != LM_OK) fprintf(stderr, "%s\n", sim->err);
+    CHECK(st == LM_OK);
     lm3_sim_free(sim);
 }
 

@@ -39,7 +39,17 @@ typedef struct lm3_def {
     lm_scheme scheme;      /* LM_MUSL (default) or LM_USL */
     double gravity[3];
     lm_bc bc[LM3_FACES];   /* per face, LM3_XLO ... LM3_ZHI */
+    double courant;        /* the largest dt c / h accepted (times the factors
+                              below); 0 means the 2D default, 1 */
 } lm3_def;
+
+/* The 3D grid's fastest mode runs along the cube's diagonal: for the
+ * lumped-mass explicit scheme its frequency is sqrt(3) times the 1D one
+ * (the three directions' contributions add in omega^2), so the 1D limit
+ * that `courant` is stated for (docs/decisions.md "Shape functions")
+ * shrinks by 1/sqrt(3). A bound, not yet a measurement (docs/3d.md
+ * "Order of work"). USL's factor is the 2D one, LM_USL_COURANT. */
+#define LM3_COURANT_FACTOR 0.57735026918962576
 
 /* The isotropic linear elastic solid ([F] eqs 18-20 in their 3D form). */
 typedef struct lm3_material {
@@ -81,6 +91,7 @@ typedef struct lm3_sim {
     int nmat;
     long nstep;
     double t;
+    char err[256];         /* why the last call failed */
 } lm3_sim;
 
 typedef struct lm3_energy {
@@ -102,8 +113,16 @@ lm_status lm3_particle_add(lm3_sim *sim, int mat, const double x[3], const doubl
 long lm3_seed_box(lm3_sim *sim, int mat, const double lo[3], const double hi[3], int k,
                   const double v[3]);
 /* One step (docs/3d.md "The step"); LM_ERR_DOMAIN when a particle left the
- * grid, LM_ERR_UNSTABLE at NaN or a cell compressed to nothing. */
+ * grid, LM_ERR_UNSTABLE at NaN or a cell compressed to nothing, and before
+ * the first step LM_ERR_INPUT when dt is above the Courant limit; sim->err
+ * names the time, the step, the particle and the numbers. */
 lm_status lm3_step(lm3_sim *sim);
+/* dt c_max / h, c_max the fastest material's dilatational wave speed
+ * sqrt((lambda + 2 G) / rho) (docs/physics.md §5 in 3D); and the largest
+ * value the run accepts: courant x LM3_COURANT_FACTOR (x LM_USL_COURANT
+ * under USL). */
+double lm3_courant(const lm3_sim *sim, double *c_max);
+double lm3_courant_limit(const lm3_sim *sim);
 
 void lm3_energy_of(const lm3_sim *sim, lm3_energy *e);
 void lm3_momentum(const lm3_sim *sim, double P[3]);
