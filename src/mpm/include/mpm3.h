@@ -43,13 +43,16 @@ typedef struct lm3_def {
                               below); 0 means the 2D default, 1 */
 } lm3_def;
 
-/* The 3D grid's fastest mode runs along the cube's diagonal: for the
- * lumped-mass explicit scheme its frequency is sqrt(3) times the 1D one
- * (the three directions' contributions add in omega^2), so the 1D limit
- * that `courant` is stated for (docs/decisions.md "Shape functions")
- * shrinks by 1/sqrt(3). A bound, not yet a measurement (docs/3d.md
- * "Order of work"). USL's factor is the 2D one, LM_USL_COURANT. */
-#define LM3_COURANT_FACTOR 0.57735026918962576
+/* The 3D limit relative to the 1D one that `courant` is stated for
+ * (docs/decisions.md "Shape functions"). One might expect 1/sqrt(3) (the
+ * fastest mode along the cube's diagonal); measured, it is not needed: the
+ * largest stable dt c / h of a block filling a fixed box, random
+ * velocities, 600 steps (`test_sim3 courant_scan`, docs/3d.md) is under
+ * MUSL linear 2.05 / 1.80 at 1 / 8 points per cell, bspline2 2.05 / 2.40,
+ * under USL 0.75 / 0.75 and 0.75 / 1.30 - the 1D bar's numbers (linear
+ * 1.97 / 1.72, bspline2 1.99 / 2.30, USL 0.75). So 1, as in 2D; USL's
+ * factor is the 2D one, LM_USL_COURANT. */
+#define LM3_COURANT_FACTOR 1.0
 
 /* The isotropic linear elastic solid ([F] eqs 18-20 in their 3D form). */
 typedef struct lm3_material {
