@@ -110,9 +110,10 @@ int lm3_material_add(lm3_sim *sim, const lm3_material *mat, char *err, size_t er
 /* One particle of volume V at x with velocity v. */
 lm_status lm3_particle_add(lm3_sim *sim, int mat, const double x[3], const double v[3],
                            double V);
-/* The box [lo, hi] filled with k x k x k particles a cell (cell-centred in
- * each sub-cell, the papers' counting), velocity v: the count added, or -1
- * (out of memory or outside the domain). */
+/* The box [lo, hi] filled with k x k x k particles a cell (at the centres
+ * of the sub-cells that lie in the box and the domain, the papers'
+ * counting), velocity v: the count added (0 when none), or -1 when k is
+ * not in 1..8 or memory ran out. */
 long lm3_seed_box(lm3_sim *sim, int mat, const double lo[3], const double hi[3], int k,
                   const double v[3]);
 /* One step (docs/3d.md "The step"); LM_ERR_DOMAIN when a particle left the
