@@ -28,34 +28,43 @@ static inline int lm_k_segment_point(const lm_sim *sim, size_t q)
     return bd->membrane && bd->force == LM_MFORCE_SEGMENT;
 }
 
-/* Particle q's weights (gradients) for a stencil W wide: the bilinear
- * ones rebuilt into buf from its place in the cell (step.h), the 3 x 3
- * ones where lm_step_shape stored them. */
+/* Particle q's weights (gradients) for a stencil W wide: the bilinear and
+ * B-spline ones rebuilt into buf from the point's place (step.h), uGIMP's
+ * where lm_step_shape stored them (p->N is NULL for the other two: one
+ * well-predicted test a particle). */
 static LM_FORCE_INLINE const double *lm_k_weights_N(const lm_particles *p, size_t q,
-                                                    const int W, double buf[4])
+                                                    const int W, double buf[9])
 {
-    if (W != 2) return p->N + (size_t)(W * W) * q;
-    lm_bilinear_N(p->xi[q], p->eta[q], buf);
+    if (W == 2) {
+        lm_bilinear_N(p->xi[q], p->eta[q], buf);
+        return buf;
+    }
+    if (p->N) return p->N + (size_t)(W * W) * q;
+    lm_bspline2_N(p->xi[q], p->eta[q], buf);
     return buf;
 }
 /* rx = 1 / hx, ry = 1 / hy, the caller's for all its points */
 static LM_FORCE_INLINE void lm_k_weights_G(const lm_particles *p, size_t q, const int W,
-                                           double rx, double ry, double gx[4], double gy[4],
+                                           double rx, double ry, double gx[9], double gy[9],
                                            const double **Gx, const double **Gy)
 {
-    if (W != 2) {
+    if (W == 2) {
+        lm_bilinear_G_r(rx, ry, p->xi[q], p->eta[q], gx, gy);
+    } else if (p->Gx) {
         *Gx = p->Gx + (size_t)(W * W) * q;
         *Gy = p->Gy + (size_t)(W * W) * q;
         return;
+    } else {
+        lm_bspline2_G_r(rx, ry, p->xi[q], p->eta[q], gx, gy);
     }
-    lm_bilinear_G_r(rx, ry, p->xi[q], p->eta[q], gx, gy);
     *Gx = gx;
     *Gy = gy;
 }
 
 /* Particle q's place in the grid at its present position (the step's
  * shape pass, step 0): the bilinear basis keeps the lower-left node and
- * (xi, eta), the 3 x 3 bases their 9 weights and gradients. */
+ * (xi, eta), the B-spline the lower-left node and the offsets from the
+ * nearest node, uGIMP its 9 weights and gradients. */
 static LM_FORCE_INLINE void lm_k_shape(const lm_sim *sim, lm_particles *p, size_t q,
                                        double rx, double ry)
 {
@@ -69,8 +78,7 @@ static LM_FORCE_INLINE void lm_k_shape(const lm_sim *sim, lm_particles *p, size_
                       &p->Gx[9 * q], &p->Gy[9 * q]);
         break;
     case LM_BASIS_BSPLINE2:
-        lm_shape_bspline2(g, p->x[q], p->y[q], &p->node[q], &p->N[9 * q], &p->Gx[9 * q],
-                          &p->Gy[9 * q]);
+        lm_bspline2_place(g, rx, ry, p->x[q], p->y[q], &p->node[q], &p->xi[q], &p->eta[q]);
         break;
     }
 }
@@ -92,18 +100,18 @@ static LM_FORCE_INLINE double *lm_k_at(double *f, double *c, long j, long lo,
  * The particle's values are read into locals once: the nodal sums are
  * doubles too, so the compiler could not otherwise keep them in registers
  * across the stores. */
-static LM_FORCE_INLINE void lm_k_scatter_mass_forces(const lm_sim *sim, size_t q, double rx,
-                                                     double ry, double *const *f,
-                                                     double *const *c, long lo,
-                                                     unsigned long span, const int W,
-                                                     const int split, const int segs)
+/* ... with the weights wt given (Gx, Gy unread at a segment point) */
+static LM_FORCE_INLINE void lm_k_scatter_mass_forces_w(const lm_sim *sim, size_t q,
+                                                       const lm_weights *wt,
+                                                       double *const *f, double *const *c,
+                                                       long lo, unsigned long span,
+                                                       const int W, const int split,
+                                                       const int seg)
 {
     const lm_grid *g = &sim->grid;
     const lm_particles *p = &sim->p;
-    double Nl[4], Gxl[4], Gyl[4];
     const double m = p->m[q], vx = p->vx[q], vy = p->vy[q];
-    const double *N = lm_k_weights_N(p, q, W, Nl), *Gx = NULL, *Gy = NULL;
-    const int seg = segs && lm_k_segment_point(sim, q);
+    const double *N = wt->N, *Gx = wt->Gx, *Gy = wt->Gy;
     double V = 0, sxx = 0, syy = 0, sxy = 0, fpx = 0, fpy = 0;
     if (seg) {
         fpx = p->fpx[q];
@@ -113,7 +121,6 @@ static LM_FORCE_INLINE void lm_k_scatter_mass_forces(const lm_sim *sim, size_t q
         sxx = p->sxx[q];
         syy = p->syy[q];
         sxy = p->sxy[q];
-        lm_k_weights_G(p, q, W, rx, ry, Gxl, Gyl, &Gx, &Gy);
     }
     for (int b = 0; b < W; b++) {
         const long row = lm_stencil_row(g, p->node[q], b);
@@ -138,6 +145,21 @@ static LM_FORCE_INLINE void lm_k_scatter_mass_forces(const lm_sim *sim, size_t q
     }
 }
 
+static LM_FORCE_INLINE void lm_k_scatter_mass_forces(const lm_sim *sim, size_t q, double rx,
+                                                     double ry, double *const *f,
+                                                     double *const *c, long lo,
+                                                     unsigned long span, const int W,
+                                                     const int split, const int segs)
+{
+    const lm_particles *p = &sim->p;
+    const int seg = segs && lm_k_segment_point(sim, q);
+    lm_weights wt;
+    wt.N = lm_k_weights_N(p, q, W, wt.n);
+    wt.Gx = wt.Gy = NULL;
+    if (!seg) lm_k_weights_G(p, q, W, rx, ry, wt.gx, wt.gy, &wt.Gx, &wt.Gy);
+    lm_k_scatter_mass_forces_w(sim, q, &wt, f, c, lo, span, W, split, seg);
+}
+
 /* Step 1 at particle q (mass = 1): m_p N_ip and m_p v_p N_ip added into
  * (f[0], f[1], f[2]); the MUSL re-map (mass = 0, [M] eqs 12-13): m_p v_p
  * N_ip into (f[0], f[1]); or into the copies c where another thread
@@ -149,7 +171,7 @@ static LM_FORCE_INLINE void lm_k_scatter_momentum(const lm_sim *sim, size_t q,
 {
     const lm_grid *g = &sim->grid;
     const lm_particles *p = &sim->p;
-    double Nl[4];
+    double Nl[9];
     const double m = p->m[q], vx = p->vx[q], vy = p->vy[q];
     const double *N = lm_k_weights_N(p, q, W, Nl);
     double *const *fp = mass ? f + 1 : f, *const *cp = split && mass ? c + 1 : c;
@@ -168,13 +190,21 @@ static LM_FORCE_INLINE void lm_k_scatter_momentum(const lm_sim *sim, size_t q,
  * accelerations (ax, ay), optionally blended with the PIC velocity
  * sum_i N_ip v_i^L (pic = 0, the papers' scheme, by default), position
  * from the Lagrangian grid velocity (ux, uy). */
-static LM_FORCE_INLINE void lm_k_g2p(const lm_grid *g, lm_particles *p, size_t q, double dt,
-                                     double pic, const double *gax, const double *gay,
-                                     const double *gux, const double *guy, const int W)
+/* Step 4's end at particle q from the gathered a (ax, ay) and v^L (ux, uy). */
+static LM_FORCE_INLINE void lm_k_g2p_end(lm_particles *p, size_t q, double dt, double pic,
+                                         double ax, double ay, double ux, double uy)
+{
+    p->vx[q] = (1 - pic) * (p->vx[q] + dt * ax) + pic * ux;
+    p->vy[q] = (1 - pic) * (p->vy[q] + dt * ay) + pic * uy;
+    p->x[q] += dt * ux;
+    p->y[q] += dt * uy;
+}
+static LM_FORCE_INLINE void lm_k_g2p_w(const lm_grid *g, lm_particles *p, size_t q,
+                                       const double *N, double dt, double pic,
+                                       const double *gax, const double *gay,
+                                       const double *gux, const double *guy, const int W)
 {
     const int NS = W * W;
-    double Nl[4];
-    const double *N = lm_k_weights_N(p, q, W, Nl);
     double ax = 0, ay = 0, ux = 0, uy = 0;
     if (W == 2) {
         /* one running sum over the corners: the papers' code path, to the
@@ -206,22 +236,24 @@ static LM_FORCE_INLINE void lm_k_g2p(const lm_grid *g, lm_particles *p, size_t q
             uy += ruy;
         }
     }
-    p->vx[q] = (1 - pic) * (p->vx[q] + dt * ax) + pic * ux;
-    p->vy[q] = (1 - pic) * (p->vy[q] + dt * ay) + pic * uy;
-    p->x[q] += dt * ux;
-    p->y[q] += dt * uy;
+    lm_k_g2p_end(p, q, dt, pic, ax, ay, ux, uy);
+}
+static LM_FORCE_INLINE void lm_k_g2p(const lm_grid *g, lm_particles *p, size_t q, double dt,
+                                     double pic, const double *gax, const double *gay,
+                                     const double *gux, const double *guy, const int W)
+{
+    double Nl[9];
+    lm_k_g2p_w(g, p, q, lm_k_weights_N(p, q, W, Nl), dt, pic, gax, gay, gux, guy, W);
 }
 
 /* L = sum_i v_i (x) G_ip (L = dv/dx) at particle q from the nodal
  * velocities (vx, vy), stencil W wide. */
-static LM_FORCE_INLINE void lm_k_velocity_gradient(const lm_grid *g, const lm_particles *p,
-                                                   size_t q, const double *gvx,
-                                                   const double *gvy, double L[4], double rx,
-                                                   double ry, const int W)
+static LM_FORCE_INLINE void lm_k_velocity_gradient_w(const lm_grid *g, const lm_particles *p,
+                                                     size_t q, const double *Gx,
+                                                     const double *Gy, const double *gvx,
+                                                     const double *gvy, double L[4],
+                                                     const int W)
 {
-    double Gxl[4], Gyl[4];
-    const double *Gx, *Gy;
-    lm_k_weights_G(p, q, W, rx, ry, Gxl, Gyl, &Gx, &Gy);
     double Lxx = 0, Lxy = 0, Lyx = 0, Lyy = 0;
     for (int b = 0; b < W; b++) {
         const long row = lm_stencil_row(g, p->node[q], b);
@@ -235,6 +267,16 @@ static LM_FORCE_INLINE void lm_k_velocity_gradient(const lm_grid *g, const lm_pa
         }
     }
     L[0] = Lxx; L[1] = Lxy; L[2] = Lyx; L[3] = Lyy;
+}
+static LM_FORCE_INLINE void lm_k_velocity_gradient(const lm_grid *g, const lm_particles *p,
+                                                   size_t q, const double *gvx,
+                                                   const double *gvy, double L[4], double rx,
+                                                   double ry, const int W)
+{
+    double Gxl[9], Gyl[9];
+    const double *Gx, *Gy;
+    lm_k_weights_G(p, q, W, rx, ry, Gxl, Gyl, &Gx, &Gy);
+    lm_k_velocity_gradient_w(g, p, q, Gx, Gy, gvx, gvy, L, W);
 }
 
 /* The domain the check holds the particles to, worked out once a pass
