@@ -100,18 +100,18 @@ static LM_FORCE_INLINE double *lm_k_at(double *f, double *c, long j, long lo,
  * The particle's values are read into locals once: the nodal sums are
  * doubles too, so the compiler could not otherwise keep them in registers
  * across the stores. */
-/* ... with the weights wt given (Gx, Gy unread at a segment point) */
-static LM_FORCE_INLINE void lm_k_scatter_mass_forces_w(const lm_sim *sim, size_t q,
-                                                       const lm_weights *wt,
-                                                       double *const *f, double *const *c,
-                                                       long lo, unsigned long span,
-                                                       const int W, const int split,
-                                                       const int seg)
+static LM_FORCE_INLINE void lm_k_scatter_mass_forces(const lm_sim *sim, size_t q, double rx,
+                                                     double ry, double *const *f,
+                                                     double *const *c, long lo,
+                                                     unsigned long span, const int W,
+                                                     const int split, const int segs)
 {
     const lm_grid *g = &sim->grid;
     const lm_particles *p = &sim->p;
+    double Nl[9], Gxl[9], Gyl[9];
     const double m = p->m[q], vx = p->vx[q], vy = p->vy[q];
-    const double *N = wt->N, *Gx = wt->Gx, *Gy = wt->Gy;
+    const double *N = lm_k_weights_N(p, q, W, Nl), *Gx = NULL, *Gy = NULL;
+    const int seg = segs && lm_k_segment_point(sim, q);
     double V = 0, sxx = 0, syy = 0, sxy = 0, fpx = 0, fpy = 0;
     if (seg) {
         fpx = p->fpx[q];
@@ -121,6 +121,7 @@ static LM_FORCE_INLINE void lm_k_scatter_mass_forces_w(const lm_sim *sim, size_t
         sxx = p->sxx[q];
         syy = p->syy[q];
         sxy = p->sxy[q];
+        lm_k_weights_G(p, q, W, rx, ry, Gxl, Gyl, &Gx, &Gy);
     }
     for (int b = 0; b < W; b++) {
         const long row = lm_stencil_row(g, p->node[q], b);
@@ -143,21 +144,6 @@ static LM_FORCE_INLINE void lm_k_scatter_mass_forces_w(const lm_sim *sim, size_t
             }
         }
     }
-}
-
-static LM_FORCE_INLINE void lm_k_scatter_mass_forces(const lm_sim *sim, size_t q, double rx,
-                                                     double ry, double *const *f,
-                                                     double *const *c, long lo,
-                                                     unsigned long span, const int W,
-                                                     const int split, const int segs)
-{
-    const lm_particles *p = &sim->p;
-    const int seg = segs && lm_k_segment_point(sim, q);
-    lm_weights wt;
-    wt.N = lm_k_weights_N(p, q, W, wt.n);
-    wt.Gx = wt.Gy = NULL;
-    if (!seg) lm_k_weights_G(p, q, W, rx, ry, wt.gx, wt.gy, &wt.Gx, &wt.Gy);
-    lm_k_scatter_mass_forces_w(sim, q, &wt, f, c, lo, span, W, split, seg);
 }
 
 /* Step 1 at particle q (mass = 1): m_p N_ip and m_p v_p N_ip added into
@@ -190,21 +176,13 @@ static LM_FORCE_INLINE void lm_k_scatter_momentum(const lm_sim *sim, size_t q,
  * accelerations (ax, ay), optionally blended with the PIC velocity
  * sum_i N_ip v_i^L (pic = 0, the papers' scheme, by default), position
  * from the Lagrangian grid velocity (ux, uy). */
-/* Step 4's end at particle q from the gathered a (ax, ay) and v^L (ux, uy). */
-static LM_FORCE_INLINE void lm_k_g2p_end(lm_particles *p, size_t q, double dt, double pic,
-                                         double ax, double ay, double ux, double uy)
-{
-    p->vx[q] = (1 - pic) * (p->vx[q] + dt * ax) + pic * ux;
-    p->vy[q] = (1 - pic) * (p->vy[q] + dt * ay) + pic * uy;
-    p->x[q] += dt * ux;
-    p->y[q] += dt * uy;
-}
-static LM_FORCE_INLINE void lm_k_g2p_w(const lm_grid *g, lm_particles *p, size_t q,
-                                       const double *N, double dt, double pic,
-                                       const double *gax, const double *gay,
-                                       const double *gux, const double *guy, const int W)
+static LM_FORCE_INLINE void lm_k_g2p(const lm_grid *g, lm_particles *p, size_t q, double dt,
+                                     double pic, const double *gax, const double *gay,
+                                     const double *gux, const double *guy, const int W)
 {
     const int NS = W * W;
+    double Nl[9];
+    const double *N = lm_k_weights_N(p, q, W, Nl);
     double ax = 0, ay = 0, ux = 0, uy = 0;
     if (W == 2) {
         /* one running sum over the corners: the papers' code path, to the
@@ -236,24 +214,22 @@ static LM_FORCE_INLINE void lm_k_g2p_w(const lm_grid *g, lm_particles *p, size_t
             uy += ruy;
         }
     }
-    lm_k_g2p_end(p, q, dt, pic, ax, ay, ux, uy);
-}
-static LM_FORCE_INLINE void lm_k_g2p(const lm_grid *g, lm_particles *p, size_t q, double dt,
-                                     double pic, const double *gax, const double *gay,
-                                     const double *gux, const double *guy, const int W)
-{
-    double Nl[9];
-    lm_k_g2p_w(g, p, q, lm_k_weights_N(p, q, W, Nl), dt, pic, gax, gay, gux, guy, W);
+    p->vx[q] = (1 - pic) * (p->vx[q] + dt * ax) + pic * ux;
+    p->vy[q] = (1 - pic) * (p->vy[q] + dt * ay) + pic * uy;
+    p->x[q] += dt * ux;
+    p->y[q] += dt * uy;
 }
 
 /* L = sum_i v_i (x) G_ip (L = dv/dx) at particle q from the nodal
  * velocities (vx, vy), stencil W wide. */
-static LM_FORCE_INLINE void lm_k_velocity_gradient_w(const lm_grid *g, const lm_particles *p,
-                                                     size_t q, const double *Gx,
-                                                     const double *Gy, const double *gvx,
-                                                     const double *gvy, double L[4],
-                                                     const int W)
+static LM_FORCE_INLINE void lm_k_velocity_gradient(const lm_grid *g, const lm_particles *p,
+                                                   size_t q, const double *gvx,
+                                                   const double *gvy, double L[4], double rx,
+                                                   double ry, const int W)
 {
+    double Gxl[9], Gyl[9];
+    const double *Gx, *Gy;
+    lm_k_weights_G(p, q, W, rx, ry, Gxl, Gyl, &Gx, &Gy);
     double Lxx = 0, Lxy = 0, Lyx = 0, Lyy = 0;
     for (int b = 0; b < W; b++) {
         const long row = lm_stencil_row(g, p->node[q], b);
@@ -267,16 +243,6 @@ static LM_FORCE_INLINE void lm_k_velocity_gradient_w(const lm_grid *g, const lm_
         }
     }
     L[0] = Lxx; L[1] = Lxy; L[2] = Lyx; L[3] = Lyy;
-}
-static LM_FORCE_INLINE void lm_k_velocity_gradient(const lm_grid *g, const lm_particles *p,
-                                                   size_t q, const double *gvx,
-                                                   const double *gvy, double L[4], double rx,
-                                                   double ry, const int W)
-{
-    double Gxl[9], Gyl[9];
-    const double *Gx, *Gy;
-    lm_k_weights_G(p, q, W, rx, ry, Gxl, Gyl, &Gx, &Gy);
-    lm_k_velocity_gradient_w(g, p, q, Gx, Gy, gvx, gvy, L, W);
 }
 
 /* The domain the check holds the particles to, worked out once a pass
