@@ -23,7 +23,9 @@
  * Not part of lamina's build. Build and run, beside lamina's bench:
  *   gcc -O3 -ffp-contract=off -o /tmp/loop_ceiling scripts/measure/loop_ceiling.c -lm
  *   /tmp/loop_ceiling 0.005 300
- * prints M particle-steps/s and the state hash of each. */
+ * prints M particle-steps/s and the state hash of each. dt is 1e-3 at
+ * h = 0.005, in proportion at other cells; a run whose points leave the
+ * grid stops with a message (checked between the timed steps). */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -62,7 +64,11 @@ static void setup(prob *P, double h)
 {
     memset(P, 0, sizeof *P);
     double E = 1000, nu = 0.3, rho0 = 1000;
-    P->h = h; P->ih = 1 / h; P->dt = 1e-3;
+    /* ref_usl's dt = 1e-3 at h = 0.005 (dt c / h = 0.23), and the same
+     * Courant number at other cells: with dt = 1e-3 fixed, h = 0.00224
+     * (dt c / h = 0.52) grew unstable within 100 steps and a point left
+     * the grid (the scatter then wrote outside the nodal arrays) */
+    P->h = h; P->ih = 1 / h; P->dt = 1e-3 * h / 0.005;
     P->lam = E * nu / ((1 + nu) * (1 - 2 * nu));
     P->mu = E / (2 * (1 + nu));
     P->nx = (int)(1.0 / h + 0.5);
@@ -332,6 +338,16 @@ static uint64_t hash(const prob *P)
     return h;
 }
 
+/* Every point inside the grid's cells [0, nx h)^2, where the stencils
+ * stay within the nodal arrays? */
+static int inside(const prob *P)
+{
+    double e = P->nx * P->h;
+    for (size_t q = 0; q < P->n; q++)
+        if (!(P->x[q] >= 0 && P->x[q] < e && P->y[q] >= 0 && P->y[q] < e)) return 0;
+    return 1;
+}
+
 int main(int argc, char **argv)
 {
     double h = argc > 1 ? atof(argv[1]) : 0.005;
@@ -344,9 +360,18 @@ int main(int argc, char **argv)
         setup(&P, h);
         if (v > 0 && v < 4)   /* the first step's sums, for the fused passes to take up */
             for (size_t q = 0; q < P.n; q++) scatter_one(&P, q, P.f);
-        double t0 = now();
-        for (int s = 0; s < steps; s++) fn[v](&P);
-        double t1 = now();
+        double t0 = now(), out = 0;   /* out: the checks' time, not the steps' */
+        for (int s = 0; s < steps; s++) {
+            fn[v](&P);
+            double c0 = now();
+            if (!inside(&P)) {
+                fprintf(stderr, "loop_ceiling: %s: a point left the grid at step %d (h %g, "
+                        "dt %g): unstable\n", names[v], s + 1, h, P.dt);
+                return 1;
+            }
+            out += now() - c0;
+        }
+        double t1 = now() - out;
         double dx = 0, ds = 0, smax = 0;
         if (!x0) {
             x0 = P.x;

@@ -16,6 +16,12 @@ void bench_set_basis(lm_basis b);
 /* bench engine's gas-filled quarter membrane (connectivity normals, MUSL)
  * at about `particles` particles, or NULL. */
 lm_sim *bench_gas_membrane(double particles);
+/* The plain loop (bench_plain.c: ref_usl's USL step on bench engine's
+ * disks, bilinear) at about `particles` particles for about `work`
+ * particle-steps: particle-steps per wall-clock second (per second of
+ * the process's CPU time into *cpu_rate), the particles in *np; -1 out of
+ * memory. */
+double bench_plain_rate(double particles, double work, size_t *np, double *cpu_rate);
 /* `lamina bench roofline` (bench_roofline.c) */
 int bench_roofline(int argc, char **argv);
 /* One-core triad a[i] = b[i] + s c[i] over n doubles an array, best of

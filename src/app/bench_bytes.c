@@ -66,23 +66,24 @@ static size_t elem_bytes(int a, int ns)
 static void rd(pass *s, int a) { s->r[a] = 1; }
 static void wr(pass *s, int a) { s->w[a] = 1; }
 
-/* The shape the kernels read: weights N (bilinear: rebuilt from xi, eta). */
+/* The shape the kernels read: weights N (bilinear and quadratic B-spline:
+ * rebuilt from the place xi, eta; uGIMP: stored). */
 static void read_N(pass *s, lm_basis b)
 {
     rd(s, A_NODE);
-    if (b == LM_BASIS_LINEAR) { rd(s, A_XI); rd(s, A_ETA); } else rd(s, A_N);
+    if (b != LM_BASIS_GIMP) { rd(s, A_XI); rd(s, A_ETA); } else rd(s, A_N);
 }
 static void read_G(pass *s, lm_basis b)
 {
     rd(s, A_NODE);
-    if (b == LM_BASIS_LINEAR) { rd(s, A_XI); rd(s, A_ETA); } else { rd(s, A_GX); rd(s, A_GY); }
+    if (b != LM_BASIS_GIMP) { rd(s, A_XI); rd(s, A_ETA); } else { rd(s, A_GX); rd(s, A_GY); }
 }
 /* lm_k_shape: x, y (uGIMP: its half-sizes) in, the stencil's shape out */
 static void shape(pass *s, lm_basis b)
 {
     rd(s, A_X); rd(s, A_Y);
     wr(s, A_NODE);
-    if (b == LM_BASIS_LINEAR) { wr(s, A_XI); wr(s, A_ETA); return; }
+    if (b != LM_BASIS_GIMP) { wr(s, A_XI); wr(s, A_ETA); return; }
     if (b == LM_BASIS_GIMP) { rd(s, A_LX); rd(s, A_LY); }
     wr(s, A_N); wr(s, A_GX); wr(s, A_GY);
 }

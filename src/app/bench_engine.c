@@ -25,7 +25,10 @@
  * machine, and compare runs of the same build. The last column is the
  * same rate per second of the process's CPU time (all threads together):
  * on a shared machine it moves less with the other jobs than the wall
- * clock does. */
+ * clock does. Each size starts with the plain loop of bench_plain.c (the
+ * disks, bilinear, USL, one thread: the issue 36 yardstick), and the last
+ * two columns are each row's rate over the plain loop's, by the wall clock
+ * and by CPU time. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -137,8 +140,9 @@ typedef lm_sim *(*builder)(double h, void *ctx);
  * simulated time would pass t_max (the disks must not collide and the USL
  * run must not grow unstable: the cost per step does not depend on it);
  * prints one row. */
+/* plain, plain_cpu: the plain loop's rates, wall clock and CPU time */
 static int time_case(const char *name, builder make, double h, void *ctx, double t_max,
-                     double work)
+                     double work, double plain, double plain_cpu)
 {
     double secs = 0, cpu = 0, done = 0;
     long steps_total = 0;
@@ -170,8 +174,9 @@ static int time_case(const char *name, builder make, double h, void *ctx, double
         lm_sim_free(sim);
         return -1;
     }
-    printf("| %-12s | %9zu | %7ld | %7.3f | %7.2f | %7.2f |\n", name, n, steps_total, secs,
-           done / secs / 1e6, done / cpu / 1e6);
+    printf("| %-12s | %9zu | %7ld | %7.3f | %7.2f | %7.2f | %5.2f | %5.2f |\n", name, n,
+           steps_total, secs, done / secs / 1e6, done / cpu / 1e6, done / secs / plain,
+           done / cpu / plain_cpu);
     fflush(stdout);
     return 0;
 }
@@ -265,19 +270,31 @@ int bench_engine(int argc, char **argv)
     }
     printf("lamina bench engine: %d thread%s, basis %s, about %.3g particle-steps per case\n\n",
            threads, threads == 1 ? "" : "s", lm_basis_name(basis), work);
-    printf("| case         | particles |   steps |       s | M p-steps/s | M p-steps/CPU-s |\n");
-    printf("|---|---:|---:|---:|---:|---:|\n");
+    printf("| case         | particles |   steps |       s | M p-steps/s | M p-steps/CPU-s | "
+           "x plain | x plain, CPU |\n");
+    printf("|---|---:|---:|---:|---:|---:|---:|---:|\n");
     int bad = 0;
     for (int k = 0; k < nsizes; k++) {
+        /* the plain loop on the same disks (bench_plain.c, bilinear, USL,
+         * one thread), the last column's yardstick: each row's wall-clock
+         * rate over its (issue 36 item 2) */
+        size_t np = 0;
+        double pc = 0, plain = bench_plain_rate(sizes[k], work, &np, &pc);
+        if (plain <= 0) {
+            fprintf(stderr, "lamina bench engine: plain loop: out of memory\n");
+            return 1;
+        }
+        printf("| %-12s | %9zu | %7s | %7s | %7.2f | %7.2f | %5.2f | %5.2f |\n", "plain loop", np,
+               "", "", plain / 1e6, pc / 1e6, 1.0, 1.0);
         /* two disks of radius 0.2, 4 ppc: about 1.005 / h^2 particles */
         double h = sqrt(1.005 / sizes[k]);
         bench_ctx musl = {&rubber, NULL, LM_MUSL, 0, LM_NORMALS_CONNECTIVITY, 0};
         bench_ctx usl = {&rubber, NULL, LM_USL, 0, LM_NORMALS_CONNECTIVITY, 0};
         bench_ctx rel = {&rubber, NULL, LM_MUSL, 1, LM_NORMALS_CONNECTIVITY, 0};
-        bad |= time_case("disks MUSL", build_disks, h, &musl, 0.8, work);
-        bad |= time_case("disks USL", build_disks, h, &usl, 0.8, work);
+        bad |= time_case("disks MUSL", build_disks, h, &musl, 0.8, work, plain, pc);
+        bad |= time_case("disks USL", build_disks, h, &usl, 0.8, work, plain, pc);
         if (basis != LM_BASIS_BSPLINE2)   /* contact refuses it (contact.c) */
-            bad |= time_case("disks release", build_disks, h, &rel, 0.8, work);
+            bad |= time_case("disks release", build_disks, h, &rel, 0.8, work, plain, pc);
         /* quarter disk of radius 0.5 at 16 ppc: about 3.14 / h^2 */
         double hg = sqrt(3.14 / sizes[k]);
         bench_ctx gm = {&air, &skin, LM_MUSL, 0, LM_NORMALS_CONNECTIVITY, 0};
@@ -290,9 +307,9 @@ int bench_engine(int argc, char **argv)
          * (0.0041 at 1e4, 0.009 at 1e3; segment forces or more points a
          * cell hold longer: docs/performance.md "The plot"), so the case
          * is rebuilt at t = 0.002, as the disks are before they meet */
-        bad |= time_case("gas+membrane", build_gas, hg, &gm, 0.002, work);
-        bad |= time_case("gas+isosurf", build_gas, hg, &gi, 0.002, work);
-        bad |= time_case("gas+mem k=16", build_gas, hg, &gs, 0.002, work);
+        bad |= time_case("gas+membrane", build_gas, hg, &gm, 0.002, work, plain, pc);
+        bad |= time_case("gas+isosurf", build_gas, hg, &gi, 0.002, work, plain, pc);
+        bad |= time_case("gas+mem k=16", build_gas, hg, &gs, 0.002, work, plain, pc);
     }
     return bad ? 1 : 0;
 }

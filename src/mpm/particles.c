@@ -8,8 +8,8 @@
 
 /* Every array, with its element size: its place in the list is its
  * offset in the page (arrays.h). The stencil's weights and gradients (N,
- * Gx, Gy) hold ns per particle and exist for the 3 x 3 bases only (lm_sim_new
- * sets ns from the basis before the first particle). */
+ * Gx, Gy) hold ns per particle and exist for uGIMP only (lm_sim_new
+ * sets ns and keep_weights from the basis before the first particle). */
 typedef struct field {
     void **a;
     size_t size;
@@ -20,7 +20,7 @@ enum { FIELDS_MAX = 32 };
 
 static int fields(lm_particles *p, field f[FIELDS_MAX])
 {
-    size_t d = sizeof(double), ns = p->ns > 4 ? (size_t)p->ns : 0;
+    size_t d = sizeof(double), ns = p->keep_weights ? (size_t)p->ns : 0;
     void **dbl[] = {(void **)&p->x, (void **)&p->y, (void **)&p->vx,
                     (void **)&p->vy, (void **)&p->m, (void **)&p->rho,
                     (void **)&p->sxx, (void **)&p->syy, (void **)&p->sxy,

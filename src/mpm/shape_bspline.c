@@ -14,20 +14,14 @@
 #include "shape_1d.h"
 #include "step.h"
 
+/* The place and the products are step.h's (lm_bspline2_place,
+ * lm_bspline2_1d): the step keeps only the place and rebuilds the weights
+ * with the same operations, so this and the step agree to the bit. */
 void lm_shape_bspline2(const lm_grid *g, double x, double y, int *node,
                        double N[9], double Gx[9], double Gy[9])
 {
-    double rx = 1.0 / g->hx, ry = 1.0 / g->hy;
-    double dx, dy, wx[3], wy[3], gx[3], gy[3];
-    int cx = lm_shape_nearest((x - g->x0) * rx, g->nx, &dx);
-    int cy = lm_shape_nearest((y - g->y0) * ry, g->ny, &dy);
-    lm_bspline2_1d(dx, rx, wx, gx);
-    lm_bspline2_1d(dy, ry, wy, gy);
-    *node = (int)lm_grid_node(g, cx - 1, cy - 1);
-    for (int b = 0; b < 3; b++)
-        for (int a = 0; a < 3; a++) {
-            N[3 * b + a] = wx[a] * wy[b];
-            Gx[3 * b + a] = gx[a] * wy[b];
-            Gy[3 * b + a] = wx[a] * gy[b];
-        }
+    double rx = 1.0 / g->hx, ry = 1.0 / g->hy, dx, dy;
+    lm_bspline2_place(g, rx, ry, x, y, node, &dx, &dy);
+    lm_bspline2_N(dx, dy, N);
+    lm_bspline2_G_r(rx, ry, dx, dy, Gx, Gy);
 }

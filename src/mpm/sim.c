@@ -129,6 +129,7 @@ lm_sim *lm_sim_new(const lm_sim_def *def, char *err, size_t errlen)
     memcpy(g->bc, def->bc, sizeof g->bc);
     lm_grid_layout(g, def->basis);
     sim->p.ns = g->sw * g->sw;
+    sim->p.keep_weights = def->basis == LM_BASIS_GIMP;
     if (grid_alloc(g)) {
         /* the message before the free: g is inside sim (the old message
          * read it after, a use-after-free ASan found once the memory cap

@@ -33,7 +33,7 @@ static void copy_particle(lm_particles *p, size_t to, size_t from)
     p->xi[to] = p->xi[from];
     p->eta[to] = p->eta[from];
     size_t ns = (size_t)p->ns;
-    if (ns > 4) {
+    if (p->N) {   /* uGIMP's stored weights */
         memcpy(&p->N[ns * to], &p->N[ns * from], ns * sizeof(double));
         memcpy(&p->Gx[ns * to], &p->Gx[ns * from], ns * sizeof(double));
         memcpy(&p->Gy[ns * to], &p->Gy[ns * from], ns * sizeof(double));

@@ -44,10 +44,10 @@ static LM_FORCE_INLINE void scatter_w(const lm_sim *sim, scatter_kind kind, size
     double *const c0 = split ? c[0] : NULL, *const c1 = split ? c[1] : NULL;
     const long lo = split ? sh->lo : 0;
     const unsigned long span = split ? (unsigned long)(sh->hi - sh->lo) : 0;
-    /* the bilinear weights are made here from the point's place in its
-     * cell (step.h), the 3 x 3 ones read */
+    /* the bilinear and B-spline weights are made here from the point's
+     * place (step.h), uGIMP's read */
     const double rx = 1.0 / g->hx, ry = 1.0 / g->hy;
-    double Nl[4], Gxl[4], Gyl[4];
+    double Nl[9], Gxl[9], Gyl[9];
     switch (kind) {
     case SCATTER_MASS_MOMENTUM:
         for (size_t q = a0; q < b0; q++)

@@ -6,6 +6,7 @@
 #include <math.h>
 
 #include "mpm.h"
+#include "shape_1d.h"  /* lm_bspline2_1d: the 1D factors, shared with 3D */
 #include "sim_work.h"   /* the scratch behind lm_sim.work */
 
 /* Bilinear basis at (x, y): lower-left node, weights and gradients in the
@@ -66,12 +67,42 @@ static inline void lm_bilinear_G(const lm_grid *g, double xi, double eta, double
     lm_bilinear_G_r(1.0 / g->hx, 1.0 / g->hy, xi, eta, Gx, Gy);
 }
 
+/* The quadratic B-spline (shape_bspline.c) split the same way: a point d
+ * cells from its nearest node (|d| <= 1/2) has the 1D weights of the nodes
+ * c-1, c, c+1, beta at d + 1, d, d - 1, and their derivatives times r =
+ * 1/h; the 2D weights are their products. Every B-spline weight in lamina
+ * is made by these products, so the place (dx, dy) kept in the particle's
+ * xi and eta and a fresh evaluation give the same bits (issue 36 item 2:
+ * 216 bytes of stored weights a particle written and read back each step,
+ * against 16). */
+static inline void lm_bspline2_N(double dx, double dy, double N[9])
+{
+    double wx[3], wy[3], gx[3], gy[3];
+    lm_bspline2_1d(dx, 1, wx, gx);
+    lm_bspline2_1d(dy, 1, wy, gy);
+    for (int b = 0; b < 3; b++)
+        for (int a = 0; a < 3; a++) N[3 * b + a] = wx[a] * wy[b];
+}
+/* rx = 1 / hx, ry = 1 / hy, the caller's */
+static inline void lm_bspline2_G_r(double rx, double ry, double dx, double dy, double Gx[9],
+                                   double Gy[9])
+{
+    double wx[3], wy[3], gx[3], gy[3];
+    lm_bspline2_1d(dx, rx, wx, gx);
+    lm_bspline2_1d(dy, ry, wy, gy);
+    for (int b = 0; b < 3; b++)
+        for (int a = 0; a < 3; a++) {
+            Gx[3 * b + a] = gx[a] * wy[b];
+            Gy[3 * b + a] = wx[a] * gy[b];
+        }
+}
+
 /* Particle q's weights (and gradients) at x^k as lm_step_shape left them:
- * pointers into the 3 x 3 bases' arrays, or the bilinear ones rebuilt in
- * the struct. */
+ * pointers into uGIMP's arrays, or the bilinear or B-spline ones rebuilt
+ * in the struct from the point's place. */
 typedef struct lm_weights {
     const double *N, *Gx, *Gy;
-    double n[4], gx[4], gy[4];
+    double n[9], gx[9], gy[9];
 } lm_weights;
 static inline void lm_weights_of(const lm_sim *sim, size_t q, lm_weights *w)
 {
@@ -79,6 +110,13 @@ static inline void lm_weights_of(const lm_sim *sim, size_t q, lm_weights *w)
     if (p->ns == 4) {
         lm_bilinear_N(p->xi[q], p->eta[q], w->n);
         lm_bilinear_G(&sim->grid, p->xi[q], p->eta[q], w->gx, w->gy);
+        w->N = w->n;
+        w->Gx = w->gx;
+        w->Gy = w->gy;
+    } else if (!p->N) {   /* the B-spline: no stored weights */
+        lm_bspline2_N(p->xi[q], p->eta[q], w->n);
+        lm_bspline2_G_r(1.0 / sim->grid.hx, 1.0 / sim->grid.hy, p->xi[q], p->eta[q], w->gx,
+                        w->gy);
         w->N = w->n;
         w->Gx = w->gx;
         w->Gy = w->gy;
@@ -131,6 +169,18 @@ static inline int lm_shape_nearest(double f, int n, double *d)
     if ((c == 0 || c == n) && fabs(*d) < 1e-9) *d = 0;
     return c;
 }
+/* The quadratic B-spline's place of a point (x, y): the stencil's
+ * lower-left node and the offsets (dx, dy) from the nearest node, in cells
+ * (rx = 1 / hx, ry = 1 / hy); lm_bspline2_N and lm_bspline2_G_r make the
+ * weights from them. */
+static inline void lm_bspline2_place(const lm_grid *g, double rx, double ry, double x,
+                                     double y, int *node, double *dx, double *dy)
+{
+    int cx = lm_shape_nearest((x - g->x0) * rx, g->nx, dx);
+    int cy = lm_shape_nearest((y - g->y0) * ry, g->ny, dy);
+    *node = (int)lm_grid_node(g, cx - 1, cy - 1);
+}
+
 void lm_step_clear(lm_sim *sim);            /* 0. empty nodal sums (step 9) */
 void lm_step_shape(lm_sim *sim);            /* N_ip, G_ip at x^k */
 void lm_step_p2g(lm_sim *sim);              /* 1. m_i, p_i */

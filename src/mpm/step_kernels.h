@@ -28,34 +28,43 @@ static inline int lm_k_segment_point(const lm_sim *sim, size_t q)
     return bd->membrane && bd->force == LM_MFORCE_SEGMENT;
 }
 
-/* Particle q's weights (gradients) for a stencil W wide: the bilinear
- * ones rebuilt into buf from its place in the cell (step.h), the 3 x 3
- * ones where lm_step_shape stored them. */
+/* Particle q's weights (gradients) for a stencil W wide: the bilinear and
+ * B-spline ones rebuilt into buf from the point's place (step.h), uGIMP's
+ * where lm_step_shape stored them (p->N is NULL for the other two: one
+ * well-predicted test a particle). */
 static LM_FORCE_INLINE const double *lm_k_weights_N(const lm_particles *p, size_t q,
-                                                    const int W, double buf[4])
+                                                    const int W, double buf[9])
 {
-    if (W != 2) return p->N + (size_t)(W * W) * q;
-    lm_bilinear_N(p->xi[q], p->eta[q], buf);
+    if (W == 2) {
+        lm_bilinear_N(p->xi[q], p->eta[q], buf);
+        return buf;
+    }
+    if (p->N) return p->N + (size_t)(W * W) * q;
+    lm_bspline2_N(p->xi[q], p->eta[q], buf);
     return buf;
 }
 /* rx = 1 / hx, ry = 1 / hy, the caller's for all its points */
 static LM_FORCE_INLINE void lm_k_weights_G(const lm_particles *p, size_t q, const int W,
-                                           double rx, double ry, double gx[4], double gy[4],
+                                           double rx, double ry, double gx[9], double gy[9],
                                            const double **Gx, const double **Gy)
 {
-    if (W != 2) {
+    if (W == 2) {
+        lm_bilinear_G_r(rx, ry, p->xi[q], p->eta[q], gx, gy);
+    } else if (p->Gx) {
         *Gx = p->Gx + (size_t)(W * W) * q;
         *Gy = p->Gy + (size_t)(W * W) * q;
         return;
+    } else {
+        lm_bspline2_G_r(rx, ry, p->xi[q], p->eta[q], gx, gy);
     }
-    lm_bilinear_G_r(rx, ry, p->xi[q], p->eta[q], gx, gy);
     *Gx = gx;
     *Gy = gy;
 }
 
 /* Particle q's place in the grid at its present position (the step's
  * shape pass, step 0): the bilinear basis keeps the lower-left node and
- * (xi, eta), the 3 x 3 bases their 9 weights and gradients. */
+ * (xi, eta), the B-spline the lower-left node and the offsets from the
+ * nearest node, uGIMP its 9 weights and gradients. */
 static LM_FORCE_INLINE void lm_k_shape(const lm_sim *sim, lm_particles *p, size_t q,
                                        double rx, double ry)
 {
@@ -69,8 +78,7 @@ static LM_FORCE_INLINE void lm_k_shape(const lm_sim *sim, lm_particles *p, size_
                       &p->Gx[9 * q], &p->Gy[9 * q]);
         break;
     case LM_BASIS_BSPLINE2:
-        lm_shape_bspline2(g, p->x[q], p->y[q], &p->node[q], &p->N[9 * q], &p->Gx[9 * q],
-                          &p->Gy[9 * q]);
+        lm_bspline2_place(g, rx, ry, p->x[q], p->y[q], &p->node[q], &p->xi[q], &p->eta[q]);
         break;
     }
 }
@@ -100,7 +108,7 @@ static LM_FORCE_INLINE void lm_k_scatter_mass_forces(const lm_sim *sim, size_t q
 {
     const lm_grid *g = &sim->grid;
     const lm_particles *p = &sim->p;
-    double Nl[4], Gxl[4], Gyl[4];
+    double Nl[9], Gxl[9], Gyl[9];
     const double m = p->m[q], vx = p->vx[q], vy = p->vy[q];
     const double *N = lm_k_weights_N(p, q, W, Nl), *Gx = NULL, *Gy = NULL;
     const int seg = segs && lm_k_segment_point(sim, q);
@@ -149,7 +157,7 @@ static LM_FORCE_INLINE void lm_k_scatter_momentum(const lm_sim *sim, size_t q,
 {
     const lm_grid *g = &sim->grid;
     const lm_particles *p = &sim->p;
-    double Nl[4];
+    double Nl[9];
     const double m = p->m[q], vx = p->vx[q], vy = p->vy[q];
     const double *N = lm_k_weights_N(p, q, W, Nl);
     double *const *fp = mass ? f + 1 : f, *const *cp = split && mass ? c + 1 : c;
@@ -173,7 +181,7 @@ static LM_FORCE_INLINE void lm_k_g2p(const lm_grid *g, lm_particles *p, size_t q
                                      const double *gux, const double *guy, const int W)
 {
     const int NS = W * W;
-    double Nl[4];
+    double Nl[9];
     const double *N = lm_k_weights_N(p, q, W, Nl);
     double ax = 0, ay = 0, ux = 0, uy = 0;
     if (W == 2) {
@@ -219,7 +227,7 @@ static LM_FORCE_INLINE void lm_k_velocity_gradient(const lm_grid *g, const lm_pa
                                                    const double *gvy, double L[4], double rx,
                                                    double ry, const int W)
 {
-    double Gxl[4], Gyl[4];
+    double Gxl[9], Gyl[9];
     const double *Gx, *Gy;
     lm_k_weights_G(p, q, W, rx, ry, Gxl, Gyl, &Gx, &Gy);
     double Lxx = 0, Lxy = 0, Lyx = 0, Lyy = 0;

@@ -165,12 +165,17 @@ typedef struct lm_particles {
      * lm_stencil_node(grid, sw, node[q], k) (step.h). */
     int ns;
     int *node;
-    double *N, *Gx, *Gy;   /* the 3 x 3 bases (ns = 9) only */
+    /* uGIMP only (keep_weights = 1, set by lm_sim_new: its weights depend
+     * on the particle's size as well); NULL otherwise */
+    int keep_weights;
+    double *N, *Gx, *Gy;
     /* The bilinear basis keeps the point's place in its cell instead, xi
      * and eta in [0, 1]: its weights and gradients are a few products of
      * them (lm_bilinear_N, lm_bilinear_G in step.h), cheaper to redo than
      * to store and read back (issue 17 item 1: 96 bytes a particle written
-     * and read by four passes). */
+     * and read by four passes). The quadratic B-spline likewise keeps the
+     * offsets from the nearest node in cells, |xi|, |eta| <= 1/2
+     * (lm_bspline2_N, lm_bspline2_G_r; issue 36 item 2: 216 bytes). */
     double *xi, *eta;
     /* Membranes with segment forces (membrane_force.c): L0 is the
      * unstrained length of the segment from this point to the next in
