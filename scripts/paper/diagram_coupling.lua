@@ -11,7 +11,7 @@
 --   after 200 steps they are still at the same place with the same velocity,
 --   to round-off (the closed form: both are moved by the same sum_i N_i v_i).
 --   With lamina's segment forces (its default) the membrane's points move
---   with step 5's re-mapped velocity under MUSL (api.md): the pair drifts
+--   with step 5's re-mapped velocity under MUSL (docs/api.md): the pair drifts
 --   apart, 1.8e-3 cells here (printed)
 -- assumed: gas at p = 1000 inside, a slack membrane (strain -0.02) across a
 --   0.3-wide box, cell 0.1; the coincident pair at (0.15, 0.35)
@@ -44,7 +44,7 @@ local function run(force)
 end
 -- the papers' point forces: every point moves with the grid's v^L; lamina's
 -- segment forces move a membrane's points with the re-mapped velocity of
--- step 5 under MUSL (api.md, sim:membrane force), not the gas's
+-- step 5 under MUSL (docs/api.md, sim:membrane force), not the gas's
 local pt, sg = run("point"), run("segment")
 local dpos, dvel, speed, moved = pt.dpos, pt.dvel, pt.speed, pt.moved
 

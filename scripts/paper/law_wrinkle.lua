@@ -18,7 +18,7 @@ local c, s = math.cos(angle), math.sin(angle)
 
 -- A string of five points at 30 degrees, every point held, given a uniform
 -- initial strain; after one tiny step the engine has rebuilt each point's stress
--- from its strain (api.md, lamina.membrane), and sigma_t = t . sigma . t.
+-- from its strain (docs/api.md, lamina.membrane), and sigma_t = t . sigma . t.
 local function engine_stress(eps, one_way)
   local sim = lamina.sim{ basis = "linear", domain = {0, 0, 1, 1}, cell = 0.1, dt = 1e-7 }
   local mat = lamina.membrane{ rho = 1, E = E, nu = 0, thickness = 0.01, one_way = one_way }

@@ -11,7 +11,7 @@
 --   -F t [N(b) - N(a)] (segments), parallel to t, so the velocities' normal
 --   component vanishes (closed form): to round-off of the tangential for the
 --   point form, of c eps for segments; and segments keep a uniformly
---   stretched membrane in equilibrium at any angle (api.md), so their
+--   stretched membrane in equilibrium at any angle (docs/api.md), so their
 --   tangential velocities vanish too. [T] answers from its examples ("does
 --   indeed work"); no number
 -- assumed: E 1e6, rho 1, t 0.01, strain 0.01, points 0.05 apart (half a

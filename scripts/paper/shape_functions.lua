@@ -53,7 +53,7 @@ end
 local rl = lamina.normals{ points = {pts[2], pts[5], pts[9]}, box = {0, 0, 1, 1}, basis = "linear", seed = 3 }
 local rq = lamina.normals{ points = pts, box = {0, 0, 1, 1}, basis = "quadratic", seed = 3 }
 -- the nodal values by position: linear node I = i + 2 j, quadratic centre
--- I = i + 3 j at offset (i - 1, j - 1) (api.md, lamina.normals: phi)
+-- I = i + 3 j at offset (i - 1, j - 1) (docs/api.md, lamina.normals: phi)
 local function lin_phi(n) return rl.phi[1 + n[1] + 2 * n[2]] end
 local function quad_phi(o) return rq.phi[1 + (o[1] + 1) + 3 * (o[2] + 1)] end
 local worst_l, worst_q, worst_n, worst_pu = 0, 0, 0, 0
