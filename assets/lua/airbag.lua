@@ -34,6 +34,7 @@ local bag_curve = {}
 for k = 1, 9 do bag_curve[k] = outline[k] end
 bag_curve[10] = {0.08, 0.299}
 bag_curve[11] = {0, 0.318}
+M.bag_curve = bag_curve   -- for drawing (sketch_airbag)
 -- The papers: "the total airbag mass was derived to be 367.2 g ... material
 -- point volumes were prescribed such that the total airbag mass was
 -- correct". This outline's surface, 2 pi int r ds, at t = 0.5 mm and rho =

@@ -1,5 +1,5 @@
 -- title: The mass matrix method on a circular arc rotated in its cell: points at one height get one n_x (dissertation Figs 83-84)
--- source: York's dissertation [T] §7.6, Figs 83 and 84 (eq 7.17 and the text before them)
+-- source: York's dissertation [T] §7.6, Figs 83 and 84 (eq 7.17 and the text before them); §7.7, Fig 85
 -- look: four panels, the same five-point arc turned about the cell's centre by
 --   45, 30, 15 and 0 degrees: colour contours (grey, the bold one colour 1),
 --   exact normals dashed, computed solid. As the arc turns upright, pairs of
@@ -7,7 +7,16 @@
 --   x-component ([T] eq 7.17: at equal local y the two equations have one
 --   left-hand side), while the exact ones are mirror images; in the last panel
 --   (Fig 84, bottom) the pairs at identical y are labelled and the error is largest.
--- checks: at 0 degrees the x-components of grad(colour) at each pair of points
+--   fig85.png ([T] Fig 85): the same points as Fig 84 (bottom) with the
+--   quadratic functions on the nine cell centres ([T] §7.7): the computed
+--   normals lie on the exact ones and the colour 1 contour is a near circle
+--   through the points
+-- checks: Fig 85: the quadratic normals' largest error against the exact, within 1
+--   degree ([T]: "lay on top of the theoretical ones"; 1 degree is ours, a
+--   quarter of an arrow head at the figure's scale), by lamina's QR solve
+--   (minimum norm: 5 points and the extra point leave 9 unknowns
+--   underdetermined, [N] §6); the normal equations' (the mass matrix's) printed;
+--   at 0 degrees the x-components of grad(colour) at each pair of points
 --   with identical y, equal to round-off ([T] eq 7.17, closed form); the largest
 --   normal error at each rotation (printed; [T] gives no numbers) growing as the
 --   pairs line up
@@ -74,6 +83,30 @@ for i, rot in ipairs(rotations) do
   report[string.format("max_error_turned_%d", rot)] = { worst[i], unit = "deg ([T] gives none)" }
 end
 fig:write(out .. "/normals_mass_matrix_arc.png")
+
+-- [T] Fig 85: Fig 84 (bottom)'s points with the quadratic functions (§7.7)
+local pts85, ex85 = {}, {}
+for _, d in ipairs{60, 75, 90, 105, 120} do
+  local t = math.rad(d)
+  pts85[#pts85 + 1] = {0.5 + 0.6 * math.cos(t), -0.1 + 0.6 * math.sin(t)}
+  ex85[#ex85 + 1] = {math.cos(t), math.sin(t)}
+end
+local function quad(solver)
+  return lamina.normals{ points = pts85, box = {0, 0, 1, 1}, basis = "quadratic", solver = solver,
+                         random_point = {0.3, 0.2}, orient = {0.5, -0.1} }
+end
+local rq, rn = quad("qr"), quad("normal_equations")
+local wq, wn = math.deg(nu.max_angle(rq.normals, ex85)), math.deg(nu.max_angle(rn.normals, ex85))
+local f85 = lamina.figure{ width = 560, height = 600, panels = {1, 1},
+  title = "[T] Fig 85: the arc of Fig 84 (bottom), quadratic functions" }
+f85:panel{ index = 1, window = {-0.05, -0.05, 1.05, 1.05},
+           caption = string.format("largest error %.2f deg (QR; normal equations %.1f deg)", wq, wn) }
+f85:normals{ result = rq, points = pts85, exact = ex85, length = 0.15 }
+f85:write(out .. "/fig85.png")
+print(string.format("Fig 85: quadratic, largest error %.3f deg by QR (rank %d of %d), %.3f deg by the normal equations",
+                    wq, rq.rank, rq.unknowns, wn))
+report.fig85_max_error = { wq, ref = 0, tol = 1, unit = "deg (QR; [T]: on top of the theoretical ones; tol ours)" }
+report.fig85_max_error_normal_equations = { wn, unit = "deg (the mass matrix solved by the normal equations)" }
 print(string.format("largest errors: %s deg", table.concat((function()
   local t = {}
   for i, w in ipairs(worst) do t[i] = string.format("%d: %.2f", rotations[i], w) end

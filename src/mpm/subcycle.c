@@ -283,7 +283,7 @@ static LM_FORCE_INLINE void consistent_rows(const lm_sim *sim, lm_subcycle *s, s
     const lm_grid *g = &sim->grid;
     const lm_particles *p = &sim->p;
     const int B = 2 * W - 1;
-    double Nl[4];
+    double Nl[9];   /* the B-spline's rebuilt from its place (step_kernels.h) */
     const double *N = lm_k_weights_N(p, q, W, Nl);
     const double m = p->m[q];
     for (int b1 = 0; b1 < W; b1++)
