@@ -223,19 +223,22 @@ void lm_step_grid_update(lm_sim *sim)
     lm_grid *g = &sim->grid;
     size_t nn = lm_grid_nodes(g);
     double dt = sim->def.dt;
-    /* mass = "corrected": p_i, f_i towards the consistent mass
-     * (mass_corrected.c; one field only: not with contact's own fields) */
-    if (sim->def.mass == LM_MASS_CORRECTED && !sim->contact) lm_mass_correct_momentum_forces(sim);
     /* grid damping (damping.c): part of the force, so before the heavy end
      * points' solve and the walls, which then act on the damped force */
     const int damped = sim->def.damping > 0;
     if (damped) lm_damp_grid(sim);
+    /* mass = "corrected": p_i, f_i towards the consistent mass, the heavy
+     * points and point pins solved inside (mass_corrected.c; one field
+     * only: not with contact's own fields). After the damping, which is
+     * node by node the same linear map of p and f and so commutes with it. */
+    const int corrected = sim->def.mass == LM_MASS_CORRECTED && !sim->contact;
+    if (corrected) lm_mass_correct_momentum_forces(sim);
     if (lm_constraint_active(sim)) {
         /* heavy end points, on p and f with the walls applied (the solve
          * leaves the walls' components alone: constraint.c) */
         lm_grid_apply_bc(g, g->px, g->py);
         lm_grid_apply_bc(g, g->fx, g->fy);
-        lm_constraint_grid(sim);
+        if (!corrected) lm_constraint_grid(sim);
     }
 #pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
     for (long i = 0; i < (long)nn; i++) {
@@ -310,7 +313,10 @@ void lm_step_strain_velocity_end(lm_sim *sim, int remap)
     }
     lm_pin_velocity(sim);
     lm_grid_apply_bc(g, g->vx, g->vy);
-    if (lm_constraint_active(sim)) lm_constraint_velocity(sim);   /* heavy ends */
+    /* heavy ends; with mass = "corrected" the re-map solved them already */
+    if (lm_constraint_active(sim) &&
+        !(remap && sim->def.mass == LM_MASS_CORRECTED && !sim->contact))
+        lm_constraint_velocity(sim);
     double *const fill[2] = {g->vx, g->vy};
     static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
     lm_grid_fill(g, 2, fill, comp);
