@@ -274,6 +274,7 @@ typedef struct lm_sim_def {
     lm_basis basis;        /* shape functions (default linear) */
     lm_stress stress;      /* internal force from point or cell stresses */
     lm_mass mass;          /* lumped (default) or corrected (mass_corrected.c) */
+    int apic;              /* 1: the affine transfer for bulk bodies (apic.c) */
     int axisym;            /* the axisymmetric form (axisym.c): x is r, y is
                               z, the left side is the axis r = 0; masses,
                               volumes, forces and energies per radian */
@@ -312,6 +313,7 @@ typedef struct lm_sim {
     int npins;
     double *pin_w, *pin_vx, *pin_vy;   /* per node: sum of the held particles'
                               N_ip and N_ip v_p (allocated with the first pin) */
+    struct lm_apic *apic;  /* apic.c: the points' affine velocities; NULL: none */
     struct lm_con *cons;   /* constraint.c: the heavy end points of the step */
     size_t ncons, capcons;
     lm_link *links;        /* link.c */

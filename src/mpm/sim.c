@@ -154,6 +154,7 @@ void lm_sim_free(lm_sim *sim)
     lm_contact_free(sim->contact);
     lm_nwork_delete(sim->nwork);
     lm_ahead_free(sim->ahead);
+    lm_apic_free(sim->apic);
     LU_FREE_ALL(sim->mats, sim->bodies, sim->cell_rho, sim->cell_stress, sim->pins, sim->links,
                 sim->pin_w, sim->cons, sim);
 }

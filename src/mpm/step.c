@@ -337,6 +337,7 @@ void lm_step_strain_velocity(lm_sim *sim)
         static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
         scatter(sim, SCATTER_MOMENTUM, 2, out, comp);
         lm_constraint_remap(sim);   /* a heavy point's extra momentum off */
+        lm_apic_remap(sim);         /* APIC's affine momenta (apic.c) */
     } else {
 #pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
         for (long i = 0; i < (long)nn; i++) {
@@ -602,6 +603,7 @@ lm_status lm_sim_step_then(lm_sim *sim, int more)
     }
     lm_status st = sim->prepared ? LM_OK : lm_sim_prepare(sim);
     if (st == LM_OK) st = lm_threads_reserve(sim);
+    if (st == LM_OK) st = lm_apic_reserve(sim);   /* transfer = "apic" */
     if (st != LM_OK) return st;
     lm_pace_step(sim);                          /* the OS threads for this step */
     /* without the pass's arrays (out of memory) the step goes phase by phase */
@@ -611,6 +613,7 @@ lm_status lm_sim_step_then(lm_sim *sim, int more)
         lm_step_clear(sim);                     /* 0: the grid's sums */
         lm_step_shape(sim);                     /* 0: N_ip, G_ip at x^k */
         lm_step_p2g_forces(sim);                /* 1-2: m_i, p_i; f_i */
+        lm_apic_p2g(sim);                       /* 1: APIC's affine momenta */
     }
     if (sim->contact) {                         /* the paired bodies' own fields */
         st = lm_contact_sums(sim);
@@ -625,6 +628,7 @@ lm_status lm_sim_step_then(lm_sim *sim, int more)
     if (sim->contact) lm_contact_correct(sim);
     lm_membrane_segment_hold(sim);              /* x^k of segment membranes */
     lm_step_g2p(sim);                           /* 4: v_p, x_p */
+    lm_apic_g2p(sim);                           /* 4: APIC's v_p, C_p */
     if (sim->contact) lm_contact_g2p(sim);
     lm_step_strain_velocity(sim);               /* 5: v_i for the strain */
     if (sim->contact) lm_contact_strain_velocity(sim);
