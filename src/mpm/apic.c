@@ -48,10 +48,12 @@ void lm_apic_free(struct lm_apic *a)
     free(a);
 }
 
-/* Point q takes the affine transfer: not a membrane's. */
+/* Point q takes the affine transfer: not a membrane's, not a pinned one
+ * (a pin sets its velocity, and a point-held pin's mass is off the grid:
+ * pin.c). */
 static int takes(const lm_sim *sim, size_t q)
 {
-    return !sim->bodies[sim->p.body[q]].membrane;
+    return !sim->bodies[sim->p.body[q]].membrane && !sim->p.pin[q];
 }
 
 lm_status lm_apic_reserve(lm_sim *sim)
@@ -228,7 +230,7 @@ void lm_apic_g2p(lm_sim *sim)
     const lm_grid *g = &sim->grid;
     lm_particles *p = &sim->p;
     for (size_t q = 0; q < p->n; q++) {
-        if (!takes(sim, q) || p->pin[q]) continue;
+        if (!takes(sim, q)) continue;
         fit(sim, q, g->vx, g->vy, &p->vx[q], &p->vy[q], sim->apic->c + 4 * q);
     }
 }
