@@ -51,7 +51,7 @@ def option_warnings(err_text):
     and `cases` the case names or globs the warning names."""
     found = []
     for line in err_text.splitlines():
-        if not line.startswith("lamina: warning: ") or "docs/verification.md" not in line:
+        if not line.startswith("lamina: warning: ") or DOC not in line:
             continue
         m = re.match(r"lamina: warning: .*?\(body \d+\) (.*?): ", line)
         what = m.group(1) if m else line[len("lamina: warning: "):].split(":")[0]
