@@ -229,8 +229,10 @@ void lm_step_grid_update(lm_sim *sim)
     if (damped) lm_damp_grid(sim);
     /* mass = "corrected": p_i, f_i towards the consistent mass, the heavy
      * points and point pins solved inside (mass_corrected.c; one field
-     * only: not with contact's own fields). After the damping, which is
-     * node by node the same linear map of p and f and so commutes with it. */
+     * only: not with contact's own fields). After the damping, as the
+     * lumped path solves its constraints after it; without constraints the
+     * correction is one linear map of p and f alike, which commutes with
+     * the damping's node-by-node f - c p, so the order changes nothing. */
     const int corrected = sim->def.mass == LM_MASS_CORRECTED && !sim->contact;
     if (corrected) lm_mass_correct_momentum_forces(sim);
     if (lm_constraint_active(sim)) {
