@@ -9,6 +9,7 @@ set -- run "tests/verify/$c.lua" --quiet --set level="$l"
 [ "$b" = default ] || set -- "$@" --set basis="$b" --set scheme="$s"
 [ "$f" = - ] || [ "$f" = default ] || set -- "$@" --set force="$f"
 [ -z "${MASS:-}" ] || set -- "$@" --set mass="$MASS"
+[ -z "${TRANSFER:-}" ] || set -- "$@" --set transfer="$TRANSFER"
 t0=$(date +%s.%N)
 st=0
 nice "$LAMINA" "$@" > "$OUT/jobs/$id.out" 2> "$OUT/jobs/$id.err" || st=$?

@@ -8,7 +8,7 @@ Error per cent is each case's own (tests/verify/lib/vcase.lua): 100 |value -
 exact| / scale. A cell fails (marked x) when the error is above 3 % at the
 coarsest level run or above 1 % at the finest (issue 30 item 2). The
 observed order between two levels is log(e1/e2) / log(h1/h2)."""
-import csv, glob, math, os, re, subprocess, sys, datetime
+import csv, fnmatch, glob, math, os, re, subprocess, sys, datetime
 
 COARSE_TOL, FINE_TOL = 3.0, 1.0
 PAPERS = ("linear", "point", "musl")
@@ -44,6 +44,30 @@ def failure_reason(err_text):
     return "failed"
 
 
+def option_warnings(err_text):
+    """The option warnings a run printed (src/lua/l_option_warn.c): those
+    that cite docs/verification.md, as (what, cases) with `what` the
+    option's words (the text after the body's label up to the first colon)
+    and `cases` the case names or globs the warning names."""
+    found = []
+    for line in err_text.splitlines():
+        if not line.startswith("lamina: warning: ") or DOC not in line:
+            continue
+        m = re.match(r"lamina: warning: .*?\(body \d+\) (.*?): ", line)
+        what = m.group(1) if m else line[len("lamina: warning: "):].split(":")[0]
+        cases = []
+        for grp in re.findall(r"\bcases? ((?:[a-z0-9_*]+(?:, )?)+)", line):
+            cases += [c for c in grp.split(", ") if c]
+        found.append((what, tuple(cases)))
+    return found
+
+
+def warned(r):
+    """Did the run warn naming its own case?"""
+    return bool(r) and any(fnmatch.fnmatchcase(r["case"], c)
+                           for _, cases in r.get("warnings", ()) for c in cases)
+
+
 def load(out):
     rows = []
     for meta in sorted(glob.glob(os.path.join(out, "jobs", "*.meta"))):
@@ -52,7 +76,8 @@ def load(out):
         text = open(base + ".out").read()
         err_text = open(base + ".err").read()
         lines = [parse_line(x) for x in text.splitlines() if x.startswith("verify ")]
-        job = dict(case=c, jb=b, jf=f, js=s, level=int(l), exit=int(st), seconds=float(sec))
+        job = dict(case=c, jb=b, jf=f, js=s, level=int(l), exit=int(st), seconds=float(sec),
+                   warnings=option_warnings(err_text))
         if not lines:
             rows.append(dict(job, quantity="*", status=failure_reason(err_text)))
             continue
@@ -210,7 +235,10 @@ def main():
              "%g %% at the coarse level or %g %% at the fine one. *order* is the observed "
              "convergence order log(e1/e2)/log(h1/h2) between the first two levels. `failed` "
              "is a run the engine stopped (the reason given), `refused` a combination the engine "
-             "refuses.\n" % (COARSE_TOL, FINE_TOL))
+             "refuses. *w* marks a run that warned on stderr naming its own case "
+             "(src/lua/l_option_warn.c: an option the suite finds wrong for the kind of scene; "
+             "the warnings each combination gave are listed under \"Which options fail which "
+             "cases\").\n" % (COARSE_TOL, FINE_TOL))
     when = datetime.datetime.utcnow().strftime("%Y-%m-%d %H:%M UTC")
     L.append("Run at commit `%s` on %s: %d runs in %s s of wall time with %s jobs at a time on this "
              "2-core machine (%.0f s summed over the runs).\n"
@@ -232,6 +260,7 @@ def main():
                 rs = [table.get((c, q, cs[0], l)) if cs else None for l in levels]
                 for l, r in zip(levels, rs):
                     mark = " **x**" if fails(r, l, levels) else ""
+                    mark += " *w*" if warned(r) else ""
                     cells.append(fmt_err(r, cs[0] if cs else None) + mark)
                 cells.append(order(rs[0], rs[1]) if len(rs) > 1 else "")
             L.append("| %s | %s | %s |" % (c, q, " | ".join(cells)))
@@ -249,19 +278,27 @@ def main():
                 allcfg.append(k)
     allcfg.sort(key=lambda c: (c[0] != "default", c[1] == "-", c))
     for k in allcfg:
-        misses, npass, nall = [], 0, 0
+        misses, npass, nall, warns = [], 0, 0, {}
         for c in cases:
             for q in quantities[c]:
                 rs = [table.get((c, q, k, l)) for l in levels]
                 if all(r is None for r in rs):
                     continue
                 nall += 1
+                for r in rs:
+                    for what, named in (r or {}).get("warnings", ()):
+                        w = warns.setdefault(what, [set(named), set()])
+                        w[1].add(c)
                 if any(fails(r, l, levels) for l, r in zip(levels, rs)):
-                    misses.append("%s %s (%s)" % (c, q, " / ".join(fmt_err(r, k) or "-" for r in rs)))
+                    w = " *w*" if any(warned(r) for r in rs) else ""
+                    misses.append("%s %s (%s)%s" % (c, q, " / ".join(fmt_err(r, k) or "-" for r in rs), w))
                 else:
                     npass += 1
-        L.append("- %s: passes %d of %d. Misses: %s" % (cfg_name(k), npass, nall,
-                                                        "; ".join(misses) if misses else "none"))
+        said = "".join(" Warned of in %d of its cases: `%s` (naming %s)." %
+                       (len(w[1]), what, ", ".join(sorted(w[0])) or "no case")
+                       for what, w in sorted(warns.items()))
+        L.append("- %s: passes %d of %d.%s Misses: %s" % (cfg_name(k), npass, nall, said,
+                                                          "; ".join(misses) if misses else "none"))
     L.append("")
     # the findings written by hand (what the numbers mean), when present
     notes = os.path.join(os.path.dirname(os.path.abspath(__file__)), "notes.md")
@@ -291,7 +328,8 @@ def main():
             L.append("|" + " --- |" * (len(levels) + 2))
             for k in cfgs_of(c):
                 rs = [table.get((c, q, k, l)) for l in levels]
-                cells = [fmt_err(r, k) + (" **x**" if fails(r, l, levels) else "") for l, r in zip(levels, rs)]
+                cells = [fmt_err(r, k) + (" **x**" if fails(r, l, levels) else "") +
+                         (" *w*" if warned(r) else "") for l, r in zip(levels, rs)]
                 L.append("| %s | %s | %s |" % (cfg_name(k), " | ".join(cells),
                                                order(rs[0], rs[1]) if len(rs) > 1 else ""))
             L.append("")

@@ -8,9 +8,10 @@
 # docs/verification.md (scripts/verify/report.py).
 #
 # usage: scripts/verify/run.sh [-l "1 2"] [-j 2] [-c "case1 case2"] [-o OUTDIR]
-#                              [-b "bspline2"] [-m corrected]
+#                              [-b "bspline2"] [-m corrected] [-t apic]
 #   -b limits the bases of the matrix; -m runs every job (the default row
-#   too) with lamina.sim{mass = ...} (docs/api.md).
+#   too) with lamina.sim{mass = ...}, -t with lamina.sim{transfer = ...}
+#   (docs/api.md; "apic" needs -b bspline2).
 #   LAMINA (default build/lamina) is the binary; run from the repository.
 set -eu
 LAMINA=${LAMINA:-build/lamina}
@@ -20,7 +21,8 @@ CASES=""
 OUT=build/verify
 BASES="linear gimp bspline2"
 MASS=""
-while getopts l:j:c:o:b:m: opt; do
+TRANSFER=""
+while getopts l:j:c:o:b:m:t: opt; do
   case $opt in
     l) LEVELS=$OPTARG ;;
     j) JOBS=$OPTARG ;;
@@ -28,7 +30,8 @@ while getopts l:j:c:o:b:m: opt; do
     o) OUT=$OPTARG ;;
     b) BASES=$OPTARG ;;
     m) MASS=$OPTARG ;;
-    *) echo "usage: $0 [-l LEVELS] [-j JOBS] [-c CASES] [-o OUTDIR] [-b BASES] [-m MASS]" >&2; exit 2 ;;
+    t) TRANSFER=$OPTARG ;;
+    *) echo "usage: $0 [-l LEVELS] [-j JOBS] [-c CASES] [-o OUTDIR] [-b BASES] [-m MASS] [-t TRANSFER]" >&2; exit 2 ;;
   esac
 done
 [ -x "$LAMINA" ] || { echo "run.sh: no lamina at $LAMINA (build first, or set LAMINA)" >&2; exit 2; }
@@ -53,7 +56,7 @@ done
 n=$(wc -l < "$list")
 echo "run.sh: $n runs, $JOBS at a time, into $OUT" >&2
 start=$(date +%s)
-export LAMINA OUT MASS
+export LAMINA OUT MASS TRANSFER
 xargs -P "$JOBS" -L 1 sh scripts/verify/job.sh < "$list"
 end=$(date +%s)
 echo "run.sh: $n runs in $((end - start)) s" >&2

@@ -37,6 +37,11 @@ int la_sim_checkpoint(lua_State *L)
     const char *fn = "sim:checkpoint";
     la_sim *s = la_check_sim(L, 1);
     la_check_keys(L, 2, fn, keys);
+    /* the points' affine velocities (src/mpm/apic.c) are not in the state */
+    if (s->sim->def.apic)
+        return luaL_error(L, "%s: a sim with transfer = \"apic\" cannot be checkpointed (its "
+                          "points' affine velocities are not in the state); use transfer = \"flip\"",
+                          fn);
     if (la_getfield(L, 2, "file") == LUA_TNIL) return luaL_error(L, "%s: 'file' is required", fn);
     /* a string, no NUL, confined as every output is (l_path.c) */
     const char *file = la_check_output_path(L, fn, -1);

@@ -24,12 +24,24 @@
  *    -0.16 % (incline; docs/robustness.md "Verification cases on the
  *    default"). Friction is refused on the default basis, so every
  *    friction scene is on gimp or linear; the warning names the scheme.
- *  - mass = "corrected" with pins on a membrane: the correction runs before
- *    the pins' constraint, so pinned strings lose energy (mode 1: energy
- *    kept off by 22.6 / 2.7 % at cells 1/16 / 1/32, lumped 0.016 /
- *    0.032 %) and the pinned membrane at rest moves (0.64 % of a cell,
- *    lumped exact): string_pin_*, pinned_rest (docs/robustness.md
- *    "Corrected mass"). The lumped mass (the default) passes them.
+ *  - a membrane with segment forces on the lumped mass (the default): the
+ *    lumped mass's dispersion rings a taut string's higher modes too
+ *    slowly, periods of modes 2 / 3 +4.3 / +10.1 % at cell 1/16 (the
+ *    string 16 cells long), +1.04 / +2.35 % at 1/32, second order
+ *    (string_wall_mode2/3; pinned: +3.84 / +9.36, +0.88 / +2.21 %).
+ *    mass = "corrected" passes them (+0.34 / +1.12, +0.05 / +0.14 %) and
+ *    the rest of the suite, but is not the default: it costs a Courant
+ *    factor of 0.63, the phase-by-phase step and three more transfers a
+ *    step, and would change every default page (docs/robustness.md
+ *    "Corrected mass").
+ *  - transfer = "apic" with a gas inside a membrane: the gas-filled circle
+ *    at 0.4 cells' spacing misses its hoop stress by 37.6 / 7.8 % and the
+ *    axisymmetric sphere at 0.2 cells by 27.6 % (and inverts at the fine
+ *    cell), where FLIP passes (circle_spacing04, sphere_spacing02; the
+ *    spinning disk, the bar and the gas waves do better with it).
+ *  - (mass = "corrected" with pins was warned of until the correction took
+ *    the pins' constraint inside its Neumann step, mass_corrected.c: the
+ *    pinned strings and the pinned membrane at rest pass with it now.)
  *
  * On the default's basis (quadratic B-spline) no other option misses more
  * than the default does in the matrix: "usl" misses the same cases by the
@@ -44,16 +56,6 @@
 #include "mpm_contact.h"
 #include "l_internal.h"
 
-/* The first membrane a pin holds, or -1. */
-static int pinned_membrane(const lm_sim *sim)
-{
-    for (int k = 0; k < sim->npins; k++) {
-        int b = sim->pins[k].body;
-        if (b >= 0 && b < sim->nbodies && sim->bodies[b].membrane) return b;
-    }
-    return -1;
-}
-
 /* Says "lamina: warning: <body> <text>" once a process (*said counts). */
 static void say_once(const lm_sim *sim, int body, int *said, const char *text)
 {
@@ -64,14 +66,16 @@ static void say_once(const lm_sim *sim, int body, int *said, const char *text)
 
 void la_option_warn(const la_sim *s)
 {
-    static int said_gas, said_point, said_friction, said_corrected;
+    static int said_gas, said_point, said_friction, said_lumped, said_apic;
     const lm_sim *sim = s->sim;
-    int gas = -1, point = -1;
+    int gas = -1, point = -1, lumped = -1, membrane = -1;
     for (int b = 0; b < sim->nbodies; b++) {
         const lm_body *bd = &sim->bodies[b];
         int kind = sim->mats[bd->mat]->kind;
         if (kind == LM_GAS && gas < 0) gas = b;
         if (bd->membrane && bd->force == LM_MFORCE_POINT && point < 0) point = b;
+        if (bd->membrane && bd->force == LM_MFORCE_SEGMENT && lumped < 0) lumped = b;
+        if (bd->membrane && membrane < 0) membrane = b;
     }
     say_once(sim, sim->def.basis == LM_BASIS_LINEAR ? gas : -1, &said_gas,
              "on basis = \"linear\": while its points stay in their "
@@ -90,10 +94,16 @@ void la_option_warn(const la_sim *s)
              "than Coulomb allows as the cell shrinks, acceleration -0.32 / -13.6 / -11.9 % at "
              "cells 0.1 / 0.05 / 0.025 on basis = \"gimp\" (docs/verification.md, case "
              "incline); scheme = \"usl\" gives -0.07 / -2.44 / -0.16 %");
-    say_once(sim, sim->def.mass == LM_MASS_CORRECTED ? pinned_membrane(sim) : -1, &said_corrected,
-             "is pinned under mass = \"corrected\": the correction runs "
-             "before the pins' constraint, so pinned strings lose energy (mode 1: 22.6 / 2.7 % "
-             "at cells 1/16 / 1/32) and a pinned membrane at rest moves 0.64 % of a cell "
-             "(docs/robustness.md \"Corrected mass\", cases string_pin_*, pinned_rest); "
-             "mass = \"lumped\" (the default) passes them");
+    say_once(sim, sim->def.mass == LM_MASS_LUMPED ? lumped : -1, &said_lumped,
+             "has the lumped mass (mass = \"lumped\", the default): its dispersion rings a "
+             "taut string's modes 2 and 3 too slowly, periods +4.3 / +10.1 % with the string 16 "
+             "cells long, +1.0 / +2.35 % at 32 (docs/verification.md, cases string_wall_mode2, "
+             "string_wall_mode3, string_pin_mode2, string_pin_mode3); mass = \"corrected\" "
+             "gives +0.34 / +1.12 and +0.05 / +0.14 % (at a Courant factor of 0.63)");
+    say_once(sim, sim->def.apic && membrane >= 0 ? gas : -1, &said_apic,
+             "is on transfer = \"apic\" inside a membrane: the verification suite's gas-filled "
+             "circle at 0.4 cells' spacing misses its hoop stress by 37.6 / 7.8 % and the "
+             "axisymmetric sphere at 0.2 cells by 27.6 % and inverts at the finer cell "
+             "(docs/verification.md, cases circle_spacing04, sphere_spacing02); "
+             "transfer = \"flip\" (the default) passes them");
 }

@@ -13,6 +13,7 @@
 
 static const char *const schemes[] = {"musl", "usl", NULL};
 static const char *const masses[] = {"lumped", "corrected", NULL};
+static const char *const transfers[] = {"flip", "apic", NULL};
 /* in lm_basis order (mpm.h) */
 static const char *const bases[] = {"linear", "gimp", "bspline2", NULL};
 /* lm_stress: [T] §5.4.3 (stress_cell.c) */
@@ -93,7 +94,7 @@ int la_sim_new(lua_State *L)
     static const char *const keys[] = {"domain", "cell", "dt", "scheme", "gravity",
                                        "boundary", "courant", "pic", "seed", "threads",
                                        "basis", "stress", "axisymmetric", "mass", "damping",
-                                       "substeps", NULL};
+                                       "substeps", "transfer", NULL};
     const char *fn = "lamina.sim";
     la_check_keys(L, 1, fn, keys);
     lm_sim_def d;
@@ -117,6 +118,12 @@ int la_sim_new(lua_State *L)
     const char *basis_default = d.stress == LM_STRESS_CELL ? "linear" : "bspline2";
     d.basis = (lm_basis)la_option(L, fn, "basis",
                                   la_opt_string(L, 1, fn, "basis", basis_default), bases);
+    /* transfer = "apic" (src/mpm/apic.c): its D = h^2/4 holds for the
+     * quadratic B-spline only */
+    d.apic = la_option(L, fn, "transfer", la_opt_string(L, 1, fn, "transfer", "flip"), transfers);
+    if (d.apic && d.basis != LM_BASIS_BSPLINE2)
+        luaL_error(L, "%s: transfer = \"apic\" works with basis = \"bspline2\" only (got "
+                   "basis = \"%s\")", fn, bases[d.basis]);
     /* [T] §5.4.3's cell stress is a bilinear construction (gradients at the
      * cell centre of the cell's four nodes) */
     if (d.stress == LM_STRESS_CELL && d.basis != LM_BASIS_LINEAR)
@@ -641,6 +648,7 @@ static int sim_index(lua_State *L)
     else if (strcmp(k, "basis") == 0) lua_pushstring(L, lm_basis_name(m->def.basis));
     else if (strcmp(k, "pic") == 0) lua_pushnumber(L, m->def.pic);
     else if (strcmp(k, "mass") == 0) lua_pushstring(L, masses[m->def.mass]);
+    else if (strcmp(k, "transfer") == 0) lua_pushstring(L, transfers[m->def.apic]);
     else if (strcmp(k, "stress") == 0) lua_pushstring(L, stresses[m->def.stress]);
     else if (strcmp(k, "threads") == 0) lua_pushinteger(L, m->def.threads);
     else if (strcmp(k, "axisymmetric") == 0) lua_pushboolean(L, m->def.axisym);

@@ -44,11 +44,20 @@ static void consistent_times(const lm_sim *sim, const double *ux, const double *
          * in M_L, so not in M_C either (M_C 1 = M_L 1 keeps a uniform
          * field) */
         if (p->pin[q] && sim->pins[p->pin[q] - 1].point) continue;
+        /* a heavy end point has only the wire's share on the grid
+         * (constraint.c); its extra mass is the constraint's, so M_C takes
+         * the same share (with all of it M_C 1 = M_L 1 broke and the
+         * correction held the spring-mass's weight still) */
+        double mq = p->m[q];
+        const lm_body *bd = &sim->bodies[p->body[q]];
+        if (bd->end_grid_mass > 0 && q == bd->first + bd->count - 1 && mq > bd->end_grid_mass &&
+            lm_constraint_active(sim))
+            mq = bd->end_grid_mass;
         lm_weights wt;
         lm_weights_of(sim, q, &wt);
         const double *N = wt.N;
-        const double sx = lm_gather_rows(g, &wt, p->node[q], ux) * p->m[q];
-        const double sy = lm_gather_rows(g, &wt, p->node[q], uy) * p->m[q];
+        const double sx = lm_gather_rows(g, &wt, p->node[q], ux) * mq;
+        const double sy = lm_gather_rows(g, &wt, p->node[q], uy) * mq;
         for (int b = 0; b < W; b++) {
             const long row = lm_stencil_row(g, p->node[q], b);
             for (int a = 0; a < W; a++) {
@@ -63,21 +72,24 @@ static void consistent_times(const lm_sim *sim, const double *ux, const double *
 }
 
 /* One mass-weighted field (rx, ry) (a momentum or a force) replaced by
- * M_L (2 u_L - M_L^-1 M_C u_L) = 2 r - M_C u_L, u_L = r / m constrained as
- * step 3 will constrain it: at the walls (lm_grid_apply_bc) and, with
- * sim:contact (where pins hold nodes; otherwise pin_w is 0 and
- * constraint.c holds the pinned points after this), at the nodes a pin
- * holds, the pin's velocity (momentum) or no acceleration
- * (forces: a pin moves steadily within a step; the impulse
- * (v_pin - p_i / m_i) / dt with which pin.c holds the node is no
- * acceleration of the string, and fed to the neighbours through M_C it
- * made the pinned strings blow up, measured). (ux, uy), (bx, by) are
+ * M_L (u_L + w), u_L = r / m constrained as step 3 will constrain it, and
+ * the correction w = u_L - M_L^-1 M_C u_L constrained the same way with no
+ * targets (constraint.c lm_constraint_field: the Neumann step of the
+ * constrained consistent mass). The constraints: the walls
+ * (lm_grid_apply_bc); the heavy end points and the pins that hold their
+ * point (constraint.c, what = 0 momenta, 1 forces); and, where pins hold
+ * nodes (a pinned edge, sim:contact), at those nodes the pin's velocity
+ * (momentum) or no acceleration (forces: a pin moves steadily within a
+ * step; the impulse (v_pin - p_i / m_i) / dt with which pin.c holds the
+ * node is no acceleration of the string, and fed to the neighbours through
+ * M_C it made the pinned strings blow up, measured). (ux, uy), (bx, by) are
  * scratch. */
-static void correct_weighted(lm_sim *sim, double *rx, double *ry, int momentum, double *ux,
+static void correct_weighted(lm_sim *sim, double *rx, double *ry, int what, double *ux,
                              double *uy, double *bx, double *by)
 {
     lm_grid *g = &sim->grid;
     size_t nn = lm_grid_nodes(g);
+    const int momentum = what == 0, con = lm_constraint_active(sim);
     for (size_t i = 0; i < nn; i++) {
         double r = g->m[i] > 0 ? 1.0 / g->m[i] : 0;
         ux[i] = rx[i] * r;
@@ -89,41 +101,65 @@ static void correct_weighted(lm_sim *sim, double *rx, double *ry, int momentum, 
         }
     }
     lm_grid_apply_bc(g, ux, uy);
+    if (con) lm_constraint_field(sim, what, ux, uy);
     double *const fill[2] = {ux, uy};
     static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
     lm_grid_fill(g, 2, fill, comp);
     consistent_times(sim, ux, uy, bx, by);
+    /* (bx, by) becomes w; a held node keeps its own sums (below), so its w
+     * is nothing */
+    for (size_t i = 0; i < nn; i++) {
+        if (!(g->m[i] > 0) || (sim->npins && sim->work->pin_w[i] > 0)) {
+            bx[i] = by[i] = 0;
+            continue;
+        }
+        bx[i] = ux[i] - bx[i] / g->m[i];
+        by[i] = uy[i] - by[i] / g->m[i];
+    }
+    if (con) {
+        lm_grid_apply_bc(g, bx, by);
+        lm_constraint_field(sim, 3, bx, by);
+    }
     for (size_t i = 0; i < nn; i++) {
         /* a held node keeps its own sums: pin.c reads the reaction from
          * them (correcting them doubled a hanging chain's end tension,
          * measured: +100 %), and holds its momentum whatever they are */
         if (!(g->m[i] > 0) || (sim->npins && sim->work->pin_w[i] > 0)) continue;
-        rx[i] = 2 * rx[i] - bx[i];
-        ry[i] = 2 * ry[i] - by[i];
+        rx[i] = g->m[i] * (ux[i] + bx[i]);
+        ry[i] = g->m[i] * (uy[i] + by[i]);
     }
 }
 
-/* Before step 3: p_i and f_i corrected. Scratch: the step-4 arrays
- * (ax, ay, vx, vy), which step 4 overwrites whole (phase-by-phase path
- * only: lm_step_fusable says no when the option is on). pin.c's
- * lm_pin_grid then holds the pinned nodes as before. */
+/* Step 3, after the damping: p_i and f_i corrected, the heavy points and
+ * point pins solved inside (the momenta first: the forces' solve gives the
+ * pins' reactions), so lm_step_grid_update does not call
+ * lm_constraint_grid. Scratch: the step-4 arrays (ax, ay, vx, vy), which
+ * step 4 overwrites whole (phase-by-phase path only: lm_step_fusable says
+ * no when the option is on). pin.c's lm_pin_grid then holds the pinned
+ * nodes as before. */
 void lm_mass_correct_momentum_forces(lm_sim *sim)
 {
     lm_grid *g = &sim->grid;
-    correct_weighted(sim, g->fx, g->fy, 0, g->ax, g->ay, g->vx, g->vy);
-    correct_weighted(sim, g->px, g->py, 1, g->ax, g->ay, g->vx, g->vy);
+    correct_weighted(sim, g->px, g->py, 0, g->ax, g->ay, g->vx, g->vy);
+    correct_weighted(sim, g->fx, g->fy, 1, g->ax, g->ay, g->vx, g->vy);
+    if (lm_constraint_active(sim)) lm_constraint_reactions(sim);
 }
 
 /* Step 5, MUSL: the re-mapped velocities v_i = (sum_p m_p v_p N_ip) / m_i
- * in (vx, vy), not yet constrained, corrected to 2 v - M_L^-1 M_C v with
- * v constrained first (walls, pins). Scratch: ax, ay (step 4 is done) and
- * one more pair, the caller's. */
+ * in (vx, vy), constrained (node-held pins, walls, then constraint.c's
+ * heavy points and point pins), then v + w with w = v - M_L^-1 M_C v
+ * constrained with no targets, as in step 3; lm_step_strain_velocity_end
+ * then does not call lm_constraint_velocity (a heavy point's share is not
+ * a projection: twice would give it twice). Scratch: ax, ay (step 4 is
+ * done) and one more pair, the caller's. */
 void lm_mass_correct_velocity(lm_sim *sim, double *sx, double *sy)
 {
     lm_grid *g = &sim->grid;
     size_t nn = lm_grid_nodes(g);
+    const int con = lm_constraint_active(sim);
     lm_pin_velocity(sim);
     lm_grid_apply_bc(g, g->vx, g->vy);
+    if (con) lm_constraint_field(sim, 2, g->vx, g->vy);
     for (size_t i = 0; i < nn; i++) {
         g->ax[i] = g->vx[i];
         g->ay[i] = g->vy[i];
@@ -133,8 +169,19 @@ void lm_mass_correct_velocity(lm_sim *sim, double *sx, double *sy)
     lm_grid_fill(g, 2, fill, comp);
     consistent_times(sim, g->ax, g->ay, sx, sy);
     for (size_t i = 0; i < nn; i++) {
-        if (!(g->m[i] > 0)) continue;
-        g->vx[i] = 2 * g->vx[i] - sx[i] / g->m[i];
-        g->vy[i] = 2 * g->vy[i] - sy[i] / g->m[i];
+        if (!(g->m[i] > 0)) {
+            sx[i] = sy[i] = 0;
+            continue;
+        }
+        sx[i] = g->vx[i] - sx[i] / g->m[i];
+        sy[i] = g->vy[i] - sy[i] / g->m[i];
+    }
+    if (con) {
+        lm_grid_apply_bc(g, sx, sy);
+        lm_constraint_field(sim, 3, sx, sy);
+    }
+    for (size_t i = 0; i < nn; i++) {
+        g->vx[i] += sx[i];
+        g->vy[i] += sy[i];
     }
 }

@@ -161,6 +161,7 @@ void lm_sim_free(lm_sim *sim)
     lm_nwork_delete(w->nwork);
     lm_ahead_free(w->ahead);
     lm_subcycle_free(w->sub);
+    lm_apic_free(w->apic);
     for (int k = 0; k < sim->nmats; k++) free(sim->mats[k]);
     LU_FREE_ALL(sim->mats, sim->bodies, w->cell_rho, w->cell_stress, sim->pins, sim->links,
                 w->pin_w, w->cons, w, sim);

@@ -11,6 +11,7 @@ struct lm_con;
 struct lm_ahead;
 struct lm_nwork;
 struct lm_subcycle;
+struct lm_apic;
 
 typedef struct lm_work {
     double *cell_rho;      /* density.c: gas density per cell (nx * ny) */
@@ -23,6 +24,8 @@ typedef struct lm_work {
                                      by the first step that needs it; NULL: none */
     struct lm_ahead *ahead;       /* the fused pass's nodal arrays (step_fused.c);
                                      NULL until a plain run's first step */
+    struct lm_apic *apic;         /* apic.c: the points' affine velocities
+                                     (lamina.sim{transfer = "apic"}); NULL: none */
     struct lm_subcycle *sub;      /* multi-rate stepping's nodal arrays
                                      (subcycle.c); NULL until its first step */
     int courant_checked;          /* the Courant check passed and nothing that

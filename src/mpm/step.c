@@ -223,19 +223,24 @@ void lm_step_grid_update(lm_sim *sim)
     lm_grid *g = &sim->grid;
     size_t nn = lm_grid_nodes(g);
     double dt = sim->def.dt;
-    /* mass = "corrected": p_i, f_i towards the consistent mass
-     * (mass_corrected.c; one field only: not with contact's own fields) */
-    if (sim->def.mass == LM_MASS_CORRECTED && !sim->contact) lm_mass_correct_momentum_forces(sim);
     /* grid damping (damping.c): part of the force, so before the heavy end
      * points' solve and the walls, which then act on the damped force */
     const int damped = sim->def.damping > 0;
     if (damped) lm_damp_grid(sim);
+    /* mass = "corrected": p_i, f_i towards the consistent mass, the heavy
+     * points and point pins solved inside (mass_corrected.c; one field
+     * only: not with contact's own fields). After the damping, as the
+     * lumped path solves its constraints after it; without constraints the
+     * correction is one linear map of p and f alike, which commutes with
+     * the damping's node-by-node f - c p, so the order changes nothing. */
+    const int corrected = sim->def.mass == LM_MASS_CORRECTED && !sim->contact;
+    if (corrected) lm_mass_correct_momentum_forces(sim);
     if (lm_constraint_active(sim)) {
         /* heavy end points, on p and f with the walls applied (the solve
          * leaves the walls' components alone: constraint.c) */
         lm_grid_apply_bc(g, g->px, g->py);
         lm_grid_apply_bc(g, g->fx, g->fy);
-        lm_constraint_grid(sim);
+        if (!corrected) lm_constraint_grid(sim);
     }
 #pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
     for (long i = 0; i < (long)nn; i++) {
@@ -310,7 +315,10 @@ void lm_step_strain_velocity_end(lm_sim *sim, int remap)
     }
     lm_pin_velocity(sim);
     lm_grid_apply_bc(g, g->vx, g->vy);
-    if (lm_constraint_active(sim)) lm_constraint_velocity(sim);   /* heavy ends */
+    /* heavy ends; with mass = "corrected" the re-map solved them already */
+    if (lm_constraint_active(sim) &&
+        !(remap && sim->def.mass == LM_MASS_CORRECTED && !sim->contact))
+        lm_constraint_velocity(sim);
     double *const fill[2] = {g->vx, g->vy};
     static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
     lm_grid_fill(g, 2, fill, comp);
@@ -331,6 +339,7 @@ void lm_step_strain_velocity(lm_sim *sim)
         static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
         scatter(sim, SCATTER_MOMENTUM, 2, out, comp);
         lm_constraint_remap(sim);   /* a heavy point's extra momentum off */
+        lm_apic_remap(sim);         /* APIC's affine momenta (apic.c) */
     } else {
 #pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
         for (long i = 0; i < (long)nn; i++) {
@@ -586,6 +595,7 @@ lm_status lm_sim_step_then(lm_sim *sim, int more)
     if (!sim->work->courant_checked && lm_sim_check_courant(sim) != LM_OK) return LM_ERR_COURANT;
     lm_status st = sim->prepared ? LM_OK : lm_sim_prepare(sim);
     if (st == LM_OK) st = lm_threads_reserve(sim);
+    if (st == LM_OK) st = lm_apic_reserve(sim);   /* transfer = "apic" */
     if (st != LM_OK) return st;
     lm_pace_step(sim);                          /* the OS threads for this step */
     if (sim->def.substeps) {                    /* multi-rate (subcycle.c) */
@@ -603,6 +613,7 @@ lm_status lm_sim_step_then(lm_sim *sim, int more)
         lm_step_clear(sim);                     /* 0: the grid's sums */
         lm_step_shape(sim);                     /* 0: N_ip, G_ip at x^k */
         lm_step_p2g_forces(sim);                /* 1-2: m_i, p_i; f_i */
+        lm_apic_p2g(sim);                       /* 1: APIC's affine momenta */
     }
     if (sim->contact) {                         /* the paired bodies' own fields */
         st = lm_contact_sums(sim);
@@ -617,6 +628,7 @@ lm_status lm_sim_step_then(lm_sim *sim, int more)
     if (sim->contact) lm_contact_correct(sim);
     lm_membrane_segment_hold(sim);              /* x^k of segment membranes */
     lm_step_g2p(sim);                           /* 4: v_p, x_p */
+    lm_apic_g2p(sim);                           /* 4: APIC's v_p, C_p */
     if (sim->contact) lm_contact_g2p(sim);
     lm_step_strain_velocity(sim);               /* 5: v_i for the strain */
     if (sim->contact) lm_contact_strain_velocity(sim);

@@ -355,6 +355,19 @@ void lm_constraint_p2g(lm_sim *sim);       /* step 1: the extra mass off the gri
 void lm_constraint_grid(lm_sim *sim);      /* step 3: shared on p and on f */
 void lm_constraint_remap(lm_sim *sim);     /* step 5: the extra momentum off */
 void lm_constraint_velocity(lm_sim *sim);  /* step 5: the strain velocities */
+/* mass = "corrected" (mass_corrected.c): the constraint on a velocity
+ * field inside the Neumann step; what: 0 momenta, 1 forces, 2 strain
+ * velocities, 3 the correction (no targets); then the pins' reactions. */
+void lm_constraint_field(lm_sim *sim, int what, double *ux, double *uy);
+void lm_constraint_reactions(lm_sim *sim);
+/* transfer = "apic" (apic.c): room for every point's C; step 1's affine
+ * momenta; step 4's velocities and C; the MUSL re-map's affine momenta. */
+int lm_apic_active(const lm_sim *sim);
+lm_status lm_apic_reserve(lm_sim *sim);
+void lm_apic_free(struct lm_apic *a);
+void lm_apic_p2g(lm_sim *sim);
+void lm_apic_g2p(lm_sim *sim);
+void lm_apic_remap(lm_sim *sim);
 
 /* material_gas.c: [F] §3.3 eqs 21-25, [F] eq 26. */
 double lm_gas_sound_speed(const lm_material *mat, double e);

@@ -297,6 +297,7 @@ typedef struct lm_sim_def {
     lm_basis basis;        /* shape functions (default linear) */
     lm_stress stress;      /* internal force from point or cell stresses */
     lm_mass mass;          /* lumped (default) or corrected (mass_corrected.c) */
+    int apic;              /* 1: the affine transfer for bulk bodies (apic.c) */
     int axisym;            /* the axisymmetric form (axisym.c): x is r, y is
                               z, the left side is the axis r = 0; masses,
                               volumes, forces and energies per radian */

@@ -3,13 +3,15 @@
 -- measured quantity, which scripts/verify/run.sh collects into
 -- docs/verification.md.
 --
--- Options, each a `lamina run --set name=value` (every case reads all six,
+-- Options, each a `lamina run --set name=value` (every case reads all seven,
 -- so a --set is never left unread):
 --   basis  "linear" | "gimp" | "bspline2" | "default" (lamina.sim{basis})
 --   force  "point" | "segment" | "default" (sim:membrane{force}; membranes)
 --   scheme "musl" | "usl" | "default" (lamina.sim{scheme})
 --   mass   "lumped" | "corrected" | "default" (lamina.sim{mass}; the
 --          matrix runs "default" unless run.sh -m says otherwise)
+--   transfer "flip" | "apic" | "default" (lamina.sim{transfer}; the matrix
+--          runs "default" unless run.sh -t says otherwise)
 --   level  1 (coarse), 2 (fine), 3 (finer): the case's resolution
 --   tol    a tolerance in per cent; > 0 makes every result an assertion
 --          (the ctest `verify` label), 0 (default) only prints
@@ -33,15 +35,16 @@ M.basis = opt("basis", "default")
 M.force = opt("force", "default")
 M.scheme = opt("scheme", "default")
 M.mass = opt("mass", "default")
+M.transfer = opt("transfer", "default")
 M.level = lamina.param("level", 1)
 M.tol = lamina.param("tol", 0)
 assert(M.level == 1 or M.level == 2 or M.level == 3, "level must be 1, 2 or 3")
 M.case = (SCRIPT:match("([^/]+)%.lua$")) or SCRIPT
-M.explicit = M.basis ~= nil or M.force ~= nil or M.scheme ~= nil or M.mass ~= nil
+M.explicit = M.basis ~= nil or M.force ~= nil or M.scheme ~= nil or M.mass ~= nil or M.transfer ~= nil
 
 -- lamina.sim with the case's basis and scheme added to `t`.
 function M.sim(t)
-  t.basis, t.scheme, t.mass = M.basis, M.scheme, M.mass
+  t.basis, t.scheme, t.mass, t.transfer = M.basis, M.scheme, M.mass, M.transfer
   M.the_sim = lamina.sim(t)
   return M.the_sim
 end
