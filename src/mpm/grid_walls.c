@@ -28,6 +28,7 @@
  * adjoint and mass stays positive), gathers fill. Sides are treated x
  * first, then y, over the whole ring, so a corner ghost gets both images.
  * With pad = 0 (the linear basis) both are no-ops. */
+#include "grid_mirror.h"
 #include "step.h"
 
 /* The sign of a field's image across a side whose normal is x (nx = 1) or
@@ -77,14 +78,7 @@ static void walls(const lm_grid *g, int nf, double *const *f, const lm_comp *com
         for (int k = -1; k <= len + 1; k++) {
             long gh, mi;
             ghost_pair(g, side, k, &gh, &mi);
-            for (int c = 0; c < nf; c++) {
-                if (fold) {
-                    f[c][mi] += s[c] * f[c][gh];
-                    f[c][gh] = 0;
-                } else {
-                    f[c][gh] = s[c] * f[c][mi];
-                }
-            }
+            lm_grid_mirror(nf, f, s, gh, mi, fold);
         }
     }
 }

@@ -11,6 +11,7 @@
  * no image (ghosts are ordinary nodes). Scatters fold the ghosts into
  * their mirrors, gathers fill them, faces taken x, then y, then z over the
  * whole padded plane so an edge or corner ghost gets every image. */
+#include "grid_mirror.h"
 #include "sim3_walls.h"
 
 /* The nodes of the padded plane i_a = layer, numbered k = 0 .. count-1
@@ -68,14 +69,7 @@ static void walls(const lm3_grid *g, int nf, double *const *fl, const int *comp,
         long cnt = plane_count(g, a);
         for (long k = 0; k < cnt; k++) {
             long gh = plane_node(g, a, ghost, k), mi = plane_node(g, a, mirror, k);
-            for (int c = 0; c < nf; c++) {
-                if (fold) {
-                    fl[c][mi] += s[c] * fl[c][gh];
-                    fl[c][gh] = 0;
-                } else {
-                    fl[c][gh] = s[c] * fl[c][mi];
-                }
-            }
+            lm_grid_mirror(nf, fl, s, gh, mi, fold);
         }
     }
 }
