@@ -62,7 +62,9 @@
 --   of the particles' kinetic energy, which also holds FLIP's hidden
 --   velocity); the particles' sum is shown too. Tolerances: radius and
 --   pressure within the two papers' own difference at the cell ([T] Table 5
---   against [F] Table III, the same simulations reported twice); hoop
+--   against [F] Table III, the same simulations reported twice), but not
+--   where that is over half the value (cell 0.4's pressure, 33.4 against
+--   50.3: both printed, no check); hoop
 --   against p r / t within [F] Table IV's 2-5 % for simulations 2-4;
 --   total mass to Table 5's three digits; no gas outside ([T] §6.2). The
 --   earlier construction of the shape is the page gas_dogbone_superellipse.
@@ -77,7 +79,19 @@
 --   in less area, so the pressure is higher (p = 0.4 E_int / A: 34.1
 --   against [T]'s 27.0 at cell 0.1), and the hoop stress, a mean over
 --   points many of which are slack, falls 6-12 % below p r / t. With
---   [T]'s 200 points at cell 0.1 the membrane tears at t = 3.64. At cell
+--   [T]'s 200 points at cell 0.1 the membrane tears at t = 3.64. Remedies
+--   tried at cell 0.1 (accuracy30, the same deck run to t = 4, means of
+--   r(0) / r(90) and p over [3, 4]; [T] Table 5: 1.388 / 1.387, 27.0; [F]
+--   Table III: 1.35, 31.2): the page's bilinear basis and point forces
+--   1.3066 / 1.3120, p 34.16 (462 points slack at t = 4); the quadratic
+--   B-spline with point forces 1.3542 / 1.3555, p 31.82 (439 slack); the
+--   B-spline with segment forces (dt x 0.7 for the segment form's Courant
+--   factor) 1.3752 / 1.3732, p 30.67 (459 slack): the radius within the
+--   papers' difference (0.038) of [T]'s, the pressure 3.7 above it (tol
+--   4.2). The slack points stay as many: the smoother basis lets the taut
+--   ones stretch, it does not take up the slack. The page keeps the papers'
+--   bilinear basis at cells 0.4-0.1 (their scheme); the B-spline with
+--   segment forces is the remedy for a user's run. At cell
 --   0.05 the radius is within the papers' difference and the pressure,
 --   31.8, is [F]'s 31.7 but 2.8 above [T]'s 29.0 (tolerance 2.7, the two
 --   papers' own difference). At cell 0.4 r(0) is 0.024 below [T]'s 1.08
@@ -132,7 +146,7 @@ do
                legend = "top right", series = series }
 end
 
-local report, radius_series, energy_series, hash = {}, {}, {}, nil
+local report, radius_series, energy_series, hashes = {}, {}, {}, {}
 for _, h in ipairs{0.4, 0.2, 0.1, 0.05} do
   if h < finest - 1e-12 then break end
   local basis = h < 0.075 and "bspline2" or "linear"
@@ -197,8 +211,16 @@ for _, h in ipairs{0.4, 0.2, 0.1, 0.05} do
     unit = string.format("([T] Table 5 sim %d; tol: [F] Table III's %.2f)", s, F3[h][1]) }
   report["radius_90deg_" .. tag] = { r90, paper = T5[h][2], tol = math.abs(T5[h][2] - F3[h][1]),
     unit = string.format("([T] Table 5 sim %d; tol: [F] Table III's %.2f)", s, F3[h][1]) }
-  report["pressure_" .. tag] = { p, paper = T5[h][3], tol = math.abs(T5[h][3] - F3[h][2]),
-    unit = string.format("(mean over the enclosed space; [T] Table 5; tol: [F] Table III's %.1f)", F3[h][2]) }
+  -- the tolerance is the two papers' own difference for the same run, but
+  -- never above half [T]'s value (issue 32 item 3): at cell 0.4 they differ
+  -- by 51 % (33.4 against 50.3), so there both are printed and none checked
+  local dp = math.abs(T5[h][3] - F3[h][2])
+  report["pressure_" .. tag] = dp <= 0.5 * T5[h][3]
+    and { p, paper = T5[h][3], tol = dp,
+          unit = string.format("(mean over the enclosed space; [T] Table 5; tol: [F] Table III's %.1f)", F3[h][2]) }
+    or { p, paper = T5[h][3],
+         unit = string.format("(mean over the enclosed space; [T] Table 5; [F] Table III: %.1f for the same run, "
+                              .. "%.0f %% apart: no check)", F3[h][2], 100 * dp / T5[h][3]) }
   if t_end >= 4 then   -- [F] §4.3.2 shows its final state at t = 4: its Table III beside our means over [3, 4]
     report["radius_t3to4_" .. tag] = { 0.5 * (rec:mean("r0", 3, 4) + rec:mean("r90", 3, 4)), paper = F3[h][1],
       unit = "(mean of r(0), r(90) over t in [3, 4]; [F] Table III, its runs ended at t = 4)" }
@@ -233,7 +255,7 @@ for _, h in ipairs{0.4, 0.2, 0.1, 0.05} do
   energy_series[#energy_series + 1] = { x = t, y = rel, label = string.format("particles, cell %.2f", h) }
   energy_series[#energy_series + 1] = { x = t, y = vrel, label = string.format("grid's view, cell %.2f", h),
                                         dashed = true, color = #energy_series }
-  hash = sim:hash()
+  hashes[#hashes + 1] = sim:hash()
 end
 lamina.plot{ file = out .. "/fig55_radii.png", csv = true, width = 720, height = 420,
              title = "Figs 49/51/53/55: membrane radius at 0 and 90 degrees (Box 9)", xlabel = "t",
@@ -242,5 +264,6 @@ lamina.plot{ file = out .. "/fig55_energy.png", csv = true, width = 720, height 
              title = "Figs 49/51/53/55: total energy / initial (dashed: as the grid sees it)", xlabel = "t",
              ylabel = "E / E0", yrange = {0.75, 1.03}, legend = "bottom right",   -- the legend below the curves
              series = energy_series }
-report.state_hash = hash
+-- every mesh's state (assets/lua/hashes.lua)
+report.state_hash = require("hashes").fold(hashes)
 lamina.report(report)
