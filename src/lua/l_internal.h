@@ -13,6 +13,8 @@
 #define LA_REGION "lamina.region"
 #define LA_SIM "lamina.sim"
 #define LA_BODY "lamina.body"
+#define LA_REGION3 "lamina.region3"
+#define LA_BODY3 "lamina.body3"
 
 /* l_args.c: constructor tables. Every constructor takes one table of named
  * arguments and rejects a key it does not know, by name, at the script's
@@ -106,7 +108,10 @@ int la_linear_fluid(lua_State *L);
 /* A material as the script holds it: its definition, which each sim it is
  * given to copies (lm_sim_add_material); a live change (mat.E = 2000)
  * goes to every such sim through lm_sim_set_material. */
-typedef struct la_material { lm_material def; } la_material;
+typedef struct la_material {
+    lm_material def;
+    int plane_given;            /* `plane` was written: refused in 3D (l_body3.c) */
+} la_material;
 la_material *la_check_material(lua_State *L, int idx);
 /* The engine's index of the material at midx in the sim at sidx, added
  * to it (and remembered, for live changes) the first time; a Lua error
@@ -164,6 +169,8 @@ typedef struct la_sim {
     double ck_every, ck_next;
     la_ref_body *ref;           /* per body, nref of them (l_ref.c) */
     int nref;
+    struct la_sim3 *s3;         /* lamina.sim{dim = 3}: the 3D run (l_sim3.h); sim
+                                   is NULL then */
 } la_sim;
 
 /* l_ref.c: captures the points of s's bodies that have no reference yet
@@ -187,6 +194,8 @@ void la_warn(lua_State *L, const char *line);
 void la_open_sim(lua_State *L);
 int la_sim_new(lua_State *L);
 la_sim *la_check_sim(lua_State *L, int idx);
+/* Either dimension (la_check_sim refuses a 3D sim naming the method). */
+la_sim *la_check_sim_any(lua_State *L, int idx);
 /* Keeps the value at idx alive as long as the sim at sidx (its uservalue). */
 void la_sim_keep(lua_State *L, int sidx, int idx);
 /* {kinetic, strain, internal, potential, total} */

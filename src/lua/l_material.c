@@ -23,6 +23,7 @@ la_material *la_check_material(lua_State *L, int idx)
 static void push_material(lua_State *L, const lm_material *def)
 {
     la_material *u = lua_newuserdatauv(L, sizeof *u, 1);
+    memset(u, 0, sizeof *u);
     u->def = *def;
     luaL_setmetatable(L, LA_MATERIAL);
     lua_newtable(L);                       /* sim -> index, the sims weakly */
@@ -160,7 +161,10 @@ int la_elastic(lua_State *L)
     m.nu = la_opt_number(L, 1, fn, "nu", 0.3);
     m.plane = (lm_plane)la_option(L, fn, "plane",
                                    la_opt_string(L, 1, fn, "plane", "strain"), planes);
-    return push_new(L, fn, &m);
+    int plane_given = la_has(L, 1, "plane");
+    push_new(L, fn, &m);
+    la_check_material(L, -1)->plane_given = plane_given;
+    return 1;
 }
 
 /* lamina.membrane{rho, E, nu, thickness, law, one_way} ([M] §3, [T] §5.1):

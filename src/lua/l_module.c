@@ -11,6 +11,7 @@
 
 #include "l_analysis.h"
 #include "l_curve.h"
+#include "l_sim3.h"
 #include "util.h"
 
 /* lamina.clock(): wall-clock seconds from an arbitrary start (monotonic),
@@ -36,6 +37,9 @@ static int luaopen_lamina(lua_State *L)
                                      {"disk", la_disk},
                                      {"rect", la_rect},
                                      {"polygon", la_polygon},
+                                     {"ball", la_ball},
+                                     {"box", la_box},
+                                     {"cylinder", la_cylinder},
                                      {"plot", la_plot},
                                      {"report", la_report},
                                      {"pause", la_pause},
@@ -46,6 +50,8 @@ static int luaopen_lamina(lua_State *L)
     la_open_region(L);
     la_open_sim(L);
     la_open_body(L);
+    la_open_region3(L);         /* lamina.ball/box/cylinder (l_region3.c) */
+    la_open_body3(L);           /* a 3D sim's bodies (l_body3.c) */
     la_open_pin(L);
     la_open_link(L);
     la_open_curve(L);

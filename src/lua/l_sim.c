@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "l_internal.h"
+#include "l_sim3.h"
 
 static const char *const schemes[] = {"musl", "usl", NULL};
 static const char *const masses[] = {"lumped", "corrected", NULL};
@@ -21,10 +22,19 @@ static const char *const stresses[] = {"points", "cell", NULL};
 static const char *const bcs[] = {"fixed", "symmetry", "free", NULL};
 static const char *const sides[] = {"left", "right", "bottom", "top", NULL};
 
-la_sim *la_check_sim(lua_State *L, int idx)
+la_sim *la_check_sim_any(lua_State *L, int idx)
 {
     la_sim *s = luaL_checkudata(L, idx, LA_SIM);
-    if (!s->sim) luaL_error(L, "the simulation has been closed");
+    if (!s->sim && !s->s3) luaL_error(L, "the simulation has been closed");
+    return s;
+}
+
+/* The 2D methods take this: a 3D sim (lamina.sim{dim = 3}, l_sim3.c) is
+ * refused naming the method. */
+la_sim *la_check_sim(lua_State *L, int idx)
+{
+    la_sim *s = la_check_sim_any(L, idx);
+    if (s->s3) la_sim3_refuse(L);
     return s;
 }
 
@@ -94,8 +104,13 @@ int la_sim_new(lua_State *L)
     static const char *const keys[] = {"domain", "cell", "dt", "scheme", "gravity",
                                        "boundary", "courant", "pic", "seed", "threads",
                                        "basis", "stress", "axisymmetric", "mass", "damping",
-                                       "substeps", "transfer", NULL};
+                                       "substeps", "transfer", "dim", NULL};
     const char *fn = "lamina.sim";
+    /* dim = 3: the 3D run (l_sim3.c, docs/3d.md) */
+    la_check_table(L, 1, fn);
+    double dim = la_opt_number(L, 1, fn, "dim", 2);
+    if (dim == 3) return la_sim3_new(L);
+    if (dim != 2) luaL_error(L, "%s: dim must be 2 or 3 (got %f)", fn, dim);
     la_check_keys(L, 1, fn, keys);
     lm_sim_def d;
     lm_sim_def_default(&d);
@@ -207,6 +222,8 @@ static int sim_gc(lua_State *L)
         fprintf(stderr, "LAMINA_NRM_CMP: %lu normals, Cholesky against QR: largest angle %.3g "
                 "degrees, mean %.3g; %lu fits fell back to the QR\n", n, worst, mean, fallbacks);
     lm_sim_free(s->sim);
+    la_sim3_free(s->s3);
+    s->s3 = NULL;
     free(s->ev);
     free(s->pinf);
     free(s->ck_file);
@@ -229,7 +246,7 @@ void la_sim_add_event(lua_State *L, int sidx, double first, double interval, int
 {
     sidx = lua_absindex(L, sidx);
     fidx = lua_absindex(L, fidx);
-    la_sim *s = la_check_sim(L, sidx);
+    la_sim *s = la_check_sim_any(L, sidx);
     luaL_checktype(L, fidx, LUA_TFUNCTION);
     if (s->nev == s->capev) {
         int cap = s->capev ? 2 * s->capev : 8;
@@ -636,10 +653,12 @@ static int sim_courant(lua_State *L)
 
 static int sim_index(lua_State *L)
 {
+    if (la_check_sim_any(L, 1)->s3) return la_sim3_index(L);
     la_sim *s = la_check_sim(L, 1);
     const char *k = luaL_checkstring(L, 2);
     const lm_sim *m = s->sim;
     if (strcmp(k, "t") == 0) lua_pushnumber(L, m->t);
+    else if (strcmp(k, "dim") == 0) lua_pushinteger(L, 2);
     else if (strcmp(k, "nstep") == 0) lua_pushinteger(L, m->step);
     else if (strcmp(k, "dt") == 0) lua_pushnumber(L, m->def.dt);
     else if (strcmp(k, "cell") == 0) lua_pushnumber(L, m->grid.hx);
@@ -676,6 +695,7 @@ static int sim_index(lua_State *L)
  * meaningful while gravity is unchanged), pic, courant, damping. */
 static int sim_newindex(lua_State *L)
 {
+    if (la_check_sim_any(L, 1)->s3) return la_sim3_newindex(L);
     la_sim *s = la_check_sim(L, 1);
     const char *k = luaL_checkstring(L, 2);
     lm_sim *m = s->sim;
@@ -711,6 +731,7 @@ static int sim_newindex(lua_State *L)
 
 static int sim_tostring(lua_State *L)
 {
+    if (la_check_sim_any(L, 1)->s3) return la_sim3_tostring(L);
     la_sim *s = la_check_sim(L, 1);
     lua_pushfstring(L, "lamina.sim (%d x %d cells, %d particles, t = %f)",
                     s->sim->grid.nx, s->sim->grid.ny, (int)s->sim->p.n, s->sim->t);
@@ -750,5 +771,7 @@ void la_open_sim(lua_State *L)
     la_link_methods(L);      /* sim:link (l_link.c) */
     la_relax_methods(L);     /* sim:relax (l_relax.c) */
     lua_setfield(L, -2, "methods");
+    la_sim3_methods(L);      /* a 3D sim's (l_sim3.c) */
+    lua_setfield(L, -2, "methods3");
     lua_pop(L, 1);
 }

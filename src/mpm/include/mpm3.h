@@ -157,4 +157,57 @@ void lm3_elastic_update(const lm3_material *mat, const double de[6], const doubl
                         double dt, double s[6]);
 double lm3_elastic_energy_density(const lm3_material *mat, const double s[6]);
 
+
+/* ---- regions, seeding and sums for the Lua layer (sim3_region.c,
+ * sim3_query.c; docs/3d.md "Lua API") ---- */
+
+/* A solid region: a ball (c, r), an axis-aligned box [lo, hi], or a
+ * cylinder of radius r about the segment a -> b (flat ends). lo, hi is
+ * the bounding box for every kind. */
+typedef enum lm3_region_kind { LM3_BALL, LM3_BOX, LM3_CYLINDER } lm3_region_kind;
+typedef struct lm3_region {
+    lm3_region_kind kind;
+    double c[3], r;        /* ball: centre and radius; cylinder: radius */
+    double a[3], b[3];     /* cylinder: the axis' ends */
+    double lo[3], hi[3];   /* the bounding box */
+} lm3_region;
+int lm3_region_contains(const lm3_region *r, const double x[3]);
+
+/* Seeding a region by a predicate: the sub-cell centres of an nx x ny x nz
+ * pattern per cell (the papers' counting, as lm3_seed_box) that lie in
+ * [lo, hi], in the domain and where inside(ctx, x) is nonzero. */
+typedef struct lm3_seed_def {
+    int mat;
+    int k[3];              /* points per cell per direction, 1..LM3_MAX_PPC_DIR */
+    double lo[3], hi[3];   /* the region's bounding box */
+    /* 1 in, 0 out, -1 stops (an error the caller keeps) */
+    int (*inside)(void *ctx, const double x[3]);
+    /* the velocity at x, or NULL for v0; 0 or -1 to stop */
+    int (*velocity)(void *ctx, const double x[3], double v[3]);
+    double v0[3];
+    void *ctx;
+} lm3_seed_def;
+#define LM3_MAX_PPC_DIR 8
+/* How many points the definition gives (inside() is called for each
+ * candidate): >= 0, or -1 when inside() stopped or k is out of range. */
+long lm3_seed_count(const lm3_sim *sim, const lm3_seed_def *d);
+/* Adds them: the count added, or -1 (inside/velocity stopped, memory: the
+ * particles added so far are taken out again, so a failed body leaves
+ * nothing). */
+long lm3_seed(lm3_sim *sim, const lm3_seed_def *d);
+
+/* Sums over the particles [first, first + n): mass, centre of mass and
+ * the mass-weighted mean velocity; the energies of the range as
+ * lm3_energy_of. */
+void lm3_range_sums(const lm3_sim *sim, size_t first, size_t n, double *mass, double com[3],
+                    double vel[3]);
+void lm3_range_energy(const lm3_sim *sim, size_t first, size_t n, lm3_energy *e);
+/* FNV-1a over the particles' state and the step count: equal hashes,
+ * equal bits (determinism tests). */
+uint64_t lm3_sim_hash(const lm3_sim *sim);
+/* Bytes the grid and `cap` particles' arrays take (the process budget,
+ * docs/security.md "Memory"). */
+size_t lm3_grid_bytes(const lm3_sim *sim);
+size_t lm3_particle_bytes(size_t cap);
+
 #endif

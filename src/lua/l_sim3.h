@@ -1,0 +1,62 @@
+/* l_sim3.h - the Lua layer's 3D run (docs/3d.md "Lua API"): what a
+ * lamina.sim{dim = 3} holds beside the la_sim it shares with 2D (events,
+ * the run guard, checkpoints' bookkeeping), and the pieces its files
+ * share. */
+#ifndef LAMINA_L_SIM3_H
+#define LAMINA_L_SIM3_H
+
+#include "l_internal.h"
+#include "mpm3.h"
+
+/* A body: its particles are the range [first, first + n) of the engine's
+ * arrays (bodies are added whole and never removed). */
+typedef struct la_body3rec {
+    size_t first, n;
+    int mat;
+} la_body3rec;
+
+typedef struct la_sim3 {
+    lm3_sim *sim;
+    la_body3rec *bodies;
+    int nbodies, capbodies;
+    size_t charged;             /* bytes charged to the process budget for the
+                                   engine's arrays (docs/security.md "Memory") */
+} la_sim3;
+
+/* l_sim3.c */
+int la_sim3_new(lua_State *L);                 /* lamina.sim{dim = 3, ...} at 1 */
+void la_sim3_free(la_sim3 *s3);
+int la_sim3_index(lua_State *L);               /* __index, __newindex, __tostring */
+int la_sim3_newindex(lua_State *L);
+int la_sim3_tostring(lua_State *L);
+void la_sim3_methods(lua_State *L);            /* pushes the method table */
+/* Charges the budget up to `bytes` for the engine's arrays (0, or a Lua
+ * error naming what was asked and the cap). */
+void la_sim3_charge(lua_State *L, la_sim3 *s3, size_t bytes, const char *fn);
+/* The sim at idx, 3D (a Lua error naming fn otherwise). */
+la_sim3 *la_check_sim3(lua_State *L, int idx, const char *fn);
+/* Three finite numbers at key of the table at idx: 1, or 0 when absent. */
+int la_triple(lua_State *L, int idx, const char *fn, const char *key, double v[3]);
+/* {kinetic, strain, internal (0: no gas in 3D yet), potential, total} */
+void la_sim3_push_energy(lua_State *L, const lm3_energy *e);
+/* Refuses a 2D-only method called on a 3D sim (and the reverse), naming it. */
+int la_sim3_refuse(lua_State *L);
+
+/* l_sim3_run.c: run, step, every, at (the 2D semantics) */
+int la_sim3_run(lua_State *L);
+int la_sim3_step(lua_State *L);
+int la_sim3_every(lua_State *L);
+int la_sim3_at(lua_State *L);
+
+/* l_body3.c */
+int la_sim3_body(lua_State *L);
+void la_open_body3(lua_State *L);
+
+/* l_region3.c: lamina.ball, lamina.box, lamina.cylinder */
+int la_ball(lua_State *L);
+int la_box(lua_State *L);
+int la_cylinder(lua_State *L);
+void la_open_region3(lua_State *L);
+lm3_region *la_test_region3(lua_State *L, int idx);
+
+#endif
