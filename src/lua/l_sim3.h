@@ -48,6 +48,10 @@ int la_sim3_step(lua_State *L);
 int la_sim3_every(lua_State *L);
 int la_sim3_at(lua_State *L);
 
+/* l_vtk3.c: sim:vtk's particle and grid pieces (0, or -1 with err) */
+int la_vtk3_write_particles(const la_sim3 *s3, const char *path, char *err, size_t errlen);
+int la_vtk3_write_grid(const la_sim3 *s3, const char *path, char *err, size_t errlen);
+
 /* l_body3.c */
 int la_sim3_body(lua_State *L);
 void la_open_body3(lua_State *L);

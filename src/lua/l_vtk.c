@@ -16,6 +16,7 @@
 
 #include "fields.h"
 #include "l_internal.h"
+#include "l_sim3.h"
 #include "vtk.h"
 
 #define LA_VTK "lamina.vtk"
@@ -259,7 +260,8 @@ done:
 static int vtk_output(lua_State *L)
 {
     la_vtk *v = luaL_checkudata(L, lua_upvalueindex(1), LA_VTK);
-    lm_sim *sim = la_check_sim(L, 1)->sim;
+    la_sim *s = la_check_sim_any(L, 1);   /* 3D: l_vtk3.c writes the pieces */
+    lm_sim *sim = s->sim;
     if (v->count == v->cap) {
         int cap = v->cap ? 2 * v->cap : 16;
         double *t = realloc(v->times, (size_t)cap * sizeof *t);
@@ -283,12 +285,15 @@ static int vtk_output(lua_State *L)
     char grid[PREFIX_MAX + 32];
     snprintf(path, sizeof path, "%s_%06d.vtu", v->prefix, v->count);
     snprintf(grid, sizeof grid, "%s_grid_%06d.vtu", v->prefix, v->count);
-    if (write_particles(sim, path, err, sizeof err)) return luaL_error(L, "sim:vtk: %s", err);
-    if (write_grid(sim, grid, err, sizeof err)) {
+    if (s->s3 ? la_vtk3_write_particles(s->s3, path, err, sizeof err)
+              : write_particles(sim, path, err, sizeof err))
+        return luaL_error(L, "sim:vtk: %s", err);
+    if (s->s3 ? la_vtk3_write_grid(s->s3, grid, err, sizeof err)
+              : write_grid(sim, grid, err, sizeof err)) {
         unlink(path);
         return luaL_error(L, "sim:vtk: %s", err);
     }
-    v->times[v->count++] = sim->t;
+    v->times[v->count++] = s->s3 ? s->s3->sim->t : sim->t;
     if (write_pvd(v, err, sizeof err)) {
         v->count--;
         unlink(path);
@@ -302,7 +307,8 @@ int la_sim_vtk(lua_State *L)
 {
     static const char *const keys[] = {"file", "every", NULL};
     const char *fn = "sim:vtk";
-    la_sim *s = la_check_sim(L, 1);
+    la_sim *s = la_check_sim_any(L, 1);
+    const double t = s->s3 ? s->s3->sim->t : s->sim->t;
     la_check_keys(L, 2, fn, keys);
     int ft = la_getfield(L, 2, "file");
     if (ft != LUA_TNIL && ft != LUA_TSTRING)   /* a number made "nan.pvd" (issue 31 item 7) */
@@ -317,7 +323,7 @@ int la_sim_vtk(lua_State *L)
     la_check_output_path(L, fn, -1);
     lua_pop(L, 1);
     double every = la_opt_number(L, 2, fn, "every", 0);
-    if (la_has(L, 2, "every")) la_check_interval(L, fn, "every", every, s->sim->t);
+    if (la_has(L, 2, "every")) la_check_interval(L, fn, "every", every, t);
     la_vtk *v = lua_newuserdatauv(L, sizeof *v, 0);
     memset(v, 0, sizeof *v);
     memcpy(v->prefix, file, len + 1);
@@ -331,7 +337,7 @@ int la_sim_vtk(lua_State *L)
     lua_pushcclosure(L, vtk_output, 1);
     int fidx = lua_gettop(L);
     if (every > 0) {
-        la_sim_add_event(L, 1, s->sim->t, every, fidx);
+        la_sim_add_event(L, 1, t, every, fidx);
     } else {
         lua_pushvalue(L, fidx);
         lua_pushvalue(L, 1);
