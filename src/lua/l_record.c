@@ -17,6 +17,7 @@
 #include "atomic_file.h"
 #include "fields.h"
 #include "l_internal.h"
+#include "l_sim3.h"
 
 #define LA_RECORD "lamina.record"
 
@@ -236,17 +237,22 @@ static void read_value(lua_State *L, const entries *e, const char *name)
 
 /* ---- sampling -------------------------------------------------------- */
 
-static double sample(lua_State *L, const la_column *c, lm_sim *sim, const lm_energy *e)
+/* What a row's t, step and energy columns read, from either dimension's
+ * engine (a 3D run, l_sim3.c, has the columns t, step, energy, values). */
+typedef struct row_clock {
+    double t, step, energy[6];  /* kinetic, strain, internal, potential, total, damped */
+} row_clock;
+
+static double sample(lua_State *L, const la_column *c, lm_sim *sim, const row_clock *k)
 {
+    switch (c->src) {
+    case SRC_T: return k->t;
+    case SRC_STEP: return k->step;
+    case SRC_ENERGY: return k->energy[c->which];
+    default: break;
+    }
     const lm_particles *p = &sim->p;
     switch (c->src) {
-    case SRC_T: return sim->t;
-    case SRC_STEP: return (double)sim->step;
-    case SRC_ENERGY: {
-        const double v[6] = {e->kinetic, e->strain, e->internal, e->potential, e->total,
-                             sim->damped};
-        return v[c->which];
-    }
     case SRC_FIELD:
         /* the tangents before the first step, as frames want them */
         if (c->field->tangents && !sim->prepared && lm_sim_prepare(sim) != LM_OK)
@@ -281,7 +287,8 @@ static double sample(lua_State *L, const la_column *c, lm_sim *sim, const lm_ene
 static int record_sample(lua_State *L)
 {
     la_record *r = check_record(L, lua_upvalueindex(1));
-    lm_sim *sim = la_check_sim(L, 1)->sim;
+    la_sim *s = la_check_sim_any(L, 1);
+    lm_sim *sim = s->sim;
     if (r->nrows == r->cap) {
         size_t cap = r->cap ? 2 * r->cap : 256;
         double *rows = realloc(r->rows, cap * (size_t)r->ncols * sizeof *rows);
@@ -289,10 +296,25 @@ static int record_sample(lua_State *L)
         r->rows = rows;
         r->cap = cap;
     }
-    lm_energy e = {0, 0, 0, 0, 0};
-    if (r->energy) e = lm_sim_energy(sim);
+    row_clock k;
+    memset(&k, 0, sizeof k);
+    if (s->s3) {
+        lm3_energy e3 = {0, 0, 0, 0};
+        if (r->energy) lm3_energy_of(s->s3->sim, &e3);
+        k.t = s->s3->sim->t;
+        k.step = (double)s->s3->sim->nstep;
+        const double v[6] = {e3.kinetic, e3.strain, 0, e3.potential, e3.total, 0};
+        memcpy(k.energy, v, sizeof v);
+    } else {
+        lm_energy e = {0, 0, 0, 0, 0};
+        if (r->energy) e = lm_sim_energy(sim);
+        k.t = sim->t;
+        k.step = (double)sim->step;
+        const double v[6] = {e.kinetic, e.strain, e.internal, e.potential, e.total, sim->damped};
+        memcpy(k.energy, v, sizeof v);
+    }
     double *row = r->rows + r->nrows * (size_t)r->ncols;
-    for (int i = 0; i < r->ncols; i++) row[i] = sample(L, &r->cols[i], sim, &e);
+    for (int i = 0; i < r->ncols; i++) row[i] = sample(L, &r->cols[i], sim, &k);
     r->nrows++;
     const lamina_run *run = la_run(L);
     if (run && run->observer && run->observer->record && r->ncols > 0) {
@@ -512,10 +534,18 @@ int la_sim_record(lua_State *L)
     static const char *const energies[] = {"kinetic", "strain", "internal", "potential", "total",
                                            "damped"};
     const char *fn = "sim:record";
-    la_sim *s = la_check_sim(L, 1);
+    la_sim *s = la_check_sim_any(L, 1);
     la_check_keys(L, 2, fn, keys);
-    double every = la_opt_number(L, 2, fn, "every", s->sim->def.dt);
-    la_check_interval(L, fn, "every", every, s->sim->t);
+    /* a 3D run records t, step, energy and values (the point, field and
+     * angle columns read the 2D engine's bodies) */
+    static const char *const only2d[] = {"points", "fields", "angle", NULL};
+    for (int i = 0; s->s3 && only2d[i]; i++)
+        if (la_has(L, 2, only2d[i]))
+            return luaL_error(L, "%s: '%s' is not available for a 3D simulation in this build "
+                              "(3D records t, step, energy and values)", fn, only2d[i]);
+    const double t_now = s->s3 ? s->s3->sim->t : s->sim->t;
+    double every = la_opt_number(L, 2, fn, "every", s->s3 ? s->s3->sim->def.dt : s->sim->def.dt);
+    la_check_interval(L, fn, "every", every, t_now);
     const char *file = la_opt_output_path(L, 2, fn, "file");
 
     la_record *r = lua_newuserdatauv(L, sizeof *r, 2);
@@ -547,7 +577,7 @@ int la_sim_record(lua_State *L)
     r->energy = energy;
     /* "damped" (the grid damping's work, damping.c) only when the sim is
      * damped as the recorder is made: undamped runs keep their columns */
-    int nen = s->sim->def.damping > 0 ? 6 : 5;
+    int nen = !s->s3 && s->sim->def.damping > 0 ? 6 : 5;
     for (int i = 0; energy && i < nen; i++) add_column(L, r, energies[i], SRC_ENERGY)->which = i;
     lua_getiuservalue(L, ridx, 2);
     la_getfield(L, -1, "fns");
@@ -571,7 +601,7 @@ int la_sim_record(lua_State *L)
     lua_pop(L, 2);
     lua_pushvalue(L, ridx);
     lua_pushcclosure(L, record_sample, 1);
-    la_sim_add_event(L, 1, s->sim->t, every, -1);
+    la_sim_add_event(L, 1, t_now, every, -1);
     lua_pop(L, 1);
     lua_settop(L, ridx);
     return 1;
