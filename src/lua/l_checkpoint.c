@@ -25,20 +25,28 @@
 
 #include "atomic_file.h"
 #include "l_internal.h"
+#include "l_sim3.h"
 
 #define MAGIC_LINE "LAMINA-CHECKPOINT"
 /* the largest checkpoint read back: 64 GiB, far above any documented use;
  * a file claiming more is refused before anything is allocated */
 #define MAX_BYTES ((uint64_t)1 << 36)
 
+/* Either engine's clock: a 3D run (lamina.sim{dim = 3}, l_sim3.h) is
+ * checkpointed in the same file layout with its own engine part
+ * (sim3_state.c). */
+static double ck_t(const la_sim *s) { return s->s3 ? s->s3->sim->t : s->sim->t; }
+static double ck_dt(const la_sim *s) { return s->s3 ? s->s3->sim->def.dt : s->sim->def.dt; }
+static long ck_step(const la_sim *s) { return s->s3 ? s->s3->sim->nstep : s->sim->step; }
+
 int la_sim_checkpoint(lua_State *L)
 {
     static const char *const keys[] = {"file", "every", "at", NULL};
     const char *fn = "sim:checkpoint";
-    la_sim *s = la_check_sim(L, 1);
+    la_sim *s = la_check_sim_any(L, 1);
     la_check_keys(L, 2, fn, keys);
     /* the points' affine velocities (src/mpm/apic.c) are not in the state */
-    if (s->sim->def.apic)
+    if (!s->s3 && s->sim->def.apic)
         return luaL_error(L, "%s: a sim with transfer = \"apic\" cannot be checkpointed (its "
                           "points' affine velocities are not in the state); use transfer = \"flip\"",
                           fn);
@@ -50,7 +58,7 @@ int la_sim_checkpoint(lua_State *L)
     if (has_every == has_at) return luaL_error(L, "%s: give exactly one of 'every' and 'at'", fn);
     double every = has_every ? la_number(L, 2, fn, "every") : 0;
     double at = has_at ? la_number(L, 2, fn, "at") : 0;
-    if (has_every) la_check_interval(L, fn, "every", every, s->sim->t);
+    if (has_every) la_check_interval(L, fn, "every", every, ck_t(s));
     if (has_at && !isfinite(at)) return luaL_error(L, "%s: at must be a finite time", fn);
     char *copy = malloc(len + 1);
     if (!copy) return luaL_error(L, "%s: out of memory", fn);
@@ -58,14 +66,14 @@ int la_sim_checkpoint(lua_State *L)
     free(s->ck_file);
     s->ck_file = copy;
     s->ck_every = every;
-    s->ck_next = has_every ? s->sim->t + every : at;
+    s->ck_next = has_every ? ck_t(s) + every : at;
     return 0;
 }
 
 /* Writes the checkpoint of the sim at sidx now. */
 static void write_checkpoint(lua_State *L, int sidx, la_sim *s)
 {
-    size_t eb = lm_sim_state_bytes(s->sim);
+    size_t eb = s->s3 ? lm3_state_bytes(s->s3->sim) : lm_sim_state_bytes(s->sim);
     int nrec = la_record_count(L, sidx);
     size_t rb = 0;
     for (int i = 1; i <= nrec; i++) {
@@ -78,12 +86,13 @@ static void write_checkpoint(lua_State *L, int sidx, la_sim *s)
     char head[256];
     int hl = snprintf(head, sizeof head, "%s %d\nsim %d\nt %.17g\nstep %ld\nengine %zu\n"
                       "recorders %d\n\n", MAGIC_LINE, LM_CHECKPOINT_VERSION, s->index,
-                      s->sim->t, s->sim->step, eb, nrec);
+                      ck_t(s), ck_step(s), eb, nrec);
     size_t total = (size_t)hl + eb + rb;
     unsigned char *buf = malloc(total);
     if (!buf) luaL_error(L, "sim:checkpoint: out of memory for %zu bytes", total);
     memcpy(buf, head, (size_t)hl);
-    lm_sim_state_save(s->sim, buf + hl);
+    if (s->s3) lm3_state_save(s->s3->sim, buf + hl);
+    else lm_sim_state_save(s->sim, buf + hl);
     unsigned char *b = buf + hl + eb;
     for (int i = 1; i <= nrec; i++) {
         int nc;
@@ -109,14 +118,14 @@ static void write_checkpoint(lua_State *L, int sidx, la_sim *s)
 
 void la_checkpoint_due(lua_State *L, int sidx, la_sim *s)
 {
-    if (!s->ck_file || !(s->ck_next <= s->sim->t + 0.5 * s->sim->def.dt)) return;
+    if (!s->ck_file || !(s->ck_next <= ck_t(s) + 0.5 * ck_dt(s))) return;
     write_checkpoint(L, sidx, s);
     if (s->ck_every > 0) {
         /* the next multiple after now, as events do: no bursts; computed,
          * not counted (every = 1e-300 looped for ever, issue 31) */
         double k = 0;
         s->ck_next = la_next_multiple(s->ck_next, s->ck_every, &k,
-                                      s->sim->t + 0.5 * s->sim->def.dt);
+                                      ck_t(s) + 0.5 * ck_dt(s));
     } else {
         s->ck_next = INFINITY;
     }
@@ -135,9 +144,9 @@ static int parse_header(const unsigned char *buf, size_t len, int *version, int 
  * (lm_sim_state_claimed) equal to the text's, and the recorders' blocks
  * (read one header at a time) ending exactly at the end of the file. Then
  * the whole file, now of a consistent size, into *buf. 0, or -1 with msg. */
-static int read_checkpoint(const char *path, unsigned char **buf, size_t *len, size_t *off,
-                           int *version, int *sim, uint64_t *eb, int *nrec, char *msg,
-                           size_t ml)
+static int read_checkpoint(const char *path, int dim3, unsigned char **buf, size_t *len,
+                           size_t *off, int *version, int *sim, uint64_t *eb, int *nrec,
+                           char *msg, size_t ml)
 {
     *buf = NULL;
     int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
@@ -165,7 +174,18 @@ static int read_checkpoint(const char *path, unsigned char **buf, size_t *len, s
     }
     unsigned char eh[512];
     got = pread(fd, eh, sizeof eh, (off_t)*off);
-    size_t claimed = got > 0 ? lm_sim_state_claimed(eh, (size_t)got) : 0;
+    size_t claimed = got <= 0 ? 0
+                     : dim3   ? lm3_state_claimed(eh, (size_t)got)
+                              : lm_sim_state_claimed(eh, (size_t)got);
+    size_t other = got <= 0 ? 0
+                   : dim3   ? lm_sim_state_claimed(eh, (size_t)got)
+                            : lm3_state_claimed(eh, (size_t)got);
+    if (claimed == 0 && other != 0) {   /* the other dimension's: say so */
+        snprintf(msg, ml, "'%s' is a checkpoint of a %s simulation; the script's is %s", path,
+                 dim3 ? "2D" : "3D", dim3 ? "3D" : "2D");
+        close(fd);
+        return -1;
+    }
     if (claimed == 0 || claimed != *eb || *eb > size - *off) {
         snprintf(msg, ml, "'%s' is %s: its header gives %" PRIu64 " bytes of state, the "
                  "state's own header %zu, the file has %" PRIu64 " after the header", path,
@@ -240,15 +260,16 @@ void la_checkpoint_restore(lua_State *L, int sidx, la_sim *s)
 {
     lamina_run *run = la_run(L);
     if (!run || !run->restart || run->restored) return;
-    la_ref_capture(L, s);   /* the script's build, before any state is replaced: the
-                               first run's reference positions (l_ref.c) */
+    if (!s->s3)
+        la_ref_capture(L, s);   /* the script's build, before any state is replaced: the
+                                   first run's reference positions (l_ref.c) */
     char msg[900];
     size_t len = 0, off = 0;
     unsigned char *buf;
     int version = 0, index = 0, nrec = 0;
     uint64_t eb = 0;
-    if (read_checkpoint(run->restart, &buf, &len, &off, &version, &index, &eb, &nrec, msg,
-                        sizeof msg) != 0)
+    if (read_checkpoint(run->restart, s->s3 != NULL, &buf, &len, &off, &version, &index, &eb,
+                        &nrec, msg, sizeof msg) != 0)
         luaL_error(L, "--restart: %s", msg);
     if (version != LM_CHECKPOINT_VERSION) {
         free(buf);
@@ -265,9 +286,10 @@ void la_checkpoint_restore(lua_State *L, int sidx, la_sim *s)
         luaL_error(L, "--restart: '%s' does not fit the script: %s", run->restart,
                    eb > len - off ? "it is truncated" : "its recorders differ");
     }
-    if (lm_sim_state_load(s->sim, buf + off, (size_t)eb) != LM_OK) {
+    if (s->s3 ? lm3_state_load(s->s3->sim, buf + off, (size_t)eb) != LM_OK
+              : lm_sim_state_load(s->sim, buf + off, (size_t)eb) != LM_OK) {
         free(buf);
-        luaL_error(L, "--restart: '%s': %s", run->restart, s->sim->err);
+        luaL_error(L, "--restart: '%s': %s", run->restart, s->s3 ? s->s3->sim->err : s->sim->err);
     }
     const unsigned char *b = buf + off + eb, *stop = buf + len;
     for (int i = 1; i <= nrec; i++) {
@@ -292,17 +314,17 @@ void la_checkpoint_restore(lua_State *L, int sidx, la_sim *s)
         }
     }
     free(buf);
-    la_material_sync(L, sidx);   /* the script's materials take the restored values */
+    if (!s->s3) la_material_sync(L, sidx);   /* the script's materials take the restored values */
     /* Say where the run goes on from (issue 35 item 5): without it a
      * restarted run looks like a fresh one. */
     if (!run->quiet)
-        fprintf(stderr, "lamina: resumed %s at t = %.9g, step %ld\n", run->restart,
-                s->sim->t, s->sim->step);
+        fprintf(stderr, "lamina: resumed %s at t = %.9g, step %ld\n", run->restart, ck_t(s),
+                ck_step(s));
     la_sim_skip_due(s);
-    double now = s->sim->t + 0.5 * s->sim->def.dt, k = 0;
+    double now = ck_t(s) + 0.5 * ck_dt(s), k = 0;
     if (s->ck_file && s->ck_every > 0 && s->ck_next <= now)
         s->ck_next = la_next_multiple(s->ck_next, s->ck_every, &k, now);
-    else if (s->ck_file && s->ck_next <= s->sim->t + 0.5 * s->sim->def.dt)
+    else if (s->ck_file && s->ck_next <= now)
         s->ck_next = INFINITY;
     return;
 truncated:

@@ -380,7 +380,8 @@ static int due_after_step(const la_sim *s)
 
 void la_sim_skip_due(la_sim *s)
 {
-    double now = s->sim->t + 0.5 * s->sim->def.dt;
+    double now = s->s3 ? s->s3->sim->t + 0.5 * s->s3->sim->def.dt   /* 3D: l_sim3.h */
+                       : s->sim->t + 0.5 * s->sim->def.dt;
     for (int i = 0; i < s->nev; i++) {
         la_event *e = &s->ev[i];
         if (e->done || e->next > now) continue;

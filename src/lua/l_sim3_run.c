@@ -115,11 +115,13 @@ static int run_steps(lua_State *L)
         la_fail_raisef(L, LAMINA_FAIL_REFUSED, "%s", msg);
     }
     fire_due3(L, s);
+    la_checkpoint_due(L, 1, s);   /* after the callbacks, as in 2D */
     for (long n = 0; n < a->nsteps; n++) {
         lm_status st = lm3_step(sim);
         if (st == LM_ERR_INPUT) la_fail_raisef(L, LAMINA_FAIL_REFUSED, "%s", sim->err);
         if (st != LM_OK) raise_failure(L, sim, st);
         fire_due3(L, s);
+        la_checkpoint_due(L, 1, s);
         tick(L, sim, n, a->nsteps);
     }
     return 0;
@@ -147,6 +149,7 @@ int la_sim3_run(lua_State *L)
     double t_end = la_number(L, 2, "sim:run", "t_end");
     if (!isfinite(t_end))
         return luaL_error(L, "sim:run: t_end must be a finite number (got %f)", t_end);
+    if (!s->running) la_checkpoint_restore(L, 1, s);   /* --restart: before counting steps */
     /* the clock is nstep x dt (sim3_step.c): the steps to the one nearest
      * t_end, as in 2D */
     double n = floor((t_end - s3->sim->t) / s3->sim->def.dt + 0.5);
@@ -162,6 +165,15 @@ int la_sim3_step(lua_State *L)
     double nd = lua_isnoneornil(L, 2) ? 1 : luaL_checknumber(L, 2);
     if (!(nd >= 0 && nd <= STEP_CAP) || nd != floor(nd))
         return luaL_error(L, "sim:step: n must be a whole number from 0 to 1e12 (got %f)", nd);
-    advance(L, s, (long)nd);
+    long n = (long)nd;
+    if (!s->running) {
+        /* --restart: the call's last step is the same; the steps the
+         * checkpoint already took are not taken again (as in 2D) */
+        long before = s->s3->sim->nstep;
+        la_checkpoint_restore(L, 1, s);
+        n -= s->s3->sim->nstep - before;
+        if (n < 0) n = 0;
+    }
+    advance(L, s, n);
     return 0;
 }

@@ -210,4 +210,16 @@ uint64_t lm3_sim_hash(const lm3_sim *sim);
 size_t lm3_grid_bytes(const lm3_sim *sim);
 size_t lm3_particle_bytes(size_t cap);
 
+
+/* A run's state as bytes (sim3_state.c): checkpoints and --restart. bytes
+ * the size, save writes that many; claimed is the size a buffer's own
+ * header gives (0 when it is not a 3D state); load replaces the clock,
+ * live settings, materials and particles of a sim the script built with
+ * the same particle count (LM_ERR_INPUT and err otherwise). */
+#define LM3_STATE_VERSION 1
+size_t lm3_state_bytes(const lm3_sim *sim);
+void lm3_state_save(const lm3_sim *sim, unsigned char *buf);
+size_t lm3_state_claimed(const unsigned char *buf, size_t len);
+lm_status lm3_state_load(lm3_sim *sim, const unsigned char *buf, size_t len);
+
 #endif

@@ -1,0 +1,146 @@
+/* sim3_state.c - a 3D run's state as bytes, for checkpoints and
+ * `lamina run --restart` (src/lua/l_checkpoint.c frames it as it frames the
+ * 2D engine's, checkpoint.c). What a step reads from the step before: the
+ * clock, the live settings (dt, gravity, courant), the materials and every
+ * particle's x, v, m, rho, sigma, material; the stencils (node, d) are
+ * rebuilt by the next step's place phase and the grid is recomputed from
+ * the particles, so a restarted run takes the same steps bit for bit.
+ *
+ * Layout: "LM3STATE", uint32 version, uint32 materials, uint64 particles,
+ * uint64 the whole part's bytes, then doubles (t, dt, gravity[3], courant,
+ * and per material rho, E, nu), int64 nstep, 14 arrays of n doubles (x, v,
+ * m, rho, sigma), n material bytes. Native byte order: a checkpoint is
+ * read back on the machine that wrote it (as the 2D one). */
+#include <stdio.h>
+#include <string.h>
+
+#include "mpm3.h"
+
+#define MAGIC "LM3STATE"
+#define HEAD (8 + 4 + 4 + 8 + 8)
+
+static size_t bytes_for(size_t nmat, size_t n)
+{
+    return HEAD + (6 + 3 * nmat) * sizeof(double) + sizeof(int64_t) +
+           n * (14 * sizeof(double) + 1);
+}
+
+size_t lm3_state_bytes(const lm3_sim *sim)
+{
+    return bytes_for((size_t)sim->nmat, sim->p.n);
+}
+
+/* the particle arrays in their saved order */
+static void arrays_of(const lm3_particles *p, double *a[14])
+{
+    for (int k = 0; k < 3; k++) {
+        a[k] = p->x[k];
+        a[3 + k] = p->v[k];
+    }
+    a[6] = p->m;
+    a[7] = p->rho;
+    for (int c = 0; c < 6; c++) a[8 + c] = p->s[c];
+}
+
+void lm3_state_save(const lm3_sim *sim, unsigned char *buf)
+{
+    unsigned char *b = buf;
+    uint32_t version = LM3_STATE_VERSION, nmat = (uint32_t)sim->nmat;
+    uint64_t n = sim->p.n, total = lm3_state_bytes(sim);
+    memcpy(b, MAGIC, 8); b += 8;
+    memcpy(b, &version, 4); b += 4;
+    memcpy(b, &nmat, 4); b += 4;
+    memcpy(b, &n, 8); b += 8;
+    memcpy(b, &total, 8); b += 8;
+    const lm3_def *d = &sim->def;
+    double head[6] = {sim->t, d->dt, d->gravity[0], d->gravity[1], d->gravity[2], d->courant};
+    memcpy(b, head, sizeof head); b += sizeof head;
+    for (int k = 0; k < sim->nmat; k++) {
+        double m[3] = {sim->mats[k].rho, sim->mats[k].E, sim->mats[k].nu};
+        memcpy(b, m, sizeof m); b += sizeof m;
+    }
+    int64_t step = sim->nstep;
+    memcpy(b, &step, sizeof step); b += sizeof step;
+    double *a[14];
+    arrays_of(&sim->p, a);
+    for (int k = 0; k < 14; k++) {
+        if (n) memcpy(b, a[k], n * sizeof(double));
+        b += n * sizeof(double);
+    }
+    if (n) memcpy(b, sim->p.mat, n);
+}
+
+size_t lm3_state_claimed(const unsigned char *buf, size_t len)
+{
+    if (len < HEAD || memcmp(buf, MAGIC, 8) != 0) return 0;
+    uint32_t version, nmat;
+    uint64_t n, total;
+    memcpy(&version, buf + 8, 4);
+    memcpy(&nmat, buf + 12, 4);
+    memcpy(&n, buf + 16, 8);
+    memcpy(&total, buf + 24, 8);
+    if (version != LM3_STATE_VERSION || nmat > LM3_MAX_MATERIALS) return 0;
+    /* the count must be the one the total implies (no overflow: n is
+     * bounded by the total, itself bounded by the file's size) */
+    size_t fixed = bytes_for(nmat, 0);
+    if (total < fixed || (total - fixed) % (14 * sizeof(double) + 1) != 0 ||
+        (total - fixed) / (14 * sizeof(double) + 1) != n)
+        return 0;
+    return (size_t)total;
+}
+
+lm_status lm3_state_load(lm3_sim *sim, const unsigned char *buf, size_t len)
+{
+    size_t total = lm3_state_claimed(buf, len);
+    if (total == 0 || total > len) {
+        snprintf(sim->err, sizeof sim->err, "not a 3D simulation's state (or a damaged one)");
+        return LM_ERR_INPUT;
+    }
+    uint32_t nmat;
+    uint64_t n;
+    memcpy(&nmat, buf + 12, 4);
+    memcpy(&n, buf + 16, 8);
+    /* the script rebuilt its bodies before the state replaces them: the
+     * same particles and materials, or it is another script */
+    if (n != sim->p.n || (int)nmat != sim->nmat) {
+        snprintf(sim->err, sizeof sim->err, "does not fit the script: it holds %llu particles "
+                 "of %u materials, the script's simulation %zu of %d",
+                 (unsigned long long)n, nmat, sim->p.n, sim->nmat);
+        return LM_ERR_INPUT;
+    }
+    const unsigned char *b = buf + HEAD;
+    double head[6];
+    memcpy(head, b, sizeof head); b += sizeof head;
+    lm3_material mats[LM3_MAX_MATERIALS];
+    for (uint32_t k = 0; k < nmat; k++) {
+        double m[3];
+        memcpy(m, b, sizeof m); b += sizeof m;
+        mats[k].rho = m[0];
+        mats[k].E = m[1];
+        mats[k].nu = m[2];
+    }
+    int64_t step;
+    memcpy(&step, b, sizeof step); b += sizeof step;
+    const unsigned char *mat = b + 14 * n * sizeof(double);
+    for (uint64_t q = 0; q < n; q++)
+        if (mat[q] >= nmat) {
+            snprintf(sim->err, sizeof sim->err, "is damaged: particle %llu has material %u of "
+                     "%u", (unsigned long long)q, mat[q], nmat);
+            return LM_ERR_INPUT;
+        }
+    /* checked: now replace */
+    sim->t = head[0];
+    sim->def.dt = head[1];
+    for (int a = 0; a < 3; a++) sim->def.gravity[a] = head[2 + a];
+    sim->def.courant = head[5];
+    memcpy(sim->mats, mats, nmat * sizeof *mats);
+    sim->nstep = (long)step;
+    double *a[14];
+    arrays_of(&sim->p, a);
+    for (int k = 0; k < 14; k++) {
+        if (n) memcpy(a[k], b, n * sizeof(double));
+        b += n * sizeof(double);
+    }
+    if (n) memcpy(sim->p.mat, b, n);
+    return LM_OK;
+}
