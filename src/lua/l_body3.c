@@ -308,6 +308,13 @@ static int body3_particles(lua_State *L)
     return 1;
 }
 
+static int body3_pin(lua_State *L)
+{
+    la_sim3 *s3;
+    const la_body3rec *r = rec_of(L, &s3);
+    return la_body3_pin(L, s3, r->first, r->n);
+}
+
 static int body3_len(lua_State *L)
 {
     la_sim3 *s3;
@@ -360,6 +367,7 @@ void la_open_body3(lua_State *L)
                                        {"mass", body3_mass},
                                        {"energy", body3_energy},
                                        {"particles", body3_particles},
+                                       {"pin", body3_pin},
                                        {NULL, NULL}};
     la_new_metatable(L, LA_BODY3);
     luaL_setfuncs(L, meta, 0);

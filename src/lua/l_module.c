@@ -52,6 +52,7 @@ static int luaopen_lamina(lua_State *L)
     la_open_body(L);
     la_open_region3(L);         /* lamina.ball/box/cylinder (l_region3.c) */
     la_open_body3(L);           /* a 3D sim's bodies (l_body3.c) */
+    la_open_pin3(L);            /* their pins (l_pin3.c) */
     la_open_pin(L);
     la_open_link(L);
     la_open_curve(L);

@@ -269,7 +269,7 @@ void la_sim_add_pin_function(lua_State *L, int sidx, int pin, int fidx)
 {
     sidx = lua_absindex(L, sidx);
     fidx = lua_absindex(L, fidx);
-    la_sim *s = la_check_sim(L, sidx);
+    la_sim *s = la_check_sim_any(L, sidx);   /* both dimensions (l_pin3.c) */
     la_pin_fn *f = realloc(s->pinf, (size_t)(s->npinf + 1) * sizeof *f);
     if (!f) luaL_error(L, "out of memory");
     s->pinf = f;

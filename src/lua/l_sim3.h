@@ -56,6 +56,13 @@ int la_vtk3_write_grid(const la_sim3 *s3, const char *path, char *err, size_t er
 int la_sim3_body(lua_State *L);
 void la_open_body3(lua_State *L);
 
+/* l_pin3.c: body:pin on a 3D body (the range first, n of the sim's
+ * particles; the body at 1, its options at 2); la_pins3_update before each
+ * step (the driven pins' functions, then the held points' velocities) */
+int la_body3_pin(lua_State *L, la_sim3 *s3, size_t first, size_t n);
+void la_pins3_update(lua_State *L, int sidx, la_sim *s);
+void la_open_pin3(lua_State *L);
+
 /* l_region3.c: lamina.ball, lamina.box, lamina.cylinder */
 int la_ball(lua_State *L);
 int la_box(lua_State *L);

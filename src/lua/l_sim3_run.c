@@ -117,6 +117,7 @@ static int run_steps(lua_State *L)
     fire_due3(L, s);
     la_checkpoint_due(L, 1, s);   /* after the callbacks, as in 2D */
     for (long n = 0; n < a->nsteps; n++) {
+        la_pins3_update(L, 1, s);   /* driven pins, then the held points' velocities */
         lm_status st = lm3_step(sim);
         if (st == LM_ERR_INPUT) la_fail_raisef(L, LAMINA_FAIL_REFUSED, "%s", sim->err);
         if (st != LM_OK) raise_failure(L, sim, st);

@@ -108,6 +108,7 @@ oom:
 void lm3_sim_free(lm3_sim *sim)
 {
     if (!sim) return;
+    lm3_pins_free(sim);
     lm3_particles *p = &sim->p;
     LU_FREE_ALL(p->x[0], p->x[1], p->x[2], p->v[0], p->v[1], p->v[2], p->m, p->rho, p->s[0],
                 p->s[1], p->s[2], p->s[3], p->s[4], p->s[5], p->d[0], p->d[1], p->d[2],

@@ -342,8 +342,10 @@ lm_status lm3_step(lm3_sim *sim)
     if (st != LM_OK) return st;
     step_p2g_forces(sim);
     step_grid_update(sim);
+    if (sim->pins) lm3_pins_grid(sim);     /* body:pin (sim3_pin.c) */
     step_g2p_remap(sim);
     step_strain_velocity(sim);
+    if (sim->pins) lm3_pins_strain(sim);
     if (!step_stress(sim)) {
         snprintf(sim->err, sizeof sim->err, "t = %g (step %ld): a particle's volume went to "
                  "nothing (1 + tr de <= 0): unstable", sim->t, sim->nstep);

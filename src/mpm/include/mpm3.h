@@ -95,6 +95,7 @@ typedef struct lm3_sim {
     long nstep;
     double t;
     char err[256];         /* why the last call failed */
+    struct lm3_pins *pins; /* body:pin in 3D (sim3_pin.c); NULL: none */
 } lm3_sim;
 
 typedef struct lm3_energy {
@@ -221,5 +222,33 @@ size_t lm3_state_bytes(const lm3_sim *sim);
 void lm3_state_save(const lm3_sim *sim, unsigned char *buf);
 size_t lm3_state_claimed(const unsigned char *buf, size_t len);
 lm_status lm3_state_load(lm3_sim *sim, const unsigned char *buf, size_t len);
+
+
+/* Pins (sim3_pin.c; docs/api.md "Three dimensions"): a pin holds the grid
+ * nodes its particles' stencils touch (N > 0) at its velocity, as a wall
+ * holds its nodes: the Lagrangian velocity there is the pin's (weighted by
+ * N where pins share a node), the acceleration 0, the strain velocity the
+ * pin's; its particles take its velocity before each step. The walls act
+ * after the pins. lm3_pin_add: the pin's index, or -1 with err (a point
+ * out of range or already held). */
+typedef struct lm3_pin {
+    size_t *idx, n;        /* the held particles */
+    double v[3];           /* its velocity, set before each step */
+    double reaction[3];    /* the force it exerted in the last step */
+} lm3_pin;
+typedef struct lm3_pins {
+    lm3_pin *pin;
+    int n;
+    double *w, *wv[3];     /* per node: sum of N over held points, and of N v */
+    uint8_t *held;         /* per particle: held by a pin */
+} lm3_pins;
+int lm3_pin_add(lm3_sim *sim, const size_t *idx, size_t n, const double v[3]);
+void lm3_pins_free(lm3_sim *sim);
+/* before a step: the held particles take their pins' velocities */
+void lm3_pins_begin(lm3_sim *sim);
+/* in the step (sim3_step.c): after the grid update, and after the strain
+ * velocity */
+void lm3_pins_grid(lm3_sim *sim);
+void lm3_pins_strain(lm3_sim *sim);
 
 #endif
