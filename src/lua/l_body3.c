@@ -131,6 +131,13 @@ static int material3(lua_State *L, la_sim3 *s3, int midx, const char *fn)
     lua_pushinteger(L, k);
     lua_rawset(L, -3);
     lua_pop(L, 2);
+    /* and the material knows the sim (weakly), so that a live change
+     * (mat.E = ...) reaches this copy too (l_material.c set_everywhere) */
+    lua_getiuservalue(L, midx, 1);
+    lua_pushvalue(L, 1);
+    lua_pushinteger(L, k);
+    lua_rawset(L, -3);
+    lua_pop(L, 1);
     return k;
 }
 

@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "l_internal.h"
+#include "l_sim3.h"
 
 static const char *const planes[] = {"strain", "stress", NULL};
 static const char *const densities[] = {"continuity", "cell", "quadratic", NULL};
@@ -87,6 +88,12 @@ static void set_everywhere(lua_State *L, int midx, const lm_material *next)
             la_sim *s = lua_touserdata(L, -2);
             int k = (int)lua_tointeger(L, -1);
             lua_pop(L, 1);
+            if (s && s->s3) {   /* a 3D run's copy (l_body3.c): E and nu */
+                if (pass == 0 && next->plane != u->def.plane)
+                    luaL_error(L, "material: plane has no meaning in 3D (sim %d is 3D)", s->index);
+                if (pass == 1) la_sim3_set_material(s->s3, k, next);
+                continue;
+            }
             if (!s || !s->sim) continue;   /* collected, its key not yet cleared */
             const lm_material *now = s->sim->mats[k];
             if (pass == 0 && (next->kind != now->kind || next->rho != now->rho))

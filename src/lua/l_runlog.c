@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "l_internal.h"
+#include "mpm3.h"
 
 #define LAST_SIM_KEY "lamina.last_sim"   /* registry: the sim that stepped last */
 #define CHANGES_KEY "lamina.changes"     /* registry: array of changes */
@@ -34,7 +35,15 @@ const lm_sim *la_last_sim(lua_State *L)
     return s ? s->sim : NULL;
 }
 
-static void record(lua_State *L, const lm_sim *sim, const char *what, const char *value,
+/* The clock a change is logged at: the 2D run's, else the 3D one's
+ * (run->active3), else none (has 0). */
+typedef struct log_clock {
+    int has;
+    double t;
+    long step;
+} log_clock;
+
+static void record(lua_State *L, const log_clock *sim, const char *what, const char *value,
                    int prompt)
 {
     if (la_getfield(L, LUA_REGISTRYINDEX, CHANGES_KEY) != LUA_TTABLE) {
@@ -44,7 +53,7 @@ static void record(lua_State *L, const lm_sim *sim, const char *what, const char
         lua_setfield(L, LUA_REGISTRYINDEX, CHANGES_KEY);
     }
     lua_createtable(L, 0, 5);
-    if (sim) {
+    if (sim->has) {
         lua_pushnumber(L, sim->t);
         lua_setfield(L, -2, "t");
         lua_pushinteger(L, sim->step);
@@ -140,13 +149,16 @@ void la_log_change(lua_State *L, const char *what, const char *key, int validx)
 {
     lamina_run *run = la_run(L);
     if (!run) return;
-    const lm_sim *sim = run->active;
+    const lm_sim *active = run->active;
     int prompt = 0;
-    if (!sim) {
+    if (!active && !run->active3) {
         if (!run->at_prompt) return;   /* set-up, not a live change */
         prompt = 1;
-        sim = la_last_sim(L);
+        active = la_last_sim(L);
     }
+    log_clock clk = {0, 0, 0}, *sim = &clk;
+    if (active) clk = (log_clock){1, active->t, active->step};
+    else if (run->active3) clk = (log_clock){1, run->active3->t, run->active3->nstep};
     validx = lua_absindex(L, validx);
     lua_pushfstring(L, "%s.%s", what, key);
     const char *name = lua_tostring(L, -1);
@@ -157,7 +169,7 @@ void la_log_change(lua_State *L, const char *what, const char *key, int validx)
     char from[64] = "";
     if (run->change_from) snprintf(from, sizeof from, " (%s)", run->change_from);
     else if (prompt) snprintf(from, sizeof from, " (at the prompt)");
-    if (sim)
+    if (sim->has)
         snprintf(line, sizeof line, "lamina: t = %.9g step %ld: %s = %s%s\n", sim->t,
                  sim->step, name, value, from);
     else

@@ -264,6 +264,12 @@ int la_sim3_tostring(lua_State *L)
     return 1;
 }
 
+void la_sim3_set_material(la_sim3 *s3, int k, const lm_material *m)
+{
+    s3->sim->mats[k].E = m->E;
+    s3->sim->mats[k].nu = m->nu;
+}
+
 /* ---- diagnostics ----------------------------------------------------- */
 
 void la_sim3_push_energy(lua_State *L, const lm3_energy *e)

@@ -94,6 +94,19 @@ static void tick(lua_State *L, const lm3_sim *sim, long n, long nsteps)
     }
 }
 
+/* The Courant refusal (before the first step, and after callbacks that may
+ * have changed a material or courant), as in 2D: a refusal, exit 2. */
+static void check_courant3(lua_State *L, lm3_sim *sim, const char *when)
+{
+    double c, cn = lm3_courant(sim, &c), lim = lm3_courant_limit(sim);
+    if (!(cn > lim)) return;
+    char msg[400];   /* lua_pushfstring has no %g */
+    snprintf(msg, sizeof msg, "dt = %g: the Courant number dt c / h = %g (c = %g, h = %g) is "
+             "above the limit %g%s; take dt <= %g or raise courant", sim->def.dt, cn, c,
+             sim->grid.h, lim, when, lim * sim->grid.h / c);
+    la_fail_raisef(L, LAMINA_FAIL_REFUSED, "%s", msg);
+}
+
 typedef struct run_arg {
     la_run_guard *guard;
     long nsteps;
@@ -106,22 +119,15 @@ static int run_steps(lua_State *L)
     la_sim *s = a->guard->s;
     lm3_sim *sim = s->s3->sim;
     /* the Courant refusal before any step (and any callback), as in 2D */
-    double c, cn = lm3_courant(sim, &c), lim = lm3_courant_limit(sim);
-    if (cn > lim) {
-        char msg[300];   /* lua_pushfstring has no %g */
-        snprintf(msg, sizeof msg, "dt = %g: the Courant number dt c / h = %g (c = %g, h = %g) "
-                 "is above the limit %g; take dt <= %g or raise courant", sim->def.dt, cn, c,
-                 sim->grid.h, lim, lim * sim->grid.h / c);
-        la_fail_raisef(L, LAMINA_FAIL_REFUSED, "%s", msg);
-    }
-    fire_due3(L, s);
+    check_courant3(L, sim, "");
+    if (fire_due3(L, s)) check_courant3(L, sim, " after a live change");
     la_checkpoint_due(L, 1, s);   /* after the callbacks, as in 2D */
     for (long n = 0; n < a->nsteps; n++) {
         la_pins3_update(L, 1, s);   /* driven pins, then the held points' velocities */
         lm_status st = lm3_step(sim);
         if (st == LM_ERR_INPUT) la_fail_raisef(L, LAMINA_FAIL_REFUSED, "%s", sim->err);
         if (st != LM_OK) raise_failure(L, sim, st);
-        fire_due3(L, s);
+        if (fire_due3(L, s)) check_courant3(L, sim, " after a live change");
         la_checkpoint_due(L, 1, s);
         tick(L, sim, n, a->nsteps);
     }
@@ -133,11 +139,16 @@ static void advance(lua_State *L, la_sim *s, long nsteps)
     if (s->running) luaL_error(L, "sim:run/sim:step called from inside a callback");
     la_run_guard g;
     la_run_guard_begin(L, &g, 1, s);
+    /* the clock live changes are logged at (l_runlog.c) */
+    lamina_run *run = la_run(L);
+    const lm3_sim *outer3 = run ? run->active3 : NULL;
+    if (run) run->active3 = s->s3->sim;
     run_arg a = {&g, nsteps};
     lua_pushcfunction(L, run_steps);
     lua_pushvalue(L, 1);
     lua_pushlightuserdata(L, &a);
     int failed = lua_pcall(L, 2, 0, 0) != LUA_OK;
+    if (run) run->active3 = outer3;
     la_run_guard_end(L, &g, failed);
 }
 

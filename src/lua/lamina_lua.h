@@ -61,6 +61,7 @@ typedef struct lamina_run {
     char failure_msg[512];      /* its message */
     int failure_escaped;        /* the error that ended the script is that failure */
     const struct lm_sim *active;/* the simulation being stepped, for logs */
+    const struct lm3_sim *active3; /* ... when it is a 3D one (l_sim3_run.c) */
     long frames;                /* PNGs written */
     char frame_dir[512];        /* folder of the last one */
     /* the workbench (lamina repl/watch/sweep, docs/workbench.md) */
