@@ -241,6 +241,9 @@ int la_sim_checkpoint(lua_State *L);
 void la_checkpoint_due(lua_State *L, int sidx, la_sim *s);
 void la_checkpoint_restore(lua_State *L, int sidx, la_sim *s);
 void la_sim_skip_due(la_sim *s);
+/* l_sim.c: runs the events due at the sim's clock (either dimension), the
+ * sim at stack index 1; how many ran. */
+int la_sim_fire_due(lua_State *L, la_sim *s);
 
 /* Raises "simulation failed: why" as a LAMINA_FAIL_UNSTABLE failure. */
 void la_raise_sim_failure(lua_State *L, const char *why);

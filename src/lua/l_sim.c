@@ -343,10 +343,11 @@ void la_check_interval(lua_State *L, const char *fn, const char *what, double in
 
 /* Runs every event that is due. Half a step of tolerance, so that an event
  * at t = 0.1 fires at the step that lands on 0.1 up to rounding. */
-/* Returns how many callbacks ran. */
-static int fire_due(lua_State *L, la_sim *s)
+/* Returns how many callbacks ran. Either dimension (a 3D run: l_sim3_run.c). */
+int la_sim_fire_due(lua_State *L, la_sim *s)
 {
-    double now = s->sim->t + 0.5 * s->sim->def.dt;
+    double now = s->s3 ? s->s3->sim->t + 0.5 * s->s3->sim->def.dt
+                       : s->sim->t + 0.5 * s->sim->def.dt;
     int fired = 0;
     for (int i = 0; i < s->nev; i++) {
         la_event *e = &s->ev[i];
@@ -457,7 +458,7 @@ static int run_steps(lua_State *L)
     check_courant(L, s);
     la_progress_begin(L, 1, nsteps);
     a->guard->progress = 1;
-    fire_due(L, s);
+    la_sim_fire_due(L, s);
     la_checkpoint_due(L, 1, s);
     lm_energy_watch watch;
     lm_energy_watch_begin(s->sim, &watch);
@@ -479,7 +480,7 @@ static int run_steps(lua_State *L)
         if (st == LM_ERR_COURANT)   /* a live change moved the Courant number past it */
             la_fail_raisef(L, LAMINA_FAIL_REFUSED, "%s", s->sim->err);
         if (st != LM_OK) la_raise_sim_failure(L, s->sim->err);   /* the history is kept */
-        if (fire_due(L, s)) lm_sim_forget_ahead(s->sim);   /* it may have changed the state */
+        if (la_sim_fire_due(L, s)) lm_sim_forget_ahead(s->sim);   /* it may have changed the state */
         la_leak_watch(L, s);
         if (!isnan(t_end) && s->sim->def.dt != dt_was) {
             /* a callback changed dt: the cap sim:run applied at its start

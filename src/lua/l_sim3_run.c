@@ -13,31 +13,6 @@
 
 #define STEP_CAP 1e12   /* as sim:run in 2D */
 
-static double now_of(const la_sim *s)
-{
-    return s->s3->sim->t + 0.5 * s->s3->sim->def.dt;
-}
-
-/* The events due (l_sim.c fire_due in 3D): how many ran. */
-static int fire_due3(lua_State *L, la_sim *s)
-{
-    int fired = 0;
-    for (int i = 0; i < s->nev; i++) {
-        double now = now_of(s);
-        la_event *e = &s->ev[i];
-        if (e->done || e->next > now) continue;
-        if (e->interval > 0) e->next = la_next_multiple(e->t0, e->interval, &e->k, now);
-        else e->done = 1;
-        lua_getiuservalue(L, 1, 1);
-        lua_rawgeti(L, -1, e->ref);
-        lua_remove(L, -2);
-        lua_pushvalue(L, 1);
-        fired++;
-        lua_call(L, 1, 0);
-    }
-    return fired;
-}
-
 int la_sim3_every(lua_State *L)
 {
     la_sim3 *s3 = la_check_sim3(L, 1, "sim:every");
@@ -120,14 +95,14 @@ static int run_steps(lua_State *L)
     lm3_sim *sim = s->s3->sim;
     /* the Courant refusal before any step (and any callback), as in 2D */
     check_courant3(L, sim, "");
-    if (fire_due3(L, s)) check_courant3(L, sim, " after a live change");
+    if (la_sim_fire_due(L, s)) check_courant3(L, sim, " after a live change");
     la_checkpoint_due(L, 1, s);   /* after the callbacks, as in 2D */
     for (long n = 0; n < a->nsteps; n++) {
         la_pins3_update(L, 1, s);   /* driven pins, then the held points' velocities */
         lm_status st = lm3_step(sim);
         if (st == LM_ERR_INPUT) la_fail_raisef(L, LAMINA_FAIL_REFUSED, "%s", sim->err);
         if (st != LM_OK) raise_failure(L, sim, st);
-        if (fire_due3(L, s)) check_courant3(L, sim, " after a live change");
+        if (la_sim_fire_due(L, s)) check_courant3(L, sim, " after a live change");
         la_checkpoint_due(L, 1, s);
         tick(L, sim, n, a->nsteps);
     }

@@ -14,45 +14,10 @@ import xml.etree.ElementTree as ET
 
 import meshio
 import numpy as np
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+# the 2D check's helpers (the same script's folder is on sys.path)
+from vtk_check import close, fail, read_vtk
 
 MESHIO_TYPES = {"vertex": 1, "hexahedron": 12}
-
-
-def fail(msg):
-    print("vtk3_check: FAILED:", msg)
-    sys.exit(1)
-
-
-def close(a, b, what, tol=1e-12):
-    a, b = np.asarray(a, float), np.asarray(b, float)
-    if a.shape != b.shape:
-        fail(f"{what}: shape {a.shape} vs {b.shape}")
-    scale = max(1.0, float(np.max(np.abs(b))) if b.size else 1.0)
-    err = float(np.max(np.abs(a - b))) if a.size else 0.0
-    if err > tol * scale:
-        fail(f"{what}: differs by {err:g}")
-
-
-def read_vtk(path):
-    """(points, {name: array}, cells as [(vtk type, point ids)]) by VTK."""
-    r = vtkXMLUnstructuredGridReader()
-    r.SetFileName(path)
-    r.Update()
-    if r.GetErrorCode() != 0:
-        fail(f"VTK cannot read {path} (error code {r.GetErrorCode()})")
-    g = r.GetOutput()
-    if g is None or g.GetNumberOfPoints() == 0:
-        fail(f"VTK read no points from {path}")
-    pd = g.GetPointData()
-    arrays = {pd.GetArrayName(i): vtk_to_numpy(pd.GetArray(i))
-              for i in range(pd.GetNumberOfArrays())}
-    cells = []
-    for c in range(g.GetNumberOfCells()):
-        ids = g.GetCell(c).GetPointIds()
-        cells.append((g.GetCellType(c), [ids.GetId(k) for k in range(ids.GetNumberOfIds())]))
-    return vtk_to_numpy(g.GetPoints().GetData()), arrays, cells
 
 
 def read_both(path):

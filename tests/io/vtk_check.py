@@ -193,4 +193,5 @@ def main():
           f"equals the particle-to-grid map computed here")
 
 
-main()
+if __name__ == "__main__":   # vtk3_check.py imports the helpers
+    main()
