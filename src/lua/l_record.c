@@ -251,7 +251,6 @@ static double sample(lua_State *L, const la_column *c, lm_sim *sim, const row_cl
     case SRC_ENERGY: return k->energy[c->which];
     default: break;
     }
-    const lm_particles *p = &sim->p;
     switch (c->src) {
     case SRC_FIELD:
         /* the tangents before the first step, as frames want them */
@@ -262,6 +261,7 @@ static double sample(lua_State *L, const la_column *c, lm_sim *sim, const row_cl
     case SRC_ANGLE: {
         /* [M] §3.1.2: the line joining the first and last points, in
          * degrees from the downward vertical, positive towards +x */
+        const lm_particles *p = &sim->p;
         const lm_body *b = &sim->bodies[c->body];
         size_t a = b->first, z = b->first + b->count - 1;
         return atan2(p->x[z] - p->x[a], -(p->y[z] - p->y[a])) * 180 / acos(-1.0);
