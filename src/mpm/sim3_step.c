@@ -252,10 +252,37 @@ static LM3_INLINE void gradient_at(const lm3_sim *sim, size_t q, double L[9], co
         }
 }
 
-/* Steps 7-8 ([F] eqs 14-20): de = dt/2 (L + L^T), W = 1/2 (L - L^T),
- * rho / (1 + tr de) ([F] eq 16), then the elastic law. 0 when a
- * particle's volume went to nothing. */
-static int step_stress(lm3_sim *sim)
+/* Step 6c ([F] eq 24's maxima): the artificial viscosity needs, before
+ * any gas point is updated, the largest |div v| and the largest sound
+ * speed over the gas of the step, as in 2D (step.c lm_step_gas_maxima);
+ * no pass at all when no gas uses it. */
+static void step_gas_maxima(lm3_sim *sim, double *max_div, double *c_max)
+{
+    const lm3_particles *p = &sim->p;
+    double md = 0, cm = 0;
+    int k = 0;
+    while (k < sim->nmat && !(sim->mats[k].kind == LM3_GAS && sim->mats[k].av)) k++;
+    if (k < sim->nmat)
+        for (size_t q = 0; q < p->n; q++) {
+            const lm3_material *mat = &sim->mats[p->mat[q]];
+            if (mat->kind != LM3_GAS || !mat->av) continue;
+            double L[9];
+            if (sim->grid.W == 2) gradient_at(sim, q, L, 2);
+            else gradient_at(sim, q, L, 3);
+            double div = fabs(L[0] + L[4] + L[8]), c = lm3_gas_sound_speed(mat, p->e[q]);
+            if (div > md) md = div;
+            if (c > cm) cm = c;
+        }
+    *max_div = md;
+    *c_max = cm;
+}
+
+/* Steps 7-8 ([F] eqs 14-25): de = dt/2 (L + L^T), W = 1/2 (L - L^T),
+ * rho / (1 + tr de) ([F] eq 16), then the material's law: the elastic
+ * solid's Jaumann update, or the gas's stress from its rate, pressure and
+ * artificial viscosity (sim3_gas.c). 0 when a particle's volume went to
+ * nothing. */
+static int step_stress(lm3_sim *sim, double max_div, double c_max)
 {
     lm3_particles *p = &sim->p;
     const double dt = sim->def.dt;
@@ -266,16 +293,23 @@ static int step_stress(lm3_sim *sim)
         de[0] = dt * L[0];
         de[1] = dt * L[4];
         de[2] = dt * L[8];
-        de[3] = 0.5 * dt * (L[5] + L[7]);
-        de[4] = 0.5 * dt * (L[2] + L[6]);
-        de[5] = 0.5 * dt * (L[1] + L[3]);
-        for (int i = 0; i < 3; i++)
-            for (int j = 0; j < 3; j++) W[3 * i + j] = 0.5 * (L[3 * i + j] - L[3 * j + i]);
         double J = 1 + de[0] + de[1] + de[2];
         if (!(J > 0)) return 0;
         p->rho[q] /= J;
-        for (int c = 0; c < 6; c++) s[c] = p->s[c][q];
-        lm3_elastic_update(&sim->mats[p->mat[q]], de, W, dt, s);
+        const lm3_material *mat = &sim->mats[p->mat[q]];
+        if (mat->kind == LM3_GAS) {
+            double qv = lm3_gas_av(mat, p->rho[q], L[0] + L[4] + L[8], max_div, c_max,
+                                   sim->grid.h);
+            lm3_gas_update(mat, L, dt, p->rho[q], qv, &p->e[q], s);
+        } else {
+            de[3] = 0.5 * dt * (L[5] + L[7]);
+            de[4] = 0.5 * dt * (L[2] + L[6]);
+            de[5] = 0.5 * dt * (L[1] + L[3]);
+            for (int i = 0; i < 3; i++)
+                for (int j = 0; j < 3; j++) W[3 * i + j] = 0.5 * (L[3 * i + j] - L[3 * j + i]);
+            for (int c = 0; c < 6; c++) s[c] = p->s[c][q];
+            lm3_elastic_update(mat, de, W, dt, s);
+        }
         for (int c = 0; c < 6; c++) p->s[c][q] = s[c];
     }
     return 1;
@@ -318,8 +352,14 @@ double lm3_courant(const lm3_sim *sim, double *c_max)
     double c = 0;
     for (int k = 0; k < sim->nmat; k++) {
         const lm3_material *m = &sim->mats[k];
-        double G = m->E / (2 * (1 + m->nu)), lam = m->E * m->nu / ((1 + m->nu) * (1 - 2 * m->nu));
-        double ck = sqrt((lam + 2 * G) / m->rho);
+        double ck;
+        if (m->kind == LM3_GAS) {
+            ck = lm3_gas_sound_speed(m, m->e0);
+        } else {
+            double G = m->E / (2 * (1 + m->nu)),
+                   lam = m->E * m->nu / ((1 + m->nu) * (1 - 2 * m->nu));
+            ck = sqrt((lam + 2 * G) / m->rho);
+        }
         if (ck > c) c = ck;
     }
     if (c_max) *c_max = c;
@@ -344,7 +384,9 @@ lm_status lm3_step(lm3_sim *sim)
     step_grid_update(sim);
     step_g2p_remap(sim);
     step_strain_velocity(sim);
-    if (!step_stress(sim)) {
+    double max_div, c_max;
+    step_gas_maxima(sim, &max_div, &c_max);
+    if (!step_stress(sim, max_div, c_max)) {
         snprintf(sim->err, sizeof sim->err, "t = %g (step %ld): a particle's volume went to "
                  "nothing (1 + tr de <= 0): unstable", sim->t, sim->nstep);
         return LM_ERR_UNSTABLE;
