@@ -63,6 +63,10 @@ static int def_ok(const lm3_def *d, int n[3], char *err, size_t len)
         snprintf(err, len, "courant = %g: must be a positive number", d->courant);
         return 0;
     }
+    if (d->threads < 0 || d->threads > LM_MAX_THREADS) {
+        snprintf(err, len, "threads = %d: must be 1 to %d", d->threads, LM_MAX_THREADS);
+        return 0;
+    }
     for (int a = 0; a < 3; a++)
         if (!isfinite(d->gravity[a])) {
             snprintf(err, len, "gravity: component %d is not finite", a + 1);
@@ -272,6 +276,20 @@ void lm3_energy_of(const lm3_sim *sim, lm3_energy *e)
     e->potential = u;
     e->internal = in;
     e->total = k + w + in + u;
+}
+
+/* x, v (6), m, rho, sigma (6), e, d (3): 18 doubles; node (int32) and
+ * mat (uint8) - the arrays reserve() grows; the grid's ten doubles a node
+ * (lm3_sim_create) */
+#define LM3_PARTICLE_BYTES (18 * sizeof(double) + sizeof(int32_t) + sizeof(uint8_t))
+
+size_t lm3_memory(const lm3_sim *sim, size_t *particles, size_t *exact, size_t *grid)
+{
+    size_t pb = sim->p.cap * LM3_PARTICLE_BYTES, gb = 10 * sim->grid.nn * sizeof(double);
+    if (particles) *particles = pb;
+    if (exact) *exact = sim->p.n * LM3_PARTICLE_BYTES;
+    if (grid) *grid = gb;
+    return pb + gb;
 }
 
 void lm3_momentum(const lm3_sim *sim, double P[3])

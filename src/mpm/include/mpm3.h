@@ -41,6 +41,8 @@ typedef struct lm3_def {
     lm_bc bc[LM3_FACES];   /* per face, LM3_XLO ... LM3_ZHI */
     double courant;        /* the largest dt c / h accepted (times the factors
                               below); 0 means the 2D default, 1 */
+    int threads;           /* threads a step uses (sim3_threads.c); 0 or 1: one.
+                              The same count gives the same bits */
 } lm3_def;
 
 /* The 3D limit relative to the 1D one that `courant` is stated for
@@ -146,6 +148,11 @@ double lm3_courant(const lm3_sim *sim, double *c_max);
 double lm3_courant_limit(const lm3_sim *sim);
 
 void lm3_energy_of(const lm3_sim *sim, lm3_energy *e);
+/* The bytes the simulation holds (issue 34 item 6, docs/3d.md "Memory"):
+ * its particle arrays at their capacity into *particles (at the count
+ * into *exact when not NULL), its grid's nodal fields into *grid; the
+ * sum is returned. */
+size_t lm3_memory(const lm3_sim *sim, size_t *particles, size_t *exact, size_t *grid);
 void lm3_momentum(const lm3_sim *sim, double P[3]);
 double lm3_mass(const lm3_sim *sim);
 
