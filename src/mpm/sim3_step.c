@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "mpm3.h"
+#include "sim3_shape.h"
 #include "sim3_walls.h"
 
 #if defined(__GNUC__)
@@ -20,21 +21,21 @@ static const int comp_vec[3] = {0, 1, 2};
 
 /* Step 0 at one particle: its stencil at x^k, kept for the step's other
  * passes. */
-static LM3_INLINE void place_at(lm3_sim *sim, size_t q)
+static LM3_INLINE void place_at(lm3_sim *sim, size_t q, const int W)
 {
     lm3_particles *p = &sim->p;
     double x[3] = {p->x[0][q], p->x[1][q], p->x[2][q]}, d[3];
-    lm3_place(&sim->grid, x, &p->node[q], d);
+    lm3_place_w(&sim->grid, x, &p->node[q], d, W);
     p->d[0][q] = d[0];
     p->d[1][q] = d[1];
     p->d[2][q] = d[2];
 }
 
-static LM3_INLINE void weights_of(const lm3_sim *sim, size_t q, lm3_weights *w)
+static LM3_INLINE void weights_of(const lm3_sim *sim, size_t q, lm3_weights *w, const int W)
 {
     const lm3_particles *p = &sim->p;
     double d[3] = {p->d[0][q], p->d[1][q], p->d[2][q]};
-    lm3_weights_at(&sim->grid, p->node[q], d, w);
+    lm3_weights_w(&sim->grid, p->node[q], d, w, W);
 }
 
 /* Row (b, c) of a stencil: its first node and the y-z factors of N and of
@@ -55,32 +56,40 @@ static LM3_INLINE row3 row_of(const lm3_grid *g, const lm3_weights *w, int b, in
 }
 
 /* Steps 1-2 at one particle, stencil W wide: m_i, p_i and
- * f_i^int = -V_p sigma_p . G_ip ([F] eq 9). */
+ * f_i^int = -V_p sigma_p . G_ip ([F] eq 9). With G = (g0[a] wyz,
+ * w0[a] gyz, w0[a] wgz) the force on node a of a row is
+ * -(A g0[a] + B w0[a]) per component, A = V sigma_.x wyz and B =
+ * V (sigma_.y gyz + sigma_.z wgz) made once a row: 2 multiplications and
+ * an addition a component a node instead of 7 (docs/3d.md "Speed"; the
+ * sum's order, not its terms, differs from the node-by-node form). */
 static LM3_INLINE void p2g_at(const lm3_sim *sim, size_t q, const int W)
 {
     const lm3_particles *p = &sim->p;
     const lm3_grid *g = &sim->grid;
     lm3_weights w;
-    weights_of(sim, q, &w);
+    weights_of(sim, q, &w, W);
     const double m = p->m[q], V = m / p->rho[q];
     const double mv0 = m * p->v[0][q], mv1 = m * p->v[1][q], mv2 = m * p->v[2][q];
-    const double sxx = p->s[0][q], syy = p->s[1][q], szz = p->s[2][q];
-    const double syz = p->s[3][q], sxz = p->s[4][q], sxy = p->s[5][q];
+    const double sxx = V * p->s[0][q], syy = V * p->s[1][q], szz = V * p->s[2][q];
+    const double syz = V * p->s[3][q], sxz = V * p->s[4][q], sxy = V * p->s[5][q];
+    double *const gm = g->m, *const p0 = g->p[0], *const p1 = g->p[1], *const p2 = g->p[2];
+    double *const f0 = g->f[0], *const f1 = g->f[1], *const f2 = g->f[2];
     for (int c = 0; c < W; c++)
         for (int b = 0; b < W; b++) {
             const row3 r = row_of(g, &w, b, c);
+            const double A0 = sxx * r.wyz, B0 = sxy * r.gyz + sxz * r.wgz;
+            const double A1 = sxy * r.wyz, B1 = syy * r.gyz + syz * r.wgz;
+            const double A2 = sxz * r.wyz, B2 = syz * r.gyz + szz * r.wgz;
             for (int a = 0; a < W; a++) {
                 const long i = r.node + a;
-                const double N = w.w[0][a] * r.wyz;
-                const double gx = w.g[0][a] * r.wyz, gy = w.w[0][a] * r.gyz,
-                             gz = w.w[0][a] * r.wgz;
-                g->m[i] += N * m;
-                g->p[0][i] += N * mv0;
-                g->p[1][i] += N * mv1;
-                g->p[2][i] += N * mv2;
-                g->f[0][i] -= V * (sxx * gx + sxy * gy + sxz * gz);
-                g->f[1][i] -= V * (sxy * gx + syy * gy + syz * gz);
-                g->f[2][i] -= V * (sxz * gx + syz * gy + szz * gz);
+                const double N = w.w[0][a] * r.wyz, ga = w.g[0][a], wa = w.w[0][a];
+                gm[i] += N * m;
+                p0[i] += N * mv0;
+                p1[i] += N * mv1;
+                p2[i] += N * mv2;
+                f0[i] -= A0 * ga + B0 * wa;
+                f1[i] -= A1 * ga + B1 * wa;
+                f2[i] -= A2 * ga + B2 * wa;
             }
         }
 }
@@ -93,12 +102,12 @@ static void step_p2g_forces(lm3_sim *sim)
     memset(g->m, 0, 10 * g->nn * sizeof(double));
     if (g->W == 2) {
         for (size_t q = 0; q < sim->p.n; q++) {
-            place_at(sim, q);
+            place_at(sim, q, 2);
             p2g_at(sim, q, 2);
         }
     } else {
         for (size_t q = 0; q < sim->p.n; q++) {
-            place_at(sim, q);
+            place_at(sim, q, 3);
             p2g_at(sim, q, 3);
         }
     }
@@ -136,14 +145,16 @@ static void step_grid_update(lm3_sim *sim)
 }
 
 /* Step 4 ([F] eq 12) at one particle: FLIP velocity from the nodal
- * accelerations, position from the Lagrangian velocity. */
-static LM3_INLINE void g2p_at(lm3_sim *sim, size_t q, const int W)
+ * accelerations, position from the Lagrangian velocity. 0 when the new
+ * position or velocity is not finite or the position left the grid (the
+ * step's end names it: check()), so that no pass of its own looks. */
+static LM3_INLINE int g2p_at(lm3_sim *sim, size_t q, const int W)
 {
     lm3_particles *p = &sim->p;
     const lm3_grid *g = &sim->grid;
     const double dt = sim->def.dt;
     lm3_weights w;
-    weights_of(sim, q, &w);
+    weights_of(sim, q, &w, W);
     double a0 = 0, a1 = 0, a2 = 0, u0 = 0, u1 = 0, u2 = 0;
     for (int c = 0; c < W; c++)
         for (int b = 0; b < W; b++) {
@@ -166,6 +177,12 @@ static LM3_INLINE void g2p_at(lm3_sim *sim, size_t q, const int W)
     p->x[0][q] += dt * u0;
     p->x[1][q] += dt * u1;
     p->x[2][q] += dt * u2;
+    int ok = 1;
+    for (int k = 0; k < 3; k++) {
+        const double x = p->x[k][q], lo = g->lo[k];
+        ok &= x >= lo && x <= lo + g->n[k] * g->h && isfinite(p->v[k][q]);
+    }
+    return ok;
 }
 
 /* Step 5's MUSL re-map at one particle: m_p v_p^{k+1} N_ip into v. */
@@ -174,7 +191,7 @@ static LM3_INLINE void remap_at(lm3_sim *sim, size_t q, const int W)
     const lm3_particles *p = &sim->p;
     const lm3_grid *g = &sim->grid;
     lm3_weights w;
-    weights_of(sim, q, &w);
+    weights_of(sim, q, &w, W);
     const double m = p->m[q];
     const double mv0 = m * p->v[0][q], mv1 = m * p->v[1][q], mv2 = m * p->v[2][q];
     for (int c = 0; c < W; c++)
@@ -195,20 +212,22 @@ static LM3_INLINE void remap_at(lm3_sim *sim, size_t q, const int W)
  * new velocity) was measured slower, 5.1 against 5.3 M particle-steps/s
  * of CPU time (trilinear, docs/3d.md "Speed"): the gather's six fields
  * and the re-map's three compete for the cache. */
-static void step_g2p_remap(lm3_sim *sim)
+static int step_g2p_remap(lm3_sim *sim)
 {
     lm3_grid *g = &sim->grid;
     const size_t n = sim->p.n;
+    int ok = 1;
     if (g->W == 2)
-        for (size_t q = 0; q < n; q++) g2p_at(sim, q, 2);
+        for (size_t q = 0; q < n; q++) ok &= g2p_at(sim, q, 2);
     else
-        for (size_t q = 0; q < n; q++) g2p_at(sim, q, 3);
-    if (sim->def.scheme != LM_MUSL) return;
+        for (size_t q = 0; q < n; q++) ok &= g2p_at(sim, q, 3);
+    if (sim->def.scheme != LM_MUSL) return ok;
     memset(g->v[0], 0, 3 * g->nn * sizeof(double));
     if (g->W == 2)
         for (size_t q = 0; q < n; q++) remap_at(sim, q, 2);
     else
         for (size_t q = 0; q < n; q++) remap_at(sim, q, 3);
+    return ok;
 }
 
 /* The end of step 5: the velocity the strain rate reads. MUSL ([M] eqs
@@ -229,25 +248,29 @@ static void step_strain_velocity(lm3_sim *sim)
     lm3_grid_fill(g, 3, g->v, comp_vec);
 }
 
-/* Step 7 at one particle: L_ab = sum_i v_a,i G_b,ip. */
+/* Step 7 at one particle: L_ab = sum_i v_a,i G_b,ip. A row's sums
+ * S_e = sum_a v_e g0[a] and T_e = sum_a v_e w0[a] first, then L_ex +=
+ * S_e wyz, L_ey += T_e gyz, L_ez += T_e wgz: the gradient's products
+ * made once a row, not once a node (docs/3d.md "Speed"). */
 static LM3_INLINE void gradient_at(const lm3_sim *sim, size_t q, double L[9], const int W)
 {
     const lm3_grid *g = &sim->grid;
     lm3_weights w;
-    weights_of(sim, q, &w);
+    weights_of(sim, q, &w, W);
     for (int k = 0; k < 9; k++) L[k] = 0;
     for (int c = 0; c < W; c++)
         for (int b = 0; b < W; b++) {
             const row3 r = row_of(g, &w, b, c);
-            for (int a = 0; a < W; a++) {
-                const long i = r.node + a;
-                const double G[3] = {w.g[0][a] * r.wyz, w.w[0][a] * r.gyz, w.w[0][a] * r.wgz};
-                for (int e = 0; e < 3; e++) {
-                    const double v = g->v[e][i];
-                    L[3 * e] += v * G[0];
-                    L[3 * e + 1] += v * G[1];
-                    L[3 * e + 2] += v * G[2];
+            for (int e = 0; e < 3; e++) {
+                const double *v = g->v[e] + r.node;
+                double S = 0, T = 0;
+                for (int a = 0; a < W; a++) {
+                    S += v[a] * w.g[0][a];
+                    T += v[a] * w.w[0][a];
                 }
+                L[3 * e] += S * r.wyz;
+                L[3 * e + 1] += T * r.gyz;
+                L[3 * e + 2] += T * r.wgz;
             }
         }
 }
@@ -378,20 +401,28 @@ lm_status lm3_step(lm3_sim *sim)
             return LM_ERR_INPUT;
         }
     }
-    lm_status st = check(sim);
-    if (st != LM_OK) return st;
+    /* before the first step (and after a failed one) the particles are
+     * looked at; otherwise each step's g2p looks at the positions it makes */
+    if (sim->nstep == 0 || sim->recheck) {
+        lm_status st = check(sim);
+        if (st != LM_OK) return st;
+        sim->recheck = 0;
+    }
     step_p2g_forces(sim);
     step_grid_update(sim);
-    step_g2p_remap(sim);
+    const int moved_ok = step_g2p_remap(sim);
     step_strain_velocity(sim);
     double max_div, c_max;
     step_gas_maxima(sim, &max_div, &c_max);
     if (!step_stress(sim, max_div, c_max)) {
+        sim->recheck = 1;
         snprintf(sim->err, sizeof sim->err, "t = %g (step %ld): a particle's volume went to "
                  "nothing (1 + tr de <= 0): unstable", sim->t, sim->nstep);
         return LM_ERR_UNSTABLE;
     }
     sim->nstep++;
     sim->t = sim->nstep * sim->def.dt;   /* from the count, as in 2D */
+    if (moved_ok) return LM_OK;
+    sim->recheck = 1;
     return check(sim);
 }

@@ -111,6 +111,10 @@ typedef struct lm3_sim {
     long nstep;
     double t;
     char err[256];         /* why the last call failed */
+    int recheck;           /* look at every particle before the next step: set
+                              after a failed step, and by a caller that moves
+                              particles between steps (lm3_step otherwise
+                              looks only at the positions its g2p makes) */
 } lm3_sim;
 
 /* strain: the elastic solids' 1/2 sigma : C^-1 : sigma V; internal: the
