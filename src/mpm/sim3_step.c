@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "mpm3.h"
+#include "sim3_kernels2.h"
 #include "sim3_shape.h"
 #include "sim3_walls.h"
 
@@ -74,12 +75,19 @@ static LM3_INLINE void p2g_at(const lm3_sim *sim, size_t q, const int W)
     const double syz = V * p->s[3][q], sxz = V * p->s[4][q], sxy = V * p->s[5][q];
     double *const gm = g->m, *const p0 = g->p[0], *const p1 = g->p[1], *const p2 = g->p[2];
     double *const f0 = g->f[0], *const f1 = g->f[1], *const f2 = g->f[2];
+    const lm_v2d W0 = {w.w[0][0], w.w[0][1]}, G0 = {w.g[0][0], w.g[0][1]};
+    const double mv[3] = {mv0, mv1, mv2};
     for (int c = 0; c < W; c++)
         for (int b = 0; b < W; b++) {
             const row3 r = row_of(g, &w, b, c);
             const double A0 = sxx * r.wyz, B0 = sxy * r.gyz + sxz * r.wgz;
             const double A1 = sxy * r.wyz, B1 = syy * r.gyz + syz * r.wgz;
             const double A2 = sxz * r.wyz, B2 = syz * r.gyz + szz * r.wgz;
+            if (W == 2) {   /* the row's two nodes side by side: sim3_kernels2.h */
+                const double A[3] = {A0, A1, A2}, B[3] = {B0, B1, B2};
+                lm3_p2g_row2(g, r.node, W0, G0, r.wyz, m, mv, A, B);
+                continue;
+            }
             for (int a = 0; a < W; a++) {
                 const long i = r.node + a;
                 const double N = w.w[0][a] * r.wyz, ga = w.g[0][a], wa = w.w[0][a];
@@ -156,21 +164,31 @@ static LM3_INLINE int g2p_at(lm3_sim *sim, size_t q, const int W)
     lm3_weights w;
     weights_of(sim, q, &w, W);
     double a0 = 0, a1 = 0, a2 = 0, u0 = 0, u1 = 0, u2 = 0;
-    for (int c = 0; c < W; c++)
-        for (int b = 0; b < W; b++) {
-            const long row = w.node + (c * g->s[1] + b) * g->s[0];
-            const double wyz = w.w[1][b] * w.w[2][c];
-            for (int a = 0; a < W; a++) {
-                const long i = row + a;
-                const double N = w.w[0][a] * wyz;
-                a0 += N * g->f[0][i];
-                a1 += N * g->f[1][i];
-                a2 += N * g->f[2][i];
-                u0 += N * g->p[0][i];
-                u1 += N * g->p[1][i];
-                u2 += N * g->p[2][i];
+    if (W == 2) {   /* sim3_kernels2.h: the same sums in the same order */
+        const lm_v2d W0 = {w.w[0][0], w.w[0][1]};
+        double acc[6] = {0, 0, 0, 0, 0, 0};
+        for (int c = 0; c < 2; c++)
+            for (int b = 0; b < 2; b++)
+                lm3_g2p_row2(g, w.node + (c * g->s[1] + b) * g->s[0], W0,
+                             w.w[1][b] * w.w[2][c], acc);
+        a0 = acc[0], a1 = acc[1], a2 = acc[2], u0 = acc[3], u1 = acc[4], u2 = acc[5];
+    } else {
+        for (int c = 0; c < W; c++)
+            for (int b = 0; b < W; b++) {
+                const long row = w.node + (c * g->s[1] + b) * g->s[0];
+                const double wyz = w.w[1][b] * w.w[2][c];
+                for (int a = 0; a < W; a++) {
+                    const long i = row + a;
+                    const double N = w.w[0][a] * wyz;
+                    a0 += N * g->f[0][i];
+                    a1 += N * g->f[1][i];
+                    a2 += N * g->f[2][i];
+                    u0 += N * g->p[0][i];
+                    u1 += N * g->p[1][i];
+                    u2 += N * g->p[2][i];
+                }
             }
-        }
+    }
     p->v[0][q] += dt * a0;
     p->v[1][q] += dt * a1;
     p->v[2][q] += dt * a2;
@@ -194,10 +212,16 @@ static LM3_INLINE void remap_at(lm3_sim *sim, size_t q, const int W)
     weights_of(sim, q, &w, W);
     const double m = p->m[q];
     const double mv0 = m * p->v[0][q], mv1 = m * p->v[1][q], mv2 = m * p->v[2][q];
+    const lm_v2d W0 = {w.w[0][0], w.w[0][1]};
+    const double mv[3] = {mv0, mv1, mv2};
     for (int c = 0; c < W; c++)
         for (int b = 0; b < W; b++) {
             const long row = w.node + (c * g->s[1] + b) * g->s[0];
             const double wyz = w.w[1][b] * w.w[2][c];
+            if (W == 2) {   /* sim3_kernels2.h */
+                lm3_remap_row2(g, row, W0, wyz, mv);
+                continue;
+            }
             for (int a = 0; a < W; a++) {
                 const double N = w.w[0][a] * wyz;
                 g->v[0][row + a] += N * mv0;
@@ -258,9 +282,20 @@ static LM3_INLINE void gradient_at(const lm3_sim *sim, size_t q, double L[9], co
     lm3_weights w;
     weights_of(sim, q, &w, W);
     for (int k = 0; k < 9; k++) L[k] = 0;
+    const lm_v2d W0 = {w.w[0][0], w.w[0][1]}, G0 = {w.g[0][0], w.g[0][1]};
     for (int c = 0; c < W; c++)
         for (int b = 0; b < W; b++) {
             const row3 r = row_of(g, &w, b, c);
+            if (W == 2) {   /* sim3_kernels2.h: the same sums */
+                double S[3], T[3];
+                lm3_gradient_row2(g, r.node, W0, G0, S, T);
+                for (int e = 0; e < 3; e++) {
+                    L[3 * e] += S[e] * r.wyz;
+                    L[3 * e + 1] += T[e] * r.gyz;
+                    L[3 * e + 2] += T[e] * r.wgz;
+                }
+                continue;
+            }
             for (int e = 0; e < 3; e++) {
                 const double *v = g->v[e] + r.node;
                 double S = 0, T = 0;
