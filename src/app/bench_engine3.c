@@ -62,7 +62,7 @@ static lm3_sim *make_block(double particles, const case3 *c)
         /* a gas of about the solid's wave speed, c^2 = gamma (gamma - 1) e0 */
         lm3_material g = {.rho = 1000, .kind = LM3_GAS, .gamma = 1.4, .mu = 0.1, .av = 1,
                           .av_c1 = 1, .av_c2 = 1, .av_lambda = 0.75};
-        g.e0 = 1.35e6 / (g.gamma * (g.gamma - 1));   /* c = 36.7 m/s, the solid's */
+        g.e0 = 1.35e3 / (g.gamma * (g.gamma - 1));   /* c = 36.7 m/s, the solid's */
         m = g;
     }
     double cs = c->gas ? sqrt(m.gamma * (m.gamma - 1) * m.e0)

@@ -115,7 +115,7 @@ void lm3_sim_free(lm3_sim *sim)
     lm3_particles *p = &sim->p;
     LU_FREE_ALL(p->x[0], p->x[1], p->x[2], p->v[0], p->v[1], p->v[2], p->m, p->rho, p->s[0],
                 p->s[1], p->s[2], p->s[3], p->s[4], p->s[5], p->e, p->d[0], p->d[1], p->d[2],
-                p->node, p->mat, sim->grid.m);
+                p->node, p->mat, sim->grid.m, sim->scratch);
     free(sim);
 }
 
@@ -285,7 +285,9 @@ void lm3_energy_of(const lm3_sim *sim, lm3_energy *e)
 
 size_t lm3_memory(const lm3_sim *sim, size_t *particles, size_t *exact, size_t *grid)
 {
-    size_t pb = sim->p.cap * LM3_PARTICLE_BYTES, gb = 10 * sim->grid.nn * sizeof(double);
+    /* the grid's fields and the threads' copies of them (sim3_threads.c) */
+    size_t pb = sim->p.cap * LM3_PARTICLE_BYTES,
+           gb = (10 * sim->grid.nn + sim->scratch_len) * sizeof(double);
     if (particles) *particles = pb;
     if (exact) *exact = sim->p.n * LM3_PARTICLE_BYTES;
     if (grid) *grid = gb;

@@ -9,12 +9,22 @@
 #include "mpm3.h"
 #include "sim3_kernels2.h"
 #include "sim3_shape.h"
+#include "sim3_threads.h"
 #include "sim3_walls.h"
 
 #if defined(__GNUC__)
 #define LM3_INLINE inline __attribute__((always_inline))
 #else
 #define LM3_INLINE inline
+#endif
+
+/* A loop over particles or nodes on the step's threads: each iteration
+ * writes only its own particle or node, so any split gives the same bits
+ * (the scatters are sim3_threads.c's). */
+#ifdef _OPENMP
+#define LM3_PAR(nt) _Pragma("omp parallel for num_threads(nt) schedule(static) if (nt > 1)")
+#else
+#define LM3_PAR(nt)
 #endif
 
 static const int comp_mpf[7] = {LM3_SCALAR, 0, 1, 2, 0, 1, 2};
@@ -63,10 +73,9 @@ static LM3_INLINE row3 row_of(const lm3_grid *g, const lm3_weights *w, int b, in
  * V (sigma_.y gyz + sigma_.z wgz) made once a row: 2 multiplications and
  * an addition a component a node instead of 7 (docs/3d.md "Speed"; the
  * sum's order, not its terms, differs from the node-by-node form). */
-static LM3_INLINE void p2g_at(const lm3_sim *sim, size_t q, const int W)
+static LM3_INLINE void p2g_at(const lm3_sim *sim, const lm3_grid *g, size_t q, const int W)
 {
     const lm3_particles *p = &sim->p;
-    const lm3_grid *g = &sim->grid;
     lm3_weights w;
     weights_of(sim, q, &w, W);
     const double m = p->m[q], V = m / p->rho[q];
@@ -102,27 +111,41 @@ static LM3_INLINE void p2g_at(const lm3_sim *sim, size_t q, const int W)
         }
 }
 
-/* Steps 0-2 in one pass over the particles (each particle's place, then
- * its sums), the ghosts folded, then f_i^ext = m_i g. */
-static void step_p2g_forces(lm3_sim *sim)
+/* Steps 0-2 at the particles q0 .. q1 - 1 into the fields of view g (the
+ * grid's or a thread's copy: sim3_threads.c). */
+static void p2g_range(lm3_sim *sim, const lm3_grid *g, size_t q0, size_t q1)
 {
-    lm3_grid *g = &sim->grid;
-    memset(g->m, 0, 10 * g->nn * sizeof(double));
     if (g->W == 2) {
-        for (size_t q = 0; q < sim->p.n; q++) {
+        for (size_t q = q0; q < q1; q++) {
             place_at(sim, q, 2);
-            p2g_at(sim, q, 2);
+            p2g_at(sim, g, q, 2);
         }
     } else {
-        for (size_t q = 0; q < sim->p.n; q++) {
+        for (size_t q = q0; q < q1; q++) {
             place_at(sim, q, 3);
-            p2g_at(sim, q, 3);
+            p2g_at(sim, g, q, 3);
         }
     }
+}
+
+/* Steps 0-2 in one pass over the particles (each particle's place, then
+ * its sums), the ghosts folded, then f_i^ext = m_i g. */
+static void step_p2g_forces(lm3_sim *sim, int nt)
+{
+    lm3_grid *g = &sim->grid;
+    const long nn = (long)g->nn;
+    LM3_PAR(nt)
+    for (long i = 0; i < nn; i++) {
+        g->m[i] = 0;
+        for (int a = 0; a < 3; a++) g->p[a][i] = g->f[a][i] = g->v[a][i] = 0;
+    }
+    if (nt < 2 || lm3_scatter_threads(sim, nt, 7, p2g_range) != 0)
+        p2g_range(sim, g, 0, sim->p.n);
     double *const f[7] = {g->m, g->p[0], g->p[1], g->p[2], g->f[0], g->f[1], g->f[2]};
     lm3_grid_fold(g, 7, f, comp_mpf);
     const double *gv = sim->def.gravity;
-    for (size_t i = 0; i < g->nn; i++) {
+    LM3_PAR(nt)
+    for (long i = 0; i < nn; i++) {
         g->f[0][i] += g->m[i] * gv[0];
         g->f[1][i] += g->m[i] * gv[1];
         g->f[2][i] += g->m[i] * gv[2];
@@ -132,15 +155,18 @@ static void step_p2g_forces(lm3_sim *sim)
 /* Step 3: p_i^L = p_i + dt f_i ([F] eq 10); the walls act on both, then
  * a_i = f_i / m_i replaces f and v_i^L = p_i^L / m_i replaces p (zero at
  * massless nodes), ghosts filled for the gather. */
-static void step_grid_update(lm3_sim *sim)
+static void step_grid_update(lm3_sim *sim, int nt)
 {
     lm3_grid *g = &sim->grid;
     const double dt = sim->def.dt;
-    for (int a = 0; a < 3; a++)
-        for (size_t i = 0; i < g->nn; i++) g->p[a][i] += dt * g->f[a][i];
+    const long nn = (long)g->nn;
+    LM3_PAR(nt)
+    for (long i = 0; i < nn; i++)
+        for (int a = 0; a < 3; a++) g->p[a][i] += dt * g->f[a][i];
     lm3_grid_apply_bc(g, g->p);
     lm3_grid_apply_bc(g, g->f);
-    for (size_t i = 0; i < g->nn; i++) {
+    LM3_PAR(nt)
+    for (long i = 0; i < nn; i++) {
         double r = g->m[i] > 0 ? 1.0 / g->m[i] : 0;
         for (int a = 0; a < 3; a++) {
             g->f[a][i] *= r;
@@ -204,10 +230,9 @@ static LM3_INLINE int g2p_at(lm3_sim *sim, size_t q, const int W)
 }
 
 /* Step 5's MUSL re-map at one particle: m_p v_p^{k+1} N_ip into v. */
-static LM3_INLINE void remap_at(lm3_sim *sim, size_t q, const int W)
+static LM3_INLINE void remap_at(const lm3_sim *sim, const lm3_grid *g, size_t q, const int W)
 {
     const lm3_particles *p = &sim->p;
-    const lm3_grid *g = &sim->grid;
     lm3_weights w;
     weights_of(sim, q, &w, W);
     const double m = p->m[q];
@@ -236,33 +261,43 @@ static LM3_INLINE void remap_at(lm3_sim *sim, size_t q, const int W)
  * new velocity) was measured slower, 5.1 against 5.3 M particle-steps/s
  * of CPU time (trilinear, docs/3d.md "Speed"): the gather's six fields
  * and the re-map's three compete for the cache. */
-static int step_g2p_remap(lm3_sim *sim)
+static void remap_range(lm3_sim *sim, const lm3_grid *g, size_t q0, size_t q1)
+{
+    if (g->W == 2)
+        for (size_t q = q0; q < q1; q++) remap_at(sim, g, q, 2);
+    else
+        for (size_t q = q0; q < q1; q++) remap_at(sim, g, q, 3);
+}
+
+static int step_g2p_remap(lm3_sim *sim, int nt)
 {
     lm3_grid *g = &sim->grid;
-    const size_t n = sim->p.n;
+    const long n = (long)sim->p.n, nn = (long)g->nn;
     int ok = 1;
-    if (g->W == 2)
-        for (size_t q = 0; q < n; q++) ok &= g2p_at(sim, q, 2);
-    else
-        for (size_t q = 0; q < n; q++) ok &= g2p_at(sim, q, 3);
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(nt) schedule(static) reduction(& : ok) if (nt > 1)
+#endif
+    for (long q = 0; q < n; q++)
+        ok &= g->W == 2 ? g2p_at(sim, (size_t)q, 2) : g2p_at(sim, (size_t)q, 3);
     if (sim->def.scheme != LM_MUSL) return ok;
-    memset(g->v[0], 0, 3 * g->nn * sizeof(double));
-    if (g->W == 2)
-        for (size_t q = 0; q < n; q++) remap_at(sim, q, 2);
-    else
-        for (size_t q = 0; q < n; q++) remap_at(sim, q, 3);
+    LM3_PAR(nt)
+    for (long i = 0; i < nn; i++) g->v[0][i] = g->v[1][i] = g->v[2][i] = 0;
+    if (nt < 2 || lm3_scatter_threads(sim, nt, 3, remap_range) != 0)
+        remap_range(sim, g, 0, sim->p.n);
     return ok;
 }
 
 /* The end of step 5: the velocity the strain rate reads. MUSL ([M] eqs
  * 12-13): the re-mapped momenta folded, over m_i, walls again. USL
  * ([N] §7): v_i^L itself. */
-static void step_strain_velocity(lm3_sim *sim)
+static void step_strain_velocity(lm3_sim *sim, int nt)
 {
     lm3_grid *g = &sim->grid;
+    const long nn = (long)g->nn;
     if (sim->def.scheme == LM_MUSL) {
         lm3_grid_fold(g, 3, g->v, comp_vec);
-        for (size_t i = 0; i < g->nn; i++)
+        LM3_PAR(nt)
+        for (long i = 0; i < nn; i++)
             if (g->m[i] > 0)
                 for (int a = 0; a < 3; a++) g->v[a][i] /= g->m[i];
     } else {
@@ -314,23 +349,28 @@ static LM3_INLINE void gradient_at(const lm3_sim *sim, size_t q, double L[9], co
  * any gas point is updated, the largest |div v| and the largest sound
  * speed over the gas of the step, as in 2D (step.c lm_step_gas_maxima);
  * no pass at all when no gas uses it. */
-static void step_gas_maxima(lm3_sim *sim, double *max_div, double *c_max)
+static void step_gas_maxima(lm3_sim *sim, double *max_div, double *c_max, int nt)
 {
     const lm3_particles *p = &sim->p;
     double md = 0, cm = 0;
     int k = 0;
     while (k < sim->nmat && !(sim->mats[k].kind == LM3_GAS && sim->mats[k].av)) k++;
-    if (k < sim->nmat)
-        for (size_t q = 0; q < p->n; q++) {
-            const lm3_material *mat = &sim->mats[p->mat[q]];
-            if (mat->kind != LM3_GAS || !mat->av) continue;
-            double L[9];
-            if (sim->grid.W == 2) gradient_at(sim, q, L, 2);
-            else gradient_at(sim, q, L, 3);
-            double div = fabs(L[0] + L[4] + L[8]), c = lm3_gas_sound_speed(mat, p->e[q]);
-            if (div > md) md = div;
-            if (c > cm) cm = c;
-        }
+    const long n = k < sim->nmat ? (long)p->n : 0;
+    /* maxima do not depend on the order they are taken in */
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(nt) schedule(static) reduction(max : md, cm) if (nt > 1)
+#endif
+    for (long qi = 0; qi < n; qi++) {
+        const size_t q = (size_t)qi;
+        const lm3_material *mat = &sim->mats[p->mat[q]];
+        if (mat->kind != LM3_GAS || !mat->av) continue;
+        double L[9];
+        if (sim->grid.W == 2) gradient_at(sim, q, L, 2);
+        else gradient_at(sim, q, L, 3);
+        double div = fabs(L[0] + L[4] + L[8]), c = lm3_gas_sound_speed(mat, p->e[q]);
+        if (div > md) md = div;
+        if (c > cm) cm = c;
+    }
     *max_div = md;
     *c_max = cm;
 }
@@ -340,11 +380,17 @@ static void step_gas_maxima(lm3_sim *sim, double *max_div, double *c_max)
  * solid's Jaumann update, or the gas's stress from its rate, pressure and
  * artificial viscosity (sim3_gas.c). 0 when a particle's volume went to
  * nothing. */
-static int step_stress(lm3_sim *sim, double max_div, double c_max)
+static int step_stress(lm3_sim *sim, double max_div, double c_max, int nt)
 {
     lm3_particles *p = &sim->p;
     const double dt = sim->def.dt;
-    for (size_t q = 0; q < p->n; q++) {
+    const long n = (long)p->n;
+    int ok = 1;
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(nt) schedule(static) reduction(& : ok) if (nt > 1)
+#endif
+    for (long qi = 0; qi < n; qi++) {
+        const size_t q = (size_t)qi;
         double L[9], W[9], de[6], s[6];
         if (sim->grid.W == 2) gradient_at(sim, q, L, 2);
         else gradient_at(sim, q, L, 3);
@@ -352,7 +398,10 @@ static int step_stress(lm3_sim *sim, double max_div, double c_max)
         de[1] = dt * L[4];
         de[2] = dt * L[8];
         double J = 1 + de[0] + de[1] + de[2];
-        if (!(J > 0)) return 0;
+        if (!(J > 0)) {
+            ok = 0;
+            continue;
+        }
         p->rho[q] /= J;
         const lm3_material *mat = &sim->mats[p->mat[q]];
         if (mat->kind == LM3_GAS) {
@@ -370,7 +419,7 @@ static int step_stress(lm3_sim *sim, double max_div, double c_max)
         }
         for (int c = 0; c < 6; c++) p->s[c][q] = s[c];
     }
-    return 1;
+    return ok;
 }
 
 /* Every particle finite and inside the grid (the stencils of the next
@@ -443,13 +492,14 @@ lm_status lm3_step(lm3_sim *sim)
         if (st != LM_OK) return st;
         sim->recheck = 0;
     }
-    step_p2g_forces(sim);
-    step_grid_update(sim);
-    const int moved_ok = step_g2p_remap(sim);
-    step_strain_velocity(sim);
+    const int nt = lm3_threads(sim);
+    step_p2g_forces(sim, nt);
+    step_grid_update(sim, nt);
+    const int moved_ok = step_g2p_remap(sim, nt);
+    step_strain_velocity(sim, nt);
     double max_div, c_max;
-    step_gas_maxima(sim, &max_div, &c_max);
-    if (!step_stress(sim, max_div, c_max)) {
+    step_gas_maxima(sim, &max_div, &c_max, nt);
+    if (!step_stress(sim, max_div, c_max, nt)) {
         sim->recheck = 1;
         snprintf(sim->err, sizeof sim->err, "t = %g (step %ld): a particle's volume went to "
                  "nothing (1 + tr de <= 0): unstable", sim->t, sim->nstep);

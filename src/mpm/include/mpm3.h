@@ -111,6 +111,8 @@ typedef struct lm3_sim {
     long nstep;
     double t;
     char err[256];         /* why the last call failed */
+    double *scratch;       /* the threads' private copies of nodal fields */
+    size_t scratch_len;    /* (sim3_threads.c), in doubles */
     int recheck;           /* look at every particle before the next step: set
                               after a failed step, and by a caller that moves
                               particles between steps (lm3_step otherwise
@@ -154,8 +156,8 @@ double lm3_courant_limit(const lm3_sim *sim);
 void lm3_energy_of(const lm3_sim *sim, lm3_energy *e);
 /* The bytes the simulation holds (issue 34 item 6, docs/3d.md "Memory"):
  * its particle arrays at their capacity into *particles (at the count
- * into *exact when not NULL), its grid's nodal fields into *grid; the
- * sum is returned. */
+ * into *exact when not NULL), its grid's nodal fields and the threads'
+ * copies of them into *grid; the sum is returned. */
 size_t lm3_memory(const lm3_sim *sim, size_t *particles, size_t *exact, size_t *grid);
 void lm3_momentum(const lm3_sim *sim, double P[3]);
 double lm3_mass(const lm3_sim *sim);
