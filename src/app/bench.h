@@ -6,6 +6,9 @@
 
 /* `lamina bench engine` (bench_engine.c) */
 int bench_engine(int argc, char **argv);
+/* `lamina bench engine --dim 3`, also `lamina bench --dim 3`
+ * (bench_engine3.c) */
+int bench_engine3(int argc, char **argv);
 /* `lamina bench threads` (bench_threads.c) */
 int bench_threads(int argc, char **argv);
 /* The two elastic disks of bench engine at about `particles` particles on

@@ -263,9 +263,12 @@ int bench_engine(int argc, char **argv)
             basis = (lm_basis)b;
         } else if (strcmp(argv[i], "--sizes") == 0 && i + 1 < argc) {
             if ((nsizes = bench_sizes("engine", argv[++i], sizes, 8)) < 0) return 2;
+        } else if (strcmp(argv[i], "--dim") == 0 && i + 1 < argc) {
+            i++;   /* 2 (cmd_bench.c sends any other to bench_engine3.c) */
         } else {
-            return bench_unknown("engine", argv[i], "[--sizes N,N,...] [--work PARTICLE_STEPS] "
-                                 "[--threads N] [--basis linear|gimp|bspline2]");
+            return bench_unknown("engine", argv[i], "[--dim 2|3] [--sizes N,N,...] "
+                                 "[--work PARTICLE_STEPS] [--threads N] "
+                                 "[--basis linear|gimp|bspline2]");
         }
     }
     printf("lamina bench engine: %d thread%s, basis %s, about %.3g particle-steps per case\n\n",

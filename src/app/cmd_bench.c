@@ -306,8 +306,14 @@ int cmd_bench(int argc, char **argv)
 {
     if (argc >= 1 && strcmp(argv[0], "render") == 0)
         return bench_render(argc - 1, argv + 1);
-    if (argc >= 1 && strcmp(argv[0], "engine") == 0)
+    if (argc >= 1 && strcmp(argv[0], "engine") == 0) {
+        for (int i = 1; i + 1 < argc; i++)   /* the 3D engine's table */
+            if (strcmp(argv[i], "--dim") == 0 && strcmp(argv[i + 1], "2") != 0)
+                return bench_engine3(argc - 1, argv + 1);
         return bench_engine(argc - 1, argv + 1);
+    }
+    if (argc >= 1 && strcmp(argv[0], "--dim") == 0)   /* lamina bench --dim 3 */
+        return bench_engine3(argc, argv);
     if (argc >= 1 && strcmp(argv[0], "threads") == 0)
         return bench_threads(argc - 1, argv + 1);
     if (argc >= 1 && strcmp(argv[0], "roofline") == 0)

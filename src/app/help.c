@@ -69,9 +69,11 @@ static const command_help commands[] = {
      "                    [--backend cairo|osmesa|egl|gl|all]",
      "milliseconds per frame for each renderer (README, \"Rendering and benchmarks\")"},
     {"bench engine",
-     "lamina bench engine [--sizes N,...] [--work PARTICLE_STEPS] [--threads N]\n"
-     "                    [--basis linear|gimp|bspline2]",
-     "particle-steps per second of the step (README, \"Engine performance\")"},
+     "lamina bench engine [--dim 2|3] [--sizes N,...] [--work PARTICLE_STEPS]\n"
+     "                    [--threads N] [--basis linear|gimp|bspline2]",
+     "particle-steps per second of the step (README, \"Engine performance\");\n"
+     "--dim 3 (also `lamina bench --dim 3`): the 3D engine's block, trilinear and\n"
+     "B-spline, and its bytes a particle (docs/performance.md, \"3D\")"},
     {"bench threads",
      "lamina bench threads [--sizes N,...] [--steps N] [--pairs N] [--threads N]\n"
      "                     [--idle | --loaded]",

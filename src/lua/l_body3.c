@@ -123,7 +123,7 @@ static int material3(lua_State *L, la_sim3 *s3, int midx, const char *fn)
         return k;
     }
     lua_pop(L, 1);
-    lm3_material m = {u->def.rho, u->def.E, u->def.nu};
+    lm3_material m = {.rho = u->def.rho, .E = u->def.E, .nu = u->def.nu, .kind = LM3_ELASTIC};
     char err[256];
     int k = lm3_material_add(s3->sim, &m, err, sizeof err);
     if (k < 0) luaL_error(L, "%s: material: %s", fn, err);

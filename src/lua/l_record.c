@@ -299,11 +299,11 @@ static int record_sample(lua_State *L)
     row_clock k;
     memset(&k, 0, sizeof k);
     if (s->s3) {
-        lm3_energy e3 = {0, 0, 0, 0};
+        lm3_energy e3 = {0, 0, 0, 0, 0};
         if (r->energy) lm3_energy_of(s->s3->sim, &e3);
         k.t = s->s3->sim->t;
         k.step = (double)s->s3->sim->nstep;
-        const double v[6] = {e3.kinetic, e3.strain, 0, e3.potential, e3.total, 0};
+        const double v[6] = {e3.kinetic, e3.strain, e3.internal, e3.potential, e3.total, 0};
         memcpy(k.energy, v, sizeof v);
     } else {
         lm_energy e = {0, 0, 0, 0, 0};

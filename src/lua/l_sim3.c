@@ -277,9 +277,8 @@ void la_sim3_push_energy(lua_State *L, const lm3_energy *e)
     lua_createtable(L, 0, 5);
     lua_pushnumber(L, e->kinetic); lua_setfield(L, -2, "kinetic");
     lua_pushnumber(L, e->strain); lua_setfield(L, -2, "strain");
-    /* no gas in 3D yet: its internal energy is 0, kept so that 2D scripts'
-     * sums read the same keys */
-    lua_pushnumber(L, 0); lua_setfield(L, -2, "internal");
+    /* the gases' stored energy, sum m e ([F] eq 23), as in 2D */
+    lua_pushnumber(L, e->internal); lua_setfield(L, -2, "internal");
     lua_pushnumber(L, e->potential); lua_setfield(L, -2, "potential");
     lua_pushnumber(L, e->total); lua_setfield(L, -2, "total");
 }

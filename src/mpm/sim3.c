@@ -63,6 +63,10 @@ static int def_ok(const lm3_def *d, int n[3], char *err, size_t len)
         snprintf(err, len, "courant = %g: must be a positive number", d->courant);
         return 0;
     }
+    if (d->threads < 0 || d->threads > LM_MAX_THREADS) {
+        snprintf(err, len, "threads = %d: must be 1 to %d", d->threads, LM_MAX_THREADS);
+        return 0;
+    }
     for (int a = 0; a < 3; a++)
         if (!isfinite(d->gravity[a])) {
             snprintf(err, len, "gravity: component %d is not finite", a + 1);
@@ -111,9 +115,34 @@ void lm3_sim_free(lm3_sim *sim)
     lm3_pins_free(sim);
     lm3_particles *p = &sim->p;
     LU_FREE_ALL(p->x[0], p->x[1], p->x[2], p->v[0], p->v[1], p->v[2], p->m, p->rho, p->s[0],
-                p->s[1], p->s[2], p->s[3], p->s[4], p->s[5], p->d[0], p->d[1], p->d[2],
-                p->node, p->mat, sim->grid.m);
+                p->s[1], p->s[2], p->s[3], p->s[4], p->s[5], p->e, p->d[0], p->d[1], p->d[2],
+                p->node, p->mat, sim->grid.m, sim->scratch);
     free(sim);
+}
+
+/* A gas's constants, checked as lm_material_validate checks the 2D gas's. */
+static int gas_ok(const lm3_material *mat, char *err, size_t errlen)
+{
+    if (!(mat->gamma > 1) || !isfinite(mat->gamma)) {
+        snprintf(err, errlen, "gamma = %g: must be greater than 1", mat->gamma);
+        return 0;
+    }
+    if (!(mat->e0 >= 0) || !isfinite(mat->e0)) {
+        snprintf(err, errlen, "e = %g: the internal energy must be >= 0", mat->e0);
+        return 0;
+    }
+    if (!(mat->mu >= 0) || !isfinite(mat->mu)) {
+        snprintf(err, errlen, "mu = %g: must be >= 0", mat->mu);
+        return 0;
+    }
+    if (mat->av && !(mat->av_lambda > 0 && mat->av_c1 >= 0 && mat->av_c2 >= 0 &&
+                     isfinite(mat->av_lambda + mat->av_c1 + mat->av_c2 + mat->av_g))) {
+        snprintf(err, errlen, "av: the artificial viscosity needs lambda > 0, c1 >= 0, "
+                 "c2 >= 0 (got lambda = %g, c1 = %g, c2 = %g)", mat->av_lambda, mat->av_c1,
+                 mat->av_c2);
+        return 0;
+    }
+    return 1;
 }
 
 int lm3_material_add(lm3_sim *sim, const lm3_material *mat, char *err, size_t errlen)
@@ -122,11 +151,15 @@ int lm3_material_add(lm3_sim *sim, const lm3_material *mat, char *err, size_t er
         snprintf(err, errlen, "rho = %g: must be a positive number", mat->rho);
         return -1;
     }
-    if (!(mat->E > 0) || !isfinite(mat->E)) {
+    if (mat->kind == LM3_GAS) {
+        if (!gas_ok(mat, err, errlen)) return -1;
+    } else if (mat->kind != LM3_ELASTIC) {
+        snprintf(err, errlen, "kind = %d: 3D has elastic and gas", (int)mat->kind);
+        return -1;
+    } else if (!(mat->E > 0) || !isfinite(mat->E)) {
         snprintf(err, errlen, "E = %g: must be a positive number", mat->E);
         return -1;
-    }
-    if (!(mat->nu > -1 && mat->nu < 0.5)) {
+    } else if (!(mat->nu > -1 && mat->nu < 0.5)) {
         snprintf(err, errlen, "nu = %g: must lie in (-1, 0.5)", mat->nu);
         return -1;
     }
@@ -147,8 +180,8 @@ static int reserve(lm3_particles *p, size_t more)
     if (need <= p->cap) return 1;
     void *arr[] = {&p->x[0], &p->x[1], &p->x[2], &p->v[0], &p->v[1], &p->v[2], &p->m,
                    &p->rho, &p->s[0], &p->s[1], &p->s[2], &p->s[3], &p->s[4], &p->s[5],
-                   &p->d[0], &p->d[1], &p->d[2], &p->node, &p->mat};
-    size_t elem[] = {8, 8, 8, 8, 8, 8, 8, 8, 8, 8, 8, 8, 8, 8, 8, 8, 8, sizeof(int32_t), 1};
+                   &p->e, &p->d[0], &p->d[1], &p->d[2], &p->node, &p->mat};
+    size_t elem[] = {8, 8, 8, 8, 8, 8, 8, 8, 8, 8, 8, 8, 8, 8, 8, 8, 8, 8, sizeof(int32_t), 1};
     size_t cap = p->cap;
     for (size_t i = 0; i < sizeof arr / sizeof *arr; i++) {
         size_t c = p->cap;
@@ -179,11 +212,17 @@ lm_status lm3_particle_add(lm3_sim *sim, int mat, const double x[3], const doubl
         p->v[a][q] = v[a];
         p->d[a][q] = 0;
     }
-    for (int c = 0; c < 6; c++) p->s[c][q] = 0;
-    p->rho[q] = sim->mats[mat].rho;
+    const lm3_material *mt = &sim->mats[mat];
+    p->rho[q] = mt->rho;
     p->m[q] = p->rho[q] * V;
+    /* a gas starts at its pressure as an isotropic stress ([F] eq 21 at
+     * rest), as 2D seeding does (sim.c) */
+    p->e[q] = mt->kind == LM3_GAS ? mt->e0 : 0;
+    double pr = mt->kind == LM3_GAS ? (mt->gamma - 1) * p->rho[q] * mt->e0 : 0;
+    for (int c = 0; c < 6; c++) p->s[c][q] = c < 3 ? -pr : 0;
     p->node[q] = 0;
     p->mat[q] = (uint8_t)mat;
+    sim->recheck = 1;      /* a new particle: the next step looks at it */
     return LM_OK;
 }
 
@@ -219,20 +258,42 @@ void lm3_energy_of(const lm3_sim *sim, lm3_energy *e)
 {
     const lm3_particles *p = &sim->p;
     const double *gv = sim->def.gravity;
-    double k = 0, w = 0, u = 0;
+    double k = 0, w = 0, u = 0, in = 0;
     for (size_t q = 0; q < p->n; q++) {
         double v2 = p->v[0][q] * p->v[0][q] + p->v[1][q] * p->v[1][q] + p->v[2][q] * p->v[2][q];
-        double s[6];
-        for (int c = 0; c < 6; c++) s[c] = p->s[c][q];
         k += 0.5 * p->m[q] * v2;
-        w += p->m[q] / p->rho[q] * lm3_elastic_energy_density(&sim->mats[p->mat[q]], s);
+        const lm3_material *mt = &sim->mats[p->mat[q]];
+        if (mt->kind == LM3_GAS) {
+            in += p->m[q] * p->e[q];   /* [F] eq 23's stored energy */
+        } else {
+            double s[6];
+            for (int c = 0; c < 6; c++) s[c] = p->s[c][q];
+            w += p->m[q] / p->rho[q] * lm3_elastic_energy_density(mt, s);
+        }
         /* potential of the uniform field: -m g . x */
         u -= p->m[q] * (gv[0] * p->x[0][q] + gv[1] * p->x[1][q] + gv[2] * p->x[2][q]);
     }
     e->kinetic = k;
     e->strain = w;
     e->potential = u;
-    e->total = k + w + u;
+    e->internal = in;
+    e->total = k + w + in + u;
+}
+
+/* x, v (6), m, rho, sigma (6), e, d (3): 18 doubles; node (int32) and
+ * mat (uint8) - the arrays reserve() grows; the grid's ten doubles a node
+ * (lm3_sim_create) */
+#define LM3_PARTICLE_BYTES (18 * sizeof(double) + sizeof(int32_t) + sizeof(uint8_t))
+
+size_t lm3_memory(const lm3_sim *sim, size_t *particles, size_t *exact, size_t *grid)
+{
+    /* the grid's fields and the threads' copies of them (sim3_threads.c) */
+    size_t pb = sim->p.cap * LM3_PARTICLE_BYTES,
+           gb = (10 * sim->grid.nn + sim->scratch_len) * sizeof(double);
+    if (particles) *particles = pb;
+    if (exact) *exact = sim->p.n * LM3_PARTICLE_BYTES;
+    if (grid) *grid = gb;
+    return pb + gb;
 }
 
 void lm3_momentum(const lm3_sim *sim, double P[3])

@@ -36,6 +36,7 @@ void lm3_range_energy(const lm3_sim *sim, size_t first, size_t n, lm3_energy *e)
     for (int c = 0; c < 6; c++) p->s[c] += first;
     p->m += first;
     p->rho += first;
+    p->e += first;
     p->mat += first;
     p->n = n;
     lm3_energy_of(&view, e);
@@ -46,7 +47,7 @@ uint64_t lm3_sim_hash(const lm3_sim *sim)
     const lm3_particles *p = &sim->p;
     uint64_t h = LU_FNV_SEED;
     const double *f[] = {p->x[0], p->x[1], p->x[2], p->v[0], p->v[1], p->v[2], p->rho,
-                         p->s[0], p->s[1], p->s[2], p->s[3], p->s[4], p->s[5]};
+                         p->s[0], p->s[1], p->s[2], p->s[3], p->s[4], p->s[5], p->e};
     for (size_t k = 0; k < sizeof f / sizeof f[0]; k++)
         if (p->n) h = lu_fnv1a(h, f[k], p->n * sizeof(double));
     h = lu_fnv1a(h, &sim->nstep, sizeof sim->nstep);

@@ -8,8 +8,9 @@
  *
  * Layout: "LM3STATE", uint32 version, uint32 materials, uint64 particles,
  * uint64 the whole part's bytes, then doubles (t, dt, gravity[3], courant,
- * and per material rho, E, nu), int64 nstep, 14 arrays of n doubles (x, v,
- * m, rho, sigma), n material bytes. Native byte order: a checkpoint is
+ * and per material its MAT_DOUBLES constants, the kind among them), int64
+ * nstep, ARRAYS arrays of n doubles (x, v, m, rho, sigma, the gas's e), n
+ * material bytes. Native byte order: a checkpoint is
  * read back on the machine that wrote it (as the 2D one). */
 #include <stdio.h>
 #include <string.h>
@@ -18,11 +19,13 @@
 
 #define MAGIC "LM3STATE"
 #define HEAD (8 + 4 + 4 + 8 + 8)
+#define MAT_DOUBLES 12
+#define ARRAYS 15
 
 static size_t bytes_for(size_t nmat, size_t n)
 {
-    return HEAD + (6 + 3 * nmat) * sizeof(double) + sizeof(int64_t) +
-           n * (14 * sizeof(double) + 1);
+    return HEAD + (6 + MAT_DOUBLES * nmat) * sizeof(double) + sizeof(int64_t) +
+           n * (ARRAYS * sizeof(double) + 1);
 }
 
 size_t lm3_state_bytes(const lm3_sim *sim)
@@ -31,7 +34,7 @@ size_t lm3_state_bytes(const lm3_sim *sim)
 }
 
 /* the particle arrays in their saved order */
-static void arrays_of(const lm3_particles *p, double *a[14])
+static void arrays_of(const lm3_particles *p, double *a[ARRAYS])
 {
     for (int k = 0; k < 3; k++) {
         a[k] = p->x[k];
@@ -40,6 +43,31 @@ static void arrays_of(const lm3_particles *p, double *a[14])
     a[6] = p->m;
     a[7] = p->rho;
     for (int c = 0; c < 6; c++) a[8 + c] = p->s[c];
+    a[14] = p->e;
+}
+
+/* a material's constants as doubles (live: sim:material may change them) */
+static void mat_pack(const lm3_material *m, double d[MAT_DOUBLES])
+{
+    double v[MAT_DOUBLES] = {m->rho, m->E, m->nu, (double)m->kind, m->gamma, m->mu, m->e0,
+                             (double)m->av, m->av_c1, m->av_c2, m->av_lambda, m->av_g};
+    memcpy(d, v, sizeof v);
+}
+
+static void mat_unpack(const double d[MAT_DOUBLES], lm3_material *m)
+{
+    m->rho = d[0];
+    m->E = d[1];
+    m->nu = d[2];
+    m->kind = (lm3_kind)(int)d[3];
+    m->gamma = d[4];
+    m->mu = d[5];
+    m->e0 = d[6];
+    m->av = (int)d[7];
+    m->av_c1 = d[8];
+    m->av_c2 = d[9];
+    m->av_lambda = d[10];
+    m->av_g = d[11];
 }
 
 void lm3_state_save(const lm3_sim *sim, unsigned char *buf)
@@ -56,14 +84,15 @@ void lm3_state_save(const lm3_sim *sim, unsigned char *buf)
     double head[6] = {sim->t, d->dt, d->gravity[0], d->gravity[1], d->gravity[2], d->courant};
     memcpy(b, head, sizeof head); b += sizeof head;
     for (int k = 0; k < sim->nmat; k++) {
-        double m[3] = {sim->mats[k].rho, sim->mats[k].E, sim->mats[k].nu};
+        double m[MAT_DOUBLES];
+        mat_pack(&sim->mats[k], m);
         memcpy(b, m, sizeof m); b += sizeof m;
     }
     int64_t step = sim->nstep;
     memcpy(b, &step, sizeof step); b += sizeof step;
-    double *a[14];
+    double *a[ARRAYS];
     arrays_of(&sim->p, a);
-    for (int k = 0; k < 14; k++) {
+    for (int k = 0; k < ARRAYS; k++) {
         if (n) memcpy(b, a[k], n * sizeof(double));
         b += n * sizeof(double);
     }
@@ -83,8 +112,8 @@ size_t lm3_state_claimed(const unsigned char *buf, size_t len)
     /* the count must be the one the total implies (no overflow: n is
      * bounded by the total, itself bounded by the file's size) */
     size_t fixed = bytes_for(nmat, 0);
-    if (total < fixed || (total - fixed) % (14 * sizeof(double) + 1) != 0 ||
-        (total - fixed) / (14 * sizeof(double) + 1) != n)
+    if (total < fixed || (total - fixed) % (ARRAYS * sizeof(double) + 1) != 0 ||
+        (total - fixed) / (ARRAYS * sizeof(double) + 1) != n)
         return 0;
     return (size_t)total;
 }
@@ -113,15 +142,20 @@ lm_status lm3_state_load(lm3_sim *sim, const unsigned char *buf, size_t len)
     memcpy(head, b, sizeof head); b += sizeof head;
     lm3_material mats[LM3_MAX_MATERIALS];
     for (uint32_t k = 0; k < nmat; k++) {
-        double m[3];
+        double m[MAT_DOUBLES];
         memcpy(m, b, sizeof m); b += sizeof m;
-        mats[k].rho = m[0];
-        mats[k].E = m[1];
-        mats[k].nu = m[2];
+        mats[k] = sim->mats[k];
+        mat_unpack(m, &mats[k]);
+        if (mats[k].kind != sim->mats[k].kind) {
+            snprintf(sim->err, sizeof sim->err, "does not fit the script: its material %u is "
+                     "%s, the script's %s", k, mats[k].kind == LM3_GAS ? "a gas" : "a solid",
+                     sim->mats[k].kind == LM3_GAS ? "a gas" : "a solid");
+            return LM_ERR_INPUT;
+        }
     }
     int64_t step;
     memcpy(&step, b, sizeof step); b += sizeof step;
-    const unsigned char *mat = b + 14 * n * sizeof(double);
+    const unsigned char *mat = b + ARRAYS * n * sizeof(double);
     for (uint64_t q = 0; q < n; q++)
         if (mat[q] >= nmat) {
             snprintf(sim->err, sizeof sim->err, "is damaged: particle %llu has material %u of "
@@ -135,12 +169,13 @@ lm_status lm3_state_load(lm3_sim *sim, const unsigned char *buf, size_t len)
     sim->def.courant = head[5];
     memcpy(sim->mats, mats, nmat * sizeof *mats);
     sim->nstep = (long)step;
-    double *a[14];
+    double *a[ARRAYS];
     arrays_of(&sim->p, a);
-    for (int k = 0; k < 14; k++) {
+    for (int k = 0; k < ARRAYS; k++) {
         if (n) memcpy(a[k], b, n * sizeof(double));
         b += n * sizeof(double);
     }
     if (n) memcpy(sim->p.mat, b, n);
+    sim->recheck = 1;      /* the particles moved: the next step looks at them */
     return LM_OK;
 }

@@ -7,6 +7,9 @@
 #include <string.h>
 
 #include "mpm3.h"
+#include "sim3_kernels2.h"
+#include "sim3_shape.h"
+#include "sim3_threads.h"
 #include "sim3_walls.h"
 
 #if defined(__GNUC__)
@@ -15,26 +18,35 @@
 #define LM3_INLINE inline
 #endif
 
+/* A loop over particles or nodes on the step's threads: each iteration
+ * writes only its own particle or node, so any split gives the same bits
+ * (the scatters are sim3_threads.c's). */
+#ifdef _OPENMP
+#define LM3_PAR(nt) _Pragma("omp parallel for num_threads(nt) schedule(static) if (nt > 1)")
+#else
+#define LM3_PAR(nt)
+#endif
+
 static const int comp_mpf[7] = {LM3_SCALAR, 0, 1, 2, 0, 1, 2};
 static const int comp_vec[3] = {0, 1, 2};
 
 /* Step 0 at one particle: its stencil at x^k, kept for the step's other
  * passes. */
-static LM3_INLINE void place_at(lm3_sim *sim, size_t q)
+static LM3_INLINE void place_at(lm3_sim *sim, size_t q, const int W)
 {
     lm3_particles *p = &sim->p;
     double x[3] = {p->x[0][q], p->x[1][q], p->x[2][q]}, d[3];
-    lm3_place(&sim->grid, x, &p->node[q], d);
+    lm3_place_w(&sim->grid, x, &p->node[q], d, W);
     p->d[0][q] = d[0];
     p->d[1][q] = d[1];
     p->d[2][q] = d[2];
 }
 
-static LM3_INLINE void weights_of(const lm3_sim *sim, size_t q, lm3_weights *w)
+static LM3_INLINE void weights_of(const lm3_sim *sim, size_t q, lm3_weights *w, const int W)
 {
     const lm3_particles *p = &sim->p;
     double d[3] = {p->d[0][q], p->d[1][q], p->d[2][q]};
-    lm3_weights_at(&sim->grid, p->node[q], d, w);
+    lm3_weights_w(&sim->grid, p->node[q], d, w, W);
 }
 
 /* Row (b, c) of a stencil: its first node and the y-z factors of N and of
@@ -55,57 +67,85 @@ static LM3_INLINE row3 row_of(const lm3_grid *g, const lm3_weights *w, int b, in
 }
 
 /* Steps 1-2 at one particle, stencil W wide: m_i, p_i and
- * f_i^int = -V_p sigma_p . G_ip ([F] eq 9). */
-static LM3_INLINE void p2g_at(const lm3_sim *sim, size_t q, const int W)
+ * f_i^int = -V_p sigma_p . G_ip ([F] eq 9). With G = (g0[a] wyz,
+ * w0[a] gyz, w0[a] wgz) the force on node a of a row is
+ * -(A g0[a] + B w0[a]) per component, A = V sigma_.x wyz and B =
+ * V (sigma_.y gyz + sigma_.z wgz) made once a row: 2 multiplications and
+ * an addition a component a node instead of 7 (docs/3d.md "Speed"; the
+ * sum's order, not its terms, differs from the node-by-node form). */
+static LM3_INLINE void p2g_at(const lm3_sim *sim, const lm3_grid *g, size_t q, const int W)
 {
     const lm3_particles *p = &sim->p;
-    const lm3_grid *g = &sim->grid;
     lm3_weights w;
-    weights_of(sim, q, &w);
+    weights_of(sim, q, &w, W);
     const double m = p->m[q], V = m / p->rho[q];
     const double mv0 = m * p->v[0][q], mv1 = m * p->v[1][q], mv2 = m * p->v[2][q];
-    const double sxx = p->s[0][q], syy = p->s[1][q], szz = p->s[2][q];
-    const double syz = p->s[3][q], sxz = p->s[4][q], sxy = p->s[5][q];
+    const double sxx = V * p->s[0][q], syy = V * p->s[1][q], szz = V * p->s[2][q];
+    const double syz = V * p->s[3][q], sxz = V * p->s[4][q], sxy = V * p->s[5][q];
+    double *const gm = g->m, *const p0 = g->p[0], *const p1 = g->p[1], *const p2 = g->p[2];
+    double *const f0 = g->f[0], *const f1 = g->f[1], *const f2 = g->f[2];
+    const lm_v2d W0 = {w.w[0][0], w.w[0][1]}, G0 = {w.g[0][0], w.g[0][1]};
+    const double mv[3] = {mv0, mv1, mv2};
     for (int c = 0; c < W; c++)
         for (int b = 0; b < W; b++) {
             const row3 r = row_of(g, &w, b, c);
+            const double A0 = sxx * r.wyz, B0 = sxy * r.gyz + sxz * r.wgz;
+            const double A1 = sxy * r.wyz, B1 = syy * r.gyz + syz * r.wgz;
+            const double A2 = sxz * r.wyz, B2 = syz * r.gyz + szz * r.wgz;
+            if (W == 2) {   /* the row's two nodes side by side: sim3_kernels2.h */
+                const double A[3] = {A0, A1, A2}, B[3] = {B0, B1, B2};
+                lm3_p2g_row2(g, r.node, W0, G0, r.wyz, m, mv, A, B);
+                continue;
+            }
             for (int a = 0; a < W; a++) {
                 const long i = r.node + a;
-                const double N = w.w[0][a] * r.wyz;
-                const double gx = w.g[0][a] * r.wyz, gy = w.w[0][a] * r.gyz,
-                             gz = w.w[0][a] * r.wgz;
-                g->m[i] += N * m;
-                g->p[0][i] += N * mv0;
-                g->p[1][i] += N * mv1;
-                g->p[2][i] += N * mv2;
-                g->f[0][i] -= V * (sxx * gx + sxy * gy + sxz * gz);
-                g->f[1][i] -= V * (sxy * gx + syy * gy + syz * gz);
-                g->f[2][i] -= V * (sxz * gx + syz * gy + szz * gz);
+                const double N = w.w[0][a] * r.wyz, ga = w.g[0][a], wa = w.w[0][a];
+                gm[i] += N * m;
+                p0[i] += N * mv0;
+                p1[i] += N * mv1;
+                p2[i] += N * mv2;
+                f0[i] -= A0 * ga + B0 * wa;
+                f1[i] -= A1 * ga + B1 * wa;
+                f2[i] -= A2 * ga + B2 * wa;
             }
         }
 }
 
-/* Steps 0-2 in one pass over the particles (each particle's place, then
- * its sums), the ghosts folded, then f_i^ext = m_i g. */
-static void step_p2g_forces(lm3_sim *sim)
+/* Steps 0-2 at the particles q0 .. q1 - 1 into the fields of view g (the
+ * grid's or a thread's copy: sim3_threads.c). */
+static void p2g_range(lm3_sim *sim, const lm3_grid *g, size_t q0, size_t q1)
 {
-    lm3_grid *g = &sim->grid;
-    memset(g->m, 0, 10 * g->nn * sizeof(double));
     if (g->W == 2) {
-        for (size_t q = 0; q < sim->p.n; q++) {
-            place_at(sim, q);
-            p2g_at(sim, q, 2);
+        for (size_t q = q0; q < q1; q++) {
+            place_at(sim, q, 2);
+            p2g_at(sim, g, q, 2);
         }
     } else {
-        for (size_t q = 0; q < sim->p.n; q++) {
-            place_at(sim, q);
-            p2g_at(sim, q, 3);
+        for (size_t q = q0; q < q1; q++) {
+            place_at(sim, q, 3);
+            p2g_at(sim, g, q, 3);
         }
     }
+}
+
+/* Steps 0-2 in one pass over the particles (each particle's place, then
+ * its sums), the ghosts folded, then f_i^ext = m_i g. */
+static void step_p2g_forces(lm3_sim *sim, int nt)
+{
+    lm3_grid *g = &sim->grid;
+    const long nn = (long)g->nn;
+    LM3_PAR(nt)
+    for (long i = 0; i < nn; i++) {
+        g->m[i] = 0;
+        for (int a = 0; a < 3; a++) g->p[a][i] = g->f[a][i] = g->v[a][i] = 0;
+    }
+    if (nt < 2 || lm3_scatter_threads(sim, nt, 7, p2g_range) != 0)
+        p2g_range(sim, g, 0, sim->p.n);
     double *const f[7] = {g->m, g->p[0], g->p[1], g->p[2], g->f[0], g->f[1], g->f[2]};
     lm3_grid_fold(g, 7, f, comp_mpf);
     const double *gv = sim->def.gravity;
-    for (size_t i = 0; i < g->nn; i++) {
+    LM3_PAR(nt)
+    for (long i = 0; i < nn; i++) {
         g->f[0][i] += g->m[i] * gv[0];
         g->f[1][i] += g->m[i] * gv[1];
         g->f[2][i] += g->m[i] * gv[2];
@@ -115,15 +155,18 @@ static void step_p2g_forces(lm3_sim *sim)
 /* Step 3: p_i^L = p_i + dt f_i ([F] eq 10); the walls act on both, then
  * a_i = f_i / m_i replaces f and v_i^L = p_i^L / m_i replaces p (zero at
  * massless nodes), ghosts filled for the gather. */
-static void step_grid_update(lm3_sim *sim)
+static void step_grid_update(lm3_sim *sim, int nt)
 {
     lm3_grid *g = &sim->grid;
     const double dt = sim->def.dt;
-    for (int a = 0; a < 3; a++)
-        for (size_t i = 0; i < g->nn; i++) g->p[a][i] += dt * g->f[a][i];
+    const long nn = (long)g->nn;
+    LM3_PAR(nt)
+    for (long i = 0; i < nn; i++)
+        for (int a = 0; a < 3; a++) g->p[a][i] += dt * g->f[a][i];
     lm3_grid_apply_bc(g, g->p);
     lm3_grid_apply_bc(g, g->f);
-    for (size_t i = 0; i < g->nn; i++) {
+    LM3_PAR(nt)
+    for (long i = 0; i < nn; i++) {
         double r = g->m[i] > 0 ? 1.0 / g->m[i] : 0;
         for (int a = 0; a < 3; a++) {
             g->f[a][i] *= r;
@@ -136,51 +179,74 @@ static void step_grid_update(lm3_sim *sim)
 }
 
 /* Step 4 ([F] eq 12) at one particle: FLIP velocity from the nodal
- * accelerations, position from the Lagrangian velocity. */
-static LM3_INLINE void g2p_at(lm3_sim *sim, size_t q, const int W)
+ * accelerations, position from the Lagrangian velocity. 0 when the new
+ * position or velocity is not finite or the position left the grid (the
+ * step's end names it: check()), so that no pass of its own looks. */
+static LM3_INLINE int g2p_at(lm3_sim *sim, size_t q, const int W)
 {
     lm3_particles *p = &sim->p;
     const lm3_grid *g = &sim->grid;
     const double dt = sim->def.dt;
     lm3_weights w;
-    weights_of(sim, q, &w);
+    weights_of(sim, q, &w, W);
     double a0 = 0, a1 = 0, a2 = 0, u0 = 0, u1 = 0, u2 = 0;
-    for (int c = 0; c < W; c++)
-        for (int b = 0; b < W; b++) {
-            const long row = w.node + (c * g->s[1] + b) * g->s[0];
-            const double wyz = w.w[1][b] * w.w[2][c];
-            for (int a = 0; a < W; a++) {
-                const long i = row + a;
-                const double N = w.w[0][a] * wyz;
-                a0 += N * g->f[0][i];
-                a1 += N * g->f[1][i];
-                a2 += N * g->f[2][i];
-                u0 += N * g->p[0][i];
-                u1 += N * g->p[1][i];
-                u2 += N * g->p[2][i];
+    if (W == 2) {   /* sim3_kernels2.h: the same sums in the same order */
+        const lm_v2d W0 = {w.w[0][0], w.w[0][1]};
+        double acc[6] = {0, 0, 0, 0, 0, 0};
+        for (int c = 0; c < 2; c++)
+            for (int b = 0; b < 2; b++)
+                lm3_g2p_row2(g, w.node + (c * g->s[1] + b) * g->s[0], W0,
+                             w.w[1][b] * w.w[2][c], acc);
+        a0 = acc[0], a1 = acc[1], a2 = acc[2], u0 = acc[3], u1 = acc[4], u2 = acc[5];
+    } else {
+        for (int c = 0; c < W; c++)
+            for (int b = 0; b < W; b++) {
+                const long row = w.node + (c * g->s[1] + b) * g->s[0];
+                const double wyz = w.w[1][b] * w.w[2][c];
+                for (int a = 0; a < W; a++) {
+                    const long i = row + a;
+                    const double N = w.w[0][a] * wyz;
+                    a0 += N * g->f[0][i];
+                    a1 += N * g->f[1][i];
+                    a2 += N * g->f[2][i];
+                    u0 += N * g->p[0][i];
+                    u1 += N * g->p[1][i];
+                    u2 += N * g->p[2][i];
+                }
             }
-        }
+    }
     p->v[0][q] += dt * a0;
     p->v[1][q] += dt * a1;
     p->v[2][q] += dt * a2;
     p->x[0][q] += dt * u0;
     p->x[1][q] += dt * u1;
     p->x[2][q] += dt * u2;
+    int ok = 1;
+    for (int k = 0; k < 3; k++) {
+        const double x = p->x[k][q], lo = g->lo[k];
+        ok &= x >= lo && x <= lo + g->n[k] * g->h && isfinite(p->v[k][q]);
+    }
+    return ok;
 }
 
 /* Step 5's MUSL re-map at one particle: m_p v_p^{k+1} N_ip into v. */
-static LM3_INLINE void remap_at(lm3_sim *sim, size_t q, const int W)
+static LM3_INLINE void remap_at(const lm3_sim *sim, const lm3_grid *g, size_t q, const int W)
 {
     const lm3_particles *p = &sim->p;
-    const lm3_grid *g = &sim->grid;
     lm3_weights w;
-    weights_of(sim, q, &w);
+    weights_of(sim, q, &w, W);
     const double m = p->m[q];
     const double mv0 = m * p->v[0][q], mv1 = m * p->v[1][q], mv2 = m * p->v[2][q];
+    const lm_v2d W0 = {w.w[0][0], w.w[0][1]};
+    const double mv[3] = {mv0, mv1, mv2};
     for (int c = 0; c < W; c++)
         for (int b = 0; b < W; b++) {
             const long row = w.node + (c * g->s[1] + b) * g->s[0];
             const double wyz = w.w[1][b] * w.w[2][c];
+            if (W == 2) {   /* sim3_kernels2.h */
+                lm3_remap_row2(g, row, W0, wyz, mv);
+                continue;
+            }
             for (int a = 0; a < W; a++) {
                 const double N = w.w[0][a] * wyz;
                 g->v[0][row + a] += N * mv0;
@@ -195,31 +261,43 @@ static LM3_INLINE void remap_at(lm3_sim *sim, size_t q, const int W)
  * new velocity) was measured slower, 5.1 against 5.3 M particle-steps/s
  * of CPU time (trilinear, docs/3d.md "Speed"): the gather's six fields
  * and the re-map's three compete for the cache. */
-static void step_g2p_remap(lm3_sim *sim)
+static void remap_range(lm3_sim *sim, const lm3_grid *g, size_t q0, size_t q1)
+{
+    if (g->W == 2)
+        for (size_t q = q0; q < q1; q++) remap_at(sim, g, q, 2);
+    else
+        for (size_t q = q0; q < q1; q++) remap_at(sim, g, q, 3);
+}
+
+static int step_g2p_remap(lm3_sim *sim, int nt)
 {
     lm3_grid *g = &sim->grid;
-    const size_t n = sim->p.n;
-    if (g->W == 2)
-        for (size_t q = 0; q < n; q++) g2p_at(sim, q, 2);
-    else
-        for (size_t q = 0; q < n; q++) g2p_at(sim, q, 3);
-    if (sim->def.scheme != LM_MUSL) return;
-    memset(g->v[0], 0, 3 * g->nn * sizeof(double));
-    if (g->W == 2)
-        for (size_t q = 0; q < n; q++) remap_at(sim, q, 2);
-    else
-        for (size_t q = 0; q < n; q++) remap_at(sim, q, 3);
+    const long n = (long)sim->p.n, nn = (long)g->nn;
+    int ok = 1;
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(nt) schedule(static) reduction(& : ok) if (nt > 1)
+#endif
+    for (long q = 0; q < n; q++)
+        ok &= g->W == 2 ? g2p_at(sim, (size_t)q, 2) : g2p_at(sim, (size_t)q, 3);
+    if (sim->def.scheme != LM_MUSL) return ok;
+    LM3_PAR(nt)
+    for (long i = 0; i < nn; i++) g->v[0][i] = g->v[1][i] = g->v[2][i] = 0;
+    if (nt < 2 || lm3_scatter_threads(sim, nt, 3, remap_range) != 0)
+        remap_range(sim, g, 0, sim->p.n);
+    return ok;
 }
 
 /* The end of step 5: the velocity the strain rate reads. MUSL ([M] eqs
  * 12-13): the re-mapped momenta folded, over m_i, walls again. USL
  * ([N] §7): v_i^L itself. */
-static void step_strain_velocity(lm3_sim *sim)
+static void step_strain_velocity(lm3_sim *sim, int nt)
 {
     lm3_grid *g = &sim->grid;
+    const long nn = (long)g->nn;
     if (sim->def.scheme == LM_MUSL) {
         lm3_grid_fold(g, 3, g->v, comp_vec);
-        for (size_t i = 0; i < g->nn; i++)
+        LM3_PAR(nt)
+        for (long i = 0; i < nn; i++)
             if (g->m[i] > 0)
                 for (int a = 0; a < 3; a++) g->v[a][i] /= g->m[i];
     } else {
@@ -229,56 +307,119 @@ static void step_strain_velocity(lm3_sim *sim)
     lm3_grid_fill(g, 3, g->v, comp_vec);
 }
 
-/* Step 7 at one particle: L_ab = sum_i v_a,i G_b,ip. */
+/* Step 7 at one particle: L_ab = sum_i v_a,i G_b,ip. A row's sums
+ * S_e = sum_a v_e g0[a] and T_e = sum_a v_e w0[a] first, then L_ex +=
+ * S_e wyz, L_ey += T_e gyz, L_ez += T_e wgz: the gradient's products
+ * made once a row, not once a node (docs/3d.md "Speed"). */
 static LM3_INLINE void gradient_at(const lm3_sim *sim, size_t q, double L[9], const int W)
 {
     const lm3_grid *g = &sim->grid;
     lm3_weights w;
-    weights_of(sim, q, &w);
+    weights_of(sim, q, &w, W);
     for (int k = 0; k < 9; k++) L[k] = 0;
+    const lm_v2d W0 = {w.w[0][0], w.w[0][1]}, G0 = {w.g[0][0], w.g[0][1]};
     for (int c = 0; c < W; c++)
         for (int b = 0; b < W; b++) {
             const row3 r = row_of(g, &w, b, c);
-            for (int a = 0; a < W; a++) {
-                const long i = r.node + a;
-                const double G[3] = {w.g[0][a] * r.wyz, w.w[0][a] * r.gyz, w.w[0][a] * r.wgz};
+            if (W == 2) {   /* sim3_kernels2.h: the same sums */
+                double S[3], T[3];
+                lm3_gradient_row2(g, r.node, W0, G0, S, T);
                 for (int e = 0; e < 3; e++) {
-                    const double v = g->v[e][i];
-                    L[3 * e] += v * G[0];
-                    L[3 * e + 1] += v * G[1];
-                    L[3 * e + 2] += v * G[2];
+                    L[3 * e] += S[e] * r.wyz;
+                    L[3 * e + 1] += T[e] * r.gyz;
+                    L[3 * e + 2] += T[e] * r.wgz;
                 }
+                continue;
+            }
+            for (int e = 0; e < 3; e++) {
+                const double *v = g->v[e] + r.node;
+                double S = 0, T = 0;
+                for (int a = 0; a < W; a++) {
+                    S += v[a] * w.g[0][a];
+                    T += v[a] * w.w[0][a];
+                }
+                L[3 * e] += S * r.wyz;
+                L[3 * e + 1] += T * r.gyz;
+                L[3 * e + 2] += T * r.wgz;
             }
         }
 }
 
-/* Steps 7-8 ([F] eqs 14-20): de = dt/2 (L + L^T), W = 1/2 (L - L^T),
- * rho / (1 + tr de) ([F] eq 16), then the elastic law. 0 when a
- * particle's volume went to nothing. */
-static int step_stress(lm3_sim *sim)
+/* Step 6c ([F] eq 24's maxima): the artificial viscosity needs, before
+ * any gas point is updated, the largest |div v| and the largest sound
+ * speed over the gas of the step, as in 2D (step.c lm_step_gas_maxima);
+ * no pass at all when no gas uses it. */
+static void step_gas_maxima(lm3_sim *sim, double *max_div, double *c_max, int nt)
+{
+    const lm3_particles *p = &sim->p;
+    double md = 0, cm = 0;
+    int k = 0;
+    while (k < sim->nmat && !(sim->mats[k].kind == LM3_GAS && sim->mats[k].av)) k++;
+    const long n = k < sim->nmat ? (long)p->n : 0;
+    /* maxima do not depend on the order they are taken in */
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(nt) schedule(static) reduction(max : md, cm) if (nt > 1)
+#endif
+    for (long qi = 0; qi < n; qi++) {
+        const size_t q = (size_t)qi;
+        const lm3_material *mat = &sim->mats[p->mat[q]];
+        if (mat->kind != LM3_GAS || !mat->av) continue;
+        double L[9];
+        if (sim->grid.W == 2) gradient_at(sim, q, L, 2);
+        else gradient_at(sim, q, L, 3);
+        double div = fabs(L[0] + L[4] + L[8]), c = lm3_gas_sound_speed(mat, p->e[q]);
+        if (div > md) md = div;
+        if (c > cm) cm = c;
+    }
+    *max_div = md;
+    *c_max = cm;
+}
+
+/* Steps 7-8 ([F] eqs 14-25): de = dt/2 (L + L^T), W = 1/2 (L - L^T),
+ * rho / (1 + tr de) ([F] eq 16), then the material's law: the elastic
+ * solid's Jaumann update, or the gas's stress from its rate, pressure and
+ * artificial viscosity (sim3_gas.c). 0 when a particle's volume went to
+ * nothing. */
+static int step_stress(lm3_sim *sim, double max_div, double c_max, int nt)
 {
     lm3_particles *p = &sim->p;
     const double dt = sim->def.dt;
-    for (size_t q = 0; q < p->n; q++) {
+    const long n = (long)p->n;
+    int ok = 1;
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(nt) schedule(static) reduction(& : ok) if (nt > 1)
+#endif
+    for (long qi = 0; qi < n; qi++) {
+        const size_t q = (size_t)qi;
         double L[9], W[9], de[6], s[6];
         if (sim->grid.W == 2) gradient_at(sim, q, L, 2);
         else gradient_at(sim, q, L, 3);
         de[0] = dt * L[0];
         de[1] = dt * L[4];
         de[2] = dt * L[8];
-        de[3] = 0.5 * dt * (L[5] + L[7]);
-        de[4] = 0.5 * dt * (L[2] + L[6]);
-        de[5] = 0.5 * dt * (L[1] + L[3]);
-        for (int i = 0; i < 3; i++)
-            for (int j = 0; j < 3; j++) W[3 * i + j] = 0.5 * (L[3 * i + j] - L[3 * j + i]);
         double J = 1 + de[0] + de[1] + de[2];
-        if (!(J > 0)) return 0;
+        if (!(J > 0)) {
+            ok = 0;
+            continue;
+        }
         p->rho[q] /= J;
-        for (int c = 0; c < 6; c++) s[c] = p->s[c][q];
-        lm3_elastic_update(&sim->mats[p->mat[q]], de, W, dt, s);
+        const lm3_material *mat = &sim->mats[p->mat[q]];
+        if (mat->kind == LM3_GAS) {
+            double qv = lm3_gas_av(mat, p->rho[q], L[0] + L[4] + L[8], max_div, c_max,
+                                   sim->grid.h);
+            lm3_gas_update(mat, L, dt, p->rho[q], qv, &p->e[q], s);
+        } else {
+            de[3] = 0.5 * dt * (L[5] + L[7]);
+            de[4] = 0.5 * dt * (L[2] + L[6]);
+            de[5] = 0.5 * dt * (L[1] + L[3]);
+            for (int i = 0; i < 3; i++)
+                for (int j = 0; j < 3; j++) W[3 * i + j] = 0.5 * (L[3 * i + j] - L[3 * j + i]);
+            for (int c = 0; c < 6; c++) s[c] = p->s[c][q];
+            lm3_elastic_update(mat, de, W, dt, s);
+        }
         for (int c = 0; c < 6; c++) p->s[c][q] = s[c];
     }
-    return 1;
+    return ok;
 }
 
 /* Every particle finite and inside the grid (the stencils of the next
@@ -318,8 +459,14 @@ double lm3_courant(const lm3_sim *sim, double *c_max)
     double c = 0;
     for (int k = 0; k < sim->nmat; k++) {
         const lm3_material *m = &sim->mats[k];
-        double G = m->E / (2 * (1 + m->nu)), lam = m->E * m->nu / ((1 + m->nu) * (1 - 2 * m->nu));
-        double ck = sqrt((lam + 2 * G) / m->rho);
+        double ck;
+        if (m->kind == LM3_GAS) {
+            ck = lm3_gas_sound_speed(m, m->e0);
+        } else {
+            double G = m->E / (2 * (1 + m->nu)),
+                   lam = m->E * m->nu / ((1 + m->nu) * (1 - 2 * m->nu));
+            ck = sqrt((lam + 2 * G) / m->rho);
+        }
         if (ck > c) c = ck;
     }
     if (c_max) *c_max = c;
@@ -338,20 +485,31 @@ lm_status lm3_step(lm3_sim *sim)
             return LM_ERR_INPUT;
         }
     }
-    lm_status st = check(sim);
-    if (st != LM_OK) return st;
-    step_p2g_forces(sim);
-    step_grid_update(sim);
+    /* before the first step (and after a failed one) the particles are
+     * looked at; otherwise each step's g2p looks at the positions it makes */
+    if (sim->nstep == 0 || sim->recheck) {
+        lm_status st = check(sim);
+        if (st != LM_OK) return st;
+        sim->recheck = 0;
+    }
+    const int nt = lm3_threads(sim);
+    step_p2g_forces(sim, nt);
+    step_grid_update(sim, nt);
     if (sim->pins) lm3_pins_grid(sim);     /* body:pin (sim3_pin.c) */
-    step_g2p_remap(sim);
-    step_strain_velocity(sim);
+    const int moved_ok = step_g2p_remap(sim, nt);
+    step_strain_velocity(sim, nt);
     if (sim->pins) lm3_pins_strain(sim);
-    if (!step_stress(sim)) {
+    double max_div, c_max;
+    step_gas_maxima(sim, &max_div, &c_max, nt);
+    if (!step_stress(sim, max_div, c_max, nt)) {
+        sim->recheck = 1;
         snprintf(sim->err, sizeof sim->err, "t = %g (step %ld): a particle's volume went to "
                  "nothing (1 + tr de <= 0): unstable", sim->t, sim->nstep);
         return LM_ERR_UNSTABLE;
     }
     sim->nstep++;
     sim->t = sim->nstep * sim->def.dt;   /* from the count, as in 2D */
+    if (moved_ok) return LM_OK;
+    sim->recheck = 1;
     return check(sim);
 }

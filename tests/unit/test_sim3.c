@@ -99,7 +99,7 @@ static void translate(lm_basis basis, lm_scheme scheme)
     d.scheme = scheme;
     char err[200];
     lm3_sim *sim = lm3_sim_create(&d, err, sizeof err);
-    lm3_material steel = {1000, 1e6, 0.3};
+    lm3_material steel = {.rho = 1000, .E = 1e6, .nu = 0.3};
     int m = lm3_material_add(sim, &steel, err, sizeof err);
     double lo[3] = {0.3, 0.3, 0.3}, hi[3] = {0.55, 0.6, 0.5}, v[3] = {0.3, -0.2, 0.1};
     long n = lm3_seed_box(sim, m, lo, hi, 2, v);
@@ -134,7 +134,7 @@ static void fall(lm_basis basis)
     d.gravity[2] = -9.81;
     char err[200];
     lm3_sim *sim = lm3_sim_create(&d, err, sizeof err);
-    lm3_material rub = {1000, 1e5, 0.25};
+    lm3_material rub = {.rho = 1000, .E = 1e5, .nu = 0.25};
     int m = lm3_material_add(sim, &rub, err, sizeof err);
     double lo[3] = {0.3, 0.3, 0.6}, hi[3] = {0.6, 0.5, 0.9}, v[3] = {0, 0, 0};
     CHECK(lm3_seed_box(sim, m, lo, hi, 2, v) > 0);
@@ -178,7 +178,7 @@ static void bar_period(lm_basis basis, double h)
         fprintf(stderr, "%s\n", err);
         return;
     }
-    lm3_material mat = {rho, E, nu};
+    lm3_material mat = {.rho = rho, .E = E, .nu = nu};
     int m = lm3_material_add(sim, &mat, err, sizeof err);
     double lo[3] = {0, -a / 2, -a / 2}, hi[3] = {L, a / 2, a / 2}, v0[3] = {0, 0, 0};
     long n = lm3_seed_box(sim, m, lo, hi, 2, v0);
@@ -234,7 +234,7 @@ static void law_plane_strain(void)
     m2.E = 2.5e6;
     m2.nu = 0.3;
     m2.plane = LM_PLANE_STRAIN;
-    lm3_material m3 = {1000, m2.E, m2.nu};
+    lm3_material m3 = {.rho = 1000, .E = m2.E, .nu = m2.nu};
     unsigned long long seed = 99;
     double worst = 0, scale = 0;
     for (int t = 0; t < 200; t++) {
@@ -274,7 +274,7 @@ static void half_symmetry(lm_basis basis)
     half.bc[LM3_XLO] = LM_BC_SYMMETRY;
     char err[200];
     lm3_sim *a = lm3_sim_create(&full, err, sizeof err), *b = lm3_sim_create(&half, err, sizeof err);
-    lm3_material mat = {1000, 1e5, 0.3};
+    lm3_material mat = {.rho = 1000, .E = 1e5, .nu = 0.3};
     int ma = lm3_material_add(a, &mat, err, sizeof err), mb = lm3_material_add(b, &mat, err, sizeof err);
     double lo[3] = {0.3, 0.3, 0.1}, hi[3] = {0.7, 0.6, 0.4}, v[3] = {0, 0.2, 0};
     lm3_seed_box(a, ma, lo, hi, 2, v);
@@ -334,11 +334,11 @@ static void refusals(void)
     CHECK(strstr(err, "dt = -1") != NULL);
     d = make_def(LM_BASIS_LINEAR, 0.1, 1e-3);
     lm3_sim *sim = lm3_sim_create(&d, err, sizeof err);
-    lm3_material bad = {1000, 1e6, 0.5};
+    lm3_material bad = {.rho = 1000, .E = 1e6, .nu = 0.5};
     CHECK(lm3_material_add(sim, &bad, err, sizeof err) == -1);
     CHECK(strstr(err, "nu = 0.5") != NULL);
     /* a particle that leaves the grid stops the run */
-    lm3_material ok = {1000, 1e6, 0.3};
+    lm3_material ok = {.rho = 1000, .E = 1e6, .nu = 0.3};
     int m = lm3_material_add(sim, &ok, err, sizeof err);
     double x[3] = {0.99, 0.5, 0.5}, v[3] = {100, 0, 0};
     CHECK(lm3_particle_add(sim, m, x, v, 1e-3) == LM_OK);
@@ -383,7 +383,7 @@ static int scan_stable(lm_basis basis, lm_scheme scheme, int k, double cn)
     for (int f = 0; f < LM3_FACES; f++) d.bc[f] = LM_BC_FIXED;
     char err[200];
     lm3_sim *sim = lm3_sim_create(&d, err, sizeof err);
-    lm3_material mat = {rho, E, nu};
+    lm3_material mat = {.rho = rho, .E = E, .nu = nu};
     int m = lm3_material_add(sim, &mat, err, sizeof err);
     double lo[3] = {0, 0, 0}, v[3] = {0, 0, 0};
     lm3_seed_box(sim, m, lo, d.hi, k, v);

@@ -52,7 +52,7 @@ static void slab(lm_basis basis)
     d3.bc[LM3_YLO] = LM_BC_FIXED;
     d3.bc[LM3_ZLO] = d3.bc[LM3_ZHI] = LM_BC_SYMMETRY;
     lm3_sim *b = lm3_sim_create(&d3, err, sizeof err);
-    lm3_material m3 = {1000, 1e5, 0.3};
+    lm3_material m3 = {.rho = 1000, .E = 1e5, .nu = 0.3};
     int mi = lm3_material_add(b, &m3, err, sizeof err);
     double lo[3] = {0.3, 0.1, 0}, hi[3] = {0.7, 0.4, h}, v[3] = {0, 0, 0};
     CHECK(lm3_seed_box(b, mi, lo, hi, 2, v) == 2 * (long)a->p.n);

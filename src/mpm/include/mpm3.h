@@ -9,11 +9,11 @@
  * the 1D factors of the bases (shape_1d.h), the materials' constants - is
  * shared, not copied.
  *
- * This first step holds the core: the grid with walls per face, the linear
- * (trilinear) and quadratic B-spline bases, MUSL and USL, gravity, the
- * isotropic elastic solid (Jaumann rate), energies and momenta. Gas,
- * membranes, pins, threads and the Lua API follow (docs/3d.md "Order of
- * work"). */
+ * It holds the core: the grid with walls per face, the linear (trilinear)
+ * and quadratic B-spline bases, MUSL and USL, gravity, the isotropic
+ * elastic solid (Jaumann rate), the viscous gamma-law gas with the
+ * paper's artificial viscosity, energies and momenta. Membranes, pins and
+ * the Lua API follow (docs/3d.md "Order of work"). */
 #ifndef LAMINA_MPM3_H
 #define LAMINA_MPM3_H
 
@@ -41,6 +41,8 @@ typedef struct lm3_def {
     lm_bc bc[LM3_FACES];   /* per face, LM3_XLO ... LM3_ZHI */
     double courant;        /* the largest dt c / h accepted (times the factors
                               below); 0 means the 2D default, 1 */
+    int threads;           /* threads a step uses (sim3_threads.c); 0 or 1: one.
+                              The same count gives the same bits */
 } lm3_def;
 
 /* The 3D limit relative to the 1D one that `courant` is stated for
@@ -54,9 +56,22 @@ typedef struct lm3_def {
  * factor is the 2D one, LM_USL_COURANT. */
 #define LM3_COURANT_FACTOR 1.0
 
-/* The isotropic linear elastic solid ([F] eqs 18-20 in their 3D form). */
+/* What a 3D material is. The elastic solid is 0 so that a material
+ * written {rho, E, nu} (the first core's callers) stays one. */
+typedef enum lm3_kind { LM3_ELASTIC = 0, LM3_GAS = 1 } lm3_kind;
+
+/* The isotropic linear elastic solid ([F] eqs 18-20 in their 3D form), or
+ * the viscous gamma-law gas ([F] §3.3 eqs 21-25; sim3_gas.c) with the 2D
+ * gas's constants (mpm.h lm_material): p = (gamma - 1) rho e, shear
+ * viscosity mu, initial specific internal energy e0, and when av is set
+ * the paper's artificial viscosity (c1, c2, lambda, g; g <= 0 means
+ * sqrt(2) h as in 2D, the paper's g = sqrt(2) dx). */
 typedef struct lm3_material {
-    double rho, E, nu;
+    double rho, E, nu;     /* rho: reference density; E, nu: elastic only */
+    lm3_kind kind;
+    double gamma, mu, e0;  /* gas */
+    int av;
+    double av_c1, av_c2, av_lambda, av_g;
 } lm3_material;
 
 /* The grid: (n[0]+1) x (n[1]+1) x (n[2]+1) nodes plus a ghost ring of
@@ -81,6 +96,7 @@ typedef struct lm3_grid {
 typedef struct lm3_particles {
     size_t n, cap;
     double *x[3], *v[3], *m, *rho, *s[6];
+    double *e;             /* gas: specific internal energy ([F] eq 23); 0 otherwise */
     double *d[3];          /* offset in the stencil (sim3_shape.c) */
     int32_t *node;         /* the stencil's first node */
     uint8_t *mat;
@@ -96,10 +112,18 @@ typedef struct lm3_sim {
     double t;
     char err[256];         /* why the last call failed */
     struct lm3_pins *pins; /* body:pin in 3D (sim3_pin.c); NULL: none */
+    double *scratch;       /* the threads' private copies of nodal fields */
+    size_t scratch_len;    /* (sim3_threads.c), in doubles */
+    int recheck;           /* look at every particle before the next step: set
+                              after a failed step, and by a caller that moves
+                              particles between steps (lm3_step otherwise
+                              looks only at the positions its g2p makes) */
 } lm3_sim;
 
+/* strain: the elastic solids' 1/2 sigma : C^-1 : sigma V; internal: the
+ * gases' sum m e (their stored energy, [F] eq 23). */
 typedef struct lm3_energy {
-    double kinetic, strain, potential, total;
+    double kinetic, strain, potential, total, internal;
 } lm3_energy;
 
 /* A new simulation, or NULL with the reason in err (naming the key and
@@ -123,13 +147,19 @@ long lm3_seed_box(lm3_sim *sim, int mat, const double lo[3], const double hi[3],
  * names the time, the step, the particle and the numbers. */
 lm_status lm3_step(lm3_sim *sim);
 /* dt c_max / h, c_max the fastest material's dilatational wave speed
- * sqrt((lambda + 2 G) / rho) (docs/physics.md §5 in 3D); and the largest
+ * sqrt((lambda + 2 G) / rho) (docs/physics.md §5 in 3D), a gas's sound
+ * speed sqrt(gamma (gamma - 1) e0); and the largest
  * value the run accepts: courant x LM3_COURANT_FACTOR (x LM_USL_COURANT
  * under USL). */
 double lm3_courant(const lm3_sim *sim, double *c_max);
 double lm3_courant_limit(const lm3_sim *sim);
 
 void lm3_energy_of(const lm3_sim *sim, lm3_energy *e);
+/* The bytes the simulation holds (issue 34 item 6, docs/3d.md "Memory"):
+ * its particle arrays at their capacity into *particles (at the count
+ * into *exact when not NULL), its grid's nodal fields and the threads'
+ * copies of them into *grid; the sum is returned. */
+size_t lm3_memory(const lm3_sim *sim, size_t *particles, size_t *exact, size_t *grid);
 void lm3_momentum(const lm3_sim *sim, double P[3]);
 double lm3_mass(const lm3_sim *sim);
 
@@ -157,6 +187,17 @@ static inline long lm3_node(const lm3_grid *g, int i, int j, int k)
 void lm3_elastic_update(const lm3_material *mat, const double de[6], const double W[9],
                         double dt, double s[6]);
 double lm3_elastic_energy_density(const lm3_material *mat, const double s[6]);
+/* The gas (sim3_gas.c): c = sqrt(gamma (gamma - 1) e); the artificial
+ * viscosity q of a point of density rho and velocity divergence div given
+ * the step's maxima over the gas (material_gas.c's lm_gas_av, shared);
+ * and the update from the velocity gradient L (row major, L_ab =
+ * dv_a/dx_b): sigma = 2 mu D - 2/3 mu tr(D) I - (p + q) I with D = sym L,
+ * p = (gamma - 1) rho e^k, then e += sigma : (dt D) / rho. */
+double lm3_gas_sound_speed(const lm3_material *mat, double e);
+double lm3_gas_av(const lm3_material *mat, double rho, double div, double max_div,
+                  double c_max, double h);
+void lm3_gas_update(const lm3_material *mat, const double L[9], double dt, double rho,
+                    double q, double *e, double s[6]);
 
 
 /* ---- regions, seeding and sums for the Lua layer (sim3_region.c,
@@ -217,7 +258,7 @@ size_t lm3_particle_bytes(size_t cap);
  * header gives (0 when it is not a 3D state); load replaces the clock,
  * live settings, materials and particles of a sim the script built with
  * the same particle count (LM_ERR_INPUT and err otherwise). */
-#define LM3_STATE_VERSION 1
+#define LM3_STATE_VERSION 2
 size_t lm3_state_bytes(const lm3_sim *sim);
 void lm3_state_save(const lm3_sim *sim, unsigned char *buf);
 size_t lm3_state_claimed(const unsigned char *buf, size_t len);

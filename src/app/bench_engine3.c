@@ -1,0 +1,220 @@
+/* bench_engine3.c - `lamina bench engine --dim 3` (also `lamina bench
+ * --dim 3`): particle-steps per second of the 3D engine alone (issue 34
+ * item 6; docs/3d.md "Speed", docs/performance.md "3D"), the table of
+ * `lamina bench engine` (bench_engine.c) with the same columns.
+ *
+ * The scene is docs/3d.md's speed scene scaled to the particle count: an
+ * elastic block (rho 1000, E 1e6, nu 0.3) of 2 x 2 x 2 points a cell
+ * filling the middle 0.6 of a unit cube's every side, fixed faces,
+ * gravity, spinning about z and sheared so that its stress moves; dt =
+ * 0.2 h / c. Cases: trilinear and quadratic B-spline under MUSL, trilinear
+ * under USL, and a gamma-law gas with the paper's artificial viscosity
+ * filling the cube (trilinear, MUSL). Each runs about `work` particle-steps (at
+ * least 10 steps) after one warm-up step, rebuilt when its simulated time
+ * would pass 0.05 s (before the block reaches the floor). Timings as in
+ * bench_engine.c: wall clock, and CPU time of the process (on a shared
+ * machine the steadier one); the plain loop's row (bench_plain.c, the 2D
+ * yardstick at the same count) gives the last two columns. Below the
+ * table, each size's memory: bytes a particle with its grid, at the
+ * arrays' capacity and at the count (lm3_memory). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "bench.h"
+#include "mpm3.h"
+
+static double clock_s(clockid_t id)
+{
+    struct timespec ts;
+    clock_gettime(id, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+typedef struct case3 {
+    const char *name;
+    lm_basis basis;
+    lm_scheme scheme;
+    int gas;
+} case3;
+
+static int threads3 = 1;
+
+/* The block at about `particles` particles: n^3 cells with 8 x 0.216 n^3
+ * particles; the gas fills the whole cube (8 n^3), since a gas block
+ * would expand into the empty cells with a front at 2 c / (gamma - 1) =
+ * 5 c, past the Courant limit of dt = 0.2 h / c (it failed at 10^4
+ * particles, step 19). */
+static lm3_sim *make_block(double particles, const case3 *c)
+{
+    int n = (int)lround(cbrt(particles / (c->gas ? 8 : 8 * 0.216)));
+    if (n < 4) n = 4;
+    lm3_def d;
+    memset(&d, 0, sizeof d);
+    d.hi[0] = d.hi[1] = d.hi[2] = 1;
+    d.cell = 1.0 / n;
+    d.basis = c->basis;
+    d.scheme = c->scheme;
+    d.gravity[2] = -9.81;
+    d.threads = threads3;
+    for (int f = 0; f < LM3_FACES; f++) d.bc[f] = LM_BC_FIXED;
+    lm3_material m = {.rho = 1000, .E = 1e6, .nu = 0.3};
+    if (c->gas) {
+        /* a gas of about the solid's wave speed, c^2 = gamma (gamma - 1) e0 */
+        lm3_material g = {.rho = 1000, .kind = LM3_GAS, .gamma = 1.4, .mu = 0.1, .av = 1,
+                          .av_c1 = 1, .av_c2 = 1, .av_lambda = 0.75};
+        g.e0 = 1.35e3 / (g.gamma * (g.gamma - 1));   /* c = 36.7 m/s, the solid's */
+        m = g;
+    }
+    double cs = c->gas ? sqrt(m.gamma * (m.gamma - 1) * m.e0)
+                       : sqrt(m.E * (1 - m.nu) / ((1 + m.nu) * (1 - 2 * m.nu) * m.rho));
+    d.dt = 0.2 * d.cell / cs;
+    char err[256];
+    lm3_sim *sim = lm3_sim_create(&d, err, sizeof err);
+    if (!sim) return NULL;
+    int mi = lm3_material_add(sim, &m, err, sizeof err);
+    const double a = c->gas ? 0 : 0.2;
+    double lo[3] = {a, a, a}, hi[3] = {1 - a, 1 - a, 1 - a}, v[3] = {0, 0, 0};
+    if (mi < 0 || lm3_seed_box(sim, mi, lo, hi, 2, v) <= 0) {
+        lm3_sim_free(sim);
+        return NULL;
+    }
+    /* a spin about z and a shear: every stress component moves */
+    for (size_t q = 0; q < sim->p.n; q++) {
+        double x = sim->p.x[0][q] - 0.5, y = sim->p.x[1][q] - 0.5, z = sim->p.x[2][q] - 0.5;
+        sim->p.v[0][q] = -2 * y + 0.5 * z;
+        sim->p.v[1][q] = 2 * x;
+        sim->p.v[2][q] = 0.3 * x;
+    }
+    return sim;
+}
+
+/* One row; the memory of the last build into *bytes, *bytes_exact (a
+ * particle with its grid). */
+static int time_case3(const case3 *c, double particles, double work, double plain,
+                      double plain_cpu, double *bytes, double *bytes_exact)
+{
+    double secs = 0, cpu = 0, done = 0;
+    long steps_total = 0;
+    size_t n = 0;
+    while (done < work) {
+        lm3_sim *sim = make_block(particles, c);
+        if (!sim) {
+            fprintf(stderr, "lamina bench engine --dim 3: %s: could not build the case "
+                    "(out of memory?)\n", c->name);
+            return -1;
+        }
+        n = sim->p.n;
+        size_t pb, pe, gb;
+        lm3_memory(sim, &pb, &pe, &gb);
+        *bytes = (double)(pb + gb) / (double)n;
+        *bytes_exact = (double)(pe + gb) / (double)n;
+        long steps = (long)fmin(fmax(10, (work - done) / (double)n), 0.05 / sim->def.dt);
+        if (steps < 1) steps = 1;
+        if (lm3_step(sim) != LM_OK) goto failed;   /* warm-up */
+        double t0 = clock_s(CLOCK_MONOTONIC), c0 = clock_s(CLOCK_PROCESS_CPUTIME_ID);
+        for (long s = 0; s < steps; s++)
+            if (lm3_step(sim) != LM_OK) goto failed;
+        secs += clock_s(CLOCK_MONOTONIC) - t0;
+        cpu += clock_s(CLOCK_PROCESS_CPUTIME_ID) - c0;
+        done += (double)n * (double)steps;
+        steps_total += steps;
+        lm3_sim_free(sim);
+        continue;
+    failed:
+        fprintf(stderr, "lamina bench engine --dim 3: %s: %s\n", c->name, sim->err);
+        lm3_sim_free(sim);
+        return -1;
+    }
+    printf("| %-13s | %9zu | %7ld | %7.3f | %7.2f | %7.2f | %5.2f | %5.2f |\n", c->name, n,
+           steps_total, secs, done / secs / 1e6, done / cpu / 1e6, done / secs / plain,
+           done / cpu / plain_cpu);
+    fflush(stdout);
+    return 0;
+}
+
+int bench_engine3(int argc, char **argv)
+{
+    double work = 4e6;
+    double sizes[8] = {1e4, 1e5};
+    int nsizes = 2, only = -1;
+    static const case3 cases[] = {
+        {"linear MUSL", LM_BASIS_LINEAR, LM_MUSL, 0},
+        {"bspline2 MUSL", LM_BASIS_BSPLINE2, LM_MUSL, 0},
+        {"linear USL", LM_BASIS_LINEAR, LM_USL, 0},
+        {"gas linear", LM_BASIS_LINEAR, LM_MUSL, 1},
+    };
+    const int ncases = (int)(sizeof cases / sizeof *cases);
+    const char *usage = "--dim 3 [--sizes N,N,...] [--work PARTICLE_STEPS] [--threads N] "
+                        "[--basis linear|bspline2]";
+    for (int i = 0; i < argc; i++) {
+        if (strcmp(argv[i], "--dim") == 0 && i + 1 < argc) {
+            if (strcmp(argv[++i], "3") != 0) {
+                fprintf(stderr, "lamina bench engine: --dim '%s': 3 here (2 is the default "
+                        "without --dim)\n", argv[i]);
+                return 2;
+            }
+        } else if (strcmp(argv[i], "--work") == 0 && i + 1 < argc) {
+            work = atof(argv[++i]);
+            if (!(work >= 1e3 && work <= 1e10)) {
+                fprintf(stderr, "lamina bench engine: --work needs a number in [1e3, 1e10]\n");
+                return 2;
+            }
+        } else if (strcmp(argv[i], "--threads") == 0 && i + 1 < argc) {
+            long v;
+            if (bench_whole("engine", "--threads", argv[++i], 1, LM_MAX_THREADS, &v) != 0)
+                return 2;
+            threads3 = (int)v;
+        } else if (strcmp(argv[i], "--basis") == 0 && i + 1 < argc) {
+            const char *b = argv[++i];
+            if (strcmp(b, "linear") == 0) only = LM_BASIS_LINEAR;
+            else if (strcmp(b, "bspline2") == 0) only = LM_BASIS_BSPLINE2;
+            else {
+                fprintf(stderr, "lamina bench engine --dim 3: --basis '%s': 3D has linear and "
+                        "bspline2\n", b);
+                return 2;
+            }
+        } else if (strcmp(argv[i], "--sizes") == 0 && i + 1 < argc) {
+            if ((nsizes = bench_sizes("engine", argv[++i], sizes, 8)) < 0) return 2;
+        } else {
+            return bench_unknown("engine", argv[i], usage);
+        }
+    }
+    printf("lamina bench engine --dim 3: %d thread%s, about %.3g particle-steps per case\n\n",
+           threads3, threads3 == 1 ? "" : "s", work);
+    printf("| case          | particles |   steps |       s | M p-steps/s | M p-steps/CPU-s | "
+           "x plain | x plain, CPU |\n");
+    printf("|---|---:|---:|---:|---:|---:|---:|---:|\n");
+    int bad = 0;
+    double mem[8][2] = {{0}};
+    size_t counts[8] = {0};
+    for (int k = 0; k < nsizes; k++) {
+        size_t np = 0;
+        double pc = 0, plain = bench_plain_rate(sizes[k], work, &np, &pc);
+        if (plain <= 0) {
+            fprintf(stderr, "lamina bench engine: plain loop: out of memory\n");
+            return 1;
+        }
+        printf("| %-13s | %9zu | %7s | %7s | %7.2f | %7.2f | %5.2f | %5.2f |\n", "plain loop", np,
+               "", "", plain / 1e6, pc / 1e6, 1.0, 1.0);
+        for (int c = 0; c < ncases; c++) {
+            if (only >= 0 && (int)cases[c].basis != only) continue;
+            double b = 0, be = 0;
+            bad |= time_case3(&cases[c], sizes[k], work, plain, pc, &b, &be) != 0;
+            if (c == 0 || (only == LM_BASIS_BSPLINE2 && c == 1)) {
+                mem[k][0] = b;
+                mem[k][1] = be;
+                lm3_sim *s = make_block(sizes[k], &cases[c]);
+                counts[k] = s ? s->p.n : 0;
+                lm3_sim_free(s);
+            }
+        }
+    }
+    printf("\nmemory (lm3_memory: particle arrays and grid, bytes a particle):\n");
+    for (int k = 0; k < nsizes; k++)
+        printf("  %zu particles: %.0f at the arrays' capacity, %.0f at the count\n", counts[k],
+               mem[k][0], mem[k][1]);
+    return bad ? 1 : 0;
+}
