@@ -13,7 +13,8 @@
 local M = {}
 
 -- o.cell (0.25), o.basis ("linear"), o.threads, o.release (sim:contact
--- law "release" between the bars). Returns sim, left, right.
+-- law "release" between the bars), o.test and o.update (sim:contact's:
+-- "eq26" and "eq21" run the papers' form as printed). Returns sim, left, right.
 function M.two_bar(o)
   local cell = o.cell or 0.25
   local sim = lamina.sim{ basis = o.basis or "linear", domain = {0, 0, 5, 5}, cell = cell,
@@ -23,7 +24,7 @@ function M.two_bar(o)
                       region = lamina.rect{ min = {1, 0.25}, max = {2.25, 4.75} } }
   local r = sim:body{ material = mat, ppc = 4, name = "right",
                       region = lamina.rect{ min = {2.75, 0.25}, max = {4, 4.75} } }
-  if o.release then sim:contact{ l, r, law = "release" } end
+  if o.release then sim:contact{ l, r, law = "release", test = o.test, update = o.update } end
   return sim, l, r
 end
 
@@ -57,7 +58,8 @@ end
 -- net at x = 7.5 held by the box's fixed walls; o.R, o.x0 and o.xn move the
 -- ball's radius, its centre's x and the net's line (scripts/paper/
 -- contact_ball_net.lua runs the text's R = 3); o.cell (0.25; dt 1e-3 scaled
--- with it), o.law ("release"), o.mu. Returns sim, ball, net.
+-- with it), o.law ("release"), o.mu, o.test, o.update (sim:contact's).
+-- Returns sim, ball, net.
 function M.ball_net(o)
   local h = o.cell or 0.25
   local sim = lamina.sim{ basis = "linear", domain = {0, 0, 10, 10}, cell = h, dt = 1e-3 * h / 0.25 }
@@ -70,7 +72,9 @@ function M.ball_net(o)
                          region = lamina.disk{ center = {x0, 5}, radius = R } }
   -- law = "none": no contact pair, ball and net in the single velocity field
   -- ([T] Fig 98, the run without contact-release)
-  if o.law ~= "none" then sim:contact{ ball, net, law = o.law or "release", mu = o.mu } end
+  if o.law ~= "none" then
+    sim:contact{ ball, net, law = o.law or "release", mu = o.mu, test = o.test, update = o.update }
+  end
   return sim, ball, net
 end
 

@@ -3,6 +3,7 @@
  *
  *   sim:contact{ bar1, bar2, law = "release" }            -- [M] §4.1
  *   sim:contact{ block, plane, law = "friction", mu = 0.3 }
+ *   sim:contact{ bar1, bar2, test = "eq26", update = "eq21" } -- as printed
  *
  * Without a pair the bodies share one velocity field: the papers' no-slip
  * contact, lamina's default. */
@@ -13,6 +14,10 @@
 #include "l_internal.h"
 
 static const char *const laws[] = {"release", "friction", NULL};
+/* the release test and the update of a staying body: lamina's, or the
+ * papers' as printed ([M] eq 26, eqs 20-21; mpm_contact.h) */
+static const char *const tests[] = {"lamina", "eq26", NULL};
+static const char *const updates[] = {"lamina", "eq21", NULL};
 
 /* Only the two bodies by position, and the named keys. */
 static void check_contact_keys(lua_State *L, int idx, const char *fn)
@@ -27,8 +32,9 @@ static void check_contact_keys(lua_State *L, int idx, const char *fn)
             luaL_error(L, "%s: takes two bodies by position, then law and mu by name", fn);
         }
         const char *k = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : "?";
-        if (strcmp(k, "law") && strcmp(k, "mu"))
-            luaL_error(L, "%s: unknown key '%s' (known keys: the two bodies, law, mu)", fn, k);
+        if (strcmp(k, "law") && strcmp(k, "mu") && strcmp(k, "test") && strcmp(k, "update"))
+            luaL_error(L, "%s: unknown key '%s' (known keys: the two bodies, law, mu, test, update)",
+                       fn, k);
     }
 }
 
@@ -66,8 +72,12 @@ static int sim_contact(lua_State *L)
     } else if (law == 1) {
         return luaL_error(L, "%s: law = \"friction\" needs mu, the friction coefficient", fn);
     }
+    int test = la_option(L, fn, "test", la_opt_string(L, 2, fn, "test", "lamina"), tests);
+    int update = la_option(L, fn, "update", la_opt_string(L, 2, fn, "update", "lamina"), updates);
     lm_contact_law cl = law == 1 ? LM_CONTACT_FRICTION : LM_CONTACT_RELEASE;
-    if (lm_sim_add_contact(s->sim, b[0], b[1], cl, mu) < 0)
+    int k = lm_sim_add_contact(s->sim, b[0], b[1], cl, mu);
+    if (k < 0 || lm_sim_contact_form(s->sim, k, test ? LM_CTEST_EQ26 : LM_CTEST_LAMINA,
+                                     update ? LM_CUPDATE_EQ21 : LM_CUPDATE_LAMINA) < 0)
         return luaL_error(L, "%s: %s", fn, s->sim->err);
     return 0;
 }
