@@ -30,12 +30,13 @@ end
 
 -- o.centres {{x, y}, {x, y}} and o.velocities {{vx, vy}, {vx, vy}} of
 -- disks I and II, o.basis ("linear"), o.threads, o.release (the three
--- release pairs: each disk with the wire, and the disks with each other).
--- Cell 0.25, dt 1e-3. Returns sim, wire, disk I, disk II, h.
+-- release pairs: each disk with the wire, and the disks with each other),
+-- o.test, o.update (sim:contact's, for every pair), o.cell (0.25; dt 1e-3
+-- scaled with it). Returns sim, wire, disk I, disk II, h.
 function M.disks_wire(o)
-  local h = 0.25
+  local h = o.cell or 0.25
   local sim = lamina.sim{ basis = o.basis or "linear", domain = {-2, 1, 12, 9}, cell = h,
-                          dt = 1e-3, threads = o.threads }
+                          dt = 1e-3 * h / 0.25, threads = o.threads }
   local diskm = lamina.elastic{ rho = 1, E = 1e4, nu = 0.3, plane = "stress" }
   local wirem = lamina.membrane{ rho = 1, E = 1e4, nu = 0, thickness = 0.05, law = "uniaxial" }
   local wire = sim:membrane{ material = wirem, curve = lamina.segment{ from = {5, 2}, to = {5, 8} },
@@ -46,9 +47,10 @@ function M.disks_wire(o)
   local d2 = sim:body{ material = diskm, ppc = 4, velocity = o.velocities[2], name = "disk II",
                        region = lamina.disk{ center = o.centres[2], radius = 0.75 } }
   if o.release then
-    sim:contact{ d1, wire, law = "release" }
-    sim:contact{ d2, wire, law = "release" }
-    sim:contact{ d1, d2, law = "release" }
+    local f = { test = o.test, update = o.update }
+    sim:contact{ d1, wire, law = "release", test = f.test, update = f.update }
+    sim:contact{ d2, wire, law = "release", test = f.test, update = f.update }
+    sim:contact{ d1, d2, law = "release", test = f.test, update = f.update }
   end
   return sim, wire, d1, d2, h
 end
