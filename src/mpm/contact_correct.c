@@ -133,8 +133,8 @@ static int separating(const lm_contact *c, int k, long i)
  * "eq26"}), for the comparison with lamina's form above: each body's
  * velocity at time level k against the node's centre-of-mass velocity
  * (vx, vy) along its own outward normal, (v^I - v) . n^I < 0 for both
- * (the papers' "> 0" with the inward colour-gradient normal, docs/
- * physics.md §4); a body without a normal at the node does not part. No
+ * (the papers' "> 0" with the inward colour-gradient normal,
+ * docs/physics.md §4); a body without a normal at the node does not part. No
  * grazing rule and no second test: called once, from
  * lm_contact_release_test, with the time-level-k momenta. */
 static int separating_eq26(const lm_contact *c, int k, long i, double vx, double vy)
