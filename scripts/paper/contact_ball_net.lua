@@ -1,6 +1,7 @@
 -- title: Ball and net: a disk caught by a wire and thrown back, with contact-release
 -- source: York 1997 (dissertation), §5.9 (Figs 40-42, Table 2) and App. A.1.6
---   (Figs 97-101, Table 11), input deck A.4.13 (Box 16)
+--   (Figs 97-100, Table 11), input deck A.4.13 (Box 16); the close-ups draw
+--   the grid normals too, whose page, with checks, is contact_normals
 -- look: the ball (left) flies into the net, stretches it into a V and is
 --   thrown back; with release it leaves the net as its velocity to the left
 --   is greatest and then flies at constant speed while the net rings on;
