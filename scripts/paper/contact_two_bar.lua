@@ -1,6 +1,7 @@
 -- title: Two-bar impact: sticking in the single field, parting with contact-release
--- source: York, Sulsky & Schreyer 1999 (membranes), §4.1-4.2, Figs 17, 18 and 20
---   (the grid normals are drawn here too; their page, with checks, is contact_normals);
+-- source: York, Sulsky & Schreyer 1999 (membranes), §4.1-4.2, Figs 18 and 20
+--   (the set-up and the grid normals are drawn here too; their pages, with
+--   checks, are sketch_two_bar and contact_normals);
 --   York 1997 (dissertation), App. A.1.2-A.1.5, Figs 93, 95 and 96, input deck A.4.12
 -- look: with the single field the bars move off together, their velocities
 --   swinging about v0/2 = 1, constant while they are a cell apart near
