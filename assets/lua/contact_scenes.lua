@@ -13,7 +13,8 @@
 local M = {}
 
 -- o.cell (0.25), o.basis ("linear"), o.threads, o.release (sim:contact
--- law "release" between the bars). Returns sim, left, right.
+-- law "release" between the bars), o.test and o.update (sim:contact's:
+-- "eq26" and "eq21" run the papers' form as printed). Returns sim, left, right.
 function M.two_bar(o)
   local cell = o.cell or 0.25
   local sim = lamina.sim{ basis = o.basis or "linear", domain = {0, 0, 5, 5}, cell = cell,
@@ -23,18 +24,19 @@ function M.two_bar(o)
                       region = lamina.rect{ min = {1, 0.25}, max = {2.25, 4.75} } }
   local r = sim:body{ material = mat, ppc = 4, name = "right",
                       region = lamina.rect{ min = {2.75, 0.25}, max = {4, 4.75} } }
-  if o.release then sim:contact{ l, r, law = "release" } end
+  if o.release then sim:contact{ l, r, law = "release", test = o.test, update = o.update } end
   return sim, l, r
 end
 
 -- o.centres {{x, y}, {x, y}} and o.velocities {{vx, vy}, {vx, vy}} of
 -- disks I and II, o.basis ("linear"), o.threads, o.release (the three
--- release pairs: each disk with the wire, and the disks with each other).
--- Cell 0.25, dt 1e-3. Returns sim, wire, disk I, disk II, h.
+-- release pairs: each disk with the wire, and the disks with each other),
+-- o.test, o.update (sim:contact's, for every pair), o.cell (0.25; dt 1e-3
+-- scaled with it). Returns sim, wire, disk I, disk II, h.
 function M.disks_wire(o)
-  local h = 0.25
+  local h = o.cell or 0.25
   local sim = lamina.sim{ basis = o.basis or "linear", domain = {-2, 1, 12, 9}, cell = h,
-                          dt = 1e-3, threads = o.threads }
+                          dt = 1e-3 * h / 0.25, threads = o.threads }
   local diskm = lamina.elastic{ rho = 1, E = 1e4, nu = 0.3, plane = "stress" }
   local wirem = lamina.membrane{ rho = 1, E = 1e4, nu = 0, thickness = 0.05, law = "uniaxial" }
   local wire = sim:membrane{ material = wirem, curve = lamina.segment{ from = {5, 2}, to = {5, 8} },
@@ -45,9 +47,10 @@ function M.disks_wire(o)
   local d2 = sim:body{ material = diskm, ppc = 4, velocity = o.velocities[2], name = "disk II",
                        region = lamina.disk{ center = o.centres[2], radius = 0.75 } }
   if o.release then
-    sim:contact{ d1, wire, law = "release" }
-    sim:contact{ d2, wire, law = "release" }
-    sim:contact{ d1, d2, law = "release" }
+    local f = { test = o.test, update = o.update }
+    sim:contact{ d1, wire, law = "release", test = f.test, update = f.update }
+    sim:contact{ d2, wire, law = "release", test = f.test, update = f.update }
+    sim:contact{ d1, d2, law = "release", test = f.test, update = f.update }
   end
   return sim, wire, d1, d2, h
 end
@@ -57,7 +60,8 @@ end
 -- net at x = 7.5 held by the box's fixed walls; o.R, o.x0 and o.xn move the
 -- ball's radius, its centre's x and the net's line (scripts/paper/
 -- contact_ball_net.lua runs the text's R = 3); o.cell (0.25; dt 1e-3 scaled
--- with it), o.law ("release"), o.mu. Returns sim, ball, net.
+-- with it), o.law ("release"), o.mu, o.test, o.update (sim:contact's).
+-- Returns sim, ball, net.
 function M.ball_net(o)
   local h = o.cell or 0.25
   local sim = lamina.sim{ basis = "linear", domain = {0, 0, 10, 10}, cell = h, dt = 1e-3 * h / 0.25 }
@@ -70,7 +74,9 @@ function M.ball_net(o)
                          region = lamina.disk{ center = {x0, 5}, radius = R } }
   -- law = "none": no contact pair, ball and net in the single velocity field
   -- ([T] Fig 98, the run without contact-release)
-  if o.law ~= "none" then sim:contact{ ball, net, law = o.law or "release", mu = o.mu } end
+  if o.law ~= "none" then
+    sim:contact{ ball, net, law = o.law or "release", mu = o.mu, test = o.test, update = o.update }
+  end
   return sim, ball, net
 end
 

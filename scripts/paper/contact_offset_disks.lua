@@ -38,7 +38,20 @@
 --   0.125 / 0.0625): small and of either sign. The runs keep 31-81 % of
 --   the energy (merging the fields where they stick is inelastic), and a
 --   free disk's spin decays (-0.5 to -0.39 over 3 time units at cell 0.25,
---   to -0.47 at 0.125: the grid transfer); neither turns the sign
+--   to -0.47 at 0.125: the grid transfer); neither turns the sign.
+--   The papers' contact-release as printed (sim:contact{test = "eq26",
+--   update = "eq21"}: [M] eq 26 once at time level k, and a disk that
+--   sticks takes the centre-of-mass acceleration only, its points keeping
+--   their own velocity, [M] eqs 20-21) is run at offset 2.0 on the paper's
+--   mesh (cell 0.25) and at 0.125, and checked for the turn's sense (the
+--   sign of omega, paper: -1 while pinching, +1 after release, [M] §4.4).
+--   On the paper's mesh it gives the paper's picture: clockwise while
+--   pinching (-0.247), counter-clockwise after release (+0.086 at t = 4;
+--   offset 2.5 too, +0.084, measured beside); at cell 0.125 the disks leave
+--   clockwise again (-0.105), and with uGIMP at 0.25 at -0.006, and offset
+--   1.0 (the first run's) ends at -0.20 on the paper's mesh: the paper's
+--   counter-clockwise turn is the printed algorithm on that mesh, not a
+--   turn that survives refinement
 -- assumed: as contact_disks_wire.lua (the figure gives no dimensions), the
 --   disks at (3.9, 5.5) and (6.1, 4.5), both at speed 1 toward the wire;
 --   an offset of 1.0 is less than the diameter 1.5, so the disks also meet
@@ -144,11 +157,35 @@ simB:at(0.8, function(s)
 end)
 simB:run{ t_end = t_end }
 
+-- The papers' form as printed, offset 2.0, at the paper's cell and half
+-- of it (header): disk I's omega; the largest turn to t = 0.5 (the pinch)
+local function printed_run(cell)
+  local simP, _, p1, p2 = require("contact_scenes").disks_wire{
+    centres = { {3.9, 6}, {6.1, 4} }, velocities = { {1, 0}, {-1, 0} }, release = true,
+    test = "eq26", update = "eq21", cell = cell }
+  local r = { t = {}, w = {}, pinch = 0, sim = simP }
+  simP:every(0.01, function(s)
+    local w = omega(p1)
+    r.t[#r.t + 1], r.w[#r.w + 1] = s.t, w
+    if s.t <= 0.5 + 1e-9 and math.abs(w) > math.abs(r.pinch) then r.pinch = w end
+  end)
+  simP:run{ t_end = t_end }
+  r.w_end, r.w2_end = r.w[#r.w], omega(p2)
+  return r
+end
+local P1, P2 = printed_run(0.25), printed_run(0.125)
+local function sign(x) return x > 0 and 1 or (x < 0 and -1 or 0) end
+
 lamina.plot{ file = out .. "/omega.png", csv = true,
              title = "Angular velocity of the disks (> 0: counter-clockwise)", xlabel = "t",
+             legend = "bottom right", yrange = { -0.95, 0.3 },   -- room below the curves for the legend
              ylabel = "omega", series = { { x = t, y = w1, label = "disk I (upper, left)" },
                                           { x = t, y = w2, label = "disk II (lower, right)" },
-                                          { x = tB, y = wB, label = "disk I, offset 2.0" } } }
+                                          { x = tB, y = wB, label = "disk I, offset 2.0" },
+                                          { x = P1.t, y = P1.w, dashed = true,
+                                            label = "disk I, offset 2.0, eqs 26/21 as printed" },
+                                          { x = P2.t, y = P2.w, dashed = true,
+                                            label = "the same, cell 0.125" } } }
 lamina.plot{ file = out .. "/torque.png", csv = true, legend = "best",
              title = "Offset 2.0: torque on disk I (> 0: counter-clockwise)", xlabel = "t",
              ylabel = "torque", xrange = { 0.2, 2 },
@@ -159,7 +196,17 @@ print(string.format("omega while pinching %.3f / %.3f, at t = %g %.3f / %.3f", w
 print(string.format("offset 2.0: omega while pinching %.3f, leaving the wire %.3f, at t = %g %.3f; "
   .. "angle turned when stopped %.3f, when leaving %.3f", w_pinchB, w_leave or 0, t_end, wB[#wB],
   theta_stop or 0, theta_leave or 0))
+print(string.format("offset 2.0, eqs 26/21 as printed: omega while pinching %.3f, at t = %g %.3f / %.3f "
+  .. "(cell 0.25); %.3f, %.3f / %.3f (cell 0.125)", P1.pinch, t_end, P1.w_end, P1.w2_end, P2.pinch,
+  P2.w_end, P2.w2_end))
+local printed_unit = "sign of omega (-1 clockwise, +1 counter-clockwise), [M] §4.4, Fig 23; "
+  .. "offset 2.0, eqs 26 and 20-21 as printed"
 lamina.report{
+  printed_sense_pinching = { sign(P1.pinch), paper = -1, tol = 0, unit = printed_unit .. ", cell 0.25" },
+  printed_sense_after = { sign(P1.w_end), paper = 1, tol = 0, unit = printed_unit .. ", cell 0.25" },
+  printed_omega_after = P1.w_end,
+  printed_sense_after_cell_0125 = { sign(P2.w_end), paper = 1, tol = 0, unit = printed_unit .. ", cell 0.125" },
+  printed_omega_after_cell_0125 = P2.w_end,
   omega_pinch_I = w_pinch1, omega_pinch_II = w_pinch2,
   omega_end_I = w1[#w1], omega_end_II = w2[#w2],
   clockwise_while_pinching = w_pinch1 < 0 and w_pinch2 < 0,
@@ -169,5 +216,5 @@ lamina.report{
   offset2_angle_stopped = { theta_stop or 0, unit = "rad" },
   offset2_angle_leaving = { theta_leave or 0, unit = "rad" },
   -- both set-ups' states (assets/lua/hashes.lua)
-  state_hash = require("hashes").fold{ sim:hash(), simB:hash() },
+  state_hash = require("hashes").fold{ sim:hash(), simB:hash(), P1.sim:hash(), P2.sim:hash() },
 }

@@ -3,6 +3,7 @@
  *
  *   sim:contact{ bar1, bar2, law = "release" }            -- [M] §4.1
  *   sim:contact{ block, plane, law = "friction", mu = 0.3 }
+ *   sim:contact{ bar1, bar2, test = "eq26", update = "eq21" } -- as printed
  *
  * Without a pair the bodies share one velocity field: the papers' no-slip
  * contact, lamina's default. */
@@ -13,6 +14,10 @@
 #include "l_internal.h"
 
 static const char *const laws[] = {"release", "friction", NULL};
+/* the release test and the update of a staying body: lamina's, or the
+ * papers' as printed ([M] eq 26, eqs 20-21; mpm_contact.h) */
+static const char *const tests[] = {"lamina", "eq26", NULL};
+static const char *const updates[] = {"lamina", "eq21", NULL};
 
 /* Only the two bodies by position, and the named keys. */
 static void check_contact_keys(lua_State *L, int idx, const char *fn)
@@ -27,8 +32,9 @@ static void check_contact_keys(lua_State *L, int idx, const char *fn)
             luaL_error(L, "%s: takes two bodies by position, then law and mu by name", fn);
         }
         const char *k = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : "?";
-        if (strcmp(k, "law") && strcmp(k, "mu"))
-            luaL_error(L, "%s: unknown key '%s' (known keys: the two bodies, law, mu)", fn, k);
+        if (strcmp(k, "law") && strcmp(k, "mu") && strcmp(k, "test") && strcmp(k, "update"))
+            luaL_error(L, "%s: unknown key '%s' (known keys: the two bodies, law, mu, test, update)",
+                       fn, k);
     }
 }
 
@@ -66,8 +72,12 @@ static int sim_contact(lua_State *L)
     } else if (law == 1) {
         return luaL_error(L, "%s: law = \"friction\" needs mu, the friction coefficient", fn);
     }
+    int test = la_option(L, fn, "test", la_opt_string(L, 2, fn, "test", "lamina"), tests);
+    int update = la_option(L, fn, "update", la_opt_string(L, 2, fn, "update", "lamina"), updates);
     lm_contact_law cl = law == 1 ? LM_CONTACT_FRICTION : LM_CONTACT_RELEASE;
-    if (lm_sim_add_contact(s->sim, b[0], b[1], cl, mu) < 0)
+    int k = lm_sim_add_contact(s->sim, b[0], b[1], cl, mu);
+    if (k < 0 || lm_sim_contact_form(s->sim, k, test ? LM_CTEST_EQ26 : LM_CTEST_LAMINA,
+                                     update ? LM_CUPDATE_EQ21 : LM_CUPDATE_LAMINA) < 0)
         return luaL_error(L, "%s: %s", fn, s->sim->err);
     return 0;
 }
@@ -95,9 +105,59 @@ static int sim_contact_info(lua_State *L)
     return 1;
 }
 
+/* sim:contact_normals(body) -> {x, y, nx, ny}: the body's outward grid
+ * normals ([M] eqs 27-28, what sim:frame{contact = true} draws) at the
+ * nodes where a pair met in the last step and the body has mass and a
+ * normal, row by row; nil before the first step. */
+static int sim_contact_normals(lua_State *L)
+{
+    const char *fn = "sim:contact_normals";
+    la_sim *s = la_check_sim(L, 1);
+    if (!luaL_testudata(L, 2, LA_BODY))
+        return luaL_error(L, "%s: takes a body (got %s)", fn, luaL_typename(L, 2));
+    lm_sim *owner;
+    int b = la_check_body(L, 2, &owner);
+    if (owner != s->sim) return luaL_error(L, "%s: the body is of another simulation", fn);
+    int f = -1, nf = lm_sim_contact_fields(s->sim);
+    const double *m = NULL, *nx = NULL, *ny = NULL;
+    for (int k = 0; k < nf && f < 0; k++)
+        if (lm_sim_contact_field(s->sim, k, &m, &nx, &ny) == b) f = k;
+    if (f < 0) return luaL_error(L, "%s: the body is in no contact pair (sim:contact)", fn);
+    const unsigned char *state = lm_sim_contact_state(s->sim);
+    if (!state) {
+        lua_pushnil(L);
+        return 1;
+    }
+    const lm_grid *g = &s->sim->grid;
+    static const char *const keys[] = {"x", "y", "nx", "ny"};
+    lua_createtable(L, 0, 4);
+    for (int k = 0; k < 4; k++) {
+        lua_newtable(L);
+        lua_setfield(L, -2, keys[k]);
+    }
+    lua_Integer n = 0;
+    for (int j = 0; j <= g->ny; j++)
+        for (int i = 0; i <= g->nx; i++) {
+            long id = lm_grid_node(g, i, j);
+            if (state[id] == LM_CNODE_NONE || !(m[id] > 0) || (nx[id] == 0 && ny[id] == 0))
+                continue;
+            const double v[4] = {g->x0 + i * g->hx, g->y0 + j * g->hy, nx[id], ny[id]};
+            n++;
+            for (int k = 0; k < 4; k++) {
+                lua_getfield(L, -1, keys[k]);
+                lua_pushnumber(L, v[k]);
+                lua_rawseti(L, -2, n);
+                lua_pop(L, 1);
+            }
+        }
+    return 1;
+}
+
 /* Adds the methods to the sim's method table at the top of the stack. */
 void la_contact_methods(lua_State *L)
 {
+    lua_pushcfunction(L, sim_contact_normals);
+    lua_setfield(L, -2, "contact_normals");
     lua_pushcfunction(L, sim_contact);
     lua_setfield(L, -2, "contact");
     lua_pushcfunction(L, sim_contact_info);

@@ -137,10 +137,29 @@ int lm_sim_add_contact(lm_sim *sim, int a, int b, lm_contact_law law, double mu)
     p[c->npairs].b = fb;
     p[c->npairs].law = law;
     p[c->npairs].mu = law == LM_CONTACT_FRICTION ? mu : 0;
+    p[c->npairs].test = LM_CTEST_LAMINA;
+    p[c->npairs].update = LM_CUPDATE_LAMINA;
     return c->npairs++;
 oom:
     snprintf(sim->err, sizeof sim->err, "out of memory for a contact pair");
     return -1;
+}
+
+int lm_sim_contact_form(lm_sim *sim, int k, lm_contact_test test, lm_contact_update update)
+{
+    if (!sim->contact || k < 0 || k >= sim->contact->npairs) {
+        snprintf(sim->err, sizeof sim->err, "no contact pair %d", k);
+        return -1;
+    }
+    if ((test != LM_CTEST_LAMINA && test != LM_CTEST_EQ26) ||
+        (update != LM_CUPDATE_LAMINA && update != LM_CUPDATE_EQ21)) {
+        snprintf(sim->err, sizeof sim->err,
+                 "test must be \"lamina\" or \"eq26\", update \"lamina\" or \"eq21\"");
+        return -1;
+    }
+    sim->contact->pairs[k].test = test;
+    sim->contact->pairs[k].update = update;
+    return 0;
 }
 
 /* The nodal arrays of a field: 14 doubles per node in one block. */

@@ -23,6 +23,8 @@ typedef struct lm_contact_pair {
     int a, b;              /* indices into lm_contact.f */
     lm_contact_law law;
     double mu;
+    lm_contact_test test;      /* LM_CTEST_EQ26: [M] eq 26 as printed */
+    lm_contact_update update;  /* LM_CUPDATE_EQ21: [M] eqs 20-21 as printed */
 } lm_contact_pair;
 
 /* A rectangle of nodes in the grid's storage (ghost ring included): node

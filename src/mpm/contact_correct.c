@@ -129,6 +129,35 @@ static int separating(const lm_contact *c, int k, long i)
     return (fa->px[i] / ma - fb->px[i] / mb) * nx + (fa->py[i] / ma - fb->py[i] / mb) * ny < 0;
 }
 
+/* [M] eq 26 / [T] eq 9.8 as the papers print it (sim:contact{test =
+ * "eq26"}), for the comparison with lamina's form above: each body's
+ * velocity at time level k against the node's centre-of-mass velocity
+ * (vx, vy) along its own outward normal, (v^I - v) . n^I < 0 for both
+ * (the papers' "> 0" with the inward colour-gradient normal,
+ * docs/physics.md §4); a body without a normal at the node does not part. No
+ * grazing rule and no second test: called once, from
+ * lm_contact_release_test, with the time-level-k momenta. */
+static int separating_eq26(const lm_contact *c, int k, long i, double vx, double vy)
+{
+    for (int side = 0; side < 2; side++) {
+        const lm_contact_field *f = &c->f[side ? c->pairs[k].b : c->pairs[k].a];
+        double w = (f->px[i] / f->m[i] - vx) * f->nx[i] + (f->py[i] / f->m[i] - vy) * f->ny[i];
+        if (!(w < 0)) return 0;
+    }
+    return 1;
+}
+
+/* Does a pair with [M] eqs 20-21's update (sim:contact{update = "eq21"})
+ * hold field f at node i? */
+static int eq21_here(const lm_contact *c, const lm_contact_field *f, long i)
+{
+    for (int k = 0; k < c->npairs; k++)
+        if (c->pairs[k].update == LM_CUPDATE_EQ21 && pair_here(c, k, i) &&
+            (&c->f[c->pairs[k].a] == f || &c->f[c->pairs[k].b] == f))
+            return 1;
+    return 0;
+}
+
 /* Friction of pair k at node i, neither body released: each body's
  * share s of its tangential slip against the shared field (vx, vy), and
  * the common normal seen from it (tx, ty). Returns 1 if either slides. */
@@ -187,7 +216,10 @@ void lm_contact_release_test(lm_sim *sim)
             int pa = c->pairs[k].a, pb = c->pairs[k].b;
             flag[pa] |= 1;
             flag[pb] |= 1;
-            if (!separating(c, k, i)) flag[pa] |= 2, flag[pb] |= 2;
+            int part = c->pairs[k].test == LM_CTEST_EQ26
+                           ? separating_eq26(c, k, i, g->px[i] / mG, g->py[i] / mG)
+                           : separating(c, k, i);
+            if (!part) flag[pa] |= 2, flag[pb] |= 2;
             any = 1;
         }
         if (any)
@@ -275,9 +307,9 @@ static void correct_node(lm_sim *sim, long i)
     /* the same test with the Lagrangian velocities p^L / m: a pair that
      * is pressed together by the step's forces stays in contact even if
      * it was parting at time k (a compressed bar released in its own field
-     * would push into the other) */
+     * would push into the other); [M] eq 26 as printed tests once */
     for (int k = 0; k < c->npairs; k++)
-        if (pair_here(c, k, i) && !separating(c, k, i))
+        if (c->pairs[k].test != LM_CTEST_EQ26 && pair_here(c, k, i) && !separating(c, k, i))
             c->f[c->pairs[k].a].own[i] = c->f[c->pairs[k].b].own[i] = 0;
     /* kinetic energy before: each paired body in its own field, the rest
      * of the node's mass as one */
@@ -356,6 +388,8 @@ static void correct_node(lm_sim *sim, long i)
         f->dvy[i] = uy - vy;
         f->dax[i] = (ux - vkx) / dt - ax;
         f->day[i] = (uy - vky) / dt - ay;
+        /* [M] eqs 20-21 as printed: the shared field's acceleration only */
+        if (f->own[i] == 0 && eq21_here(c, f, i)) f->dax[i] = f->day[i] = 0;
     }
     /* kinetic energy after */
     double after = 0;

@@ -99,6 +99,12 @@ static void refused(void)
     CHECK(lm_sim_add_contact(sim, a, b, LM_CONTACT_RELEASE, 0) == 0);
     CHECK(lm_sim_add_contact(sim, b, a, LM_CONTACT_RELEASE, 0) < 0);
     CHECK(strstr(sim->err, "already") != NULL);
+    /* the papers' forms as printed: pair 0 takes them, no other pair */
+    CHECK(lm_sim_contact_form(sim, 0, LM_CTEST_EQ26, LM_CUPDATE_EQ21) == 0);
+    CHECK(lm_sim_contact_form(sim, 1, LM_CTEST_EQ26, LM_CUPDATE_EQ21) < 0);
+    CHECK(strstr(sim->err, "no contact pair 1") != NULL);
+    CHECK(lm_sim_contact_form(sim, 0, (lm_contact_test)5, LM_CUPDATE_LAMINA) < 0);
+    CHECK(strstr(sim->err, "eq26") != NULL);
     lm_sim_free(sim);
     /* the quadratic B-spline is refused by name (contact.c says why) */
     sim = bars(LM_BASIS_BSPLINE2, 0, 0, &a, &b);

@@ -24,6 +24,29 @@ enum {
  * input is bad. mu only for friction (>= 0). */
 int lm_sim_add_contact(lm_sim *sim, int a, int b, lm_contact_law law, double mu);
 
+/* The release test of a pair (sim:contact's `test`): lamina's (default:
+ * the pair's relative velocity along the heavier body's normal, at time
+ * level k and again with the Lagrangian velocities, grazing nodes parting)
+ * or [M] eq 26 / [T] eq 9.8 as printed: once, at time level k, each body's
+ * velocity against the node's centre-of-mass velocity along its own
+ * outward normal, release only if both part. */
+typedef enum lm_contact_test {
+    LM_CTEST_LAMINA = 0,
+    LM_CTEST_EQ26 = 1
+} lm_contact_test;
+/* What a body of the pair takes where it stays in the centre-of-mass
+ * field (sim:contact's `update`): lamina's (default: its velocity and
+ * acceleration) or [M] eqs 20-21 / [T] eqs 9.1-9.2 as printed: its
+ * acceleration only, so that its particles keep their velocity relative
+ * to it (FLIP). */
+typedef enum lm_contact_update {
+    LM_CUPDATE_LAMINA = 0,
+    LM_CUPDATE_EQ21 = 1
+} lm_contact_update;
+/* Sets pair k's (lm_sim_add_contact's return) test and update; -1 with
+ * sim->err if k is not a pair. */
+int lm_sim_contact_form(lm_sim *sim, int k, lm_contact_test test, lm_contact_update update);
+
 /* The last step's contact (contact_view.c): the nodes of each state and
  * the grid kinetic energy at the contact nodes before and after the
  * correction (after <= before, [M] §4.1). 0 when the sim has pairs, -1
