@@ -24,6 +24,9 @@ void lr_scene3d_free(lr_scene3d *s)
         free(s->items[i].text);
     free(s->items);
     free(s->pts);
+    free(s->cloud);
+    free(s->cloud_rgba);
+    free(s->tri);
     free(s);
 }
 
@@ -207,6 +210,91 @@ int lr_scene3d_text(lr_scene3d *s, const double p[3], double dx, double dy,
     return 0;
 }
 
+static uint32_t pack(lr_rgba k)
+{
+    const double c[4] = {k.r, k.g, k.b, k.a};
+    uint32_t u = 0;
+    for (int i = 0; i < 4; i++) {
+        double x = c[i] < 0 ? 0 : c[i] > 1 ? 1 : c[i];
+        u |= (uint32_t)lround(255.0 * x) << (8 * i);
+    }
+    return u;
+}
+
+int lr_scene3d_cloud(lr_scene3d *s, size_t n, const double *const p[3],
+                     const lr_rgba *colours, lr_rgba colour, double radius_px)
+{
+    if (!s || reserve(s, 1) != 0)
+        return -1;
+    if (n > ((size_t)-1) / 32 - s->ncloud ||
+        lu_reserve(&s->cloud, &s->capcloud, s->ncloud + n, 3 * sizeof *s->cloud, 1024) != 0 ||
+        lu_reserve(&s->cloud_rgba, &s->caprgba, s->ncloud + n, sizeof *s->cloud_rgba,
+                   1024) != 0)
+        return -1;
+    size_t first = s->ncloud;
+    uint32_t one = pack(colour);
+    for (size_t i = 0; i < n; i++) {
+        double q[3];
+        at(p, i, q);
+        if (!finite3(q))
+            continue;
+        float *f = s->cloud + 3 * s->ncloud;
+        for (int a = 0; a < 3; a++)
+            f[a] = (float)q[a];
+        s->cloud_rgba[s->ncloud++] = colours ? pack(colours[i]) : one;
+    }
+    if (s->ncloud > first && radius_px > 0) {
+        s3_item *it = push(s, S3_CLOUD, NULL, NULL, 0.0, colour);
+        it->first = first;
+        it->count = s->ncloud - first;
+        it->size = radius_px;
+    }
+    s->layers++;
+    return 0;
+}
+
+int lr_scene3d_triangles(lr_scene3d *s, size_t n, const double *xyz,
+                         const double *normals, const lr_rgba *colours,
+                         lr_rgba colour)
+{
+    if (!s || reserve(s, 1) != 0)
+        return -1;
+    if (n > ((size_t)-1) / 64 / S3_TRI_FLOATS - s->ntri ||
+        lu_reserve(&s->tri, &s->captri, s->ntri + 3 * n, S3_TRI_FLOATS * sizeof *s->tri,
+                   3072) != 0)
+        return -1;
+    size_t first = s->ntri;
+    int clear = 0;
+    for (size_t k = 0; k < n; k++) {
+        const double *q = xyz + 9 * k;
+        if (!finite3(q) || !finite3(q + 3) || !finite3(q + 6))
+            continue;
+        for (int j = 0; j < 3; j++) {
+            float *f = s->tri + S3_TRI_FLOATS * s->ntri++;
+            lr_rgba k3 = colours ? colours[3 * k + (size_t)j] : colour;
+            const double *nn = normals ? normals + 9 * k + 3 * j : NULL;
+            for (int a = 0; a < 3; a++) {
+                f[a] = (float)q[3 * j + a];
+                f[3 + a] = nn && isfinite(nn[a]) ? (float)nn[a] : 0.0f;
+            }
+            f[6] = (float)k3.r;
+            f[7] = (float)k3.g;
+            f[8] = (float)k3.b;
+            f[9] = (float)k3.a;
+            clear |= k3.a < 1;
+        }
+    }
+    if (s->ntri > first) {
+        s3_item *it = push(s, S3_TRIS, NULL, NULL, 0.0, colour);
+        it->first = first;
+        it->count = s->ntri - first;
+        it->lit = normals != NULL;
+        it->see_through = clear;
+    }
+    s->layers++;
+    return 0;
+}
+
 /* ---- drawing ------------------------------------------------------------- */
 
 static void draw_text(lr_canvas *c, const lr_view *v, const s3_item *it)
@@ -217,8 +305,78 @@ static void draw_text(lr_canvas *c, const lr_view *v, const s3_item *it)
                    it->text);
 }
 
+typedef struct tri_key {
+    double depth;
+    size_t k;
+} tri_key;
+
+static int by_depth(const void *a, const void *b)
+{
+    const tri_key *x = a, *y = b;
+    if (x->depth != y->depth)
+        return x->depth < y->depth ? -1 : 1;
+    return x->k < y->k ? -1 : x->k > y->k;
+}
+
+/* cairo: an item's triangles, far ones first, each filled with its
+ * vertices' mean colour, shaded by their mean normal when lit. */
+static int tris_painter(lr_canvas *c, const lr_view *v, const lr_scene3d *s,
+                        const s3_item *it)
+{
+    size_t n = it->count / 3;
+    tri_key *key = malloc((n ? n : 1) * sizeof *key);
+    if (!key)
+        return -1;
+    for (size_t k = 0; k < n; k++) {
+        const float *f = s->tri + S3_TRI_FLOATS * (it->first + 3 * k);
+        double d = 0;
+        for (int j = 0; j < 3; j++)
+            for (int a = 0; a < 3; a++)
+                d += (f[S3_TRI_FLOATS * j + a] - v->c[a]) * v->toward[a];
+        key[k].depth = d;
+        key[k].k = k;
+    }
+    qsort(key, n, sizeof *key, by_depth);
+    for (size_t m = 0; m < n; m++) {
+        const float *f = s->tri + S3_TRI_FLOATS * (it->first + 3 * key[m].k);
+        double xy[6], nrm[3] = {0, 0, 0};
+        float base[4] = {0, 0, 0, 0};
+        for (int j = 0; j < 3; j++) {
+            const float *q = f + S3_TRI_FLOATS * j;
+            const double w[3] = {q[0], q[1], q[2]};
+            lr_view_map(v, w, &xy[2 * j], &xy[2 * j + 1]);
+            for (int a = 0; a < 3; a++)
+                nrm[a] += q[3 + a];
+            for (int a = 0; a < 4; a++)
+                base[a] += q[6 + a] / 3.0f;
+        }
+        lr_rgba k = {base[0], base[1], base[2], base[3]};
+        double l = sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
+        if (it->lit && l > 0) {
+            double nv[3] = {0, 0, 0};
+            for (int a = 0; a < 3; a++) {
+                nv[0] += nrm[a] / l * v->right[a];
+                nv[1] += nrm[a] / l * v->up[a];
+                nv[2] += nrm[a] / l * v->toward[a];
+            }
+            if (nv[2] < 0)      /* either side faces the light */
+                for (int a = 0; a < 3; a++)
+                    nv[a] = -nv[a];
+            float out[3];
+            s3_shade(base, nv, out);
+            k.r = out[0];
+            k.g = out[1];
+            k.b = out[2];
+        }
+        size_t three = 3;
+        lr_canvas_fill(c, 1, &three, xy, k);
+    }
+    free(key);
+    return 0;
+}
+
 /* cairo: the layers, item by item, in order. */
-static void painter(lr_canvas *c, const lr_view *v, const lr_scene3d *s)
+static int painter(lr_canvas *c, const lr_view *v, const lr_scene3d *s)
 {
     for (size_t i = 0; i < s->n; i++) {
         const s3_item *it = &s->items[i];
@@ -261,8 +419,17 @@ static void painter(lr_canvas *c, const lr_view *v, const lr_scene3d *s)
         case S3_TEXT:
             draw_text(c, v, it);
             break;
+        case S3_CLOUD:
+            if (s3_cloud_painter(c, v, s, it) != 0)
+                return -1;
+            break;
+        case S3_TRIS:
+            if (tris_painter(c, v, s, it) != 0)
+                return -1;
+            break;
         }
     }
+    return 0;
 }
 
 int lr_scene3d_draw(lr_canvas *c, const lr_view *v, const lr_scene3d *s, char *err,
@@ -278,7 +445,10 @@ int lr_scene3d_draw(lr_canvas *c, const lr_view *v, const lr_scene3d *s, char *e
     }
     lr_backend b = lr_canvas_backend(c);
     if (b != LR_BACKEND_OSMESA && b != LR_BACKEND_EGL) {
-        painter(c, v, s);
+        if (painter(c, v, s) != 0) {
+            lu_err(err, errlen, "3D view: out of memory");
+            return -1;
+        }
         return 0;
     }
 #ifdef LAMINA_HAVE_GL
