@@ -558,6 +558,7 @@ static void draw_geo(const geo *g)
  * content: their depth, then their colour. */
 static void draw_splats(const unsigned char *rgba, const float *depth, int W, int H)
 {
+    glUseProgram(0);        /* pixels as they are, not through a canvas shader */
     glWindowPos2i(0, 0);
     glDepthFunc(GL_ALWAYS);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);

@@ -368,6 +368,19 @@ static int tris_painter(lr_canvas *c, const lr_view *v, const lr_scene3d *s,
             k.g = out[1];
             k.b = out[2];
         }
+        if (k.a >= 1) {
+            /* opaque: grown by a pixel about the centre, so that
+             * neighbours' antialiased edges do not let the ground show
+             * through their seams (a slice's cells) */
+            double cx = (xy[0] + xy[2] + xy[4]) / 3, cy = (xy[1] + xy[3] + xy[5]) / 3;
+            for (int j = 0; j < 3; j++) {
+                double dx = xy[2 * j] - cx, dy = xy[2 * j + 1] - cy, r = hypot(dx, dy);
+                if (r > 0) {
+                    xy[2 * j] += dx / r;
+                    xy[2 * j + 1] += dy / r;
+                }
+            }
+        }
         size_t three = 3;
         lr_canvas_fill(c, 1, &three, xy, k);
     }
