@@ -5,6 +5,7 @@
  * for its colour bars), and each panel's layers gathered into a view3d.h
  * scene and drawn through the canvas's backend. */
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -56,12 +57,15 @@ void lr_camera3d_view(lr_view *v, const lr_camera3d *cam, double px, double py, 
 
 static void widen(const double *f, size_t n, double *a, double *b, int *found)
 {
+    double lo = *a, hi = *b;
     for (size_t i = 0; f && i < n; i++)
         if (isfinite(f[i])) {
-            *a = fmin(*a, f[i]);
-            *b = fmax(*b, f[i]);
+            lo = f[i] < lo ? f[i] : lo;
+            hi = f[i] > hi ? f[i] : hi;
             *found = 1;
         }
+    *a = lo;
+    *b = hi;
 }
 
 static void settle(lr_cmap m, int found, double *a, double *b)
@@ -184,39 +188,69 @@ static const char *figure_problem(const lr_figure3d *f)
 
 /* ---- layers into the scene ------------------------------------------------- */
 
-static int add_cloud(lr_scene3d *s, const lr_cloud3d *c, const lr_panel3d *p, double lo,
-                     double hi)
+/* Values to packed colours through a table of the map at LUT_N + 1
+ * evenly spaced points (nearest), so that 10^6 particles cost a lookup
+ * each: within 1 / (2 LUT_N) of t, under one level of 255 of the map's
+ * colour. NaN gives the map's NaN colour. */
+#define LUT_N 1024
+
+typedef struct cmap_lut {
+    uint32_t c[LUT_N + 1], nan;
+    double lo, scale;
+} cmap_lut;
+
+static void lut_make(cmap_lut *t, lr_cmap m, double lo, double hi)
 {
-    if (c->n == 0)
+    for (int i = 0; i <= LUT_N; i++)
+        t->c[i] = lr_rgba_pack(lr_cmap_colour(m, (double)i / LUT_N));
+    t->nan = lr_rgba_pack(lr_cmap_colour(m, NAN));
+    t->lo = lo;
+    t->scale = LUT_N / (hi - lo);
+}
+
+static uint32_t lut_at(const cmap_lut *t, double v)
+{
+    double u = (v - t->lo) * t->scale;
+    if (u != u)
+        return t->nan;
+    u = u < 0 ? 0 : u > LUT_N ? LUT_N : u;
+    return t->c[(int)(u + 0.5)];
+}
+
+static int add_points(lr_scene3d *s, size_t n, const double *const q[3], const double *value,
+                      const int *group, const uint32_t *one, const cmap_lut *lut,
+                      double radius)
+{
+    if (n == 0)
         return 0;
-    lr_rgba *col = malloc(c->n * sizeof *col);
+    uint32_t *col = malloc(n * sizeof *col);
     if (!col)
         return -1;
-    for (size_t i = 0; i < c->n; i++)
-        col[i] = c->value ? value_colour(p->cmap, c->value[i], lo, hi)
-                          : lr_palette(c->group ? c->group[i] : 0);
-    const double *const q[3] = {c->x, c->y, c->z};
-    int rc = lr_scene3d_cloud(s, c->n, q, col, col[0], c->radius);
+    for (size_t i = 0; i < n; i++)
+        col[i] = value ? lut_at(lut, value[i])
+                 : one ? *one : lr_rgba_pack(lr_palette(group ? group[i] : 0));
+    int rc = lr_scene3d_cloud_rgba8(s, n, q, col, radius);
     free(col);
     return rc;
+}
+
+static int add_cloud(lr_scene3d *s, const lr_cloud3d *c, const cmap_lut *lut)
+{
+    const double *const q[3] = {c->x, c->y, c->z};
+    return add_points(s, c->n, q, c->value, c->group, NULL, lut, c->radius);
 }
 
 /* A membrane: its points, then its normals thinned to the spacing (every
  * k-th point's, k the least with k spacings >= arrow_px pixels, each
  * arrow that long - the 2D frames' rule, l_frame_points.c). */
 static int add_membrane(lr_scene3d *s, const lr_view *v, const lr_membrane3d *m,
-                        const lr_panel3d *p, double lo, double hi)
+                        const cmap_lut *lut)
 {
     if (m->n == 0)
         return 0;
-    lr_rgba *col = malloc(m->n * sizeof *col);
-    if (!col)
-        return -1;
-    for (size_t i = 0; i < m->n; i++)
-        col[i] = m->value ? value_colour(p->cmap, m->value[i], lo, hi) : m->colour;
     const double *const q[3] = {m->x, m->y, m->z};
-    int rc = lr_scene3d_cloud(s, m->n, q, col, m->colour, m->radius);
-    free(col);
+    uint32_t one = lr_rgba_pack(m->colour);
+    int rc = add_points(s, m->n, q, m->value, NULL, &one, lut, m->radius);
     if (rc != 0 || !m->nx || !m->ny || !m->nz)
         return rc;
     double gap = m->arrow_px > 0 ? m->arrow_px : 16.0;
@@ -342,6 +376,8 @@ static int add_slice(lr_scene3d *s, const lr_slice3d *sl)
 static int fill_scene(lr_scene3d *s, const lr_view *v, const lr_panel3d *p, double lo,
                       double hi)
 {
+    cmap_lut lut;
+    lut_make(&lut, p->cmap, lo, hi);
     static const lr_rgba OUTLINE = {0.35, 0.35, 0.35, 1};
     int rc = 0;
     if (p->box)
@@ -349,9 +385,9 @@ static int fill_scene(lr_scene3d *s, const lr_view *v, const lr_panel3d *p, doub
     for (size_t k = 0; k < p->nslices && rc == 0; k++)
         rc |= add_slice(s, &p->slices[k]);
     for (size_t k = 0; k < p->nclouds && rc == 0; k++)
-        rc |= add_cloud(s, &p->clouds[k], p, lo, hi);
+        rc |= add_cloud(s, &p->clouds[k], &lut);
     for (size_t k = 0; k < p->nmembranes && rc == 0; k++)
-        rc |= add_membrane(s, v, &p->membranes[k], p, lo, hi);
+        rc |= add_membrane(s, v, &p->membranes[k], &lut);
     for (size_t k = 0; k < p->nisos && rc == 0; k++)
         rc |= add_iso(s, &p->isos[k]);
     return rc;

@@ -210,19 +210,19 @@ int lr_scene3d_text(lr_scene3d *s, const double p[3], double dx, double dy,
     return 0;
 }
 
-static uint32_t pack(lr_rgba k)
+uint32_t lr_rgba_pack(lr_rgba k)
 {
     const double c[4] = {k.r, k.g, k.b, k.a};
     uint32_t u = 0;
     for (int i = 0; i < 4; i++) {
-        double x = c[i] < 0 ? 0 : c[i] > 1 ? 1 : c[i];
-        u |= (uint32_t)lround(255.0 * x) << (8 * i);
+        double x = c[i] < 0 ? 0 : c[i] > 1 ? 1 : c[i];     /* NaN: 1 */
+        u |= (uint32_t)(255.0 * x + 0.5) << (8 * i);
     }
     return u;
 }
 
-int lr_scene3d_cloud(lr_scene3d *s, size_t n, const double *const p[3],
-                     const lr_rgba *colours, lr_rgba colour, double radius_px)
+static int cloud(lr_scene3d *s, size_t n, const double *const p[3], const lr_rgba *colours,
+                 lr_rgba colour, const uint32_t *rgba8, double radius_px)
 {
     if (!s || reserve(s, 1) != 0)
         return -1;
@@ -232,16 +232,15 @@ int lr_scene3d_cloud(lr_scene3d *s, size_t n, const double *const p[3],
                    1024) != 0)
         return -1;
     size_t first = s->ncloud;
-    uint32_t one = pack(colour);
+    uint32_t one = lr_rgba_pack(colour);
     for (size_t i = 0; i < n; i++) {
-        double q[3];
-        at(p, i, q);
+        const double q[3] = {p[0][i], p[1][i], p[2][i]};
         if (!finite3(q))
             continue;
         float *f = s->cloud + 3 * s->ncloud;
         for (int a = 0; a < 3; a++)
             f[a] = (float)q[a];
-        s->cloud_rgba[s->ncloud++] = colours ? pack(colours[i]) : one;
+        s->cloud_rgba[s->ncloud++] = rgba8 ? rgba8[i] : colours ? lr_rgba_pack(colours[i]) : one;
     }
     if (s->ncloud > first && radius_px > 0) {
         s3_item *it = push(s, S3_CLOUD, NULL, NULL, 0.0, colour);
@@ -251,6 +250,19 @@ int lr_scene3d_cloud(lr_scene3d *s, size_t n, const double *const p[3],
     }
     s->layers++;
     return 0;
+}
+
+int lr_scene3d_cloud(lr_scene3d *s, size_t n, const double *const p[3],
+                     const lr_rgba *colours, lr_rgba colour, double radius_px)
+{
+    return cloud(s, n, p, colours, colour, NULL, radius_px);
+}
+
+int lr_scene3d_cloud_rgba8(lr_scene3d *s, size_t n, const double *const p[3],
+                           const uint32_t *rgba8, double radius_px)
+{
+    const lr_rgba none = {0, 0, 0, 1};
+    return cloud(s, n, p, NULL, none, rgba8, radius_px);
 }
 
 int lr_scene3d_triangles(lr_scene3d *s, size_t n, const double *xyz,

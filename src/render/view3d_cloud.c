@@ -50,8 +50,11 @@ static void splat(uint32_t rgba, double R, double rz,
     double a = (double)(rgba >> 24) / 255.0;
     if (a <= 0)
         return;
-    double base[3] = {(double)(rgba & 255) / 255.0, (double)((rgba >> 8) & 255) / 255.0,
-                      (double)((rgba >> 16) & 255) / 255.0};
+    /* the colour premultiplied, in units of 1/255 */
+    double base[3] = {(double)(rgba & 255) * a, (double)((rgba >> 8) & 255) * a,
+                      (double)((rgba >> 16) & 255) * a};
+    double top = 255.0 * a, spec_k = 0.3 * top;
+    unsigned char alpha = (unsigned char)(rgba >> 24);
     int j0 = (int)ceil(sy - R - 0.5), j1 = (int)floor(sy + R - 0.5);
     int i0 = (int)ceil(sx - R - 0.5), i1 = (int)floor(sx + R - 0.5);
     if (j0 < 0)
@@ -63,32 +66,34 @@ static void splat(uint32_t rgba, double R, double rz,
     if (i1 > W - 1)
         i1 = W - 1;
     double inv = 1.0 / R;
+    float front = (float)(wz - rz);
     for (int j = j0; j <= j1; j++) {
         double dy = (j + 0.5 - sy) * inv;        /* screen y down */
         size_t row = (size_t)(H - 1 - j) * (size_t)W;
         for (int i = i0; i <= i1; i++) {
             double dx = (i + 0.5 - sx) * inv;
             double r2 = dx * dx + dy * dy;
-            if (r2 > 1.0)
+            size_t k = row + (size_t)i;
+            /* hidden even at the sphere's nearest point: no root needed */
+            if (r2 > 1.0 || !(front <= depth[k]))
                 continue;
             double nz = sqrt(1.0 - r2);
             float d = (float)(wz - rz * nz);
-            size_t k = row + (size_t)i;
             if (!(d <= depth[k]))
                 continue;
             depth[k] = d;
             /* the shader's lit(): n = (dx, -dy, nz) in view space, y up */
             double dd = dx * L[0] - dy * L[1] + nz * L[2];
             double hh = dx * Hh[0] - dy * Hh[1] + nz * Hh[2];
-            double spec = 0.3 * pow40(hh > 0 ? hh : 0);
+            double spec = spec_k * pow40(hh > 0 ? hh : 0);
             double diff = 0.45 + 0.55 * (dd > 0 ? dd : 0);
             unsigned char *o = px + 4 * k;
             for (int c = 0; c < 3; c++) {
-                double x = base[c] * diff + spec;
-                x = x < 1 ? x : 1;
-                o[c] = (unsigned char)lround(255.0 * x * a);
+                double x = base[c] * diff + spec;   /* min(lit, 1) a, x 255 */
+                x = x < top ? x : top;
+                o[c] = (unsigned char)(x + 0.5);
             }
-            o[3] = (unsigned char)lround(255.0 * a);
+            o[3] = alpha;
         }
     }
 }
@@ -110,10 +115,17 @@ int s3_cloud_raster(const lr_view *v, const lr_scene3d *s, double x0, double y0,
         for (size_t m = it->first; m < it->first + it->count; m++) {
             const float *f = s->cloud + 3 * m;
             const double q[3] = {f[0], f[1], f[2]};
-            double x, y;
-            lr_view_map(v, q, &x, &y);
-            double dep = (q[0] - v->c[0]) * v->toward[0] + (q[1] - v->c[1]) * v->toward[1] +
-                         (q[2] - v->c[2]) * v->toward[2];
+            double x, y, dep;
+            if (v->persp > 0) {
+                lr_view_map(v, q, &x, &y);
+                dep = (q[0] - v->c[0]) * v->toward[0] + (q[1] - v->c[1]) * v->toward[1] +
+                      (q[2] - v->c[2]) * v->toward[2];
+            } else {    /* lr_view_map's orthographic case, inline */
+                const double d[3] = {q[0] - v->c[0], q[1] - v->c[1], q[2] - v->c[2]};
+                x = v->ox + v->s * (d[0] * v->right[0] + d[1] * v->right[1] + d[2] * v->right[2]);
+                y = v->oy - v->s * (d[0] * v->up[0] + d[1] * v->up[1] + d[2] * v->up[2]);
+                dep = d[0] * v->toward[0] + d[1] * v->toward[1] + d[2] * v->toward[2];
+            }
             double ndc = -dep * zscale - it->layer * eps;
             splat(s->cloud_rgba[m], R, rz, (x - x0) * S, (y - y0) * S,
                   0.5 * ndc + 0.5, W, H, rgba, depth);

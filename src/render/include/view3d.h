@@ -21,6 +21,7 @@
 #define LAMINA_VIEW3D_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "layers.h"
 #include "render.h"
@@ -63,6 +64,13 @@ int lr_scene3d_text(lr_scene3d *s, const double p[3], double dx, double dy,
  * microsecond), through cairo drawn as discs, far ones first. */
 int lr_scene3d_cloud(lr_scene3d *s, size_t n, const double *const p[3],
                      const lr_rgba *colours, lr_rgba colour, double radius_px);
+/* The same with colours packed as straight RGBA8, red in the low byte
+ * (lr_rgba_pack): 4 bytes a point instead of 32, for 10^6 of them. */
+int lr_scene3d_cloud_rgba8(lr_scene3d *s, size_t n, const double *const p[3],
+                           const uint32_t *rgba8, double radius_px);
+/* A colour as straight RGBA8, red in the low byte, each channel clamped
+ * to [0, 1] and rounded. */
+uint32_t lr_rgba_pack(lr_rgba k);
 /* n triangles, vertex j of triangle k at xyz[9 k + 3 j .. + 2]; normals
  * in the same layout shade them (either side; NULL: flat colour); colours
  * per vertex (3 n, NULL: colour). Triangles with some alpha below 1 are
