@@ -44,6 +44,11 @@
  * at most this many samples: 10^6 points of a pixel's radius at 2 x 2
  * (measured: docs/performance.md "3D frames") */
 #define CLOUD_SAMPLES 1.6e7
+/* ... and until the splat buffers (cleared, filled, handed to OpenGL:
+ * 8 bytes a sample more than other scenes move) are at most this many
+ * samples - 2 x 2 for an 800 x 800 panel: at 4 x 4 the buffers alone
+ * cost some 200 ms (measured, docs/performance.md "3D frames") */
+#define CLOUD_BUFFER 4.2e6
 
 enum { K_LINE = 0, K_SPHERE = 1, K_LIT = 2, K_FLAT = 3, K_LIT2 = 4 };
 enum { A_POS = 0, A_P = 1, A_KIND = 2, A_COL = 3 };
@@ -689,7 +694,8 @@ int gl_view3d(lr_canvas *base, const lr_view *v, const lr_scene3d *s, char *err,
     double bytes = clouds ? 20.0 : 12.0;
     while (S > 1 && ((double)S * w > lim || (double)S * h > lim ||
                      bytes * S * S * (double)w * h > SS_MAX_BYTES ||
-                     (clouds && s3_cloud_samples(s, S) > CLOUD_SAMPLES)))
+                     (clouds && (s3_cloud_samples(s, S) > CLOUD_SAMPLES ||
+                                 (double)S * S * w * h > CLOUD_BUFFER))))
         S--;
     if (w > lim || h > lim) {
         snprintf(err, errlen, "3D view: %dx%d pixels is more than OpenGL draws (%d)", w,
