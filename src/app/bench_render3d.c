@@ -52,7 +52,7 @@ int bench_render3d(int argc, char **argv)
 {
     size_t counts[MAX_COUNTS] = {10000, 100000, 1000000};
     int ncounts = 3, runs = 5, use[LR_BACKEND_COUNT] = {0, 1, 1};
-    for (int i = 0; i < argc; i++) {
+    for (int i = 0; i < argc; i += 2) {     /* options and their values */
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         if (!v)
             return usage("an option without its value");
@@ -81,9 +81,10 @@ int bench_render3d(int argc, char **argv)
                 use[b] = 1;
             }
         } else {
-            return usage("unknown option");
+            char why[160];
+            snprintf(why, sizeof why, "unknown option '%.100s'", a);
+            return usage(why);
         }
-        i++;
     }
     printf("lamina bench render3d: 800x800 3D frames, ms per frame (drawing and reading "
            "back), median of %d runs; wall / CPU of all threads\n\n", runs);

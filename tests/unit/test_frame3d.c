@@ -12,6 +12,8 @@
  *   - the camera: the target at the panel's centre; perspective makes the
  *     near end of a bar longer than the far one; `distance` zooms;
  *   - a slice of a uniform field shows the colour map's colour there;
+ *   - a particle below a slice is hidden by it, above it is not (OpenGL:
+ *     the splats' depth meets the triangles'; cairo: painter's order);
  *   - every backend here draws the same figure to the same bytes twice
  *     (written to out/frame3d_*.png to be looked at).
  *
@@ -346,6 +348,52 @@ static void test_depth(lr_backend b)
     free(img);
 }
 
+/* A particle and a slice (an opaque triangle pair) seen from above: the
+ * particle above the plane is seen, below it is hidden - through OpenGL,
+ * where the splats' depth goes into the depth buffer before the
+ * triangles are drawn; cairo draws the layers in order (painter's), so
+ * its particle, drawn after the slice, is seen both times. */
+static void test_depth_mixed(lr_backend b)
+{
+    enum { W = 160, H = 160 };
+    double f[8] = {1, 1, 1, 1, 1, 1, 1, 1};
+    lr_slice3d sl;
+    memset(&sl, 0, sizeof sl);
+    sl.grid.f = f;
+    for (int a = 0; a < 3; a++) {
+        sl.grid.n[a] = 2;
+        sl.grid.h[a] = 1;
+    }
+    sl.axis = 2;
+    sl.at = 0.5;
+    sl.cmap = LR_CMAP_VIRIDIS;
+    sl.vmin = 0;
+    sl.vmax = 2;    /* the map's middle: a teal */
+    for (int above = 0; above < 2; above++) {
+        double x = 0.5, y = 0.5, z = above ? 0.8 : 0.2;
+        const int group = 1;        /* orange */
+        lr_cloud3d c = {1, &x, &y, &z, NULL, &group, 12.0};
+        lr_panel3d p;
+        memset(&p, 0, sizeof p);
+        for (int a = 0; a < 3; a++)
+            p.hi[a] = 1;
+        p.camera.elevation = 90;
+        p.slices = &sl;
+        p.nslices = 1;
+        p.clouds = &c;
+        p.nclouds = 1;
+        unsigned char *img = draw_one(b, &p, W, H);
+        if (!img)
+            return;
+        const unsigned char *q = img + 4 * ((size_t)(H / 2) * W + W / 2);
+        int orange = q[0] > 150 && q[2] < 80;
+        printf("%s: particle %s the slice: centre %d %d %d\n", lr_backend_name(b),
+               above ? "above" : "below", q[0], q[1], q[2]);
+        CHECK(orange == (above || b == LR_BACKEND_CAIRO));
+        free(img);
+    }
+}
+
 static void test_camera(void)
 {
     lr_panel3d p;
@@ -535,6 +583,7 @@ int main(int argc, char **argv)
         test_figure((lr_backend)b);
         test_depth((lr_backend)b);
         test_slice_colour((lr_backend)b);
+        test_depth_mixed((lr_backend)b);
     }
     lr_shutdown();
     return CHECK_DONE();
