@@ -17,7 +17,9 @@
  *   - every backend here draws the same figure to the same bytes twice
  *     (written to out/frame3d_*.png to be looked at).
  *
- * `test_frame3d bench [n [backend]]` times n (10^6) particles a frame per
+ * `test_frame3d baselines DIR [--update]` compares a small figure per
+ * backend with tests/unit/baselines/frame3d_BACKEND.png (test
+ * unit.frame3d_baselines). `test_frame3d bench [n [backend]]` times n (10^6) particles a frame per
  * backend
  * (docs/performance.md "3D frames"). */
 #include <math.h>
@@ -28,6 +30,7 @@
 #include <time.h>
 
 #include "check.h"
+#include "diff.h"
 #include "frame3d.h"
 #include "mpm3.h"
 #include "render.h"
@@ -568,8 +571,52 @@ static int bench(size_t n, const char *only)
     return 0;
 }
 
+/* `test_frame3d baselines DIR [--update]`: the demo figure, small, per
+ * backend here against DIR/frame3d_BACKEND.png (lamina diff's default
+ * tolerance); --update rewrites them. */
+static int baselines(const char *dir, int update)
+{
+    for (int b = 0; b < LR_BACKEND_COUNT; b++) {
+        if (!backend_ok((lr_backend)b)) {
+            printf("%s: not here, skipped\n", lr_backend_name((lr_backend)b));
+            continue;
+        }
+        demo d;
+        demo_build(&d, (lr_backend)b);
+        d.fig.width = 480;
+        d.fig.height = 250;
+        char base[512], got[128], diffp[128], err[512] = "";
+        snprintf(base, sizeof base, "%s/frame3d_%s.png", dir, lr_backend_name((lr_backend)b));
+        mkdir("out", 0777);
+        snprintf(got, sizeof got, "out/frame3d_small_%s.png", lr_backend_name((lr_backend)b));
+        snprintf(diffp, sizeof diffp, "out/frame3d_small_%s_diff.png",
+                 lr_backend_name((lr_backend)b));
+        int rc = lr_figure3d_write(&d.fig, update ? base : got, err, sizeof err);
+        if (rc != 0)
+            fprintf(stderr, "%s\n", err);
+        CHECK(rc == 0);
+        if (!update && rc == 0) {
+            lr_diff_opts o;
+            lr_diff_result r;
+            lr_diff_defaults(&o);
+            rc = lr_diff_files(base, got, &o, diffp, &r, err, sizeof err);
+            if (rc != 0)
+                fprintf(stderr, "%s\n", err);
+            printf("%s: against %s: %s, %ld differing pixels, largest channel difference %d\n",
+                   lr_backend_name((lr_backend)b), base, r.exact ? "identical" : r.same ?
+                   "same within the tolerance" : "DIFFERENT", r.differing, r.max_channel);
+            CHECK(rc == 0 && r.same);
+        }
+        demo_free(&d);
+    }
+    lr_shutdown();
+    return CHECK_DONE();
+}
+
 int main(int argc, char **argv)
 {
+    if (argc > 2 && strcmp(argv[1], "baselines") == 0)
+        return baselines(argv[2], argc > 3 && strcmp(argv[3], "--update") == 0);
     if (argc > 1 && strcmp(argv[1], "bench") == 0)
         return bench(argc > 2 ? (size_t)atof(argv[2]) : 1000000, argc > 3 ? argv[3] : NULL);
     test_iso();
