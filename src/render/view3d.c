@@ -317,92 +317,12 @@ static void draw_text(lr_canvas *c, const lr_view *v, const s3_item *it)
                    it->text);
 }
 
-typedef struct tri_key {
-    double depth;
-    size_t k;
-} tri_key;
-
-static int by_depth(const void *a, const void *b)
-{
-    const tri_key *x = a, *y = b;
-    if (x->depth != y->depth)
-        return x->depth < y->depth ? -1 : 1;
-    return x->k < y->k ? -1 : x->k > y->k;
-}
-
-/* cairo: an item's triangles, far ones first, each filled with its
- * vertices' mean colour, shaded by their mean normal when lit. */
-static int tris_painter(lr_canvas *c, const lr_view *v, const lr_scene3d *s,
-                        const s3_item *it)
-{
-    size_t n = it->count / 3;
-    tri_key *key = malloc((n ? n : 1) * sizeof *key);
-    if (!key)
-        return -1;
-    for (size_t k = 0; k < n; k++) {
-        const float *f = s->tri + S3_TRI_FLOATS * (it->first + 3 * k);
-        double d = 0;
-        for (int j = 0; j < 3; j++)
-            for (int a = 0; a < 3; a++)
-                d += (f[S3_TRI_FLOATS * j + a] - v->c[a]) * v->toward[a];
-        key[k].depth = d;
-        key[k].k = k;
-    }
-    qsort(key, n, sizeof *key, by_depth);
-    for (size_t m = 0; m < n; m++) {
-        const float *f = s->tri + S3_TRI_FLOATS * (it->first + 3 * key[m].k);
-        double xy[6], nrm[3] = {0, 0, 0};
-        float base[4] = {0, 0, 0, 0};
-        for (int j = 0; j < 3; j++) {
-            const float *q = f + S3_TRI_FLOATS * j;
-            const double w[3] = {q[0], q[1], q[2]};
-            lr_view_map(v, w, &xy[2 * j], &xy[2 * j + 1]);
-            for (int a = 0; a < 3; a++)
-                nrm[a] += q[3 + a];
-            for (int a = 0; a < 4; a++)
-                base[a] += q[6 + a] / 3.0f;
-        }
-        lr_rgba k = {base[0], base[1], base[2], base[3]};
-        double l = sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
-        if (it->lit && l > 0) {
-            double nv[3] = {0, 0, 0};
-            for (int a = 0; a < 3; a++) {
-                nv[0] += nrm[a] / l * v->right[a];
-                nv[1] += nrm[a] / l * v->up[a];
-                nv[2] += nrm[a] / l * v->toward[a];
-            }
-            if (nv[2] < 0)      /* either side faces the light */
-                for (int a = 0; a < 3; a++)
-                    nv[a] = -nv[a];
-            float out[3];
-            s3_shade(base, nv, out);
-            k.r = out[0];
-            k.g = out[1];
-            k.b = out[2];
-        }
-        if (k.a >= 1) {
-            /* opaque: grown by a pixel about the centre, so that
-             * neighbours' antialiased edges do not let the ground show
-             * through their seams (a slice's cells) */
-            double cx = (xy[0] + xy[2] + xy[4]) / 3, cy = (xy[1] + xy[3] + xy[5]) / 3;
-            for (int j = 0; j < 3; j++) {
-                double dx = xy[2 * j] - cx, dy = xy[2 * j + 1] - cy, r = hypot(dx, dy);
-                if (r > 0) {
-                    xy[2 * j] += dx / r;
-                    xy[2 * j + 1] += dy / r;
-                }
-            }
-        }
-        size_t three = 3;
-        lr_canvas_fill(c, 1, &three, xy, k);
-    }
-    free(key);
-    return 0;
-}
-
-/* cairo: the layers, item by item, in order. */
+/* cairo: the layers, item by item, in order; every cloud and triangle of
+ * the scene together, sorted far to near, where the first of them is
+ * (view3d_sort.c). */
 static int painter(lr_canvas *c, const lr_view *v, const lr_scene3d *s)
 {
+    int sorted = 0;
     for (size_t i = 0; i < s->n; i++) {
         const s3_item *it = &s->items[i];
         const double *const pa[3] = {&it->a[0], &it->a[1], &it->a[2]};
@@ -445,12 +365,10 @@ static int painter(lr_canvas *c, const lr_view *v, const lr_scene3d *s)
             draw_text(c, v, it);
             break;
         case S3_CLOUD:
-            if (s3_cloud_painter(c, v, s, it) != 0)
-                return -1;
-            break;
         case S3_TRIS:
-            if (tris_painter(c, v, s, it) != 0)
+            if (!sorted && s3_sorted_painter(c, v, s) != 0)
                 return -1;
+            sorted = 1;
             break;
         }
     }

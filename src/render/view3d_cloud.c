@@ -1,6 +1,6 @@
 /* view3d_cloud.c - many points as shaded spheres (view3d.h,
- * lr_scene3d_cloud): splatted on the CPU for the OpenGL path, discs in
- * painter's order for cairo.
+ * lr_scene3d_cloud): splatted on the CPU for the OpenGL path (cairo's
+ * discs, far ones first, are view3d_sort.c's).
  *
  * Why the CPU: llvmpipe spends about a quarter of a microsecond on every
  * primitive whatever its size (canvas_gl_dense.c measured it), so 10^6
@@ -131,63 +131,5 @@ int s3_cloud_raster(const lr_view *v, const lr_scene3d *s, double x0, double y0,
                   0.5 * ndc + 0.5, W, H, rgba, depth);
         }
     }
-    return 0;
-}
-
-typedef struct far_key {
-    double depth;
-    size_t m;
-} far_key;
-
-static int far_first(const void *a, const void *b)
-{
-    const far_key *x = a, *y = b;
-    if (x->depth != y->depth)
-        return x->depth < y->depth ? -1 : 1;
-    return x->m < y->m ? -1 : x->m > y->m;
-}
-
-int s3_cloud_painter(lr_canvas *c, const lr_view *v, const lr_scene3d *s, const s3_item *it)
-{
-    size_t n = it->count;
-    far_key *key = malloc(n * sizeof *key);
-    double *px = malloc(2 * n * sizeof *px);
-    lr_rgba *col = malloc(n * sizeof *col);
-    if (!key || !px || !col) {
-        free(key);
-        free(px);
-        free(col);
-        return -1;
-    }
-    for (size_t m = 0; m < n; m++) {
-        const float *f = s->cloud + 3 * (it->first + m);
-        key[m].depth = (f[0] - v->c[0]) * v->toward[0] + (f[1] - v->c[1]) * v->toward[1] +
-                       (f[2] - v->c[2]) * v->toward[2];
-        key[m].m = m;
-    }
-    qsort(key, n, sizeof *key, far_first);
-    int clip = v->clip[2] > v->clip[0];
-    size_t k = 0;
-    double *py = px + n;
-    for (size_t j = 0; j < n; j++) {
-        size_t m = it->first + key[j].m;
-        const float *f = s->cloud + 3 * m;
-        const double q[3] = {f[0], f[1], f[2]};
-        double x, y;
-        lr_view_map(v, q, &x, &y);
-        if (clip && (x + it->size < v->clip[0] || x - it->size > v->clip[2] ||
-                     y + it->size < v->clip[1] || y - it->size > v->clip[3]))
-            continue;
-        uint32_t u = s->cloud_rgba[m];
-        px[k] = x;
-        py[k] = y;
-        col[k] = (lr_rgba){(u & 255) / 255.0, ((u >> 8) & 255) / 255.0,
-                           ((u >> 16) & 255) / 255.0, (u >> 24) / 255.0};
-        k++;
-    }
-    lr_canvas_discs(c, k, px, py, it->size, col);
-    free(key);
-    free(px);
-    free(col);
     return 0;
 }

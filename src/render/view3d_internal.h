@@ -89,8 +89,9 @@ int s3_cloud_raster(const lr_view *v, const lr_scene3d *s, double x0, double y0,
                     float *depth);
 /* The samples the clouds cover at S samples a pixel (for choosing S). */
 double s3_cloud_samples(const lr_scene3d *s, double S);
-/* cairo: the cloud item it, far points first (painter's sort). */
-int s3_cloud_painter(lr_canvas *c, const lr_view *v, const lr_scene3d *s, const s3_item *it);
+/* view3d_sort.c, cairo: every cloud point and triangle of s, far ones
+ * first (painter's sort). 0, or -1 when memory runs out. */
+int s3_sorted_painter(lr_canvas *c, const lr_view *v, const lr_scene3d *s);
 
 #define S3_HEAD_ANGLE 0.4363323129985824   /* 25 degrees, as layer_glyphs.c */
 
