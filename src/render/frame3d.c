@@ -258,7 +258,7 @@ static int add_membrane(lr_scene3d *s, const lr_view *v, const lr_membrane3d *m,
     size_t every = 1;
     if (sp > 0) {
         double k = ceil(gap / (sp * v->s));
-        every = k > 1 ? (size_t)fmin(k, 1e9) : 1;
+        every = k > 1 ? (size_t)fmin(k, 65536) : 1;     /* squared below */
     }
     double length = sp > 0 ? every * sp : gap / v->s;
     /* in 3D the points are not in a line: every k-th of them in order
