@@ -261,8 +261,9 @@ static void range_key(lua_State *L, const ctx3 *c, const char *where, int idx, i
 
 /* slice = {axis = "x" | "y" | "z", at = w, field = "pressure", range,
  * colourmap, alpha, colourbar} */
-static void slice_key(lua_State *L, ctx3 *c, const char *where, int idx, lr_slice3d *s)
+static void slice_key(lua_State *L, ctx3 *c, const char *where, int idx, void *out)
 {
+    lr_slice3d *s = out;
     static const char *const keys[] = {"axis", "at", "field", "range", "colourmap",
                                        "alpha", "colourbar", NULL};
     la_check_keys(L, idx, where, keys);
@@ -295,8 +296,9 @@ static void slice_key(lua_State *L, ctx3 *c, const char *where, int idx, lr_slic
 }
 
 /* isosurface = {field = "mass", level = x, colour = {r, g, b, a}} */
-static void iso_key(lua_State *L, ctx3 *c, const char *where, int idx, lr_iso3d *s)
+static void iso_key(lua_State *L, ctx3 *c, const char *where, int idx, void *out)
 {
+    lr_iso3d *s = out;
     static const char *const keys[] = {"field", "level", "colour", NULL};
     la_check_keys(L, idx, where, keys);
     memset(s, 0, sizeof *s);
@@ -340,6 +342,30 @@ static int tables(lua_State *L, const char *where, const char *key, int max, int
         idx[k] = lua_gettop(L);
     }
     return n;
+}
+
+typedef void (*layer_fn)(lua_State *L, ctx3 *c, const char *where, int idx, void *out);
+
+/* The panel's `key` (a table or a list of them) read by fn into an array
+ * of `size`-byte layers in scratch memory; NULL and 0 when absent. */
+static void *layers(lua_State *L, ctx3 *c, int pidx, const char *where, const char *key,
+                    size_t size, layer_fn fn, size_t *count)
+{
+    int top = lua_gettop(L), idx[MAX_SLICES];
+    char *out = NULL;
+    *count = 0;
+    if (get(L, c, pidx, key) != LUA_TNIL) {
+        int n = tables(L, where, key, MAX_SLICES, idx);
+        out = scratch(L, c, (size_t)n * size);
+        for (int k = 0; k < n; k++) {
+            char w[96];
+            snprintf(w, sizeof w, "%s: %s[%d]", where, key, k + 1);
+            fn(L, c, w, idx[k], out + (size_t)k * size);
+        }
+        *count = (size_t)n;
+    }
+    lua_settop(L, top);
+    return out;
 }
 
 static void panel(lua_State *L, ctx3 *c, int pidx, const char *where, lr_panel3d *p)
@@ -418,33 +444,10 @@ static void panel(lua_State *L, ctx3 *c, int pidx, const char *where, lr_panel3d
     }
 
     /* slices and isosurfaces */
-    int top = lua_gettop(L), idx[MAX_SLICES];
-    if (get(L, c, pidx, "slice") != LUA_TNIL) {
-        int n = tables(L, where, "slice", MAX_SLICES, idx);
-        lr_slice3d *sl = scratch(L, c, (size_t)n * sizeof *sl);
-        for (int k = 0; k < n; k++) {
-            char w[96];
-            snprintf(w, sizeof w, "%s: slice[%d]", where, k + 1);
-            slice_key(L, c, w, idx[k], &sl[k]);
-        }
-        p->slices = sl;
-        p->nslices = (size_t)n;
-        c->slices += (size_t)n;
-    }
-    lua_settop(L, top);
-    if (get(L, c, pidx, "isosurface") != LUA_TNIL) {
-        int n = tables(L, where, "isosurface", MAX_SLICES, idx);
-        lr_iso3d *is = scratch(L, c, (size_t)n * sizeof *is);
-        for (int k = 0; k < n; k++) {
-            char w[96];
-            snprintf(w, sizeof w, "%s: isosurface[%d]", where, k + 1);
-            iso_key(L, c, w, idx[k], &is[k]);
-        }
-        p->isos = is;
-        p->nisos = (size_t)n;
-        c->isos += (size_t)n;
-    }
-    lua_settop(L, top);
+    p->slices = layers(L, c, pidx, where, "slice", sizeof *p->slices, slice_key, &p->nslices);
+    c->slices += p->nslices;
+    p->isos = layers(L, c, pidx, where, "isosurface", sizeof *p->isos, iso_key, &p->nisos);
+    c->isos += p->nisos;
 }
 
 /* backend = "cairo" | "osmesa" | "egl" | "gl"; else `lamina run --backend`;

@@ -518,6 +518,11 @@ int lr_figure3d_draw(const lr_figure3d *f, lr_canvas *c, char *err, size_t errle
     return 0;
 }
 
+static int draw_figure3d(const void *f, lr_canvas *c, char *err, size_t errlen)
+{
+    return lr_figure3d_draw(f, c, err, errlen);
+}
+
 unsigned char *lr_figure3d_render(const lr_figure3d *f, char *err, size_t errlen)
 {
     const char *problem = f ? figure_problem(f) : "no figure";
@@ -525,20 +530,7 @@ unsigned char *lr_figure3d_render(const lr_figure3d *f, char *err, size_t errlen
         lu_err(err, errlen, "3D frame: %s", problem);
         return NULL;
     }
-    char why[256] = "";
-    lr_canvas *c = lr_canvas_new(f->backend, f->width, f->height, why, sizeof why);
-    if (!c) {
-        lu_err(err, errlen, "%s", why);
-        return NULL;
-    }
-    unsigned char *rgba = NULL;
-    if (lr_figure3d_draw(f, c, err, errlen) == 0) {
-        rgba = lr_canvas_read_rgba(c);
-        if (!rgba)
-            lu_err(err, errlen, "3D frame: out of memory");
-    }
-    lr_canvas_free(c);
-    return rgba;
+    return fig_render(f->backend, f->width, f->height, draw_figure3d, f, err, errlen);
 }
 
 int lr_figure3d_write(const lr_figure3d *f, const char *path, char *err, size_t errlen)
