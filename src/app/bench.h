@@ -25,6 +25,8 @@ lm_sim *bench_gas_membrane(double particles);
  * the process's CPU time into *cpu_rate), the particles in *np; -1 out of
  * memory. */
 double bench_plain_rate(double particles, double work, size_t *np, double *cpu_rate);
+/* `lamina bench render3d` (bench_render3d.c): 3D frames, issue 34 */
+int bench_render3d(int argc, char **argv);
 /* `lamina bench roofline` (bench_roofline.c) */
 int bench_roofline(int argc, char **argv);
 /* One-core triad a[i] = b[i] + s c[i] over n doubles an array, best of

@@ -314,6 +314,8 @@ int cmd_bench(int argc, char **argv)
     }
     if (argc >= 1 && strcmp(argv[0], "--dim") == 0)   /* lamina bench --dim 3 */
         return bench_engine3(argc, argv);
+    if (argc >= 1 && strcmp(argv[0], "render3d") == 0)
+        return bench_render3d(argc - 1, argv + 1);
     if (argc >= 1 && strcmp(argv[0], "threads") == 0)
         return bench_threads(argc - 1, argv + 1);
     if (argc >= 1 && strcmp(argv[0], "roofline") == 0)
@@ -322,6 +324,6 @@ int cmd_bench(int argc, char **argv)
             "[--height H] [--runs N] [--counts N,N,...] [--backend cairo|osmesa|egl|gl|all])\n",
             argc >= 1 ? "unknown benchmark" : "which benchmark?");
     if (argc >= 1)
-        fprintf(stderr, "lamina bench: '%s' is not a benchmark; known: render, engine, threads, roofline\n", argv[0]);
+        fprintf(stderr, "lamina bench: '%s' is not a benchmark; known: render, engine, threads, roofline, render3d\n", argv[0]);
     return 2;
 }

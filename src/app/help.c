@@ -68,6 +68,10 @@ static const command_help commands[] = {
      "lamina bench render [--width W] [--height H] [--runs N] [--counts N,...]\n"
      "                    [--backend cairo|osmesa|egl|gl|all]",
      "milliseconds per frame for each renderer (README, \"Rendering and benchmarks\")"},
+    {"bench render3d",
+     "lamina bench render3d [--runs N] [--counts N,...] [--backend cairo|osmesa|egl|all]",
+     "milliseconds per 3D frame, wall and CPU, for OSMesa and EGL (docs/performance.md,\n"
+     "\"3D frames\")"},
     {"bench engine",
      "lamina bench engine [--dim 2|3] [--sizes N,...] [--work PARTICLE_STEPS]\n"
      "                    [--threads N] [--basis linear|gimp|bspline2]",

@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "l_frame3d.h"
 #include "l_sim3.h"
 #include "util.h"
 
@@ -319,11 +320,12 @@ static int sim3_courant(lua_State *L)
     return 2;
 }
 
+/* a 3D frame: the camera's view of the box (l_frame3d.c, docs/api.md
+ * "3D frames") */
 static int sim3_frame(lua_State *L)
 {
-    la_check_sim3(L, 1, "sim:frame");
-    return luaL_error(L, "sim:frame: 3D frames: not yet in this build (issue 34 item 4; "
-                      "sim:vtk writes the particles for ParaView)");
+    la_sim3 *s3 = la_check_sim3(L, 1, "sim:frame");
+    return l_frame3d(L, s3->sim, 2);
 }
 
 void la_sim3_methods(lua_State *L)

@@ -40,8 +40,17 @@
 #define CONE_SEGMENTS 24
 #define HEAD_SCALE 1.5              /* cone length / the layers' head length */
 #define TWO_PI 6.283185307179586476925286766559
+/* Supersampling drops (4 x 4, 3 x 3 ...) until the clouds' splats cover
+ * at most this many samples: 10^6 points of a pixel's radius at 2 x 2
+ * (measured: docs/performance.md "3D frames") */
+#define CLOUD_SAMPLES 1.6e7
+/* ... and until the splat buffers (cleared, filled, handed to OpenGL:
+ * 8 bytes a sample more than other scenes move) are at most this many
+ * samples - 2 x 2 for an 800 x 800 panel: at 4 x 4 the buffers alone
+ * cost some 200 ms (measured, docs/performance.md "3D frames") */
+#define CLOUD_BUFFER 4.2e6
 
-enum { K_LINE = 0, K_SPHERE = 1, K_LIT = 2 };
+enum { K_LINE = 0, K_SPHERE = 1, K_LIT = 2, K_FLAT = 3, K_LIT2 = 4 };
 enum { A_POS = 0, A_P = 1, A_KIND = 2, A_COL = 3 };
 
 /* Vertices in supersampled pixels of the region (origin top-left, y
@@ -66,7 +75,9 @@ static const char *const view3d_vs =
  * pixels. kind 1, a sphere: p.xy the position in its disc (unit radius, y
  * up), p.z its radius in window depth, p.w where the ring starts (> 1:
  * none, the body in the colour). kind 2, a shaded surface: p.xyz its
- * normal in view space (x right, y up, z towards the viewer). */
+ * normal in view space (x right, y up, z towards the viewer). kind 3, a
+ * flat colour (slices). kind 4, kind 2 lit from either side (surfaces
+ * seen from both, the isosurfaces). */
 static const char *const view3d_fs =
     "#version 120\n"
     "varying vec4 v_p;\n"
@@ -92,8 +103,11 @@ static const char *const view3d_fs =
     "    if (v_p.w > 1.0) rgb = lit(v_col.rgb, vec3(v_p.xy, nz));\n"
     "    else if (r2 > v_p.w * v_p.w) rgb = v_col.rgb;\n"
     "    else rgb = lit(vec3(0.94), vec3(v_p.xy, nz));\n"
-    "  } else {\n"
+    "  } else if (v_kind < 2.5) {\n"
     "    rgb = lit(v_col.rgb, normalize(v_p.xyz));\n"
+    "  } else if (v_kind > 3.5) {\n"
+    "    vec3 n = normalize(v_p.xyz);\n"
+    "    rgb = lit(v_col.rgb, n.z < 0.0 ? -n : n);\n"
     "  }\n"
     "  gl_FragDepth = depth;\n"
     "  gl_FragColor = vec4(rgb * v_col.a, v_col.a);\n"
@@ -388,6 +402,20 @@ static double depth_extent(const lr_view *v, const lr_scene3d *s)
         case S3_DOT:
             r = it->size / v->s;
             break;
+        case S3_CLOUD:
+            for (size_t j = it->first; j < it->first + it->count; j++) {
+                const float *f = s->cloud + 3 * j;
+                const double w[3] = {f[0], f[1], f[2]};
+                m = fmax(m, fabs(depth_of(v, w)) + it->size / v->s);
+            }
+            continue;
+        case S3_TRIS:
+            for (size_t j = it->first; j < it->first + it->count; j++) {
+                const float *f = s->tri + S3_TRI_FLOATS * j;
+                const double w[3] = {f[0], f[1], f[2]};
+                m = fmax(m, fabs(depth_of(v, w)));
+            }
+            continue;
         default:
             break;
         }
@@ -396,7 +424,73 @@ static double depth_extent(const lr_view *v, const lr_scene3d *s)
     return m;
 }
 
-static int build(geo *g, const cam *k, const lr_scene3d *s)
+/* Triangles of item it: the opaque ones into g, the see-through ones
+ * into t (sorted later, far first). */
+static void tris(geo *g, geo *t, const cam *k, const lr_scene3d *s, const s3_item *it)
+{
+    for (size_t m = 0; m + 2 < it->count; m += 3) {
+        const float *f = s->tri + S3_TRI_FLOATS * (it->first + m);
+        int clear = f[9] < 1 || f[S3_TRI_FLOATS + 9] < 1 || f[2 * S3_TRI_FLOATS + 9] < 1;
+        float *o = more(clear ? t : g, 3);
+        if (!o)
+            return;
+        for (int j = 0; j < 3; j++) {
+            const float *q = f + S3_TRI_FLOATS * j;
+            const double w[3] = {q[0], q[1], q[2]}, n[3] = {q[3], q[4], q[5]};
+            double P[3], N[3] = {0, 0, 1};
+            proj(k, w, it->layer, P);
+            if (it->lit)
+                to_view(k->v, n, N);
+            lr_rgba c = {q[6], q[7], q[8], q[9]};
+            put(o + j * V3_FLOATS, P, N[0], N[1], N[2], 0, it->lit ? K_LIT2 : K_FLAT, c);
+        }
+    }
+}
+
+typedef struct far_key {
+    float z;
+    size_t k;
+} far_key;
+
+static int far_first(const void *a, const void *b)
+{
+    const far_key *x = a, *y = b;
+    if (x->z != y->z)
+        return x->z > y->z ? -1 : 1;
+    return x->k < y->k ? -1 : x->k > y->k;
+}
+
+/* The see-through triangles far first (larger NDC depth first), so that
+ * OVER composes them in order. */
+static int sort_far_first(geo *t)
+{
+    size_t n = t->n / 3;
+    if (n < 2)
+        return 0;
+    far_key *key = malloc(n * sizeof *key);
+    float *v = malloc(t->n * V3_FLOATS * sizeof *v);
+    if (!key || !v) {
+        free(key);
+        free(v);
+        return -1;
+    }
+    for (size_t k = 0; k < n; k++) {
+        const float *f = t->v + 3 * k * V3_FLOATS;
+        key[k].z = f[2] + f[V3_FLOATS + 2] + f[2 * V3_FLOATS + 2];
+        key[k].k = k;
+    }
+    qsort(key, n, sizeof *key, far_first);
+    for (size_t k = 0; k < n; k++)
+        memcpy(v + 3 * k * V3_FLOATS, t->v + 3 * key[k].k * V3_FLOATS,
+               3 * V3_FLOATS * sizeof *v);
+    free(t->v);
+    t->v = v;
+    t->cap = t->n;
+    free(key);
+    return 0;
+}
+
+static int build(geo *g, geo *t, const cam *k, const lr_scene3d *s)
 {
     for (size_t i = 0; i < s->n; i++) {
         const s3_item *it = &s->items[i];
@@ -424,11 +518,17 @@ static int build(geo *g, const cam *k, const lr_scene3d *s)
         case S3_BOX:
             box(g, k, it);
             break;
+        case S3_TRIS:
+            tris(g, t, k, s, it);
+            break;
         case S3_TEXT:
+        case S3_CLOUD:      /* splatted on the CPU (view3d_cloud.c) */
             break;
         }
     }
-    return g->failed ? -1 : 0;
+    if (g->failed || t->failed || sort_far_first(t) != 0)
+        return -1;
+    return 0;
 }
 
 /* ---- OpenGL ---------------------------------------------------------------- */
@@ -448,8 +548,36 @@ static int program(gl_canvas *c, char *err, size_t errlen)
 
 /* Draws g into a new W x H framebuffer with depth, reads it back (rows
  * bottom-up, premultiplied); NULL with a message on failure. */
-static unsigned char *render(gl_canvas *c, const geo *g, int W, int H, char *err,
-                             size_t errlen)
+static void draw_geo(const geo *g)
+{
+    const GLsizei stride = V3_FLOATS * sizeof(float);
+    glVertexAttribPointer(A_POS, 3, GL_FLOAT, GL_FALSE, stride, g->v);
+    glVertexAttribPointer(A_P, 4, GL_FLOAT, GL_FALSE, stride, g->v + 3);
+    glVertexAttribPointer(A_KIND, 1, GL_FLOAT, GL_FALSE, stride, g->v + 7);
+    glVertexAttribPointer(A_COL, 4, GL_FLOAT, GL_FALSE, stride, g->v + 8);
+    if (g->n)
+        glDrawArrays(GL_TRIANGLES, 0, (GLsizei)g->n);
+}
+
+/* The clouds' splats (view3d_cloud.c) as the framebuffer's first
+ * content: their depth, then their colour. */
+static void draw_splats(const unsigned char *rgba, const float *depth, int W, int H)
+{
+    glUseProgram(0);        /* pixels as they are, not through a canvas shader */
+    glWindowPos2i(0, 0);
+    glDepthFunc(GL_ALWAYS);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glDrawPixels(W, H, GL_DEPTH_COMPONENT, GL_FLOAT, depth);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDisable(GL_DEPTH_TEST);
+    glDrawPixels(W, H, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+}
+
+static unsigned char *render(gl_canvas *c, const geo *g, const geo *t,
+                             const unsigned char *splat_rgba, const float *splat_depth,
+                             int W, int H, char *err, size_t errlen)
 {
     GLuint fbo = 0, rb[2] = {0, 0};
     glGenFramebuffers(1, &fbo);
@@ -477,19 +605,20 @@ static unsigned char *render(gl_canvas *c, const geo *g, int W, int H, char *err
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LEQUAL);
         glDepthMask(GL_TRUE);
+        if (splat_rgba)
+            draw_splats(splat_rgba, splat_depth, W, H);
         glUseProgram(c->gl.view3d_prog);
         glUniform2f(c->gl.view3d_size, (float)W, (float)H);
-        const GLsizei stride = V3_FLOATS * sizeof(float);
         glEnableVertexAttribArray(A_POS);
         glEnableVertexAttribArray(A_P);
         glEnableVertexAttribArray(A_KIND);
         glEnableVertexAttribArray(A_COL);
-        glVertexAttribPointer(A_POS, 3, GL_FLOAT, GL_FALSE, stride, g->v);
-        glVertexAttribPointer(A_P, 4, GL_FLOAT, GL_FALSE, stride, g->v + 3);
-        glVertexAttribPointer(A_KIND, 1, GL_FLOAT, GL_FALSE, stride, g->v + 7);
-        glVertexAttribPointer(A_COL, 4, GL_FLOAT, GL_FALSE, stride, g->v + 8);
-        if (g->n)
-            glDrawArrays(GL_TRIANGLES, 0, (GLsizei)g->n);
+        draw_geo(g);
+        if (t->n) {     /* see-through, far first, hiding nothing */
+            glDepthMask(GL_FALSE);
+            draw_geo(t);
+            glDepthMask(GL_TRUE);
+        }
         glDisableVertexAttribArray(A_POS);
         glDisableVertexAttribArray(A_P);
         glDisableVertexAttribArray(A_KIND);
@@ -559,8 +688,14 @@ int gl_view3d(lr_canvas *base, const lr_view *v, const lr_scene3d *s, char *err,
     int lim = maxrb < vp[0] ? maxrb : vp[0];
     lim = lim < vp[1] ? lim : vp[1];
     int S = SUPERSAMPLE;
+    /* clouds: their buffers (8 bytes a sample more), and few enough
+     * samples to splat in time (CLOUD_SAMPLES) */
+    int clouds = s->ncloud > 0;
+    double bytes = clouds ? 20.0 : 12.0;
     while (S > 1 && ((double)S * w > lim || (double)S * h > lim ||
-                     12.0 * S * S * (double)w * h > SS_MAX_BYTES))
+                     bytes * S * S * (double)w * h > SS_MAX_BYTES ||
+                     (clouds && (s3_cloud_samples(s, S) > CLOUD_SAMPLES ||
+                                 (double)S * S * w * h > CLOUD_BUFFER))))
         S--;
     if (w > lim || h > lim) {
         snprintf(err, errlen, "3D view: %dx%d pixels is more than OpenGL draws (%d)", w,
@@ -571,19 +706,40 @@ int gl_view3d(lr_canvas *base, const lr_view *v, const lr_scene3d *s, char *err,
     if (!(dmax > 0) || !isfinite(dmax))
         dmax = 1.0;
     cam k = {v, x0, y0, S, 0.9 / dmax, fmin(1e-4, 0.05 / (s->layers + 1))};
-    geo g = {NULL, 0, 0, 0};
-    if (build(&g, &k, s) != 0) {
+    geo g = {NULL, 0, 0, 0}, t = {NULL, 0, 0, 0};
+    if (build(&g, &t, &k, s) != 0) {
         free(g.v);
+        free(t.v);
         snprintf(err, errlen, "3D view: out of memory");
         return -1;
     }
     if (program(c, err, errlen) != 0) {
         free(g.v);
+        free(t.v);
         c->failed = 1;
         return -1;
     }
-    unsigned char *ss = render(c, &g, S * w, S * h, err, errlen);
+    unsigned char *srgba = NULL;
+    float *sdepth = NULL;
+    if (clouds) {
+        size_t N = (size_t)S * w * (size_t)S * h;
+        srgba = malloc(4 * N);
+        sdepth = malloc(N * sizeof *sdepth);
+        if (!srgba || !sdepth) {
+            free(g.v);
+            free(t.v);
+            free(srgba);
+            free(sdepth);
+            snprintf(err, errlen, "3D view: out of memory");
+            return -1;
+        }
+        s3_cloud_raster(v, s, x0, y0, S, k.zscale, k.eps, S * w, S * h, srgba, sdepth);
+    }
+    unsigned char *ss = render(c, &g, &t, srgba, sdepth, S * w, S * h, err, errlen);
     free(g.v);
+    free(t.v);
+    free(srgba);
+    free(sdepth);
     unsigned char *img = ss ? malloc(4 * (size_t)w * (size_t)h) : NULL;
     if (!img) {
         if (ss)

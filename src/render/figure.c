@@ -474,6 +474,30 @@ int lr_figure_draw(const lr_figure *f, lr_canvas *c, char *err, size_t errlen)
 
 /* ---- output ------------------------------------------------------------- */
 
+unsigned char *fig_render(lr_backend b, int w, int h, fig_draw_fn draw, const void *ctx,
+                          char *err, size_t errlen)
+{
+    char why[256] = "";
+    lr_canvas *c = lr_canvas_new(b, w, h, why, sizeof why);
+    if (!c) {
+        lu_err(err, errlen, "%s", why);
+        return NULL;
+    }
+    unsigned char *rgba = NULL;
+    if (draw(ctx, c, err, errlen) == 0) {
+        rgba = lr_canvas_read_rgba(c);
+        if (!rgba)
+            lu_err(err, errlen, "drawing failed (out of memory)");
+    }
+    lr_canvas_free(c);
+    return rgba;
+}
+
+static int draw_figure(const void *f, lr_canvas *c, char *err, size_t errlen)
+{
+    return lr_figure_draw(f, c, err, errlen);
+}
+
 unsigned char *lr_figure_render(const lr_figure *f, char *err, size_t errlen)
 {
     const char *problem = f ? figure_problem(f) : "no figure";
@@ -481,20 +505,7 @@ unsigned char *lr_figure_render(const lr_figure *f, char *err, size_t errlen)
         lu_err(err, errlen, "%s", problem);
         return NULL;
     }
-    char why[256] = "";
-    lr_canvas *c = lr_canvas_new(f->backend, f->width, f->height, why, sizeof why);
-    if (!c) {
-        lu_err(err, errlen, "%s", why);
-        return NULL;
-    }
-    unsigned char *rgba = NULL;
-    if (lr_figure_draw(f, c, err, errlen) == 0) {
-        rgba = lr_canvas_read_rgba(c);
-        if (!rgba)
-            lu_err(err, errlen, "drawing failed (out of memory)");
-    }
-    lr_canvas_free(c);
-    return rgba;
+    return fig_render(f->backend, f->width, f->height, draw_figure, f, err, errlen);
 }
 
 static int write_vector(const lr_figure *f, const char *path, lr_format fmt,

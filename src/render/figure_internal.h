@@ -40,6 +40,13 @@ static inline double fig_my(const fig_mirror *m, double y)
 /* Outline sides a grid copy leaves out (they lie on a mirror axis). */
 enum { FIG_SKIP_LEFT = 1, FIG_SKIP_RIGHT = 2, FIG_SKIP_BOTTOM = 4, FIG_SKIP_TOP = 8 };
 
+/* figure.c: a drawing's pixels through backend b - a w x h canvas,
+ * draw(ctx, canvas, ...), the pixels read back (lr_figure_render's and
+ * lr_figure3d_render's one path); malloc'd straight RGBA8, or NULL with
+ * err set. */
+typedef int (*fig_draw_fn)(const void *ctx, lr_canvas *c, char *err, size_t errlen);
+unsigned char *fig_render(lr_backend b, int w, int h, fig_draw_fn draw, const void *ctx,
+                          char *err, size_t errlen);
 /* figure_layers.c */
 void fig_draw_grid(lr_canvas *c, const fig_view *v, const lr_grid *g, int skip);
 /* The value range of the panel's value-coloured points, for auto ranges;

@@ -11,6 +11,7 @@ void lr_view_2d(lr_view *v, double px, double py, double pw, double ph,
 {
     double ww = wx1 - wx0, wh = wy1 - wy0;
     v->is3d = 0;
+    v->persp = 0.0;
     v->clip[0] = v->clip[1] = v->clip[2] = v->clip[3] = 0.0;
     v->s = fmin(pw / ww, ph / wh);
     if (!(v->s > 0) || !isfinite(v->s))
@@ -30,6 +31,7 @@ void lr_view_3d(lr_view *v, double px, double py, double pw, double ph,
 {
     double a = azimuth * DEG, e = elevation * DEG;
     v->is3d = 1;
+    v->persp = 0.0;
     v->clip[0] = v->clip[1] = v->clip[2] = v->clip[3] = 0.0;
     v->toward[0] = cos(e) * cos(a);
     v->toward[1] = cos(e) * sin(a);
@@ -66,8 +68,15 @@ void lr_view_map(const lr_view *v, const double p[3], double *x, double *y)
         return;
     }
     double q[3] = {p[0] - v->c[0], p[1] - v->c[1], p[2] - v->c[2]};
-    *x = v->ox + v->s * dot3(q, v->right);
-    *y = v->oy - v->s * dot3(q, v->up);
+    double k = v->s;
+    if (v->persp > 0) {
+        /* a pinhole at the eye: what is nearer is larger; points at or
+         * behind the eye are put far off the picture */
+        double d = v->persp - dot3(q, v->toward);
+        k = d > 1e-9 * v->persp ? v->s * v->persp / d : v->s * 1e9;
+    }
+    *x = v->ox + k * dot3(q, v->right);
+    *y = v->oy - k * dot3(q, v->up);
 }
 
 void lr_view_clip(lr_view *v, double x0, double y0, double x1, double y1)

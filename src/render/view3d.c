@@ -24,6 +24,9 @@ void lr_scene3d_free(lr_scene3d *s)
         free(s->items[i].text);
     free(s->items);
     free(s->pts);
+    free(s->cloud);
+    free(s->cloud_rgba);
+    free(s->tri);
     free(s);
 }
 
@@ -207,6 +210,103 @@ int lr_scene3d_text(lr_scene3d *s, const double p[3], double dx, double dy,
     return 0;
 }
 
+uint32_t lr_rgba_pack(lr_rgba k)
+{
+    const double c[4] = {k.r, k.g, k.b, k.a};
+    uint32_t u = 0;
+    for (int i = 0; i < 4; i++) {
+        double x = c[i] < 0 ? 0 : c[i] > 1 ? 1 : c[i];     /* NaN: 1 */
+        u |= (uint32_t)(255.0 * x + 0.5) << (8 * i);
+    }
+    return u;
+}
+
+static int cloud(lr_scene3d *s, size_t n, const double *const p[3], const lr_rgba *colours,
+                 lr_rgba colour, const uint32_t *rgba8, double radius_px)
+{
+    if (!s || reserve(s, 1) != 0)
+        return -1;
+    if (n > ((size_t)-1) / 32 - s->ncloud ||
+        lu_reserve(&s->cloud, &s->capcloud, s->ncloud + n, 3 * sizeof *s->cloud, 1024) != 0 ||
+        lu_reserve(&s->cloud_rgba, &s->caprgba, s->ncloud + n, sizeof *s->cloud_rgba,
+                   1024) != 0)
+        return -1;
+    size_t first = s->ncloud;
+    uint32_t one = lr_rgba_pack(colour);
+    for (size_t i = 0; i < n; i++) {
+        const double q[3] = {p[0][i], p[1][i], p[2][i]};
+        if (!finite3(q))
+            continue;
+        float *f = s->cloud + 3 * s->ncloud;
+        for (int a = 0; a < 3; a++)
+            f[a] = (float)q[a];
+        s->cloud_rgba[s->ncloud++] = rgba8 ? rgba8[i] : colours ? lr_rgba_pack(colours[i]) : one;
+    }
+    if (s->ncloud > first && radius_px > 0) {
+        s3_item *it = push(s, S3_CLOUD, NULL, NULL, 0.0, colour);
+        it->first = first;
+        it->count = s->ncloud - first;
+        it->size = radius_px;
+    }
+    s->layers++;
+    return 0;
+}
+
+int lr_scene3d_cloud(lr_scene3d *s, size_t n, const double *const p[3],
+                     const lr_rgba *colours, lr_rgba colour, double radius_px)
+{
+    return cloud(s, n, p, colours, colour, NULL, radius_px);
+}
+
+int lr_scene3d_cloud_rgba8(lr_scene3d *s, size_t n, const double *const p[3],
+                           const uint32_t *rgba8, double radius_px)
+{
+    const lr_rgba none = {0, 0, 0, 1};
+    return cloud(s, n, p, NULL, none, rgba8, radius_px);
+}
+
+int lr_scene3d_triangles(lr_scene3d *s, size_t n, const double *xyz,
+                         const double *normals, const lr_rgba *colours,
+                         lr_rgba colour)
+{
+    if (!s || reserve(s, 1) != 0)
+        return -1;
+    if (n > ((size_t)-1) / 64 / S3_TRI_FLOATS - s->ntri ||
+        lu_reserve(&s->tri, &s->captri, s->ntri + 3 * n, S3_TRI_FLOATS * sizeof *s->tri,
+                   3072) != 0)
+        return -1;
+    size_t first = s->ntri;
+    int clear = 0;
+    for (size_t k = 0; k < n; k++) {
+        const double *q = xyz + 9 * k;
+        if (!finite3(q) || !finite3(q + 3) || !finite3(q + 6))
+            continue;
+        for (int j = 0; j < 3; j++) {
+            float *f = s->tri + S3_TRI_FLOATS * s->ntri++;
+            lr_rgba k3 = colours ? colours[3 * k + (size_t)j] : colour;
+            const double *nn = normals ? normals + 9 * k + 3 * j : NULL;
+            for (int a = 0; a < 3; a++) {
+                f[a] = (float)q[3 * j + a];
+                f[3 + a] = nn && isfinite(nn[a]) ? (float)nn[a] : 0.0f;
+            }
+            f[6] = (float)k3.r;
+            f[7] = (float)k3.g;
+            f[8] = (float)k3.b;
+            f[9] = (float)k3.a;
+            clear |= k3.a < 1;
+        }
+    }
+    if (s->ntri > first) {
+        s3_item *it = push(s, S3_TRIS, NULL, NULL, 0.0, colour);
+        it->first = first;
+        it->count = s->ntri - first;
+        it->lit = normals != NULL;
+        it->see_through = clear;
+    }
+    s->layers++;
+    return 0;
+}
+
 /* ---- drawing ------------------------------------------------------------- */
 
 static void draw_text(lr_canvas *c, const lr_view *v, const s3_item *it)
@@ -217,9 +317,12 @@ static void draw_text(lr_canvas *c, const lr_view *v, const s3_item *it)
                    it->text);
 }
 
-/* cairo: the layers, item by item, in order. */
-static void painter(lr_canvas *c, const lr_view *v, const lr_scene3d *s)
+/* cairo: the layers, item by item, in order; every cloud and triangle of
+ * the scene together, sorted far to near, where the first of them is
+ * (view3d_sort.c). */
+static int painter(lr_canvas *c, const lr_view *v, const lr_scene3d *s)
 {
+    int sorted = 0;
     for (size_t i = 0; i < s->n; i++) {
         const s3_item *it = &s->items[i];
         const double *const pa[3] = {&it->a[0], &it->a[1], &it->a[2]};
@@ -261,8 +364,15 @@ static void painter(lr_canvas *c, const lr_view *v, const lr_scene3d *s)
         case S3_TEXT:
             draw_text(c, v, it);
             break;
+        case S3_CLOUD:
+        case S3_TRIS:
+            if (!sorted && s3_sorted_painter(c, v, s) != 0)
+                return -1;
+            sorted = 1;
+            break;
         }
     }
+    return 0;
 }
 
 int lr_scene3d_draw(lr_canvas *c, const lr_view *v, const lr_scene3d *s, char *err,
@@ -278,7 +388,10 @@ int lr_scene3d_draw(lr_canvas *c, const lr_view *v, const lr_scene3d *s, char *e
     }
     lr_backend b = lr_canvas_backend(c);
     if (b != LR_BACKEND_OSMESA && b != LR_BACKEND_EGL) {
-        painter(c, v, s);
+        if (painter(c, v, s) != 0) {
+            lu_err(err, errlen, "3D view: out of memory");
+            return -1;
+        }
         return 0;
     }
 #ifdef LAMINA_HAVE_GL

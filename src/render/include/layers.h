@@ -23,6 +23,10 @@ typedef struct lr_view {
     double c[3];              /* 3D: world point drawn at (ox, oy) */
     double right[3], up[3];   /* 3D: screen axes in world coordinates */
     double toward[3];         /* 3D: unit vector towards the viewer */
+    double persp;             /* 3D: > 0, a perspective view from the eye
+                                 this far from c along toward (pixels
+                                 scale by persp / (persp - depth)); 0:
+                                 orthographic (lr_view_3d's) */
     double clip[4];           /* pixels x0, y0, x1, y1 the layers draw in;
                                  x1 <= x0: no clipping (the default) */
 } lr_view;

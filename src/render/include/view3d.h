@@ -21,6 +21,7 @@
 #define LAMINA_VIEW3D_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "layers.h"
 #include "render.h"
@@ -55,6 +56,30 @@ int lr_scene3d_box(lr_scene3d *s, const double lo[3], const double hi[3],
 int lr_scene3d_text(lr_scene3d *s, const double p[3], double dx, double dy,
                     double size, lr_rgba colour, lr_align align,
                     const char *text);
+
+/* Many points (a 3D frame's particles, 10^6 and more) as shaded spheres
+ * of radius_px, each in colours[i] (NULL: all in colour). Kept as floats;
+ * through OpenGL they are splatted on the CPU into the depth buffer
+ * (view3d_cloud.c: one primitive a point costs llvmpipe a quarter of a
+ * microsecond), through cairo drawn as discs, far ones first. */
+int lr_scene3d_cloud(lr_scene3d *s, size_t n, const double *const p[3],
+                     const lr_rgba *colours, lr_rgba colour, double radius_px);
+/* The same with colours packed as straight RGBA8, red in the low byte
+ * (lr_rgba_pack): 4 bytes a point instead of 32, for 10^6 of them. */
+int lr_scene3d_cloud_rgba8(lr_scene3d *s, size_t n, const double *const p[3],
+                           const uint32_t *rgba8, double radius_px);
+/* A colour as straight RGBA8, red in the low byte, each channel clamped
+ * to [0, 1] and rounded. */
+uint32_t lr_rgba_pack(lr_rgba k);
+/* n triangles, vertex j of triangle k at xyz[9 k + 3 j .. + 2]; normals
+ * in the same layout shade them (either side; NULL: flat colour); colours
+ * per vertex (3 n, NULL: colour). Triangles with some alpha below 1 are
+ * see-through: drawn after everything opaque, far ones first, without
+ * hiding what is behind. cairo fills each with its vertices' mean
+ * colour, far ones first. */
+int lr_scene3d_triangles(lr_scene3d *s, size_t n, const double *xyz,
+                         const double *normals, const lr_rgba *colours,
+                         lr_rgba colour);
 
 /* Draws the scene onto c through c's backend with the 3D view v; the
  * view's clip rectangle, when set, bounds the OpenGL drawing. -1 with a
