@@ -242,12 +242,10 @@ int la_sim3_newindex(lua_State *L)
         double g[3];
         la_triple(L, 4, "sim.gravity", "gravity", g);
         lua_pop(L, 1);
-        memcpy(m->def.gravity, g, sizeof g);
+        if (lm3_set_gravity(m, g) != LM_OK) return luaL_error(L, "sim.%s", m->err);
     } else if (strcmp(k, "courant") == 0) {
-        double c = luaL_checknumber(L, 3);
-        if (!(c > 0) || !isfinite(c))
-            return luaL_error(L, "sim.courant must be a positive number (got %f)", c);
-        m->def.courant = c;
+        if (lm3_set_courant(m, luaL_checknumber(L, 3)) != LM_OK)
+            return luaL_error(L, "sim.%s", m->err);
     } else {
         return luaL_error(L, "sim.%s cannot be changed in 3D (changeable: gravity, courant)", k);
     }
@@ -264,10 +262,10 @@ int la_sim3_tostring(lua_State *L)
     return 1;
 }
 
-void la_sim3_set_material(la_sim3 *s3, int k, const lm_material *m)
+int la_sim3_set_material(la_sim3 *s3, int k, const lm_material *m)
 {
-    s3->sim->mats[k].E = m->E;
-    s3->sim->mats[k].nu = m->nu;
+    const lm3_material next = {m->rho, m->E, m->nu};
+    return lm3_material_set(s3->sim, k, &next) == LM_OK ? 0 : -1;
 }
 
 /* ---- diagnostics ----------------------------------------------------- */
