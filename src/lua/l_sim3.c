@@ -175,7 +175,10 @@ int la_sim3_new(lua_State *L)
     if (!s->s3) luaL_error(L, "%s: out of memory", fn);
     char err[256];
     /* the grid's bytes are charged before it is made (the process's one
-     * cap, docs/security.md "Memory"); def_ok's LM3_MAX_NODES bounds it */
+     * cap, docs/security.md "Memory"); def_ok's LM3_MAX_NODES bounds it.
+     * A refused definition's charge is given back when the sim is
+     * collected (la_sim3_free). */
+    la_sim3_charge(L, s->s3, lm3_def_grid_bytes(&d), fn);
     s->s3->sim = lm3_sim_create(&d, err, sizeof err);
     if (!s->s3->sim) luaL_error(L, "%s: %s", fn, err);
     la_sim3_charge(L, s->s3, lm3_grid_bytes(s->s3->sim), fn);

@@ -209,6 +209,9 @@ uint64_t lm3_sim_hash(const lm3_sim *sim);
 /* Bytes the grid and `cap` particles' arrays take (the process budget,
  * docs/security.md "Memory"). */
 size_t lm3_grid_bytes(const lm3_sim *sim);
+/* ... and those a definition's grid will take, before it is made (0 when
+ * lm3_sim_create will refuse it) */
+size_t lm3_def_grid_bytes(const lm3_def *d);
 size_t lm3_particle_bytes(size_t cap);
 
 
