@@ -24,7 +24,9 @@ import os
 import re
 import sys
 
-ENGINE_TYPES = r"(?:lm_sim|lm_body|lm_particles|lm_grid|lm_pin|lm_link|lm_material)"
+# the 3D engine's too (mpm3.h: lm3_sim, lm3_particles, ...; issue 34)
+ENGINE_TYPES = (r"(?:lm_sim|lm_body|lm_particles|lm_grid|lm_pin|lm_link|lm_material"
+                r"|lm3_sim|lm3_particles|lm3_grid|lm3_pin|lm3_pins|lm3_material)")
 # Files that still write engine state, each with the change that ends it
 # (none now: since issue 33 item 1 the engine owns copies of its materials,
 # and a script's material is a definition, la_material, changed live

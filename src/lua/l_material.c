@@ -91,7 +91,8 @@ static void set_everywhere(lua_State *L, int midx, const lm_material *next)
             if (s && s->s3) {   /* a 3D run's copy (l_body3.c): E and nu */
                 if (pass == 0 && next->plane != u->def.plane)
                     luaL_error(L, "material: plane has no meaning in 3D (sim %d is 3D)", s->index);
-                if (pass == 1) la_sim3_set_material(s->s3, k, next);
+                if (pass == 1 && la_sim3_set_material(s->s3, k, next) != 0)
+                    luaL_error(L, "material: %s", s->s3->sim->err);
                 continue;
             }
             if (!s || !s->sim) continue;   /* collected, its key not yet cleared */

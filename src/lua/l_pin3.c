@@ -44,7 +44,7 @@ void la_pins3_update(lua_State *L, int sidx, la_sim *s)
             double v[3];
             call_velocity3(L, lua_gettop(L), sim->t + 0.5 * sim->def.dt, v);
             lua_pop(L, 1);
-            memcpy(sim->pins->pin[s->pinf[k].pin].v, v, sizeof v);
+            lm3_pin_set_velocity(sim, s->pinf[k].pin, v);   /* its own pin: exists */
         }
         lua_pop(L, 1);
     }

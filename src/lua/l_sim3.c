@@ -176,7 +176,10 @@ int la_sim3_new(lua_State *L)
     if (!s->s3) luaL_error(L, "%s: out of memory", fn);
     char err[256];
     /* the grid's bytes are charged before it is made (the process's one
-     * cap, docs/security.md "Memory"); def_ok's LM3_MAX_NODES bounds it */
+     * cap, docs/security.md "Memory"); def_ok's LM3_MAX_NODES bounds it.
+     * A refused definition's charge is given back when the sim is
+     * collected (la_sim3_free). */
+    la_sim3_charge(L, s->s3, lm3_def_grid_bytes(&d), fn);
     s->s3->sim = lm3_sim_create(&d, err, sizeof err);
     if (!s->s3->sim) luaL_error(L, "%s: %s", fn, err);
     la_sim3_charge(L, s->s3, lm3_grid_bytes(s->s3->sim), fn);
@@ -243,12 +246,10 @@ int la_sim3_newindex(lua_State *L)
         double g[3];
         la_triple(L, 4, "sim.gravity", "gravity", g);
         lua_pop(L, 1);
-        memcpy(m->def.gravity, g, sizeof g);
+        if (lm3_set_gravity(m, g) != LM_OK) return luaL_error(L, "sim.%s", m->err);
     } else if (strcmp(k, "courant") == 0) {
-        double c = luaL_checknumber(L, 3);
-        if (!(c > 0) || !isfinite(c))
-            return luaL_error(L, "sim.courant must be a positive number (got %f)", c);
-        m->def.courant = c;
+        if (lm3_set_courant(m, luaL_checknumber(L, 3)) != LM_OK)
+            return luaL_error(L, "sim.%s", m->err);
     } else {
         return luaL_error(L, "sim.%s cannot be changed in 3D (changeable: gravity, courant)", k);
     }
@@ -265,10 +266,10 @@ int la_sim3_tostring(lua_State *L)
     return 1;
 }
 
-void la_sim3_set_material(la_sim3 *s3, int k, const lm_material *m)
+int la_sim3_set_material(la_sim3 *s3, int k, const lm_material *m)
 {
-    s3->sim->mats[k].E = m->E;
-    s3->sim->mats[k].nu = m->nu;
+    const lm3_material next = {m->rho, m->E, m->nu};
+    return lm3_material_set(s3->sim, k, &next) == LM_OK ? 0 : -1;
 }
 
 /* ---- diagnostics ----------------------------------------------------- */

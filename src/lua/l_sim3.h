@@ -42,8 +42,9 @@ void la_sim3_push_energy(lua_State *L, const lm3_energy *e);
 /* Refuses a 2D-only method called on a 3D sim (and the reverse), naming it. */
 int la_sim3_refuse(lua_State *L);
 
-/* A live change of material k (mat.E, mat.nu: l_material.c), checked there */
-void la_sim3_set_material(la_sim3 *s3, int k, const lm_material *m);
+/* A live change of material k (mat.E, mat.nu: l_material.c): 0, or -1
+ * with the engine's reason in s3->sim->err */
+int la_sim3_set_material(la_sim3 *s3, int k, const lm_material *m);
 
 /* l_sim3_run.c: run, step, every, at (the 2D semantics) */
 int la_sim3_run(lua_State *L);

@@ -1,6 +1,8 @@
 /* sim3_query.c - what the Lua layer reads of a 3D run: a body's sums (its
  * particles are a contiguous range, as the 2D bodies'), the state's hash
  * and the bytes its arrays take (docs/3d.md "Memory"). */
+#include <math.h>
+
 #include "mpm3.h"
 #include "util.h"
 
@@ -52,6 +54,23 @@ uint64_t lm3_sim_hash(const lm3_sim *sim)
         if (p->n) h = lu_fnv1a(h, f[k], p->n * sizeof(double));
     h = lu_fnv1a(h, &sim->nstep, sizeof sim->nstep);
     return h;
+}
+
+size_t lm3_def_grid_bytes(const lm3_def *d)
+{
+    /* the node count lm3_sim_create will make (sim3.c: n cells, n + 1 nodes
+     * and the ring of the quadratic B-spline each way); 0 when it will
+     * refuse the definition anyway */
+    if (!(d->cell > 0) || !isfinite(d->cell)) return 0;
+    size_t nn = 1;
+    int pad = d->basis == LM_BASIS_LINEAR ? 0 : 1;
+    for (int a = 0; a < 3; a++) {
+        double c = (d->hi[a] - d->lo[a]) / d->cell;
+        if (!isfinite(c) || !(c >= 1) || c > 1e6) return 0;
+        nn *= (size_t)floor(c + 0.5) + 1 + 2 * (size_t)pad;
+        if (nn > LM3_MAX_NODES) return 0;
+    }
+    return 10 * nn * sizeof(double);
 }
 
 size_t lm3_grid_bytes(const lm3_sim *sim)

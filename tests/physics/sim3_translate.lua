@@ -5,7 +5,8 @@
 -- start, and the centre of mass follow x0 + v t. Through the Lua API
 -- (lamina.sim{dim = 3}), under MUSL with both bases and USL with the
 -- quadratic B-spline. USL with the trilinear hats is the known small-mass
--- failure (docs/3d.md "Expected failure", unit.test_sim3_usl_trilinear),
+-- failure (docs/3d.md "Tests (issue 34 item 3)": its expected failure,
+-- unit.test_sim3_usl_trilinear),
 -- not run here.
 -- Measured (200 steps): |sigma| <= 3.0e-11 Pa (E = 1e6: 3e-17 of E),
 -- momentum to 3.6e-15 relative, path to 7.5e-15 m, in all three runs.

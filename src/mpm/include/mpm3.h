@@ -250,6 +250,9 @@ uint64_t lm3_sim_hash(const lm3_sim *sim);
 /* Bytes the grid and `cap` particles' arrays take (the process budget,
  * docs/security.md "Memory"). */
 size_t lm3_grid_bytes(const lm3_sim *sim);
+/* ... and those a definition's grid will take, before it is made (0 when
+ * lm3_sim_create will refuse it) */
+size_t lm3_def_grid_bytes(const lm3_def *d);
 size_t lm3_particle_bytes(size_t cap);
 
 
@@ -291,5 +294,14 @@ void lm3_pins_begin(lm3_sim *sim);
  * velocity */
 void lm3_pins_grid(lm3_sim *sim);
 void lm3_pins_strain(lm3_sim *sim);
+
+
+/* Live settings between steps (sim3_live.c): LM_ERR_INPUT and err when a
+ * value is refused (not finite, rho changed, nu out of range, no such
+ * material or pin). */
+lm_status lm3_set_gravity(lm3_sim *sim, const double g[3]);
+lm_status lm3_set_courant(lm3_sim *sim, double c);
+lm_status lm3_material_set(lm3_sim *sim, int k, const lm3_material *m);
+lm_status lm3_pin_set_velocity(lm3_sim *sim, int pin, const double v[3]);
 
 #endif
