@@ -47,6 +47,23 @@ static int threads3 = 1;
  * would expand into the empty cells with a front at 2 c / (gamma - 1) =
  * 5 c, past the Courant limit of dt = 0.2 h / c (it failed at 10^4
  * particles, step 19). */
+static int everywhere(void *ctx, const double x[3])
+{
+    (void)ctx; (void)x;
+    return 1;
+}
+
+/* a spin about z and a shear: every stress component moves */
+static int spin_shear(void *ctx, const double x[3], double v[3])
+{
+    (void)ctx;
+    const double dx = x[0] - 0.5, dy = x[1] - 0.5, dz = x[2] - 0.5;
+    v[0] = -2 * dy + 0.5 * dz;
+    v[1] = 2 * dx;
+    v[2] = 0.3 * dx;
+    return 0;
+}
+
 static lm3_sim *make_block(double particles, const case3 *c)
 {
     int n = (int)lround(cbrt(particles / (c->gas ? 8 : 8 * 0.216)));
@@ -76,17 +93,11 @@ static lm3_sim *make_block(double particles, const case3 *c)
     if (!sim) return NULL;
     int mi = lm3_material_add(sim, &m, err, sizeof err);
     const double a = c->gas ? 0 : 0.2;
-    double lo[3] = {a, a, a}, hi[3] = {1 - a, 1 - a, 1 - a}, v[3] = {0, 0, 0};
-    if (mi < 0 || lm3_seed_box(sim, mi, lo, hi, 2, v) <= 0) {
+    lm3_seed_def sd = {.mat = mi, .k = {2, 2, 2}, .lo = {a, a, a}, .hi = {1 - a, 1 - a, 1 - a},
+                       .inside = everywhere, .velocity = spin_shear};
+    if (mi < 0 || lm3_seed(sim, &sd) <= 0) {
         lm3_sim_free(sim);
         return NULL;
-    }
-    /* a spin about z and a shear: every stress component moves */
-    for (size_t q = 0; q < sim->p.n; q++) {
-        double x = sim->p.x[0][q] - 0.5, y = sim->p.x[1][q] - 0.5, z = sim->p.x[2][q] - 0.5;
-        sim->p.v[0][q] = -2 * y + 0.5 * z;
-        sim->p.v[1][q] = 2 * x;
-        sim->p.v[2][q] = 0.3 * x;
     }
     return sim;
 }

@@ -32,7 +32,7 @@
 
 typedef struct ctx3 {
     const char *fn;
-    lm3_sim *sim;
+    const lm3_sim *sim;
     int anchor, nanchored;
     int fidx;
     size_t particles, slices, isos;     /* drawn, for lamina:layers */
@@ -370,7 +370,7 @@ static void *layers(lua_State *L, ctx3 *c, int pidx, const char *where, const ch
 
 static void panel(lua_State *L, ctx3 *c, int pidx, const char *where, lr_panel3d *p)
 {
-    lm3_sim *s = c->sim;
+    const lm3_sim *s = c->sim;
     memset(p, 0, sizeof *p);
     for (int a = 0; a < 3; a++) {
         p->lo[a] = s->grid.lo[a];
@@ -467,7 +467,7 @@ static lr_backend backend(lua_State *L, const char *fn, int fidx)
     return b;
 }
 
-int l_frame3d(lua_State *L, lm3_sim *sim, int opts_index)
+int l_frame3d(lua_State *L, const lm3_sim *sim, int opts_index)
 {
     static const char *const keys[] = {"file", "width", "height", "title", "label", "backend",
                                        "layout", "panels", PANEL3_KEYS, NULL};

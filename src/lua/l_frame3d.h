@@ -13,6 +13,6 @@
 
 #include "mpm3.h"
 
-int l_frame3d(lua_State *L, lm3_sim *sim, int opts_index);
+int l_frame3d(lua_State *L, const lm3_sim *sim, int opts_index);
 
 #endif

@@ -268,7 +268,13 @@ int la_sim3_tostring(lua_State *L)
 
 int la_sim3_set_material(la_sim3 *s3, int k, const lm_material *m)
 {
-    const lm3_material next = {m->rho, m->E, m->nu};
+    if (k < 0 || k >= s3->sim->nmat) return -1;
+    /* the live constants over the engine's copy (its kind and the gas's
+     * constants stay) */
+    lm3_material next = s3->sim->mats[k];
+    next.rho = m->rho;
+    next.E = m->E;
+    next.nu = m->nu;
     return lm3_material_set(s3->sim, k, &next) == LM_OK ? 0 : -1;
 }
 
