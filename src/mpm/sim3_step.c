@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "mpm3.h"
+#include "mpm3_membrane.h"
 #include "sim3_walls.h"
 
 #if defined(__GNUC__)
@@ -102,6 +103,7 @@ static void step_p2g_forces(lm3_sim *sim)
             p2g_at(sim, q, 3);
         }
     }
+    lm3_membrane_p2g(sim);   /* membrane points (sim3_membrane_step.c) */
     double *const f[7] = {g->m, g->p[0], g->p[1], g->p[2], g->f[0], g->f[1], g->f[2]};
     lm3_grid_fold(g, 7, f, comp_mpf);
     const double *gv = sim->def.gravity;
@@ -322,6 +324,8 @@ double lm3_courant(const lm3_sim *sim, double *c_max)
         double ck = sqrt((lam + 2 * G) / m->rho);
         if (ck > c) c = ck;
     }
+    double cm = lm3_membrane_wave_speed(sim);
+    if (cm > c) c = cm;
     if (c_max) *c_max = c;
     return sim->def.dt * c / sim->grid.h;
 }
@@ -342,8 +346,12 @@ lm_status lm3_step(lm3_sim *sim)
     if (st != LM_OK) return st;
     step_p2g_forces(sim);
     step_grid_update(sim);
+    lm3_membrane_hold(sim);
     step_g2p_remap(sim);
+    lm3_membrane_g2p(sim);
     step_strain_velocity(sim);
+    st = lm3_membrane_update(sim);
+    if (st != LM_OK) return st;
     if (!step_stress(sim)) {
         snprintf(sim->err, sizeof sim->err, "t = %g (step %ld): a particle's volume went to "
                  "nothing (1 + tr de <= 0): unstable", sim->t, sim->nstep);

@@ -94,6 +94,7 @@ typedef struct lm3_sim {
     int nmat;
     long nstep;
     double t;
+    struct lm3_membranes *mem;   /* membrane points (mpm3_membrane.h); NULL: none */
     char err[256];         /* why the last call failed */
 } lm3_sim;
 
