@@ -582,6 +582,50 @@ static void point_update(void)
     lm3_sim_free(sim);
 }
 
+/* Refusals, each naming what it refused. */
+static void refusals(void)
+{
+    double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1}, c[3] = {0.5, 0.5, 0.5};
+    lm3_sim *sim = make_sim(lo, hi, 0.1, 5e-3, LM_BASIS_BSPLINE2, LM_BC_FIXED);
+    lm3_msample smp;
+    char err[256];
+    CHECK(lm3_sample_sphere(c, 0.6, 0.05, &smp, err, sizeof err) == 0);
+    lm3_mdef def;
+    lm3_mdef_default(&def);
+    def.mat = sheet_material();
+    CHECK(lm3_membrane_add(sim, &def, &smp) == -1);   /* r = 0.6 leaves the unit box */
+    CHECK(strstr(sim->err, "membrane 1 leaves the domain: point") != NULL);
+    lm3_msample_free(&smp);
+    CHECK(lm3_sample_sphere(c, 0.3, 0.05, &smp, err, sizeof err) == 0);
+    def.mat.thickness = -1;
+    CHECK(lm3_membrane_add(sim, &def, &smp) == -1);
+    CHECK(strstr(sim->err, "membrane 1: ") && strstr(sim->err, "thickness"));
+    def.mat = sheet_material();
+    def.damping = 300;   /* c dt = 1.5 */
+    CHECK(lm3_membrane_add(sim, &def, &smp) == -1);
+    CHECK(strstr(sim->err, "damping = 300") != NULL);
+    def.damping = 0;
+    def.initial_strain = 6;
+    CHECK(lm3_membrane_add(sim, &def, &smp) == -1);
+    CHECK(strstr(sim->err, "initial_strain = 6") != NULL);
+    def.initial_strain = 0;
+    CHECK(lm3_membrane_add(sim, &def, &smp) == 0);
+    size_t idx[2] = {3, 100000};
+    CHECK(lm3_membrane_pin(sim, 0, idx, 2) == -1);
+    CHECK(strstr(sim->err, "point 100001 cannot be pinned") != NULL);
+    CHECK(lm3_membrane_pin(sim, 0, idx, 1) == 0);
+    CHECK(lm3_membrane_pin(sim, 0, idx, 1) == -1);
+    CHECK(strstr(sim->err, "point 4 of membrane 1 is pinned already") != NULL);
+    /* the membrane's wave sqrt(E / ((1 - nu^2) rho)) = 33.2 m/s enters the
+     * Courant check: dt c / h = 1.66 is refused before the first step */
+    CHECK(lm3_step(sim) == LM_ERR_INPUT);
+    CHECK(strstr(sim->err, "Courant number") != NULL);
+    double cm;
+    CHECK_NEAR(lm3_courant(sim, &cm), 5e-3 * sqrt(1e6 / (0.91 * 1000)) / 0.1, 1e-12);
+    lm3_msample_free(&smp);
+    lm3_sim_free(sim);
+}
+
 int main(int argc, char **argv)
 {
     if (argc > 1 && strcmp(argv[1], "normals_linear") == 0) {
@@ -593,6 +637,7 @@ int main(int argc, char **argv)
         return CHECK_DONE();
     }
     samplers();
+    refusals();
     point_update();
     flat_sheets();
     squares();
