@@ -259,6 +259,17 @@ int lm3_sample_mesh(const double *xyz, size_t nv, const int32_t *tri, size_t nt,
         double *e = acc + 7 * i + 4, en = e[0] * n[0] + e[1] * n[1] + e[2] * n[2], t1[3], t2[3];
         for (int a = 0; a < 3; a++) t1[a] = e[a] - en * n[a];
         double l1 = norm3(t1);
+        if (!(l1 > 1e-9 * norm3(e))) {
+            /* the first edge along the normal (a spike): any direction
+             * across n, from the axis n is least along */
+            int k = fabs(n[0]) <= fabs(n[1]) && fabs(n[0]) <= fabs(n[2]) ? 0
+                    : fabs(n[1]) <= fabs(n[2])                          ? 1
+                                                                          : 2;
+            double ax[3] = {0, 0, 0};
+            ax[k] = 1;
+            cross3(ax, n, t1);
+            l1 = norm3(t1);
+        }
         for (int a = 0; a < 3; a++) t1[a] /= l1;
         cross3(n, t1, t2);
         set_point(s, i, xyz + 3 * i, acc[7 * i], t1, t2);
