@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "mpm3.h"
+#include "mpm3_membrane.h"
 #include "util.h"
 
 static const char *const face_name[LM3_FACES] = {"x0", "x1", "y0", "y1", "z0", "z1"};
@@ -117,6 +118,7 @@ void lm3_sim_free(lm3_sim *sim)
     LU_FREE_ALL(p->x[0], p->x[1], p->x[2], p->v[0], p->v[1], p->v[2], p->m, p->rho, p->s[0],
                 p->s[1], p->s[2], p->s[3], p->s[4], p->s[5], p->e, p->d[0], p->d[1], p->d[2],
                 p->node, p->mat, sim->grid.m, sim->scratch);
+    lm3_membranes_free(sim->mem);
     free(sim);
 }
 
@@ -273,6 +275,7 @@ void lm3_energy_of(const lm3_sim *sim, lm3_energy *e)
         /* potential of the uniform field: -m g . x */
         u -= p->m[q] * (gv[0] * p->x[0][q] + gv[1] * p->x[1][q] + gv[2] * p->x[2][q]);
     }
+    lm3_membrane_energy(sim, &k, &w, &u);
     e->kinetic = k;
     e->strain = w;
     e->potential = u;
@@ -303,11 +306,12 @@ void lm3_momentum(const lm3_sim *sim, double P[3])
         P[a] = 0;
         for (size_t q = 0; q < p->n; q++) P[a] += p->m[q] * p->v[a][q];
     }
+    lm3_membrane_momentum(sim, P);
 }
 
 double lm3_mass(const lm3_sim *sim)
 {
     double m = 0;
     for (size_t q = 0; q < sim->p.n; q++) m += sim->p.m[q];
-    return m;
+    return m + lm3_membrane_mass(sim);
 }

@@ -10,6 +10,7 @@
 #include "sim3_kernels2.h"
 #include "sim3_shape.h"
 #include "sim3_threads.h"
+#include "mpm3_membrane.h"
 #include "sim3_walls.h"
 
 #if defined(__GNUC__)
@@ -141,6 +142,7 @@ static void step_p2g_forces(lm3_sim *sim, int nt)
     }
     if (nt < 2 || lm3_scatter_threads(sim, nt, 7, p2g_range) != 0)
         p2g_range(sim, g, 0, sim->p.n);
+    lm3_membrane_p2g(sim);   /* membrane points (sim3_membrane_step.c) */
     double *const f[7] = {g->m, g->p[0], g->p[1], g->p[2], g->f[0], g->f[1], g->f[2]};
     lm3_grid_fold(g, 7, f, comp_mpf);
     const double *gv = sim->def.gravity;
@@ -469,6 +471,8 @@ double lm3_courant(const lm3_sim *sim, double *c_max)
         }
         if (ck > c) c = ck;
     }
+    double cm = lm3_membrane_wave_speed(sim);
+    if (cm > c) c = cm;
     if (c_max) *c_max = c;
     return sim->def.dt * c / sim->grid.h;
 }
@@ -496,9 +500,19 @@ lm_status lm3_step(lm3_sim *sim)
     step_p2g_forces(sim, nt);
     step_grid_update(sim, nt);
     if (sim->pins) lm3_pins_grid(sim);     /* body:pin (sim3_pin.c) */
+    lm3_membrane_hold(sim);
     const int moved_ok = step_g2p_remap(sim, nt);
+    lm3_membrane_g2p(sim);
     step_strain_velocity(sim, nt);
     if (sim->pins) lm3_pins_strain(sim);
+    {
+        /* the membranes' strain and stress; their points' check */
+        lm_status st = lm3_membrane_update(sim);
+        if (st != LM_OK) {
+            sim->recheck = 1;
+            return st;
+        }
+    }
     double max_div, c_max;
     step_gas_maxima(sim, &max_div, &c_max, nt);
     if (!step_stress(sim, max_div, c_max, nt)) {

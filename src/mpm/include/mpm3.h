@@ -110,6 +110,7 @@ typedef struct lm3_sim {
     int nmat;
     long nstep;
     double t;
+    struct lm3_membranes *mem;   /* membrane points (mpm3_membrane.h); NULL: none */
     char err[256];         /* why the last call failed */
     struct lm3_pins *pins; /* body:pin in 3D (sim3_pin.c); NULL: none */
     double *scratch;       /* the threads' private copies of nodal fields */
