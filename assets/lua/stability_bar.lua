@@ -25,7 +25,7 @@ M.start = { centres = 0.5, sides = 0.0001 }
 -- One run: case "centres" | "sides", dt = factor * dtc, n points (default
 -- Box 14's 5; a longer bar, one point a cell, on a grid n cells long, the
 -- middle point perturbed). Returns the record (energy every step), whether
--- the run went to t_end, and the sim.
+-- the run went to t_end, the sim and the bar (its membrane body).
 function M.run(case, factor, scheme, t_end, n)
   n = n or 5
   local sim = lamina.sim{ domain = {0, 0, n * M.h, 1}, cell = M.h, dt = factor * M.dtc,
@@ -36,12 +36,12 @@ function M.run(case, factor, scheme, t_end, n)
   local bar = lamina.membrane{ rho = M.rho, E = M.E, nu = 0, thickness = 1, law = "uniaxial" }
   local x0 = M.start[case]
   local mid = (n + 1) // 2
-  sim:membrane{ material = bar, count = n, name = "bar", force = "point",
+  local body = sim:membrane{ material = bar, count = n, name = "bar", force = "point",
                 curve = lamina.segment{ from = {x0, 0.5}, to = {x0 + (n - 1) * M.h, 0.5} },
                 velocity = function(_, i) if i == mid then return 1e-8, 0 end return 0, 0 end }
   local rec = sim:record{ energy = true }
   local ok = pcall(sim.run, sim, { t_end = t_end })
-  return rec, ok, sim
+  return rec, ok, sim, body
 end
 
 -- Unstable: the energy grows without bound — the run fails (a point
