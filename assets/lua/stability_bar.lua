@@ -22,22 +22,26 @@ M.dtc = M.h / math.sqrt(M.E / M.rho)   -- the CFL step h / c = 0.001
 -- first point: the cell centre, or Box 14's x = 0.0001 (the cells' left sides)
 M.start = { centres = 0.5, sides = 0.0001 }
 
--- One run: case "centres" | "sides", dt = factor * dtc. Returns the record
--- (energy every step), whether the run went to t_end, and the sim.
-function M.run(case, factor, scheme, t_end)
-  local sim = lamina.sim{ domain = {0, 0, 5, 1}, cell = M.h, dt = factor * M.dtc,
+-- One run: case "centres" | "sides", dt = factor * dtc, n points (default
+-- Box 14's 5; a longer bar, one point a cell, on a grid n cells long, the
+-- middle point perturbed). Returns the record (energy every step), whether
+-- the run went to t_end, the sim and the bar (its membrane body).
+function M.run(case, factor, scheme, t_end, n)
+  n = n or 5
+  local sim = lamina.sim{ domain = {0, 0, n * M.h, 1}, cell = M.h, dt = factor * M.dtc,
                           -- (courant: past every step tried, USL's factor 0.7 included)
                           scheme = scheme, courant = 5, basis = "linear",
                           boundary = { left = "free", right = "free",
                                        bottom = "symmetry", top = "symmetry" } }
   local bar = lamina.membrane{ rho = M.rho, E = M.E, nu = 0, thickness = 1, law = "uniaxial" }
   local x0 = M.start[case]
-  sim:membrane{ material = bar, count = 5, name = "bar", force = "point",
-                curve = lamina.segment{ from = {x0, 0.5}, to = {x0 + 4, 0.5} },
-                velocity = function(_, i) if i == 3 then return 1e-8, 0 end return 0, 0 end }
+  local mid = (n + 1) // 2
+  local body = sim:membrane{ material = bar, count = n, name = "bar", force = "point",
+                curve = lamina.segment{ from = {x0, 0.5}, to = {x0 + (n - 1) * M.h, 0.5} },
+                velocity = function(_, i) if i == mid then return 1e-8, 0 end return 0, 0 end }
   local rec = sim:record{ energy = true }
   local ok = pcall(sim.run, sim, { t_end = t_end })
-  return rec, ok, sim
+  return rec, ok, sim, body
 end
 
 -- Unstable: the energy grows without bound — the run fails (a point
@@ -65,6 +69,18 @@ function M.scan(case, scheme, factors, t_end)
     if unstable and not first then first = f end
   end
   return rows, first
+end
+
+-- The stability limit itself: bisects [lo, hi] (lo stable, hi not) k
+-- times for a bar of n points; returns the last stable and first unstable
+-- factors (an interval (hi - lo) / 2^k wide).
+function M.limit(case, scheme, n, lo, hi, k, t_end)
+  for _ = 1, k do
+    local f = 0.5 * (lo + hi)
+    local rec, ok = M.run(case, f, scheme, t_end, n)
+    if ok and M.growth(rec) <= M.GROWTH then lo = f else hi = f end
+  end
+  return lo, hi
 end
 
 return M

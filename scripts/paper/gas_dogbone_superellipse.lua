@@ -60,7 +60,7 @@ local paper_F = { [0.4] = {1.07, 50.3}, [0.2] = {1.33, 28.8}, [0.1] = {1.35, 31.
 local paper_T = { [0.4] = {1.08, 1.13, 33.4}, [0.2] = {1.335, 1.334, 24.9}, [0.1] = {1.388, 1.387, 27.0},
                   [0.05] = {1.394, 1.396, 29.0} }
 
-local report, radius_series, energy_series, hash = {}, {}, {}, nil
+local report, radius_series, energy_series, hashes = {}, {}, {}, {}
 for _, h in ipairs{0.4, 0.2, 0.1, 0.05} do
   if h < finest - 1e-12 then break end
   local sim, gas, mem = dog.setup(h, { split = h < 0.075 and 16 or nil, threads = threads })
@@ -125,7 +125,7 @@ for _, h in ipairs{0.4, 0.2, 0.1, 0.05} do
   energy_series[#energy_series + 1] = { x = t, y = rel, label = string.format("particles, cell %.2f", h) }
   energy_series[#energy_series + 1] = { x = t, y = vrel, label = string.format("visible, cell %.2f", h),
                                         dashed = true, color = #energy_series }
-  hash = sim:hash()
+  hashes[#hashes + 1] = sim:hash()
 end
 lamina.plot{ file = out .. "/fig13_radii.png", csv = true, width = 720, height = 420,
              title = "Figs 11/13: membrane radius at 0 and 90 degrees", xlabel = "t", ylabel = "radius",
@@ -133,5 +133,6 @@ lamina.plot{ file = out .. "/fig13_radii.png", csv = true, width = 720, height =
 lamina.plot{ file = out .. "/fig13_energy.png", csv = true, width = 720, height = 420,
              title = "Figs 11/13: total energy / initial (dashed: with the grid's kinetic energy)", xlabel = "t", ylabel = "E / E0",
              legend = "bottom right", series = energy_series }
-report.state_hash = hash
+-- every mesh's state, not the last one's (assets/lua/hashes.lua; issue 32)
+report.state_hash = require("hashes").fold(hashes)
 lamina.report(report)

@@ -223,8 +223,8 @@ static int cmp_double(const void *a, const void *b)
 }
 
 /* Filled pressure contours from the gas pressure interpolated to the grid
- * ([T] Fig 56), drawn under the particles; nodes without gas are not
- * filled. When the contours own the panel's colour (colour = "body"), the
+ * ([T] Fig 56), drawn under the particles, only where the gas is
+ * (l_frame_gas_mask.c). When the contours own the panel's colour (colour = "body"), the
  * bands span the panel's range if it has one, else the 5th-95th percentile
  * of the nodal values, which then becomes the panel's range (so the other
  * half of a split panel and the colour bar use the same), in the panel's
@@ -272,6 +272,8 @@ static void pressure_contours(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int 
     fd->f = f;
     fd->nx = g->nx;
     fd->ny = g->ny;
+    /* the bands only where the gas is, not a cell past it (issue 32 item 6) */
+    la_frame_gas_mask(L, ctx, sim, f, fd);
     fd->x0 = g->x0;
     fd->y0 = g->y0;
     fd->x1 = g->x0 + g->nx * g->hx;

@@ -64,6 +64,13 @@ size_t la_frame_points(lua_State *L, la_frame_ctx *ctx, const lm_sim *sim,
 void la_frame_panel(lua_State *L, la_frame_ctx *ctx, int fidx, int pidx, int sidx,
                     lr_panel *p);
 
+/* l_frame_gas_mask.c: the nodal field f (the grid's (nx+1) x (ny+1) nodes)
+ * resampled k times finer, far below every band farther than 0.75 of a
+ * gas point's spacing from every gas point, into fd's samples (f, nx, ny; the
+ * box is the grid's); returns k, or 0 (no gas: fd untouched). */
+int la_frame_gas_mask(lua_State *L, la_frame_ctx *ctx, const lm_sim *sim, const double *f,
+                      lr_field *fd);
+
 /* l_frame_contact.c: contact = true, the grid normals and node states of
  * the last step's contact correction appended to the side's arrows; at one
  * node of each every x every block of nodes, the arrows scale times their
