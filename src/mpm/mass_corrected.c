@@ -28,12 +28,39 @@
  * same bits for the same script. */
 #include "gather.h"
 
+/* mass = "membrane" with no membrane in the sim is the lumped step, to the
+ * bit (and the step stays on the lumped path's constraint solves). */
+int lm_mass_corrects(const lm_sim *sim)
+{
+    if (sim->def.mass == LM_MASS_LUMPED || sim->contact) return 0;
+    if (sim->def.mass == LM_MASS_CORRECTED) return 1;
+    for (int b = 0; b < sim->nbodies; b++)
+        if (sim->bodies[b].membrane && sim->bodies[b].count > 0) return 1;
+    return 0;
+}
+
+/* mass = "membrane": only the membranes' points take the consistent share;
+ * every other point stays lumped. M_C' = M_L - sum_{p in membranes} m_p
+ * (diag N_p - N_p N_p^T): symmetric, M_L - M_C' positive semi-definite as
+ * before, M_C' 1 = M_L 1, and a loop over the membranes' points only (a gas
+ * or solid beside them costs nothing more, and a scene without membranes
+ * steps as on the lumped mass). */
+static int membrane_only(const lm_sim *sim)
+{
+    return sim->def.mass == LM_MASS_MEMBRANE;
+}
+
 /* (bx, by)_i = sum_p m_p N_ip sum_j N_jp (ux, uy)_j, the ghost sums folded
  * at the walls; (ux, uy) filled at the ghost nodes by the caller. Row by
- * row for the 3 x 3 stencils, as step 4 gathers. */
+ * row for the 3 x 3 stencils, as step 4 gathers. With mass = "membrane"
+ * instead the difference (M_L - M_C') u over the membranes' points,
+ * sum_p m_p N_ip (u_i - sum_j N_jp u_j), which is m_i w_i directly (a
+ * ghost node's u is its mirror's with the sign the fold gives back, so
+ * the folded difference is the real node's). */
 static void consistent_times(const lm_sim *sim, const double *ux, const double *uy,
                              double *bx, double *by)
 {
+    const int only = membrane_only(sim);
     const lm_grid *g = &sim->grid;
     const lm_particles *p = &sim->p;
     const int W = g->sw;
@@ -44,6 +71,7 @@ static void consistent_times(const lm_sim *sim, const double *ux, const double *
          * in M_L, so not in M_C either (M_C 1 = M_L 1 keeps a uniform
          * field) */
         if (p->pin[q] && sim->pins[p->pin[q] - 1].point) continue;
+        if (only && !sim->bodies[p->body[q]].membrane) continue;
         /* a heavy end point has only the wire's share on the grid
          * (constraint.c); its extra mass is the constraint's, so M_C takes
          * the same share (with all of it M_C 1 = M_L 1 broke and the
@@ -61,8 +89,13 @@ static void consistent_times(const lm_sim *sim, const double *ux, const double *
         for (int b = 0; b < W; b++) {
             const long row = lm_stencil_row(g, p->node[q], b);
             for (int a = 0; a < W; a++) {
-                bx[row + a] += N[b * W + a] * sx;
-                by[row + a] += N[b * W + a] * sy;
+                if (only) {
+                    bx[row + a] += N[b * W + a] * (mq * ux[row + a] - sx);
+                    by[row + a] += N[b * W + a] * (mq * uy[row + a] - sy);
+                } else {
+                    bx[row + a] += N[b * W + a] * sx;
+                    by[row + a] += N[b * W + a] * sy;
+                }
             }
         }
     }
@@ -89,7 +122,7 @@ static void correct_weighted(lm_sim *sim, double *rx, double *ry, int what, doub
 {
     lm_grid *g = &sim->grid;
     size_t nn = lm_grid_nodes(g);
-    const int momentum = what == 0, con = lm_constraint_active(sim);
+    const int momentum = what == 0, con = lm_constraint_active(sim), only = membrane_only(sim);
     for (size_t i = 0; i < nn; i++) {
         double r = g->m[i] > 0 ? 1.0 / g->m[i] : 0;
         ux[i] = rx[i] * r;
@@ -113,8 +146,8 @@ static void correct_weighted(lm_sim *sim, double *rx, double *ry, int what, doub
             bx[i] = by[i] = 0;
             continue;
         }
-        bx[i] = ux[i] - bx[i] / g->m[i];
-        by[i] = uy[i] - by[i] / g->m[i];
+        bx[i] = only ? bx[i] / g->m[i] : ux[i] - bx[i] / g->m[i];
+        by[i] = only ? by[i] / g->m[i] : uy[i] - by[i] / g->m[i];
     }
     if (con) {
         lm_grid_apply_bc(g, bx, by);
@@ -125,6 +158,12 @@ static void correct_weighted(lm_sim *sim, double *rx, double *ry, int what, doub
          * them (correcting them doubled a hanging chain's end tension,
          * measured: +100 %), and holds its momentum whatever they are */
         if (!(g->m[i] > 0) || (sim->npins && sim->work->pin_w[i] > 0)) continue;
+        /* mass = "membrane": a node no membrane point reaches and no
+         * constraint moved keeps its own sums, so a gas or solid away from
+         * the membranes steps to the bit as on the lumped mass */
+        if (only && bx[i] == 0 && by[i] == 0 && ux[i] == rx[i] * (1.0 / g->m[i]) &&
+            uy[i] == ry[i] * (1.0 / g->m[i]))
+            continue;
         rx[i] = g->m[i] * (ux[i] + bx[i]);
         ry[i] = g->m[i] * (uy[i] + by[i]);
     }
@@ -156,7 +195,7 @@ void lm_mass_correct_velocity(lm_sim *sim, double *sx, double *sy)
 {
     lm_grid *g = &sim->grid;
     size_t nn = lm_grid_nodes(g);
-    const int con = lm_constraint_active(sim);
+    const int con = lm_constraint_active(sim), only = membrane_only(sim);
     lm_pin_velocity(sim);
     lm_grid_apply_bc(g, g->vx, g->vy);
     if (con) lm_constraint_field(sim, 2, g->vx, g->vy);
@@ -173,8 +212,8 @@ void lm_mass_correct_velocity(lm_sim *sim, double *sx, double *sy)
             sx[i] = sy[i] = 0;
             continue;
         }
-        sx[i] = g->vx[i] - sx[i] / g->m[i];
-        sy[i] = g->vy[i] - sy[i] / g->m[i];
+        sx[i] = only ? sx[i] / g->m[i] : g->vx[i] - sx[i] / g->m[i];
+        sy[i] = only ? sy[i] / g->m[i] : g->vy[i] - sy[i] / g->m[i];
     }
     if (con) {
         lm_grid_apply_bc(g, sx, sy);
