@@ -38,8 +38,8 @@
  *    a cell (+9.1 % for mode 3 at 8 a cell). mass = "membrane" (the
  *    consistent-mass correction on the membranes' points only) and
  *    "corrected" pass them (+0.34 / +1.12, +0.05 / +0.14 %) and every
- *    other membrane case, but are not the default: "membrane" costs 1.22 x
- *    a step on a gas-filled circle and 1.66 x on the trampoline (a sheet
+ *    other membrane case, but are not the default: "membrane" costs 1.18 x
+ *    a step on a gas-filled circle and 1.48 x on the trampoline (a sheet
  *    and a small ball), "corrected" about 2 x and a Courant factor of
  *    0.63, and either would change every default page with a membrane
  *    (docs/robustness.md "The membranes' consistent mass").
@@ -109,7 +109,7 @@ void la_option_warn(const la_sim *s)
              "cells long, +1.0 / +2.35 % at 32 (docs/verification.md, cases string_wall_mode2, "
              "string_wall_mode3, string_pin_mode2, string_pin_mode3: two lumped-mass smoothings "
              "of the quadratic B-spline, predicted +4.1 / +9.5 %); mass = \"membrane\" (the "
-             "consistent mass on the membranes' points only, 1.2-1.7 x the step) gives "
+             "consistent mass on the membranes' points only, 1.2-1.5 x the step) gives "
              "+0.34 / +1.12 and +0.05 / +0.14 % and passes every membrane case");
     say_once(sim, sim->def.apic && membrane >= 0 ? gas : -1, &said_apic,
              "is on transfer = \"apic\" inside a membrane: the verification suite's gas-filled "
