@@ -29,11 +29,20 @@
  *    slowly, periods of modes 2 / 3 +4.3 / +10.1 % at cell 1/16 (the
  *    string 16 cells long), +1.04 / +2.35 % at 1/32, second order
  *    (string_wall_mode2/3; pinned: +3.84 / +9.36, +0.88 / +2.21 %).
- *    mass = "corrected" passes them (+0.34 / +1.12, +0.05 / +0.14 %) and
- *    the rest of the suite, but is not the default: it costs a Courant
- *    factor of 0.63, the phase-by-phase step and three more transfers a
- *    step, and would change every default page (docs/robustness.md
- *    "Corrected mass").
+ *    Why (docs/robustness.md "Where the string's dispersion comes from"):
+ *    a segment point's force reaches it through N^T M_L^-1 N and it moves
+ *    with the re-mapped velocity, N^T M_L^-1 N M_p v: two lumped-mass
+ *    smoothings, each sinc^6(theta/2) in the Bloch analysis, so omega_h /
+ *    omega = 1 - 25 theta^2 / 96 with points h/2 apart (predicted +4.10 /
+ *    +9.49 % at cell 1/16, +1.01 / +2.29 % at 1/32), whatever the points
+ *    a cell (+9.1 % for mode 3 at 8 a cell). mass = "membrane" (the
+ *    consistent-mass correction on the membranes' points only) and
+ *    "corrected" pass them (+0.34 / +1.12, +0.05 / +0.14 %) and every
+ *    other membrane case, but are not the default: "membrane" costs 1.18 x
+ *    a step on a gas-filled circle and 1.48 x on the trampoline (a sheet
+ *    and a small ball), "corrected" about 2 x and a Courant factor of
+ *    0.63, and either would change every default page with a membrane
+ *    (docs/robustness.md "The membranes' consistent mass").
  *  - transfer = "apic" with a gas inside a membrane: the gas-filled circle
  *    at 0.4 cells' spacing misses its hoop stress by 37.6 / 7.8 % and the
  *    axisymmetric sphere at 0.2 cells by 27.6 % (and inverts at the fine
@@ -98,8 +107,10 @@ void la_option_warn(const la_sim *s)
              "has the lumped mass (mass = \"lumped\", the default): its dispersion rings a "
              "taut string's modes 2 and 3 too slowly, periods +4.3 / +10.1 % with the string 16 "
              "cells long, +1.0 / +2.35 % at 32 (docs/verification.md, cases string_wall_mode2, "
-             "string_wall_mode3, string_pin_mode2, string_pin_mode3); mass = \"corrected\" "
-             "gives +0.34 / +1.12 and +0.05 / +0.14 % (at a Courant factor of 0.63)");
+             "string_wall_mode3, string_pin_mode2, string_pin_mode3: two lumped-mass smoothings "
+             "of the quadratic B-spline, predicted +4.1 / +9.5 %); mass = \"membrane\" (the "
+             "consistent mass on the membranes' points only, 1.2-1.5 x the step) gives "
+             "+0.34 / +1.12 and +0.05 / +0.14 % and passes every membrane case");
     say_once(sim, sim->def.apic && membrane >= 0 ? gas : -1, &said_apic,
              "is on transfer = \"apic\" inside a membrane: the verification suite's gas-filled "
              "circle at 0.4 cells' spacing misses its hoop stress by 37.6 / 7.8 % and the "

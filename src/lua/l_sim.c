@@ -13,7 +13,7 @@
 #include "l_sim3.h"
 
 static const char *const schemes[] = {"musl", "usl", NULL};
-static const char *const masses[] = {"lumped", "corrected", NULL};
+static const char *const masses[] = {"lumped", "corrected", "membrane", NULL};
 static const char *const transfers[] = {"flip", "apic", NULL};
 /* in lm_basis order (mpm.h) */
 static const char *const bases[] = {"linear", "gimp", "bspline2", NULL};

@@ -233,7 +233,7 @@ void lm_step_grid_update(lm_sim *sim)
      * lumped path solves its constraints after it; without constraints the
      * correction is one linear map of p and f alike, which commutes with
      * the damping's node-by-node f - c p, so the order changes nothing. */
-    const int corrected = sim->def.mass == LM_MASS_CORRECTED && !sim->contact;
+    const int corrected = lm_mass_corrects(sim);
     if (corrected) lm_mass_correct_momentum_forces(sim);
     if (lm_constraint_active(sim)) {
         /* heavy end points, on p and f with the walls applied (the solve
@@ -310,14 +310,13 @@ void lm_step_strain_velocity_end(lm_sim *sim, int remap)
         }
         /* scratch px, py: MUSL reads p_i^L no more this step (step 9
          * clears them) */
-        if (sim->def.mass == LM_MASS_CORRECTED && !sim->contact)
-            lm_mass_correct_velocity(sim, g->px, g->py);
+        if (lm_mass_corrects(sim)) lm_mass_correct_velocity(sim, g->px, g->py);
     }
     lm_pin_velocity(sim);
     lm_grid_apply_bc(g, g->vx, g->vy);
     /* heavy ends; with mass = "corrected" the re-map solved them already */
     if (lm_constraint_active(sim) &&
-        !(remap && sim->def.mass == LM_MASS_CORRECTED && !sim->contact))
+        !(remap && lm_mass_corrects(sim)))
         lm_constraint_velocity(sim);
     double *const fill[2] = {g->vx, g->vy};
     static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};

@@ -234,6 +234,9 @@ void lm_grid_apply_bc(const lm_grid *g, double *ux, double *uy);
 /* mass = "corrected" (mass_corrected.c): before step 3, p_i and f_i; in
  * step 5 (MUSL), the re-mapped velocities in (vx, vy), (sx, sy) scratch. */
 void lm_mass_correct_momentum_forces(lm_sim *sim);
+/* Whether the step applies that correction: mass = "corrected" or
+ * "membrane", and no contact's own fields. */
+int lm_mass_corrects(const lm_sim *sim);
 void lm_mass_correct_velocity(lm_sim *sim, double *sx, double *sy);
 /* Sets the ghost ring and stride for the basis (lm_sim_new). */
 void lm_grid_layout(lm_grid *g, lm_basis basis);

@@ -43,7 +43,7 @@ int lm_step_fusable(const lm_sim *sim)
 {
     if (sim->contact || sim->npins || sim->nlinks || sim->def.axisym ||
         sim->def.stress == LM_STRESS_CELL || lm_constraint_active(sim) ||
-        sim->def.mass == LM_MASS_CORRECTED || sim->def.apic)
+        lm_mass_corrects(sim) || sim->def.apic)
         return 0;
     for (int m = 0; m < sim->nmats; m++)
         if (sim->mats[m]->kind == LM_GAS && sim->mats[m]->split > 0) return 0;

@@ -221,6 +221,7 @@ static lm_status refuse(lm_sim *sim)
     else if (sim->def.axisym) what = "axisymmetric = true";
     else if (sim->def.stress == LM_STRESS_CELL) what = "stress = \"cell\"";
     else if (sim->def.mass == LM_MASS_CORRECTED) what = "mass = \"corrected\"";
+    else if (sim->def.mass == LM_MASS_MEMBRANE) what = "mass = \"membrane\"";
     else if (sim->def.damping > 0) what = "damping";
     else if (sim->def.apic) what = "transfer = \"apic\"";   /* its transfers are FLIP's */
     if (!what) return LM_OK;

@@ -1,10 +1,11 @@
 -- expect: 0
--- stderr: warning: membrane 'string' \(body 1\) has the lumped mass \(mass = "lumped", the default\): .*\+4\.3 / \+10\.1 %.*string_wall_mode2, string_wall_mode3, string_pin_mode2, string_pin_mode3\).*mass = "corrected" gives
+-- stderr: warning: membrane 'string' \(body 1\) has the lumped mass \(mass = "lumped", the default\): .*\+4\.3 / \+10\.1 %.*string_wall_mode2, string_wall_mode3, string_pin_mode2, string_pin_mode3: two lumped-mass smoothings.*\); mass = "membrane" .* gives \+0\.34 / \+1\.12
 -- stderr-once: lamina: warning:
 -- A membrane with segment forces on the lumped mass (the default) is
 -- warned of once (issue 30 item 2; l_option_warn.c): the lumped mass's
--- dispersion misses string modes 2 and 3, and mass = "corrected" is not
--- the default (docs/robustness.md "Corrected mass"). The pinned string of
+-- dispersion misses string modes 2 and 3, and mass = "membrane" (or
+-- "corrected"), which passes them, is not the default (docs/robustness.md
+-- "The membranes' consistent mass"). The pinned string of
 -- pinned_rest at cell 1/16, two sims (one named lumped), one warning.
 for k = 1, 2 do
   local h = 1 / 16

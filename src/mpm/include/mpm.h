@@ -27,8 +27,10 @@ typedef enum lm_status {
 
 typedef enum lm_scheme { LM_MUSL = 0, LM_USL = 1 } lm_scheme;
 /* The grid's mass: lumped (row sums, [F] eq 7), or lumped with one Neumann
- * step towards the consistent mass (mass_corrected.c). */
-typedef enum lm_mass { LM_MASS_LUMPED = 0, LM_MASS_CORRECTED = 1 } lm_mass;
+ * step towards the consistent mass (mass_corrected.c), of every point's
+ * share or of the membranes' points' only (LM_MASS_MEMBRANE: the rest
+ * lumped). */
+typedef enum lm_mass { LM_MASS_LUMPED = 0, LM_MASS_CORRECTED = 1, LM_MASS_MEMBRANE = 2 } lm_mass;
 
 /* Shape functions of the step (lamina.sim{basis}; docs/decisions.md
  * "Shape functions"): the bilinear hats of the papers (shape.c, a 2 x 2
