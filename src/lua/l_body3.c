@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "l_pressure3.h"
 #include "l_sim3.h"
 
 typedef struct la_body3 { int index; } la_body3;
@@ -98,15 +99,29 @@ static int velocity3(void *ctx, const double x[3], double v[3])
     return 0;
 }
 
+/* A lamina.gas's keys with no 3D form, refused by name: the 3D engine
+ * finds rho_p by continuity only (sim3_step.c, rho /= det F) and does not
+ * split points. */
+static void gas_keys3(lua_State *L, const lm_material *m, const char *fn)
+{
+    if (m->density != LM_DENSITY_CONTINUITY)
+        luaL_error(L, "%s: 'material': lamina.gas{density = ...}: 3D has density = "
+                   "\"continuity\" only in this build", fn);
+    if (m->split != 0)
+        luaL_error(L, "%s: 'material': lamina.gas{split = %f}: 3D does not split points in "
+                   "this build (leave split out)", fn, m->split);
+}
+
 /* The engine's index of the material at midx in this sim (added the first
  * time; the sim's uservalue table "mats3" maps material -> index). */
 static int material3(lua_State *L, la_sim3 *s3, int midx, const char *fn)
 {
     la_material *u = la_check_material(L, midx);
-    if (u->def.kind != LM_ELASTIC)
-        luaL_error(L, "%s: 'material': 3D has lamina.elastic solids in this build (gas and "
-                   "membranes in 3D: issue 34)", fn);
-    if (u->plane_given)
+    if (u->def.kind != LM_ELASTIC && u->def.kind != LM_GAS)
+        luaL_error(L, "%s: 'material': 3D has lamina.elastic solids and lamina.gas in this "
+                   "build (membranes in 3D: issue 34)", fn);
+    if (u->def.kind == LM_GAS) gas_keys3(L, &u->def, fn);
+    if (u->def.kind == LM_ELASTIC && u->plane_given)
         luaL_error(L, "%s: 'material' has 'plane' set: a 3D solid has no plane assumption "
                    "(leave plane out of lamina.elastic{} for a 3D sim)", fn);
     lua_getiuservalue(L, 1, 1);
@@ -123,7 +138,9 @@ static int material3(lua_State *L, la_sim3 *s3, int midx, const char *fn)
         return k;
     }
     lua_pop(L, 1);
-    lm3_material m = {.rho = u->def.rho, .E = u->def.E, .nu = u->def.nu, .kind = LM3_ELASTIC};
+    lm3_material m = u->def.kind == LM_GAS ? la_gas3(&u->def)
+                     : (lm3_material){.rho = u->def.rho, .E = u->def.E, .nu = u->def.nu,
+                                      .kind = LM3_ELASTIC};
     char err[256];
     int k = lm3_material_add(s3->sim, &m, err, sizeof err);
     if (k < 0) luaL_error(L, "%s: material: %s", fn, err);
@@ -296,7 +313,7 @@ static void push_array(lua_State *L, const char *name, const double *a, size_t f
 
 /* body:particles(): arrays x, y, z, vx, vy, vz, mass, rho, the global
  * Cauchy stress sxx, syy, szz, syz, sxz, sxy, and n (the 2D names with the
- * third component's added). */
+ * third component's added); a gas body's also e and pressure (= p). */
 static int body3_particles(lua_State *L)
 {
     la_sim3 *s3;
@@ -310,6 +327,20 @@ static int body3_particles(lua_State *L)
     push_array(L, "mass", p->m, r->first, r->n);
     push_array(L, "rho", p->rho, r->first, r->n);
     for (int c = 0; c < 6; c++) push_array(L, ss[c], p->s[c], r->first, r->n);
+    const lm3_material *mat = &s3->sim->mats[r->mat];
+    if (mat->kind == LM3_GAS) {
+        /* a gas body's e and its equation of state's pressure (gamma - 1)
+         * rho e ([F] eq 22; the 2D field table's "pressure", without q) */
+        push_array(L, "e", p->e, r->first, r->n);
+        lua_createtable(L, (int)r->n, 0);
+        for (size_t i = 0; i < r->n; i++) {
+            lua_pushnumber(L, la_pressure3(s3->sim, r->first + i));
+            lua_rawseti(L, -2, (lua_Integer)i + 1);
+        }
+        lua_pushvalue(L, -1);
+        lua_setfield(L, -3, "p");   /* the 2D handle's older key, the same array */
+        lua_setfield(L, -2, "pressure");
+    }
     lua_pushinteger(L, (lua_Integer)r->n);
     lua_setfield(L, -2, "n");
     return 1;

@@ -21,6 +21,7 @@
 #include "frame3d.h"
 #include "l_frame3d.h"
 #include "l_internal.h"
+#include "l_pressure3.h"
 #include "render.h"
 
 #define MAX_PANELS 64
@@ -97,8 +98,8 @@ static double field_at(const lm3_sim *s, int f, size_t i)
     case F_VY:
     case F_VZ:
         return p->v[f - F_VX][i];
-    case F_PRESSURE:    /* the mean stress's negative, -(sxx + syy + szz) / 3 */
-        return -(p->s[0][i] + p->s[1][i] + p->s[2][i]) / 3.0;
+    case F_PRESSURE:    /* a gas's (gamma - 1) rho e, others' -tr sigma / 3 */
+        return la_pressure3(s, i);
     case F_SXX:
     case F_SYY:
     case F_SZZ:

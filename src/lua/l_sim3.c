@@ -266,15 +266,30 @@ int la_sim3_tostring(lua_State *L)
     return 1;
 }
 
+/* A lamina.gas as the 3D engine's gas: the same constants (the 2D and 3D
+ * laws share lm_gas_av, sim3_gas.c), so a 3D run of a gas is the 2D one's
+ * material. */
+lm3_material la_gas3(const lm_material *m)
+{
+    lm3_material g = {.rho = m->rho, .kind = LM3_GAS, .gamma = m->gamma, .mu = m->mu,
+                      .e0 = m->e0, .av = m->av, .av_c1 = m->av_c1, .av_c2 = m->av_c2,
+                      .av_lambda = m->av_lambda, .av_g = m->av_g};
+    return g;
+}
+
 int la_sim3_set_material(la_sim3 *s3, int k, const lm_material *m)
 {
     if (k < 0 || k >= s3->sim->nmat) return -1;
-    /* the live constants over the engine's copy (its kind and the gas's
-     * constants stay) */
+    /* the live constants over the engine's copy (its kind stays); a gas's
+     * live keys (mu, av) reach it with the rest of its constants */
     lm3_material next = s3->sim->mats[k];
-    next.rho = m->rho;
-    next.E = m->E;
-    next.nu = m->nu;
+    if (next.kind == LM3_GAS) {
+        next = la_gas3(m);
+    } else {
+        next.rho = m->rho;
+        next.E = m->E;
+        next.nu = m->nu;
+    }
     return lm3_material_set(s3->sim, k, &next) == LM_OK ? 0 : -1;
 }
 

@@ -37,13 +37,16 @@ void la_sim3_charge(lua_State *L, la_sim3 *s3, size_t bytes, const char *fn);
 la_sim3 *la_check_sim3(lua_State *L, int idx, const char *fn);
 /* Three finite numbers at key of the table at idx: 1, or 0 when absent. */
 int la_triple(lua_State *L, int idx, const char *fn, const char *key, double v[3]);
-/* {kinetic, strain, internal (0: no gas in 3D yet), potential, total} */
+/* {kinetic, strain, internal (the gases' sum m e), potential, total} */
 void la_sim3_push_energy(lua_State *L, const lm3_energy *e);
 /* Refuses a 2D-only method called on a 3D sim (and the reverse), naming it. */
 int la_sim3_refuse(lua_State *L);
 
-/* A live change of material k (mat.E, mat.nu: l_material.c): 0, or -1
- * with the engine's reason in s3->sim->err */
+/* A lamina.gas as the 3D engine's material (kind LM3_GAS, the same
+ * constants). */
+lm3_material la_gas3(const lm_material *m);
+/* A live change of material k (mat.E, mat.nu; a gas's mu, av:
+ * l_material.c): 0, or -1 with the engine's reason in s3->sim->err */
 int la_sim3_set_material(la_sim3 *s3, int k, const lm_material *m);
 
 /* l_sim3_run.c: run, step, every, at (the 2D semantics) */

@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "l_pressure3.h"
 #include "l_sim3.h"
 #include "vtk.h"
 
@@ -40,7 +41,7 @@ int la_vtk3_write_particles(const la_sim3 *s3, const char *path, char *err, size
             vel[3 * q + a] = p->v[a][q];
         }
         for (int c = 0; c < 6; c++) sig[6 * q + c] = p->s[voigt[c]][q];
-        pr[q] = -(p->s[0][q] + p->s[1][q] + p->s[2][q]) / 3.0;
+        pr[q] = la_pressure3(s3->sim, q);   /* a gas's (gamma - 1) rho e */
         rho[q] = p->rho[q];
         mass[q] = p->m[q];
         conn[q] = (int64_t)q;

@@ -40,7 +40,19 @@ lm_status lm3_material_set(lm3_sim *sim, int k, const lm3_material *m)
         snprintf(sim->err, sizeof sim->err, "rho cannot be changed (the masses were set from it)");
         return LM_ERR_INPUT;
     }
-    if (!(m->E > 0) || !isfinite(m->E) || !(m->nu > -1 && m->nu < 0.5)) {
+    if (m->kind != sim->mats[k].kind) {
+        snprintf(sim->err, sizeof sim->err, "the kind cannot be changed (the particles "
+                 "were seeded as it)");
+        return LM_ERR_INPUT;
+    }
+    /* a gas's live constants (mu, av: l_material.c) as lm3_material_add
+     * checks them; a solid's E, nu */
+    if (m->kind == LM3_GAS) {
+        if (!(m->mu >= 0) || !isfinite(m->mu)) {
+            snprintf(sim->err, sizeof sim->err, "mu = %g: must be >= 0", m->mu);
+            return LM_ERR_INPUT;
+        }
+    } else if (!(m->E > 0) || !isfinite(m->E) || !(m->nu > -1 && m->nu < 0.5)) {
         snprintf(sim->err, sizeof sim->err, "E = %g, nu = %g: E must be positive and nu in "
                  "(-1, 0.5)", m->E, m->nu);
         return LM_ERR_INPUT;

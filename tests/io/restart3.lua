@@ -1,5 +1,5 @@
 -- Checkpoint and restart of a 3D run (issue 34 item 1), for restart3.sh:
--- a ball thrown onto the floor and a box, recorded, checkpointed every 0.05;
+-- a ball thrown onto the floor, a box and a gas, recorded, checkpointed every 0.05;
 -- prints "RESULT t ... hash H" at the end. --set make2d=true instead makes
 -- a 2D run's checkpoint (the refusal of the other dimension's file).
 local out = lamina.param("out", "out/restart3/a")
@@ -20,6 +20,10 @@ local ball = sim:body{ material = rock, velocity = {0.3, 0.1, -1},
                        region = lamina.ball{ center = {0.2, 0.25, 0.25}, radius = radius } }
 sim:body{ material = lamina.elastic{ rho = 500, E = 5e4, nu = 0.2 }, ppc = {2, 2, 1},
           region = lamina.box{ min = {0.3, 0.1, 0}, max = {0.45, 0.4, 0.1} } }
+-- a gas (issue 34 item 1): its e and constants are in the checkpoint, the
+-- CSV's internal energy (sum m e) shows them restored
+sim:body{ material = lamina.gas{ rho = 1000, p = 1, av = true, mu = 0.01 }, ppc = 8,
+          region = lamina.box{ min = {0, 0, 0}, max = {0.1, 0.5, 0.2} } }
 sim:record{ file = out .. ".csv", every = 0.01, energy = true,
             values = { zc = function() local _, _, z = ball:com() return z end } }
 sim:checkpoint{ file = out .. ".ckpt", every = 0.05 }
