@@ -15,18 +15,16 @@
 
 #define MAX_PANELS 64
 
-
-
 /* backend = "cairo" | "osmesa" | "egl" | "gl" (EGL, else OSMesa); else
  * `lamina run --backend`; else cairo. SVG and PDF are cairo's: a run-wide
  * GL backend does not apply to them, an explicit one is refused when the
  * file is written. */
-static lr_backend backend(lua_State *L, const char *fn, const char *file,
-                          const lamina_run *run)
+lr_backend la_frame_backend(lua_State *L, int idx, const char *fn, const char *file)
 {
-    const char *name = la_opt_string(L, 2, fn, "backend", NULL);
-    if (!name && lr_format_of(file) != LR_FORMAT_PNG)
+    const char *name = la_opt_string(L, idx, fn, "backend", NULL);
+    if (!name && file && lr_format_of(file) != LR_FORMAT_PNG)
         return LR_BACKEND_CAIRO;
+    const lamina_run *run = la_run(L);
     if (!name)
         name = run && run->backend ? run->backend : "cairo";
     lr_backend b;
@@ -110,6 +108,24 @@ static void layout(lua_State *L, const char *fn, size_t n, lr_figure *f)
     lua_pop(L, 1);
 }
 
+/* A frame's `label` key (issue 31 item 7), 2D and 3D alike: a string, or
+ * true / absent for the clock "t = ...   step ...", false for none. What it
+ * pushes stays on the stack until the frame is written. */
+const char *la_frame_label(lua_State *L, int idx, const char *fn, double t, long step)
+{
+    int lt = la_getfield(L, idx, "label");
+    if (lt != LUA_TNIL && lt != LUA_TSTRING && lt != LUA_TBOOLEAN)
+        luaL_error(L, "%s: 'label' must be a string, true or false (got %s)", fn,
+                   luaL_typename(L, -1));
+    if (lt == LUA_TSTRING) return lua_tostring(L, -1);
+    if (lt == LUA_TNIL || lua_toboolean(L, -1)) {
+        char text[64];
+        snprintf(text, sizeof text, "t = %.4f   step %ld", t, step);
+        return lua_pushstring(L, text);
+    }
+    return NULL;
+}
+
 int la_sim_frame(lua_State *L)
 {
     static const char *const keys[] = { "file", "width", "height", "title", "label",
@@ -127,13 +143,11 @@ int la_sim_frame(lua_State *L)
     if (!(w >= 16 && w <= 16384) || !(h >= 16 && h <= 16384) || w != (int)w || h != (int)h)
         return luaL_error(L, "%s: width and height must be whole numbers in [16, 16384] "
                           "(got %f x %f)", fn, w, h);
-    lamina_run *run = la_run(L);
-
     lr_figure f;
     memset(&f, 0, sizeof f);
     f.width = (int)w;
     f.height = (int)h;
-    f.backend = backend(L, fn, file, run);
+    f.backend = la_frame_backend(L, 2, fn, file);
     la_frame_ctx ctx = { fn, 0, 0, 0, 0, 0, 0, scale_opt(L, fn) };
     lua_newtable(L);
     ctx.anchor = lua_gettop(L);
@@ -148,16 +162,7 @@ int la_sim_frame(lua_State *L)
         f.title = f.title && *f.title ? lua_pushfstring(L, "%s - %s", f.title, t)
                                       : lua_pushstring(L, t);
     }
-    int lt = la_getfield(L, 2, "label");
-    if (lt != LUA_TNIL && lt != LUA_TSTRING && lt != LUA_TBOOLEAN)   /* issue 31 item 7 */
-        luaL_error(L, "%s: 'label' must be a string, true or false (got %s)", fn,
-                   luaL_typename(L, -1));
-    if (lt == LUA_TSTRING) f.label = lua_tostring(L, -1);
-    else if (lua_isnil(L, -1) || lua_toboolean(L, -1)) {
-        char t[64];
-        snprintf(t, sizeof t, "t = %.4f   step %ld", sim->t, sim->step);
-        f.label = lua_pushstring(L, t);
-    }
+    f.label = la_frame_label(L, 2, fn, sim->t, sim->step);
     /* label and title strings stay on the stack until we return */
 
     la_prov prov;

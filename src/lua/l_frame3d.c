@@ -451,23 +451,6 @@ static void panel(lua_State *L, ctx3 *c, int pidx, const char *where, lr_panel3d
     c->isos += p->nisos;
 }
 
-/* backend = "cairo" | "osmesa" | "egl" | "gl"; else `lamina run --backend`;
- * else cairo (as sim:frame's, l_frame.c) */
-static lr_backend backend(lua_State *L, const char *fn, int fidx)
-{
-    const char *name = la_opt_string(L, fidx, fn, "backend", NULL);
-    lamina_run *run = la_run(L);
-    if (!name)
-        name = run && run->backend ? run->backend : "cairo";
-    lr_backend b;
-    char why[512];
-    if (lr_backend_parse(name, &b, why, sizeof why) != 0)
-        luaL_error(L, "%s: %s", fn, why);
-    if (lr_backend_check(b, why, sizeof why) != 0)
-        luaL_error(L, "%s: backend = \"%s\": %s", fn, name, why);
-    return b;
-}
-
 int l_frame3d(lua_State *L, const lm3_sim *sim, int opts_index)
 {
     static const char *const keys[] = {"file", "width", "height", "title", "label", "backend",
@@ -491,7 +474,7 @@ int l_frame3d(lua_State *L, const lm3_sim *sim, int opts_index)
     memset(&f, 0, sizeof f);
     f.width = (int)w;
     f.height = (int)h;
-    f.backend = backend(L, fn, fidx);
+    f.backend = la_frame_backend(L, fidx, fn, NULL);   /* PNG only (l_frame.c) */
     ctx3 c = {fn, sim, 0, 0, fidx, 0, 0, 0};
     lua_newtable(L);
     c.anchor = lua_gettop(L);
@@ -539,17 +522,7 @@ int l_frame3d(lua_State *L, const lm3_sim *sim, int opts_index)
     }
     lua_pop(L, 1);
     f.title = la_opt_string(L, fidx, fn, "title", NULL);
-    int lt = la_getfield(L, fidx, "label");
-    if (lt != LUA_TNIL && lt != LUA_TSTRING && lt != LUA_TBOOLEAN)
-        return luaL_error(L, "%s: 'label' must be a string, true or false (got %s)", fn,
-                          luaL_typename(L, -1));
-    if (lt == LUA_TSTRING) {
-        f.label = lua_tostring(L, -1);
-    } else if (lt == LUA_TNIL || lua_toboolean(L, -1)) {
-        char t[64];
-        snprintf(t, sizeof t, "t = %.4f   step %ld", sim->t, sim->nstep);
-        f.label = lua_pushstring(L, t);
-    }
+    f.label = la_frame_label(L, fidx, fn, sim->t, sim->nstep);
     /* label and title strings stay on the stack until we return */
 
     la_prov prov;

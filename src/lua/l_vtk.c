@@ -161,6 +161,23 @@ static int write_particles(const lm_sim *sim, const char *path, char *err, size_
     return rc;
 }
 
+/* The three arrays of an unstructured grid for vtk.c, all or none: nd
+ * doubles of points and data, nconn connectivity and offsets, ntypes cell
+ * types (2D and 3D writers alike); -1 and err when memory ran out. */
+int la_vtk_arrays(size_t nd, size_t nconn, size_t ntypes, double **d, int64_t **conn,
+                  uint8_t **types, const char *path, char *err, size_t errlen)
+{
+    *d = malloc((nd + 1) * sizeof **d);
+    *conn = malloc((nconn + 1) * sizeof **conn);
+    *types = malloc(ntypes + 1);
+    if (*d && *conn && *types) return 0;
+    free(*d);
+    free(*conn);
+    free(*types);
+    snprintf(err, errlen, "cannot write '%s': out of memory", path);
+    return -1;
+}
+
 /* The grid as an unstructured grid of quads (VTK_QUAD) over its nodes:
  * image data (.vti) is smaller, but meshio reads neither .vti nor .vtr,
  * only .vtu among VTK's XML files, and a .pvd series must be XML, so the
@@ -171,16 +188,10 @@ static int write_grid(const lm_sim *sim, const char *path, char *err, size_t err
     const lm_grid *gr = &sim->grid;
     size_t nn = (size_t)(gr->nx + 1) * (size_t)(gr->ny + 1);
     size_t nc = (size_t)gr->nx * (size_t)gr->ny;
-    double *d = malloc(10 * nn * sizeof *d);
-    int64_t *conn = malloc(5 * nc * sizeof *conn + 1);
-    uint8_t *types = malloc(nc + 1);
-    if (!d || !conn || !types) {
-        free(d);
-        free(conn);
-        free(types);
-        snprintf(err, errlen, "cannot write '%s': out of memory", path);
-        return -1;
-    }
+    double *d;
+    int64_t *conn;
+    uint8_t *types;
+    if (la_vtk_arrays(10 * nn, 5 * nc, nc, &d, &conn, &types, path, err, errlen) != 0) return -1;
     double *vel = d + nn, *force = d + 4 * nn, *xyz = d + 7 * nn;
     int64_t *offs = conn + 4 * nc;
     /* the nodes 0..nx x 0..ny, without the wider bases' ghost ring */

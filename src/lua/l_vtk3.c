@@ -19,16 +19,10 @@ int la_vtk3_write_particles(const la_sim3 *s3, const char *path, char *err, size
     const lm3_particles *p = &s3->sim->p;
     size_t n = p->n;
     /* xyz 3, velocity 3, stress 6, pressure, density, mass, body; cells */
-    double *d = malloc((16 * n + 1) * sizeof *d);
-    int64_t *conn = malloc((2 * n + 1) * sizeof *conn);
-    uint8_t *types = malloc(n + 1);
-    if (!d || !conn || !types) {
-        free(d);
-        free(conn);
-        free(types);
-        snprintf(err, errlen, "cannot write '%s': out of memory", path);
-        return -1;
-    }
+    double *d;
+    int64_t *conn;
+    uint8_t *types;
+    if (la_vtk_arrays(16 * n, 2 * n, n, &d, &conn, &types, path, err, errlen) != 0) return -1;
     double *xyz = d, *vel = d + 3 * n, *sig = d + 6 * n, *pr = d + 12 * n, *rho = d + 13 * n,
            *mass = d + 14 * n, *body = d + 15 * n;
     int64_t *offs = conn + n;
@@ -68,16 +62,10 @@ int la_vtk3_write_grid(const la_sim3 *s3, const char *path, char *err, size_t er
     const int nx = g->n[0], ny = g->n[1], nz = g->n[2];
     size_t nn = (size_t)(nx + 1) * (size_t)(ny + 1) * (size_t)(nz + 1);
     size_t nc = (size_t)nx * (size_t)ny * (size_t)nz;
-    double *d = malloc(10 * nn * sizeof *d);
-    int64_t *conn = malloc(9 * nc * sizeof *conn + 1);
-    uint8_t *types = malloc(nc + 1);
-    if (!d || !conn || !types) {
-        free(d);
-        free(conn);
-        free(types);
-        snprintf(err, errlen, "cannot write '%s': out of memory", path);
-        return -1;
-    }
+    double *d;
+    int64_t *conn;
+    uint8_t *types;
+    if (la_vtk_arrays(10 * nn, 9 * nc, nc, &d, &conn, &types, path, err, errlen) != 0) return -1;
     double *vel = d + nn, *force = d + 4 * nn, *xyz = d + 7 * nn;
     int64_t *offs = conn + 8 * nc;
     size_t i = 0;
