@@ -220,6 +220,27 @@ static size_t cap_after(size_t cap, size_t need)
     return c;
 }
 
+/* The points the sampler will make, at least (ceil and round taken up by
+ * one each way), for charging before it allocates; 0 when above the
+ * engine's limit (the sampler refuses those by name). */
+static size_t points_estimate(const la_surface3 *s, double spacing)
+{
+    double n;
+    if (s->kind == 0) {
+        n = fmax(12, floor(4 * 3.14159265358979323846 * s->r * s->r / (spacing * spacing)) + 1);
+    } else {
+        double uu = 0, uv = 0, vv = 0;
+        for (int k = 0; k < 3; k++) {
+            uu += s->u[k] * s->u[k];
+            uv += s->u[k] * s->v[k];
+            vv += s->v[k] * s->v[k];
+        }
+        double lu = sqrt(uu), lvp = uu > 0 ? sqrt(fmax(0, vv - uv * uv / uu)) : 0;
+        n = (ceil(lu / spacing) + 1) * (ceil(lvp / spacing) + 1);
+    }
+    return n <= LM_MAX_PARTICLES ? (size_t)n : 0;
+}
+
 static void plane_coords(const la_surface3 *s, const double x[3], double *a, double *b)
 {
     /* solve x - o = a u + b v in the plane (the 2 x 2 normal equations) */
@@ -353,6 +374,13 @@ int la_sim3_membrane(lua_State *L)
         return luaL_error(L, "%s: 'pin' must be \"edges\" or a function(x, y, z) -> boolean "
                           "(got %s)", fn, luaL_typename(L, pidx));
 
+    /* charged before the sampler allocates: the process's one cap, with
+     * the particles' and the grid's (l_body3.c charges the same sum) */
+    size_t have = sim->mem ? sim->mem->p.n : 0, cap = sim->mem ? sim->mem->p.cap : 0;
+    size_t est = points_estimate(surf, spacing);
+    if (est)
+        la_sim3_charge(L, s3, lm3_grid_bytes(sim) + lm3_particle_bytes(sim->p.cap) +
+                                  mpoint_bytes(cap_after(cap, have + est)), fn);
     sample_guard *g = lua_newuserdatauv(L, sizeof *g, 0);
     memset(g, 0, sizeof *g);
     lua_createtable(L, 0, 1);
@@ -373,9 +401,7 @@ int la_sim3_membrane(lua_State *L)
     }
     if (sim->mem && sim->mem->nmem >= LM3_MAX_MEMBRANES)
         return luaL_error(L, "%s: more than %d membranes", fn, LM3_MAX_MEMBRANES);
-    /* charged before the arrays grow: the process's one cap, with the
-     * particles' and the grid's (l_body3.c charges the same sum) */
-    size_t have = sim->mem ? sim->mem->p.n : 0, cap = sim->mem ? sim->mem->p.cap : 0;
+    /* and the count made (no more than estimated: no new charge) */
     la_sim3_charge(L, s3, lm3_grid_bytes(sim) + lm3_particle_bytes(sim->p.cap) +
                               mpoint_bytes(cap_after(cap, have + g->s.n)), fn);
     int k = lm3_membrane_add(sim, &def, &g->s);

@@ -6,4 +6,4 @@ local sim = lamina.sim{ dim = 3, domain = {0, 0, 0, 1, 1, 1}, cell = 0.1, dt = 1
 local skin = lamina.membrane{ rho = 1000, E = 1e6, nu = 0.3, thickness = 1e-3, law = "plane_stress" }
 sim:membrane{ material = skin, spacing = 0.05,
               surface = lamina.rect3{ origin = {0.2, 0.2, 0.5}, u = {0.6, 0, 0}, v = {0, 0.6, 0} } }
-sim:checkpoint{ path = "m.ckpt" }
+sim:checkpoint{ file = "m.ckpt", at = 0.01 }
