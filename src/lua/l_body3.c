@@ -229,7 +229,8 @@ int la_sim3_body(lua_State *L)
                           (lua_Integer)count, LM_MAX_PARTICLES);
     /* charged before the arrays grow: the process's one cap */
     la_sim3_charge(L, s3, lm3_grid_bytes(sim) +
-                              lm3_particle_bytes(cap_after(sim->p.cap, sim->p.n + count)), fn);
+                              lm3_particle_bytes(cap_after(sim->p.cap, sim->p.n + count)) +
+                              la_membrane3_bytes(s3), fn);
     if (s3->nbodies == s3->capbodies) {
         int cap = s3->capbodies ? 2 * s3->capbodies : 8;
         la_body3rec *nb = realloc(s3->bodies, (size_t)cap * sizeof *nb);

@@ -22,6 +22,7 @@
 #include "l_frame3d.h"
 #include "l_internal.h"
 #include "l_pressure3.h"
+#include "mpm3_membrane.h"
 #include "render.h"
 
 #define MAX_PANELS 64
@@ -29,7 +30,7 @@
 
 #define PANEL3_KEYS "colour", "colourmap", "range", "colourbar", "azimuth", "elevation", \
     "distance", "target", "fov", "box", "outline", "particles", "radius", "slice", \
-    "isosurface"
+    "isosurface", "membranes", "normals"
 
 typedef struct ctx3 {
     const char *fn;
@@ -37,6 +38,7 @@ typedef struct ctx3 {
     int anchor, nanchored;
     int fidx;
     size_t particles, slices, isos;     /* drawn, for lamina:layers */
+    size_t mpoints, marrows;            /* membrane points drawn, and with normals */
 } ctx3;
 
 /* luaL_error with printf's formats (%g, which Lua's lacks). */
@@ -444,6 +446,36 @@ static void panel(lua_State *L, ctx3 *c, int pidx, const char *where, lr_panel3d
         c->particles += s->p.n;
     }
 
+    /* membranes (sim:membrane in 3D): their points, and their normals as
+     * arrows thinned to about 16 pixels apart (frame3d.c add_membrane) */
+    const lm3_membranes *ms = s->mem;
+    int show_m = bool_key(L, c, where, pidx, "membranes", 1);
+    int show_n = bool_key(L, c, where, pidx, "normals", 1);
+    if (ms && ms->nmem > 0 && show_m) {
+        lr_membrane3d *m = scratch(L, c, (size_t)ms->nmem * sizeof *m);
+        for (int k = 0; k < ms->nmem; k++) {
+            const size_t q0 = ms->mem[k].first;
+            memset(&m[k], 0, sizeof m[k]);
+            m[k].n = ms->mem[k].count;
+            m[k].x = ms->p.x[0] + q0;
+            m[k].y = ms->p.x[1] + q0;
+            m[k].z = ms->p.x[2] + q0;
+            if (show_n) {
+                m[k].nx = ms->p.nrm[0] + q0;
+                m[k].ny = ms->p.nrm[1] + q0;
+                m[k].nz = ms->p.nrm[2] + q0;
+            }
+            m[k].colour = (lr_rgba){0.15, 0.35, 0.75, 1};
+            m[k].radius = radius;
+            m[k].spacing = m[k].n ? sqrt(ms->p.A0[q0]) : 0;   /* the sampler's spacing */
+            m[k].arrow_colour = (lr_rgba){0.8, 0.15, 0.1, 1};
+            c->mpoints += m[k].n;
+            if (show_n) c->marrows += m[k].n;
+        }
+        p->membranes = m;
+        p->nmembranes = (size_t)ms->nmem;
+    }
+
     /* slices and isosurfaces */
     p->slices = layers(L, c, pidx, where, "slice", sizeof *p->slices, slice_key, &p->nslices);
     c->slices += p->nslices;
@@ -475,7 +507,7 @@ int l_frame3d(lua_State *L, const lm3_sim *sim, int opts_index)
     f.width = (int)w;
     f.height = (int)h;
     f.backend = la_frame_backend(L, fidx, fn, NULL);   /* PNG only (l_frame.c) */
-    ctx3 c = {fn, sim, 0, 0, fidx, 0, 0, 0};
+    ctx3 c = {fn, sim, 0, 0, fidx, 0, 0, 0, 0, 0};
     lua_newtable(L);
     c.anchor = lua_gettop(L);
 
@@ -527,9 +559,14 @@ int l_frame3d(lua_State *L, const lm3_sim *sim, int opts_index)
 
     la_prov prov;
     la_provenance(L, &prov);
-    char layers[128];
-    snprintf(layers, sizeof layers, "dim=3 particles=%zu slices=%zu isosurfaces=%zu",
-             c.particles, c.slices, c.isos);
+    char layers[192];
+    int used_l = snprintf(layers, sizeof layers, "dim=3 particles=%zu slices=%zu isosurfaces=%zu",
+                          c.particles, c.slices, c.isos);
+    /* only when there are some, so the frames without membranes keep
+     * their bytes */
+    if (c.mpoints && used_l > 0 && (size_t)used_l < sizeof layers)
+        snprintf(layers + used_l, sizeof layers - (size_t)used_l,
+                 " membrane_points=%zu normals=%zu", c.mpoints, c.marrows);
     char range[MAX_PANELS * 56];
     size_t used = 0;
     range[0] = 0;

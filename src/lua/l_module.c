@@ -40,6 +40,8 @@ static int luaopen_lamina(lua_State *L)
                                      {"ball", la_ball},
                                      {"box", la_box},
                                      {"cylinder", la_cylinder},
+                                     {"sphere", la_sphere},   /* 3D membrane surfaces */
+                                     {"rect3", la_rect3},
                                      {"plot", la_plot},
                                      {"report", la_report},
                                      {"pause", la_pause},
@@ -51,7 +53,8 @@ static int luaopen_lamina(lua_State *L)
     la_open_sim(L);
     la_open_body(L);
     la_open_region3(L);         /* lamina.ball/box/cylinder (l_region3.c) */
-    la_open_body3(L);           /* a 3D sim's bodies (l_body3.c) */
+    la_open_body3(L);
+    la_open_membrane3(L);       /* a 3D sim's membranes (l_membrane3.c) */           /* a 3D sim's bodies (l_body3.c) */
     la_open_pin3(L);            /* their pins (l_pin3.c) */
     la_open_pin(L);
     la_open_link(L);

@@ -355,7 +355,8 @@ void la_sim3_methods(lua_State *L)
     static const luaL_Reg methods[] = {{"body", la_sim3_body},
                                        {"vtk", la_sim_vtk},   /* both dimensions (l_vtk.c) */
                                        {"record", la_sim_record},   /* (l_record.c) */
-                                       {"checkpoint", la_sim_checkpoint},   /* (l_checkpoint.c) */
+                                       {"checkpoint", la_sim3_checkpoint},   /* (l_membrane3.c) */
+                                       {"membrane", la_sim3_membrane},   /* (l_membrane3.c) */
                                        {"every", la_sim3_every},
                                        {"at", la_sim3_at},
                                        {"run", la_sim3_run},

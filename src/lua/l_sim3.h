@@ -70,6 +70,16 @@ int la_body3_pin(lua_State *L, la_sim3 *s3, size_t first, size_t n);
 void la_pins3_update(lua_State *L, int sidx, la_sim *s);
 void la_open_pin3(lua_State *L);
 
+/* l_membrane3.c: sim:membrane on a 3D sim, lamina.sphere, lamina.rect3,
+ * the membrane handle; the bytes the membrane points hold (charged with
+ * the particles'); sim:checkpoint refused with membranes */
+int la_sim3_membrane(lua_State *L);
+int la_sphere(lua_State *L);
+int la_rect3(lua_State *L);
+size_t la_membrane3_bytes(const la_sim3 *s3);
+int la_sim3_checkpoint(lua_State *L);
+void la_open_membrane3(lua_State *L);
+
 /* l_region3.c: lamina.ball, lamina.box, lamina.cylinder */
 int la_ball(lua_State *L);
 int la_box(lua_State *L);

@@ -4,6 +4,7 @@
 #include <math.h>
 
 #include "mpm3.h"
+#include "mpm3_membrane.h"
 #include "util.h"
 
 void lm3_range_sums(const lm3_sim *sim, size_t first, size_t n, double *mass, double com[3],
@@ -52,6 +53,15 @@ uint64_t lm3_sim_hash(const lm3_sim *sim)
                          p->s[0], p->s[1], p->s[2], p->s[3], p->s[4], p->s[5], p->e};
     for (size_t k = 0; k < sizeof f / sizeof f[0]; k++)
         if (p->n) h = lu_fnv1a(h, f[k], p->n * sizeof(double));
+    /* the membrane points' state too (issue 34 item 2), folded only when
+     * there are some, so a sim without membranes keeps its hash */
+    const lm3_mpoints *q = sim->mem ? &sim->mem->p : NULL;
+    if (q && q->n) {
+        const double *g[] = {q->x[0], q->x[1], q->x[2], q->v[0], q->v[1], q->v[2],
+                             q->e[0], q->e[1], q->e[2], q->s[0], q->s[1], q->s[2]};
+        for (size_t k = 0; k < sizeof g / sizeof g[0]; k++)
+            h = lu_fnv1a(h, g[k], q->n * sizeof(double));
+    }
     h = lu_fnv1a(h, &sim->nstep, sizeof sim->nstep);
     return h;
 }
