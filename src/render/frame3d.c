@@ -240,9 +240,68 @@ static int add_cloud(lr_scene3d *s, const lr_cloud3d *c, const cmap_lut *lut)
     return add_points(s, c->n, q, c->value, c->group, NULL, lut, c->radius);
 }
 
-/* A membrane: its points, then its normals thinned to the spacing (every
- * k-th point's, k the least with k spacings >= arrow_px pixels, each
- * arrow that long - the 2D frames' rule, l_frame_points.c). */
+/* The points to draw normals at: per cube of side L (a grid from the
+ * origin), the point nearest the cube's centre, ties to the lower index;
+ * in the order the cubes are first met, so the same points give the same
+ * picks. An open-addressing table of the cubes (twice the points). NULL
+ * when memory ran out. */
+static size_t *thin_by_cubes(const lr_membrane3d *m, double L, size_t *count)
+{
+    size_t cap = 16;
+    while (cap < 2 * m->n) cap *= 2;
+    int64_t *key = malloc(cap * 3 * sizeof *key);
+    size_t *best = malloc(cap * sizeof *best);
+    size_t *order = malloc((m->n + 1) * sizeof *order);
+    if (!key || !best || !order) {
+        free(key);
+        free(best);
+        free(order);
+        return NULL;
+    }
+    for (size_t k = 0; k < cap; k++) best[k] = SIZE_MAX;
+    size_t used = 0;
+    for (size_t i = 0; i < m->n; i++) {
+        const double x[3] = {m->x[i], m->y[i], m->z[i]};
+        int64_t c[3];
+        double d2 = 0;
+        for (int a = 0; a < 3; a++) {
+            c[a] = (int64_t)floor(x[a] / L);
+            double o = x[a] - (c[a] + 0.5) * L;
+            d2 += o * o;
+        }
+        uint64_t h = ((uint64_t)c[0] * 73856093u) ^ ((uint64_t)c[1] * 19349663u) ^
+                     ((uint64_t)c[2] * 83492791u);
+        size_t k = (size_t)(h & (cap - 1));
+        while (best[k] != SIZE_MAX &&
+               (key[3 * k] != c[0] || key[3 * k + 1] != c[1] || key[3 * k + 2] != c[2]))
+            k = (k + 1) & (cap - 1);
+        if (best[k] == SIZE_MAX) {
+            key[3 * k] = c[0];
+            key[3 * k + 1] = c[1];
+            key[3 * k + 2] = c[2];
+            best[k] = i;
+            order[used++] = k;
+            continue;
+        }
+        size_t b = best[k];
+        double e2 = 0;
+        const double y[3] = {m->x[b], m->y[b], m->z[b]};
+        for (int a = 0; a < 3; a++) {
+            double o = y[a] - (c[a] + 0.5) * L;
+            e2 += o * o;
+        }
+        if (d2 < e2) best[k] = i;
+    }
+    for (size_t j = 0; j < used; j++) order[j] = best[order[j]];
+    free(key);
+    free(best);
+    *count = used;
+    return order;
+}
+
+/* A membrane: its points, then its normals thinned to the spacing (one a
+ * cube of k spacings, k the least with k spacings >= arrow_px pixels, each
+ * arrow that long - the 2D frames' rule, l_frame_points.c, on a surface). */
 static int add_membrane(lr_scene3d *s, const lr_view *v, const lr_membrane3d *m,
                         const cmap_lut *lut)
 {
@@ -261,15 +320,22 @@ static int add_membrane(lr_scene3d *s, const lr_view *v, const lr_membrane3d *m,
         every = k > 1 ? (size_t)fmin(k, 65536) : 1;     /* squared below */
     }
     double length = sp > 0 ? every * sp : gap / v->s;
-    /* in 3D the points are not in a line: every k-th of them in order
-     * thins them by k, so the arrows are about sqrt(k) spacings apart on
-     * a surface; take every k^2-th so they are k apart */
-    size_t stride = every * every;
-    size_t n = (m->n + stride - 1) / stride;
-    double *buf = malloc(6 * n * sizeof *buf);
-    if (!buf)
+    /* in 3D the points are not in a line: one arrow per cube of side
+     * `length` (the point nearest the cube's centre), so the arrows are
+     * about k spacings apart over the surface whatever order the sampler
+     * gave the points (every k^2-th in order drew stripes along a
+     * Fibonacci sphere's spiral) */
+    size_t n = 0;
+    size_t *pick = thin_by_cubes(m, length, &n);
+    if (!pick)
         return -1;
-    for (size_t i = 0, j = 0; i < m->n; i += stride, j++) {
+    double *buf = malloc(6 * (n + 1) * sizeof *buf);
+    if (!buf) {
+        free(pick);
+        return -1;
+    }
+    for (size_t j = 0; j < n; j++) {
+        size_t i = pick[j];
         buf[j] = m->x[i];
         buf[n + j] = m->y[i];
         buf[2 * n + j] = m->z[i];
@@ -277,6 +343,7 @@ static int add_membrane(lr_scene3d *s, const lr_view *v, const lr_membrane3d *m,
         buf[4 * n + j] = m->ny[i];
         buf[5 * n + j] = m->nz[i];
     }
+    free(pick);
     const double *const pa[3] = {buf, buf + n, buf + 2 * n};
     const double *const da[3] = {buf + 3 * n, buf + 4 * n, buf + 5 * n};
     rc = lr_scene3d_arrows(s, n, pa, da, length, 1.5, 7.0, m->arrow_colour, 0.0);
