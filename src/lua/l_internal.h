@@ -311,6 +311,8 @@ const char *la_frame_label(lua_State *L, int idx, const char *fn, double t, long
 lr_backend la_frame_backend(lua_State *L, int idx, const char *fn, const char *file);
 int la_vtk_arrays(size_t nd, size_t nconn, size_t ntypes, double **d, int64_t **conn,
                   uint8_t **types, const char *path, char *err, size_t errlen);
+int la_vtk_grid_write(const char *path, size_t nn, size_t nc, double *d, int64_t *conn,
+                      int64_t *offs, uint8_t *types, char *err, size_t errlen);
 
 /* l_plot.c: lamina.plot{...}, time-series plots to PNG and CSV */
 int la_plot(lua_State *L);

@@ -161,6 +161,21 @@ static int write_particles(const lm_sim *sim, const char *path, char *err, size_
     return rc;
 }
 
+/* A grid's last step as a .vtu and its arrays freed (2D and 3D alike):
+ * d holds the nodal mass (nn), velocity (3 nn), force (3 nn) and the
+ * nodes' xyz (3 nn), in la_vtk_arrays' buffer d; conn and types the cells. */
+int la_vtk_grid_write(const char *path, size_t nn, size_t nc, double *d, int64_t *conn,
+                      int64_t *offs, uint8_t *types, char *err, size_t errlen)
+{
+    lr_vtk_field pf[] = {{"mass", 1, d}, {"velocity", 3, d + nn}, {"force", 3, d + 4 * nn}};
+    lr_vtk_cells cells = {nc, conn, offs, types};
+    int rc = lr_vtk_write_vtu(path, nn, d + 7 * nn, &cells, pf, 3, NULL, 0, err, errlen);
+    free(d);
+    free(conn);
+    free(types);
+    return rc;
+}
+
 /* The three arrays of an unstructured grid for vtk.c, all or none: nd
  * doubles of points and data, nconn connectivity and offsets, ntypes cell
  * types (2D and 3D writers alike); -1 and err when memory ran out. */
@@ -224,13 +239,7 @@ static int write_grid(const lm_sim *sim, const char *path, char *err, size_t err
             types[c] = LR_VTK_QUAD;
         }
     }
-    lr_vtk_field pf[] = {{"mass", 1, d}, {"velocity", 3, vel}, {"force", 3, force}};
-    lr_vtk_cells cells = {nc, conn, offs, types};
-    int rc = lr_vtk_write_vtu(path, nn, xyz, &cells, pf, 3, NULL, 0, err, errlen);
-    free(d);
-    free(conn);
-    free(types);
-    return rc;
+    return la_vtk_grid_write(path, nn, nc, d, conn, offs, types, err, errlen);
 }
 
 /* The collection: every output so far, particles (part 0) and grid (1). */

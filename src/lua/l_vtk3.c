@@ -98,11 +98,5 @@ int la_vtk3_write_grid(const la_sim3 *s3, const char *path, char *err, size_t er
                 offs[cell] = 8 * (int64_t)(cell + 1);
                 types[cell] = VTK_HEXAHEDRON;
             }
-    lr_vtk_field pf[] = {{"mass", 1, d}, {"velocity", 3, vel}, {"force", 3, force}};
-    lr_vtk_cells cells = {nc, conn, offs, types};
-    int rc = lr_vtk_write_vtu(path, nn, xyz, &cells, pf, 3, NULL, 0, err, errlen);
-    free(d);
-    free(conn);
-    free(types);
-    return rc;
+    return la_vtk_grid_write(path, nn, nc, d, conn, offs, types, err, errlen);
 }
