@@ -45,7 +45,14 @@
 -- 0.00125) with these {3, 1} points, the expanded gas's points 0.78 cells
 -- apart (a 0.9 % pressure step across the contact at equal velocities);
 -- {6, 1} converges: -3.83 / -1.79 / -0.62 % (docs/robustness.md "Sod's
--- plateaus again"). [F]'s {3, 1} stays.
+-- plateaus again"). [F]'s {3, 1} stays. Why it stalls (sod30; docs/robustness.md
+-- "Sod's stall: the viscosity in the plateau", tests/physics/
+-- sod_av_plateau.lua): the artificial viscosity fires at half the
+-- plateau's points on a 3.65-cell velocity ripple (3 points a cell, 0.78
+-- cells apart once expanded, beating against the grid), mean q +0.53 % of
+-- p*, which the plateau's p lacks at the contact; and the continuity
+-- density drifts +0.30 % in volume from the points' spacing. The run warns
+-- of av naming this case (src/lua/l_option_warn.c).
 -- Why it misses (accuracy30; docs/robustness.md "Verification cases on the
 -- default", sod): inside the window the entropy p / rho^gamma is the left
 -- state's to 0.13 % and u rises where p falls as the fan's invariant
