@@ -14,6 +14,9 @@
 --   (6) the velocity gradient L_p = sum_i v_i G_ip, the density rho_p / (1 +
 --   dt tr D) and the stress by the Jaumann rate with Hooke's law (plane
 --   strain, [F] eqs 18-20); each to round-off (relative 1e-12)
+--   Beside them ([T] Table 9's "Configuration" column, table9_configurations.png)
+--   the grid and the points at the table's time levels 0, L1, regrid and 1,
+--   drawn from this page's first step (displacements x25)
 -- assumed: a 2 x 2 cell block of 4 points a cell (rho 1, E 100, nu 0.3) in
 --   an otherwise empty 6 x 6 grid of unit cells, free sides, v = w x r plus
 --   a stretch, dt = 0.01
@@ -46,6 +49,9 @@ local function basis(x, y)
 end
 local function key(w) return w[1] + 7 * w[2] end
 
+-- the first step's configurations, for Table 9's "Configuration" column
+local snap
+
 local function step()
   local B = {}
   for p = 1, n do B[p] = basis(S.x[p], S.y[p]) end
@@ -64,6 +70,11 @@ local function step()
   -- (3) the momentum equation on the grid
   local plx, ply = {}, {}
   for k in pairs(m) do plx[k], ply[k] = px[k] + dt * fx[k], py[k] + dt * fy[k] end
+  if not snap then
+    snap = { x0 = {}, y0 = {}, vL = {} }
+    for p = 1, n do snap.x0[p], snap.y0[p] = S.x[p], S.y[p] end
+    for k in pairs(m) do snap.vL[k] = { plx[k] / m[k], ply[k] / m[k] } end
+  end
   -- (4) the particles' velocities and positions
   for p = 1, n do
     local ax, ay, ux, uy = 0, 0, 0, 0
@@ -74,6 +85,10 @@ local function step()
     end
     S.vx[p], S.vy[p] = S.vx[p] + dt * ax, S.vy[p] + dt * ay
     S.x[p], S.y[p] = S.x[p] + dt * ux, S.y[p] + dt * uy
+  end
+  if not snap.x1 then
+    snap.x1, snap.y1 = {}, {}
+    for p = 1, n do snap.x1[p], snap.y1[p] = S.x[p], S.y[p] end
   end
   -- (5) the velocities mapped again (MUSL), at the old weights
   local qx, qy = {}, {}
@@ -155,6 +170,60 @@ for k = 1, 2 do
   for c = 1, 4 do fig:text{ text = string.format("%.1e", rows[k][c]), at = {cols[c], y}, align = "center" } end
 end
 fig:write(out .. "/diagram_time_step.png")
+
+-- [T] Table 9's "Configuration" column: the grid and the points at each time
+-- level of the first step, from this page's own computation (the nodes'
+-- v^L of (3), the points' moves of (4)); the step's displacements, about
+-- 0.01 of a cell, drawn 25 times larger (the same factor on nodes and
+-- points: each point stays at its place in its moved cell, eq (4) being
+-- x_p + dt sum_i N_ip v_i^L)
+local F = 25
+local cfg = lamina.figure{ width = 1400, height = 470, panels = {4, 1},
+  title = "[T] Table 9, the configurations: one step of the block, displacements drawn x25" }
+local win = {1.4, 1.4, 4.6, 4.6}
+local function pts(xs, ys, moved)
+  local t = {}
+  for p = 1, n do
+    t[p] = moved and {snap.x0[p] + F * (xs[p] - snap.x0[p]), snap.y0[p] + F * (ys[p] - snap.y0[p])} or {xs[p], ys[p]}
+  end
+  return t
+end
+local nodes = {}
+for k in pairs(snap.vL) do nodes[#nodes + 1] = {k % 7, k // 7} end
+table.sort(nodes, function(a, b) return a[1] + 7 * a[2] < b[1] + 7 * b[2] end)
+cfg:panel{ index = 1, window = win, title = "0: map the points to the grid",
+           caption = "(1)-(2): m_i, p_i and f_i at the nodes (circles)" }
+cfg:grid{ box = {1, 1, 5, 5}, cells = {4, 4} }
+cfg:points{ points = nodes, style = "circle", size = 9, colour = "black" }
+cfg:points{ points = pts(snap.x0, snap.y0), style = "dot", size = 7, colour = "computed" }
+cfg:panel{ index = 2, window = win, title = "L1: Lagrangian step, the grid moves",
+           caption = "(3)-(6): v^L at the nodes moves them, and the points with them" }
+local function moved(i, j)
+  local v = snap.vL[i + 7 * j]
+  return v and {i + F * dt * v[1], j + F * dt * v[2]}
+end
+for _, nd in ipairs(nodes) do
+  local here = moved(nd[1], nd[2])
+  for _, nb in ipairs{ {nd[1] + 1, nd[2]}, {nd[1], nd[2] + 1} } do
+    local there = moved(nb[1], nb[2])
+    if there then cfg:polyline{ points = {here, there}, colour = "black", width = 1.5 } end
+  end
+end
+local mv = {}
+for _, nd in ipairs(nodes) do mv[#mv + 1] = moved(nd[1], nd[2]) end
+cfg:points{ points = mv, style = "circle", size = 9, colour = "black" }
+cfg:points{ points = pts(snap.x1, snap.y1, true), style = "dot", size = 7, colour = "computed" }
+cfg:panel{ index = 3, window = win, title = "regrid: the grid returns",
+           caption = "no equation: the points keep x_p, v_p, sigma_p (grey: where they were)" }
+cfg:grid{ box = {1, 1, 5, 5}, cells = {4, 4} }
+cfg:points{ points = pts(snap.x0, snap.y0), style = "circle", size = 7, colour = "grey" }
+cfg:points{ points = pts(snap.x1, snap.y1, true), style = "dot", size = 7, colour = "computed" }
+cfg:panel{ index = 4, window = win, title = "1: the next step maps them again",
+           caption = "(1)-(2) from the new positions, on the fixed grid" }
+cfg:grid{ box = {1, 1, 5, 5}, cells = {4, 4} }
+cfg:points{ points = nodes, style = "circle", size = 9, colour = "black" }
+cfg:points{ points = pts(snap.x1, snap.y1, true), style = "dot", size = 7, colour = "computed" }
+cfg:write(out .. "/table9_configurations.png")
 
 lamina.report{
   step_equations = { worst_all, ref = 0, tol = 1e-12,

@@ -1,5 +1,6 @@
 -- title: The limit of the linear basis: an arc whose points share a y coordinate (normals paper Fig 7)
--- source: normals paper Fig 7 (a-b), Fig 6 and eq 15 ([N] §4, "Limitations of Linear Shape Functions")
+-- source: normals paper Fig 7 (a-b) and eq 15 ([N] §4, "Limitations of Linear Shape Functions"; the
+--   case of points with one logical coordinate itself is drawn and checked on normals_fig6)
 -- look: (a) the bold phi = 1 contour follows the arc closely and the normals are a few degrees
 --       off; (b) the points come in pairs at equal heights, and since with the linear basis n_x
 --       depends only on eta ([N] §4: n = (a + b eta, c + b xi)), each pair gets the same n_x
