@@ -92,8 +92,8 @@ M.counts = { [0.4] = 56, [0.2] = 100, [0.1] = 200, [0.05] = 400 }
 -- dt = 0.5 h / c_membrane). o: normals (default "connectivity", oriented
 -- away from the origin), pic (default 0), split (gas splitting, default
 -- none), threads (default 1), density (lamina.gas{density}, default
--- "continuity"), force (sim:membrane{force}, default "point"). Returns
--- sim, gas, membrane.
+-- "continuity"), force (sim:membrane{force}, default "point"), mass
+-- (lamina.sim{mass}, default the sim's). Returns sim, gas, membrane.
 function M.setup(h, o)
   o = o or {}
   local cm = math.sqrt(1e6 / ((1 - 0.3^2) * 0.5))
@@ -101,7 +101,7 @@ function M.setup(h, o)
                           boundary = { left = "symmetry", bottom = "symmetry",
                                        right = "fixed", top = "fixed" },
                           pic = o.pic or 0, threads = o.threads,
-                          basis = o.basis or "linear" }
+                          basis = o.basis or "linear", mass = o.mass }
   local air = lamina.gas{ rho = 1, e = 250, gamma = 1.4, mu = 0.2, split = o.split,
                           density = o.density }
   local skin = lamina.membrane{ rho = 0.5, E = 1e6, nu = 0.3, thickness = 0.1,

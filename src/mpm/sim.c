@@ -147,6 +147,15 @@ lm_sim *lm_sim_new(const lm_sim_def *def, char *err, size_t errlen)
                  g->ny);
         return NULL;
     }
+    /* mass = "corrected" / "membrane": the momenta the damping's account
+     * reads (damping.c lm_damp_keep_momentum), made here for the same reason */
+    if (def->mass != LM_MASS_LUMPED &&
+        !(work->mass_p0 = malloc(2 * lm_grid_nodes(g) * sizeof *work->mass_p0))) {
+        lm_sim_free(sim);
+        snprintf(err, errlen, "out of memory for the nodal momenta of a %d x %d grid", g->nx,
+                 g->ny);
+        return NULL;
+    }
     return sim;
 }
 
@@ -164,7 +173,7 @@ void lm_sim_free(lm_sim *sim)
     lm_apic_free(w->apic);
     for (int k = 0; k < sim->nmats; k++) free(sim->mats[k]);
     LU_FREE_ALL(sim->mats, sim->bodies, w->cell_rho, w->cell_stress, sim->pins, sim->links,
-                w->pin_w, w->cons, w, sim);
+                w->pin_w, w->mass_p0, w->cons, w, sim);
 }
 
 /* The sim owns its materials: each is a copy, checked, and changes only

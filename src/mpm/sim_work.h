@@ -18,6 +18,10 @@ typedef struct lm_work {
     double *cell_stress;   /* stress_cell.c: sum V sigma per cell (3 nx ny) */
     double *pin_w, *pin_vx, *pin_vy;   /* per node: sum of the held particles'
                               N_ip and N_ip v_p (allocated with the first pin) */
+    double *mass_p0;       /* damping.c: the lumped nodal momenta (x then y,
+                              2 per node) before step 3's mass correction, for
+                              the damping's account; made with the sim when
+                              mass is not "lumped" */
     struct lm_con *cons;   /* constraint.c: the heavy end points of the step */
     size_t ncons, capcons;
     struct lm_nwork *nwork;       /* the normals' scratch (normals_work.h), made

@@ -234,6 +234,7 @@ void lm_step_grid_update(lm_sim *sim)
      * correction is one linear map of p and f alike, which commutes with
      * the damping's node-by-node f - c p, so the order changes nothing. */
     const int corrected = lm_mass_corrects(sim);
+    if (corrected && damped) lm_damp_keep_momentum(sim);   /* the account's p_i */
     if (corrected) lm_mass_correct_momentum_forces(sim);
     if (lm_constraint_active(sim)) {
         /* heavy end points, on p and f with the walls applied (the solve

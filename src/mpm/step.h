@@ -234,6 +234,7 @@ void lm_grid_apply_bc(const lm_grid *g, double *ux, double *uy);
 /* mass = "corrected" (mass_corrected.c): before step 3, p_i and f_i; in
  * step 5 (MUSL), the re-mapped velocities in (vx, vy), (sx, sy) scratch. */
 void lm_mass_correct_momentum_forces(lm_sim *sim);
+void lm_damp_keep_momentum(lm_sim *sim);   /* damping.c: p_i before the correction */
 /* Whether the step applies that correction: mass = "corrected" or
  * "membrane", and no contact's own fields. */
 int lm_mass_corrects(const lm_sim *sim);
