@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "l_mesh3.h"
 #include "l_sim3.h"
 #include "mpm3_membrane.h"
 
@@ -270,6 +271,9 @@ static size_t pin_points(lua_State *L, int pidx, const la_surface3 *surf, const 
         if (strcmp(w, "edges") != 0)
             luaL_error(L, "%s: pin = \"%s\": the named set is \"edges\" (or a function(x, y, z) "
                        "-> boolean)", fn, w);
+        if (!surf)
+            luaL_error(L, "%s: pin = \"edges\" is a parallelogram's; on a lamina.mesh surface "
+                       "pin with a function(x, y, z) -> boolean", fn);
         if (surf->kind != 1)
             luaL_error(L, "%s: pin = \"edges\": a sphere is closed and has no edges", fn);
         double amin = INFINITY, amax = -INFINITY, bmin = INFINITY, bmax = -INFINITY;
@@ -343,9 +347,11 @@ int la_sim3_membrane(lua_State *L)
         return luaL_error(L, "%s: 'material' must be lamina.membrane{...}", fn);
     la_getfield(L, 2, "surface");
     const la_surface3 *surf = luaL_testudata(L, -1, LA_SURFACE3);
-    if (!surf)
-        return luaL_error(L, "%s: 'surface' must be lamina.sphere{center, radius} or "
-                          "lamina.rect3{origin, u, v} (got %s)", fn, luaL_typename(L, -1));
+    const la_mesh3 *mesh = la_test_mesh3(L, -1);   /* lamina.mesh (l_mesh3.c) */
+    if (!surf && !mesh)
+        return luaL_error(L, "%s: 'surface' must be lamina.sphere{center, radius}, "
+                          "lamina.rect3{origin, u, v} or lamina.mesh{file} (got %s)", fn,
+                          luaL_typename(L, -1));
 
     lm3_mdef def;
     lm3_mdef_default(&def);
@@ -377,7 +383,10 @@ int la_sim3_membrane(lua_State *L)
     /* charged before the sampler allocates: the process's one cap, with
      * the particles' and the grid's (l_body3.c charges the same sum) */
     size_t have = sim->mem ? sim->mem->p.n : 0, cap = sim->mem ? sim->mem->p.cap : 0;
-    size_t est = points_estimate(surf, spacing);
+    char err[600];
+    size_t est = mesh ? la_mesh3_points(mesh, spacing, err, sizeof err)
+                      : points_estimate(surf, spacing);
+    if (mesh && est == 0) return luaL_error(L, "%s: 'surface': %s", fn, err);
     if (est)
         la_sim3_charge(L, s3, lm3_grid_bytes(sim) + lm3_particle_bytes(sim->p.cap) +
                                   mpoint_bytes(cap_after(cap, have + est)), fn);
@@ -387,8 +396,8 @@ int la_sim3_membrane(lua_State *L)
     lua_pushcfunction(L, guard_gc);
     lua_setfield(L, -2, "__gc");
     lua_setmetatable(L, -2);
-    char err[256];
-    int rc = surf->kind == 0
+    int rc = mesh ? la_mesh3_sample(mesh, spacing, &g->s, err, sizeof err)
+             : surf->kind == 0
                  ? lm3_sample_sphere(surf->c, surf->r, spacing, &g->s, err, sizeof err)
                  : lm3_sample_rect3(surf->o, surf->u, surf->v, spacing, &g->s, err, sizeof err);
     if (rc != 0) return luaL_error(L, "%s: 'surface': %s", fn, err);
