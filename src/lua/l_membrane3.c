@@ -2,9 +2,8 @@
  * docs/api.md "Three dimensions"): a lamina.membrane material on a
  * surface (lamina.sphere, lamina.rect3) sampled by the engine's samplers
  * (mpm3_membrane.h), its pins, and the handle (#m, particles, tension,
- * reaction). The 3D state file does not hold membrane points, so a
- * checkpoint of a sim with membranes is refused by name
- * (la_sim3_checkpoint) rather than written as a wrong restart. */
+ * reaction). The 3D state file holds the membrane points
+ * (sim3_membrane_state.c), so checkpoints and --restart keep them. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -432,15 +431,10 @@ int la_sim3_membrane(lua_State *L)
 }
 
 /* sim:checkpoint on a 3D sim: the state file (sim3_state.c) holds the
- * particles and the grid's definition but no membrane point, so a restart
- * would lose the membranes: refused by name instead. */
+ * membrane points too (sim3_membrane_state.c), so it is the 2D method's. */
 int la_sim3_checkpoint(lua_State *L)
 {
-    la_sim3 *s3 = la_check_sim3(L, 1, "sim:checkpoint");
-    if (s3->sim->mem && s3->sim->mem->nmem > 0)
-        return luaL_error(L, "sim:checkpoint: a 3D simulation with membranes cannot be "
-                          "checkpointed in this build (the 3D state file holds no membrane "
-                          "points; a restart would lose them)");
+    la_check_sim3(L, 1, "sim:checkpoint");
     return la_sim_checkpoint(L);
 }
 

@@ -72,7 +72,7 @@ void la_open_pin3(lua_State *L);
 
 /* l_membrane3.c: sim:membrane on a 3D sim, lamina.sphere, lamina.rect3,
  * the membrane handle; the bytes the membrane points hold (charged with
- * the particles'); sim:checkpoint refused with membranes */
+ * the particles'); sim:checkpoint (the state file holds the membranes) */
 int la_sim3_membrane(lua_State *L);
 int la_sphere(lua_State *L);
 int la_rect3(lua_State *L);
