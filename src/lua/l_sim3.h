@@ -58,6 +58,9 @@ int la_sim3_at(lua_State *L);
 /* l_vtk3.c: sim:vtk's particle and grid pieces (0, or -1 with err) */
 int la_vtk3_write_particles(const la_sim3 *s3, const char *path, char *err, size_t errlen);
 int la_vtk3_write_grid(const la_sim3 *s3, const char *path, char *err, size_t errlen);
+/* the membranes' points (a third piece, when the sim has membranes) */
+int la_vtk3_has_membranes(const la_sim3 *s3);
+int la_vtk3_write_membranes(const la_sim3 *s3, const char *path, char *err, size_t errlen);
 
 /* l_body3.c */
 int la_sim3_body(lua_State *L);
