@@ -262,7 +262,7 @@ static void plane_coords(const la_surface3 *s, const double x[3], double *a, dou
  * function(x, y, z) -> boolean: the indices in *idx (malloc'd), their
  * count returned. The sample is freed on error by the caller's guard. */
 static size_t pin_points(lua_State *L, int pidx, const la_surface3 *surf, const lm3_msample *smp,
-                         size_t *idx, const char *fn)
+                         const uint8_t *rim, size_t *idx, const char *fn)
 {
     size_t np = 0;
     if (lua_type(L, pidx) == LUA_TSTRING) {
@@ -270,9 +270,13 @@ static size_t pin_points(lua_State *L, int pidx, const la_surface3 *surf, const 
         if (strcmp(w, "edges") != 0)
             luaL_error(L, "%s: pin = \"%s\": the named set is \"edges\" (or a function(x, y, z) "
                        "-> boolean)", fn, w);
-        if (!surf)
-            luaL_error(L, "%s: pin = \"edges\" is a parallelogram's; on a lamina.mesh surface "
-                       "pin with a function(x, y, z) -> boolean", fn);
+        if (!surf) {   /* a mesh: the points on its rim */
+            for (size_t q = 0; rim && q < smp->n; q++)
+                if (rim[q]) idx[np++] = q;
+            if (np == 0)
+                luaL_error(L, "%s: pin = \"edges\": the mesh is closed and has no edges", fn);
+            return np;
+        }
         if (surf->kind != 1)
             luaL_error(L, "%s: pin = \"edges\": a sphere is closed and has no edges", fn);
         double amin = INFINITY, amax = -INFINITY, bmin = INFINITY, bmax = -INFINITY;
@@ -306,7 +310,7 @@ static size_t pin_points(lua_State *L, int pidx, const la_surface3 *surf, const 
 }
 
 /* the sample's arrays, freed by __gc if an error unwinds past them */
-typedef struct sample_guard { lm3_msample s; size_t *idx; } sample_guard;
+typedef struct sample_guard { lm3_msample s; size_t *idx; uint8_t *rim; } sample_guard;
 
 static void guard_free(sample_guard *g)
 {
@@ -314,6 +318,8 @@ static void guard_free(sample_guard *g)
     memset(&g->s, 0, sizeof g->s);
     free(g->idx);
     g->idx = NULL;
+    free(g->rim);
+    g->rim = NULL;
 }
 
 static int guard_gc(lua_State *L)
@@ -395,7 +401,8 @@ int la_sim3_membrane(lua_State *L)
     lua_pushcfunction(L, guard_gc);
     lua_setfield(L, -2, "__gc");
     lua_setmetatable(L, -2);
-    int rc = mesh ? la_mesh3_sample(mesh, spacing, &g->s, err, sizeof err)
+    int rc = mesh ? la_mesh3_sample(mesh, spacing, &g->s, pt == LUA_TSTRING ? &g->rim : NULL,
+                                    err, sizeof err)
              : surf->kind == 0
                  ? lm3_sample_sphere(surf->c, surf->r, spacing, &g->s, err, sizeof err)
                  : lm3_sample_rect3(surf->o, surf->u, surf->v, spacing, &g->s, err, sizeof err);
@@ -404,7 +411,7 @@ int la_sim3_membrane(lua_State *L)
     if (pt != LUA_TNIL) {
         g->idx = malloc((g->s.n ? g->s.n : 1) * sizeof *g->idx);
         if (!g->idx) return luaL_error(L, "%s: out of memory", fn);
-        np = pin_points(L, pidx, surf, &g->s, g->idx, fn);
+        np = pin_points(L, pidx, surf, &g->s, g->rim, g->idx, fn);
         if (np == 0) return luaL_error(L, "%s: 'pin' holds no point of the membrane", fn);
     }
     if (sim->mem && sim->mem->nmem >= LM3_MAX_MEMBRANES)

@@ -148,9 +148,25 @@ size_t la_mesh3_points(const la_mesh3 *u, double spacing, char *err, size_t errl
     return nv;
 }
 
-int la_mesh3_sample(const la_mesh3 *u, double spacing, lm3_msample *s, char *err,
-                    size_t errlen)
+/* the rim flags of the mesh the sample was made from (mesh m's vertices
+ * are the sample's points, in order) */
+static int rim_of(const lm3_mesh *m, uint8_t **rim, char *err, size_t errlen)
 {
+    if (!rim) return 0;
+    *rim = malloc(m->nv ? m->nv : 1);
+    if (!*rim || lm3_mesh_rim(m, *rim) < 0) {
+        free(*rim);
+        *rim = NULL;
+        lu_err(err, errlen, "out of memory for the rim of %zu points", m->nv);
+        return -1;
+    }
+    return 0;
+}
+
+int la_mesh3_sample(const la_mesh3 *u, double spacing, lm3_msample *s, uint8_t **rim,
+                    char *err, size_t errlen)
+{
+    if (rim) *rim = NULL;
     char why[400];
     /* the file's own triangles first, so that a refusal (a triangle of no
      * area, a vertex in no triangle) names them as the file numbers them */
@@ -166,7 +182,11 @@ int la_mesh3_sample(const la_mesh3 *u, double spacing, lm3_msample *s, char *err
         lu_err(err, errlen, "%s: %s", u->name, why);
         return -1;
     }
-    if (k == 1) return 0;   /* every edge within the spacing: a point a vertex */
+    if (k == 1) {   /* every edge within the spacing: a point a vertex */
+        if (rim_of(&u->m, rim, err, errlen) == 0) return 0;
+        lm3_msample_free(s);
+        return -1;
+    }
     lm3_msample_free(s);
     lm3_mesh fine;
     if (lm3_mesh_refine(&u->m, spacing, LM_MAX_PARTICLES, &fine, why, sizeof why) != 0) {
@@ -174,8 +194,12 @@ int la_mesh3_sample(const la_mesh3 *u, double spacing, lm3_msample *s, char *err
         return -1;
     }
     int rc = lm3_sample_mesh(fine.xyz, fine.nv, fine.tri, fine.nt, s, why, sizeof why);
-    lm3_mesh_free(&fine);
     if (rc != 0) lu_err(err, errlen, "%s (cut to spacing %g): %s", u->name, spacing, why);
+    else if (rim_of(&fine, rim, err, errlen) != 0) {
+        lm3_msample_free(s);
+        rc = -1;
+    }
+    lm3_mesh_free(&fine);
     return rc;
 }
 

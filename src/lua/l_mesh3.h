@@ -36,9 +36,11 @@ la_mesh3 *la_test_mesh3(lua_State *L, int idx);
 lm3_mesh_ray *la_mesh3_region(lua_State *L, la_mesh3 *m, const char *fn);
 /* As a membrane surface at `spacing`: the points it will make (0 with err
  * when too many), and the sample (0, or -1 with err naming the file and the
- * triangle or vertex as the file numbers them). */
+ * triangle or vertex as the file numbers them) with, when rim is not NULL,
+ * *rim (malloc'd, a flag a point) marking the points on the rim of an open
+ * mesh (pin = "edges"). */
 size_t la_mesh3_points(const la_mesh3 *m, double spacing, char *err, size_t errlen);
-int la_mesh3_sample(const la_mesh3 *m, double spacing, lm3_msample *s, char *err,
-                    size_t errlen);
+int la_mesh3_sample(const la_mesh3 *m, double spacing, lm3_msample *s, uint8_t **rim,
+                    char *err, size_t errlen);
 
 #endif

@@ -175,3 +175,25 @@ int lm3_mesh_refine(const lm3_mesh *in, double spacing, size_t max_vertices, lm3
     out->nt = nt_out;
     return 0;
 }
+
+long lm3_mesh_rim(const lm3_mesh *m, uint8_t *rim)
+{
+    size_t ne;
+    uedge *e = edges_of(m, &ne);
+    if (!e) return -1;
+    memset(rim, 0, m->nv);
+    long n = 0;
+    for (size_t i = 0; i < 3 * m->nt;) {
+        size_t j = i + 1;
+        while (j < 3 * m->nt && e[j].a == e[i].a && e[j].b == e[i].b) j++;
+        if (j - i == 1)
+            for (int k = 0; k < 2; k++) {
+                int32_t v = k ? e[i].b : e[i].a;
+                if (!rim[v]) n++;
+                rim[v] = 1;
+            }
+        i = j;
+    }
+    free(e);
+    return n;
+}

@@ -22,7 +22,8 @@
 --     vertices, triangles and particles;
 --  5. an open mesh (square.obj, two triangles) as a pre-tensioned sheet
 --     (initial strain 1 %, side 0.5 at z = 0.11, cell 1/16, B-spline, dt
---     1e-3), pinned at its edges by a function, spacing 0.045 and 0.03 (the
+--     1e-3), pinned at its edges by a function (spacing 0.045) and by
+--     pin = "edges" (its rim: spacing 0.03), spacing 0.045 and 0.03 (the
 --     diagonal cut into k = 16 and 24: points every h/2 and h/3 along the
 --     sides, on the grid's symmetry as the rect3 sheet of
 --     physics.sim3_membrane): every free point's tension stays T0 = E t e0 /
@@ -181,8 +182,9 @@ for _, spacing in ipairs{0.045, 0.03} do
   local sq = lamina.mesh{ file = here .. "square.obj", scale = {L, L, 1}, translate = {0.25, 0.25, 0.11} }
   assert(not sq.closed and math.abs(sq.area - L * L) < 1e-15, tostring(sq))
   local function edge(x, y) return x < 0.25 + 1e-9 or x > 0.75 - 1e-9 or y < 0.25 + 1e-9 or y > 0.75 - 1e-9 end
+  -- pinned by a function, then by "edges" (the open mesh's rim)
   local m = sim:membrane{ material = skin, spacing = spacing, initial_strain = e0, surface = sq,
-                          pin = function(x, y) return edge(x, y) end }
+                          pin = spacing == 0.045 and function(x, y) return edge(x, y) end or "edges" }
   local k = math.ceil(math.sqrt(2) * L / spacing - 1e-9)
   assert(#m == (k + 1) * (k + 1), "points " .. #m .. ", k = " .. k)
   local T0 = 1e6 * 1e-3 * e0 / (1 - 0.3)

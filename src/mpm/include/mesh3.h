@@ -100,5 +100,9 @@ int lm3_mesh_refine_counts(const lm3_mesh *in, double spacing, size_t max_vertic
                            size_t *nv, size_t *nt, char *err, size_t errlen);
 int lm3_mesh_refine(const lm3_mesh *in, double spacing, size_t max_vertices, lm3_mesh *out,
                     char *err, size_t errlen);
+/* The rim of an open mesh: rim[v] = 1 for every vertex on an edge that
+ * only one triangle holds (a sheet's outline), else 0. The count of rim
+ * vertices, or -1 out of memory. */
+long lm3_mesh_rim(const lm3_mesh *m, uint8_t *rim);
 
 #endif
