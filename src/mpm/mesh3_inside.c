@@ -188,7 +188,7 @@ static int row(lm3_mesh_ray *r, double y, double z)
         r->xs[2 * r->nx + 1] = s;
         r->nx++;
     }
-    qsort(r->xs, r->nx, 2 * sizeof *r->xs, by_x);
+    if (r->nx > 1) qsort(r->xs, r->nx, 2 * sizeof *r->xs, by_x);
     return 0;
 }
 
