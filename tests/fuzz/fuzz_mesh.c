@@ -18,6 +18,39 @@
 #include "mesh3.h"
 #include "mpm3_membrane.h"
 
+static int by_set(const void *p, const void *q)
+{
+    const int32_t *a = p, *b = q;
+    for (int k = 0; k < 3; k++)
+        if (a[k] != b[k]) return a[k] < b[k] ? -1 : 1;
+    return 0;
+}
+
+/* Whether two triangles have the same three vertices (a sheet doubled on
+ * itself: "closed" by its edges, but refining it makes the corner-cutting
+ * edges of both halves coincide, four triangles an edge). */
+static int doubled(const lm3_mesh *m)
+{
+    int32_t *s = malloc(3 * m->nt * sizeof *s);
+    if (!s) return 1;
+    for (size_t t = 0; t < m->nt; t++) {
+        int32_t *v = s + 3 * t;
+        memcpy(v, m->tri + 3 * t, 3 * sizeof *v);
+        for (int i = 0; i < 2; i++)   /* sorted: the set */
+            for (int j = 0; j < 2 - i; j++)
+                if (v[j] > v[j + 1]) {
+                    int32_t x = v[j];
+                    v[j] = v[j + 1];
+                    v[j + 1] = x;
+                }
+    }
+    qsort(s, m->nt, 3 * sizeof *s, by_set);
+    int d = 0;
+    for (size_t t = 1; t < m->nt && !d; t++) d = by_set(s + 3 * (t - 1), s + 3 * t) == 0;
+    free(s);
+    return d;
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     char err[512] = "";
@@ -75,7 +108,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                 if (f.nv != nv || f.nt != nt) abort();
                 for (size_t q = 0; q < 3 * f.nt; q++)
                     if (f.tri[q] < 0 || (size_t)f.tri[q] >= f.nv) abort();
-                if (closed == 1 && lm3_mesh_closed("fuzz.mesh", &f, err, sizeof err) != 1)
+                if (closed == 1 && !doubled(&m) &&
+                    lm3_mesh_closed("fuzz.mesh", &f, err, sizeof err) != 1)
                     abort();   /* refining keeps a closed mesh closed */
                 lm3_mesh_free(&f);
             }
