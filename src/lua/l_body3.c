@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "l_mesh3.h"
 #include "l_pressure3.h"
 #include "l_sim3.h"
 
@@ -64,6 +65,7 @@ typedef struct fill3 {
     lua_State *L;
     int ridx, vidx;
     const lm3_region *region;
+    lm3_mesh_ray *mesh;         /* lamina.mesh: its inside test (l_mesh3.c) */
 } fill3;
 
 static int inside3(void *ctx, const double x[3])
@@ -71,6 +73,11 @@ static int inside3(void *ctx, const double x[3])
     fill3 *c = ctx;
     if (c->region) return lm3_region_contains(c->region, x);
     lua_State *L = c->L;
+    if (c->mesh) {
+        int in = lm3_mesh_ray_inside(c->mesh, x);
+        if (in < 0) lua_pushliteral(L, "sim:body: out of memory in the mesh's inside test");
+        return in;
+    }
     lua_pushvalue(L, c->ridx);
     for (int a = 0; a < 3; a++) lua_pushnumber(L, x[a]);
     if (lua_pcall(L, 3, 1, 0) != LUA_OK) return -1;
@@ -189,13 +196,15 @@ int la_sim3_body(lua_State *L)
 
     la_getfield(L, 2, "region");
     int ridx = lua_gettop(L);
-    fill3 fc = {L, ridx, 0, la_test_region3(L, ridx)};
+    fill3 fc = {L, ridx, 0, la_test_region3(L, ridx), NULL};
+    la_mesh3 *mesh = la_test_mesh3(L, ridx);
+    if (mesh) fc.mesh = la_mesh3_region(L, mesh, fn);   /* refused when open */
     if (la_test_region(L, ridx))
         return luaL_error(L, "%s: 'region' is a 2D region (lamina.disk/rect/polygon); with "
                           "dim = 3 use lamina.ball/box/cylinder or a function(x, y, z)", fn);
-    if (!fc.region && !lua_isfunction(L, ridx))
-        return luaL_error(L, "%s: 'region' must be lamina.ball/box/cylinder or a function(x, "
-                          "y, z) -> boolean (got %s)", fn, luaL_typename(L, ridx));
+    if (!fc.region && !fc.mesh && !lua_isfunction(L, ridx))
+        return luaL_error(L, "%s: 'region' must be lamina.ball/box/cylinder/mesh or a "
+                          "function(x, y, z) -> boolean (got %s)", fn, luaL_typename(L, ridx));
 
     lm3_seed_def d;
     memset(&d, 0, sizeof d);
@@ -209,8 +218,8 @@ int la_sim3_body(lua_State *L)
     }
     d.mat = material3(L, s3, midx, fn);
     for (int a = 0; a < 3; a++) {
-        d.lo[a] = fc.region ? fc.region->lo[a] : sim->def.lo[a];
-        d.hi[a] = fc.region ? fc.region->hi[a] : sim->def.hi[a];
+        d.lo[a] = fc.region ? fc.region->lo[a] : mesh ? mesh->lo[a] : sim->def.lo[a];
+        d.hi[a] = fc.region ? fc.region->hi[a] : mesh ? mesh->hi[a] : sim->def.hi[a];
     }
     d.inside = inside3;
     d.ctx = &fc;

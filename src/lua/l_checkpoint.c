@@ -261,12 +261,6 @@ void la_checkpoint_restore(lua_State *L, int sidx, la_sim *s)
 {
     lamina_run *run = la_run(L);
     if (!run || !run->restart || run->restored) return;
-    /* the 3D state file holds no membrane points (l_membrane3.c): a
-     * restart would keep the script's new membranes beside restored
-     * particles, a state no run had */
-    if (s->s3 && s->s3->sim->mem && s->s3->sim->mem->nmem > 0)
-        luaL_error(L, "--restart: '%s': the script's 3D simulation has membranes, which a 3D "
-                   "checkpoint does not hold in this build (restart refused)", run->restart);
     if (!s->s3)
         la_ref_capture(L, s);   /* the script's build, before any state is replaced: the
                                    first run's reference positions (l_ref.c) */

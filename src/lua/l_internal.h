@@ -90,6 +90,16 @@ const char *la_check_output_path(lua_State *L, const char *fn, int idx);
 void la_open_print(lua_State *L);
 /* the same confinement for a file a script reads (no ownership check) */
 const char *la_check_input_path(lua_State *L, const char *fn, int idx);
+/* A file that comes with the script (a mesh, lamina.mesh): a relative name
+ * is taken from the script's folder; it must resolve (links followed) to a
+ * regular file inside the script's folder or the output root, no name
+ * under them starting with a dot, at most max bytes. real (PATH_MAX) gets
+ * its resolved path, *size its size; returns the name as given. */
+const char *la_check_asset_path(lua_State *L, const char *fn, int idx, size_t max, char *real,
+                                size_t *size);
+/* l_sandbox.c: the script's folder (its real path) into out: 1, or 0 when
+ * there is no script (the working directory stands for it then). */
+int la_script_folder(lua_State *L, char *out, size_t len);
 /* l_outputs.c: whether lamina wrote the existing file `where` (rel: its
  * path under root), and noting rel as lamina's (0, or -1 with err) */
 int la_output_owned(lua_State *L, const char *root, const char *rel, const char *where);

@@ -2,13 +2,13 @@
  * docs/api.md "Three dimensions"): a lamina.membrane material on a
  * surface (lamina.sphere, lamina.rect3) sampled by the engine's samplers
  * (mpm3_membrane.h), its pins, and the handle (#m, particles, tension,
- * reaction). The 3D state file does not hold membrane points, so a
- * checkpoint of a sim with membranes is refused by name
- * (la_sim3_checkpoint) rather than written as a wrong restart. */
+ * reaction). The 3D state file holds the membrane points
+ * (sim3_membrane_state.c), so checkpoints and --restart keep them. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "l_mesh3.h"
 #include "l_sim3.h"
 #include "mpm3_membrane.h"
 
@@ -262,7 +262,7 @@ static void plane_coords(const la_surface3 *s, const double x[3], double *a, dou
  * function(x, y, z) -> boolean: the indices in *idx (malloc'd), their
  * count returned. The sample is freed on error by the caller's guard. */
 static size_t pin_points(lua_State *L, int pidx, const la_surface3 *surf, const lm3_msample *smp,
-                         size_t *idx, const char *fn)
+                         const uint8_t *rim, size_t *idx, const char *fn)
 {
     size_t np = 0;
     if (lua_type(L, pidx) == LUA_TSTRING) {
@@ -270,6 +270,13 @@ static size_t pin_points(lua_State *L, int pidx, const la_surface3 *surf, const 
         if (strcmp(w, "edges") != 0)
             luaL_error(L, "%s: pin = \"%s\": the named set is \"edges\" (or a function(x, y, z) "
                        "-> boolean)", fn, w);
+        if (!surf) {   /* a mesh: the points on its rim */
+            for (size_t q = 0; rim && q < smp->n; q++)
+                if (rim[q]) idx[np++] = q;
+            if (np == 0)
+                luaL_error(L, "%s: pin = \"edges\": the mesh is closed and has no edges", fn);
+            return np;
+        }
         if (surf->kind != 1)
             luaL_error(L, "%s: pin = \"edges\": a sphere is closed and has no edges", fn);
         double amin = INFINITY, amax = -INFINITY, bmin = INFINITY, bmax = -INFINITY;
@@ -303,7 +310,7 @@ static size_t pin_points(lua_State *L, int pidx, const la_surface3 *surf, const 
 }
 
 /* the sample's arrays, freed by __gc if an error unwinds past them */
-typedef struct sample_guard { lm3_msample s; size_t *idx; } sample_guard;
+typedef struct sample_guard { lm3_msample s; size_t *idx; uint8_t *rim; } sample_guard;
 
 static void guard_free(sample_guard *g)
 {
@@ -311,6 +318,8 @@ static void guard_free(sample_guard *g)
     memset(&g->s, 0, sizeof g->s);
     free(g->idx);
     g->idx = NULL;
+    free(g->rim);
+    g->rim = NULL;
 }
 
 static int guard_gc(lua_State *L)
@@ -343,9 +352,11 @@ int la_sim3_membrane(lua_State *L)
         return luaL_error(L, "%s: 'material' must be lamina.membrane{...}", fn);
     la_getfield(L, 2, "surface");
     const la_surface3 *surf = luaL_testudata(L, -1, LA_SURFACE3);
-    if (!surf)
-        return luaL_error(L, "%s: 'surface' must be lamina.sphere{center, radius} or "
-                          "lamina.rect3{origin, u, v} (got %s)", fn, luaL_typename(L, -1));
+    const la_mesh3 *mesh = la_test_mesh3(L, -1);   /* lamina.mesh (l_mesh3.c) */
+    if (!surf && !mesh)
+        return luaL_error(L, "%s: 'surface' must be lamina.sphere{center, radius}, "
+                          "lamina.rect3{origin, u, v} or lamina.mesh{file} (got %s)", fn,
+                          luaL_typename(L, -1));
 
     lm3_mdef def;
     lm3_mdef_default(&def);
@@ -377,7 +388,10 @@ int la_sim3_membrane(lua_State *L)
     /* charged before the sampler allocates: the process's one cap, with
      * the particles' and the grid's (l_body3.c charges the same sum) */
     size_t have = sim->mem ? sim->mem->p.n : 0, cap = sim->mem ? sim->mem->p.cap : 0;
-    size_t est = points_estimate(surf, spacing);
+    char err[600];
+    size_t est = mesh ? la_mesh3_points(mesh, spacing, err, sizeof err)
+                      : points_estimate(surf, spacing);
+    if (mesh && est == 0) return luaL_error(L, "%s: 'surface': %s", fn, err);
     if (est)
         la_sim3_charge(L, s3, lm3_grid_bytes(sim) + lm3_particle_bytes(sim->p.cap) +
                                   mpoint_bytes(cap_after(cap, have + est)), fn);
@@ -387,8 +401,9 @@ int la_sim3_membrane(lua_State *L)
     lua_pushcfunction(L, guard_gc);
     lua_setfield(L, -2, "__gc");
     lua_setmetatable(L, -2);
-    char err[256];
-    int rc = surf->kind == 0
+    int rc = mesh ? la_mesh3_sample(mesh, spacing, &g->s, pt == LUA_TSTRING ? &g->rim : NULL,
+                                    err, sizeof err)
+             : surf->kind == 0
                  ? lm3_sample_sphere(surf->c, surf->r, spacing, &g->s, err, sizeof err)
                  : lm3_sample_rect3(surf->o, surf->u, surf->v, spacing, &g->s, err, sizeof err);
     if (rc != 0) return luaL_error(L, "%s: 'surface': %s", fn, err);
@@ -396,7 +411,7 @@ int la_sim3_membrane(lua_State *L)
     if (pt != LUA_TNIL) {
         g->idx = malloc((g->s.n ? g->s.n : 1) * sizeof *g->idx);
         if (!g->idx) return luaL_error(L, "%s: out of memory", fn);
-        np = pin_points(L, pidx, surf, &g->s, g->idx, fn);
+        np = pin_points(L, pidx, surf, &g->s, g->rim, g->idx, fn);
         if (np == 0) return luaL_error(L, "%s: 'pin' holds no point of the membrane", fn);
     }
     if (sim->mem && sim->mem->nmem >= LM3_MAX_MEMBRANES)
@@ -423,15 +438,10 @@ int la_sim3_membrane(lua_State *L)
 }
 
 /* sim:checkpoint on a 3D sim: the state file (sim3_state.c) holds the
- * particles and the grid's definition but no membrane point, so a restart
- * would lose the membranes: refused by name instead. */
+ * membrane points too (sim3_membrane_state.c), so it is the 2D method's. */
 int la_sim3_checkpoint(lua_State *L)
 {
-    la_sim3 *s3 = la_check_sim3(L, 1, "sim:checkpoint");
-    if (s3->sim->mem && s3->sim->mem->nmem > 0)
-        return luaL_error(L, "sim:checkpoint: a 3D simulation with membranes cannot be "
-                          "checkpointed in this build (the 3D state file holds no membrane "
-                          "points; a restart would lose them)");
+    la_check_sim3(L, 1, "sim:checkpoint");
     return la_sim_checkpoint(L);
 }
 

@@ -11,6 +11,7 @@
 
 #include "l_analysis.h"
 #include "l_curve.h"
+#include "l_mesh3.h"
 #include "l_sim3.h"
 #include "util.h"
 
@@ -42,6 +43,7 @@ static int luaopen_lamina(lua_State *L)
                                      {"cylinder", la_cylinder},
                                      {"sphere", la_sphere},   /* 3D membrane surfaces */
                                      {"rect3", la_rect3},
+                                     {"mesh", la_mesh},       /* OBJ / STL (l_mesh3.c) */
                                      {"plot", la_plot},
                                      {"report", la_report},
                                      {"pause", la_pause},
@@ -56,6 +58,7 @@ static int luaopen_lamina(lua_State *L)
     la_open_body3(L);
     la_open_membrane3(L);       /* a 3D sim's membranes (l_membrane3.c) */           /* a 3D sim's bodies (l_body3.c) */
     la_open_pin3(L);            /* their pins (l_pin3.c) */
+    la_open_mesh3(L);           /* lamina.mesh (l_mesh3.c) */
     la_open_pin(L);
     la_open_link(L);
     la_open_curve(L);

@@ -178,20 +178,28 @@ static const char *printable(lua_State *L, const char *s, size_t len)
 /* The checks every path gets, writing or reading: a string, no NUL or
  * control character, resolved inside the root. where (PATH_MAX) gets the
  * resolved path, root (PATH_MAX) the root; returns the path. */
-static const char *confined(lua_State *L, const char *fn, int idx, const char *verb,
-                            char *root, char *where)
+/* The name at idx: a string, not empty, without NUL or control characters. */
+static const char *plain_name(lua_State *L, const char *fn, int idx, const char *verb,
+                              size_t *len)
 {
     if (lua_type(L, idx) != LUA_TSTRING)
         luaL_error(L, "%s: the file name must be a string (got %s)", fn, luaL_typename(L, idx));
-    size_t len;
-    const char *path = lua_tolstring(L, idx, &len);
-    if (len == 0) luaL_error(L, "%s: the file name is empty", fn);
-    if (strlen(path) != len)
+    const char *path = lua_tolstring(L, idx, len);
+    if (*len == 0) luaL_error(L, "%s: the file name is empty", fn);
+    if (strlen(path) != *len)
         luaL_error(L, "%s: cannot %s '%s': the file name contains a NUL byte", fn, verb,
-                   printable(L, path, len));
-    if (has_control(path, len))
+                   printable(L, path, *len));
+    if (has_control(path, *len))
         luaL_error(L, "%s: cannot %s '%s': the file name contains a control character",
-                   fn, verb, printable(L, path, len));
+                   fn, verb, printable(L, path, *len));
+    return path;
+}
+
+static const char *confined(lua_State *L, const char *fn, int idx, const char *verb,
+                            char *root, char *where)
+{
+    size_t len;
+    const char *path = plain_name(L, fn, idx, verb, &len);
     if (!output_root(L, root))
         luaL_error(L, "%s: cannot %s '%s': the working directory is unknown (%s)", fn,
                    verb, path, strerror(errno));
@@ -285,4 +293,49 @@ void la_check_csv_name(lua_State *L, const char *fn, const char *what, const cha
                    "(it heads a CSV column; '%s' is not allowed)", fn, what,
                    printable(L, s, n), printable(L, s + i, 1));
     }
+}
+
+/* A file that comes with the script (l_internal.h): read only, so no
+ * ownership check, but confined as outputs are (docs/security.md
+ * "Paths"): inside the script's folder or the output root after links are
+ * resolved, nothing hidden (a script in the home folder must not reach
+ * .ssh/ through a mesh's error messages), a regular file (a FIFO or
+ * /dev/zero would block or never end), at most max bytes. */
+const char *la_check_asset_path(lua_State *L, const char *fn, int idx, size_t max, char *real,
+                                size_t *size)
+{
+    idx = lua_absindex(L, idx);
+    size_t len;
+    const char *path = plain_name(L, fn, idx, "read", &len);
+    char folder[PATH_MAX], root[PATH_MAX], full[2 * PATH_MAX + 2];
+    if (!la_script_folder(L, folder, sizeof folder) && !getcwd(folder, sizeof folder))
+        luaL_error(L, "%s: cannot read '%s': the working directory is unknown (%s)", fn, path,
+                   strerror(errno));
+    if (!output_root(L, root))
+        luaL_error(L, "%s: cannot read '%s': the working directory is unknown (%s)", fn, path,
+                   strerror(errno));
+    if (path[0] == '/') snprintf(full, sizeof full, "%s", path);
+    else snprintf(full, sizeof full, "%s/%s", folder, path);
+    if (strlen(full) >= PATH_MAX)
+        luaL_error(L, "%s: cannot read '%s': the file name is too long", fn, path);
+    if (!realpath(full, real))
+        luaL_error(L, "%s: cannot read '%s' (looked for '%s'): %s", fn, path, full,
+                   strerror(errno));
+    const char *base = inside(real, folder) ? folder : inside(real, root) ? root : NULL;
+    if (!base)
+        luaL_error(L, "%s: cannot read '%s': it resolves to '%s', outside the script's folder "
+                   "'%s' and the output root '%s'", fn, path, real, folder, root);
+    const char *rel = real + strlen(base) + (strcmp(base, "/") != 0);
+    const char *dot = dot_component(rel);
+    if (dot)
+        luaL_error(L, "%s: cannot read '%s': it resolves to '%s', where '%s' starts with a dot "
+                   "(hidden files and folders are not read)", fn, path, real, dot);
+    struct stat st;
+    if (stat(real, &st) != 0 || !S_ISREG(st.st_mode))
+        luaL_error(L, "%s: cannot read '%s': not a regular file", fn, path);
+    if ((size_t)st.st_size > max)
+        luaL_error(L, "%s: cannot read '%s': %lld bytes, more than the limit of %zu", fn, path,
+                   (long long)st.st_size, max);
+    *size = (size_t)st.st_size;
+    return path;
 }

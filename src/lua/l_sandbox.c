@@ -31,6 +31,7 @@
 #define READ_ROOTS "lamina.read_roots"   /* registry: folders dofile reads */
 #define REQUIRE_ROOTS "lamina.require_roots" /* registry: folders require reads */
 #define MODULES "lamina.modules"         /* registry: require's cache */
+#define SCRIPT_FOLDER "lamina.script_folder" /* registry: the script's real folder */
 #define MAX_MODULE_NAME 128
 
 int lamina_check_script_file(const char *path, char *err, size_t len)
@@ -86,6 +87,17 @@ static void set_read_roots(lua_State *L, const char *script)
     } else {
         add_root(L, list, ".");
     }
+    {   /* the script's folder alone, for the files that come with it (a
+         * mesh: la_check_asset_path) */
+        char real[PATH_MAX];
+        if (slash) lua_pushlstring(L, script, slash == script ? 1 : (size_t)(slash - script));
+        else lua_pushliteral(L, ".");
+        if (realpath(lua_tostring(L, -1), real)) {
+            lua_pushstring(L, real);
+            lua_setfield(L, LUA_REGISTRYINDEX, SCRIPT_FOLDER);
+        }
+        lua_pop(L, 1);
+    }
     lua_pushvalue(L, list);
     lua_setfield(L, LUA_REGISTRYINDEX, REQUIRE_ROOTS);
     lua_newtable(L);   /* the read roots: a copy plus scripts/ */
@@ -98,6 +110,14 @@ static void set_read_roots(lua_State *L, const char *script)
     lua_pop(L, 1);
     lua_setfield(L, LUA_REGISTRYINDEX, READ_ROOTS);
     lua_pop(L, 1);
+}
+
+int la_script_folder(lua_State *L, char *out, size_t len)
+{
+    int ok = lua_getfield(L, LUA_REGISTRYINDEX, SCRIPT_FOLDER) == LUA_TSTRING;
+    if (ok) snprintf(out, len, "%s", lua_tostring(L, -1));
+    lua_pop(L, 1);
+    return ok;
 }
 
 static int under(const char *path, const char *root)

@@ -58,6 +58,9 @@ int la_sim3_at(lua_State *L);
 /* l_vtk3.c: sim:vtk's particle and grid pieces (0, or -1 with err) */
 int la_vtk3_write_particles(const la_sim3 *s3, const char *path, char *err, size_t errlen);
 int la_vtk3_write_grid(const la_sim3 *s3, const char *path, char *err, size_t errlen);
+/* the membranes' points (a third piece, when the sim has membranes) */
+int la_vtk3_has_membranes(const la_sim3 *s3);
+int la_vtk3_write_membranes(const la_sim3 *s3, const char *path, char *err, size_t errlen);
 
 /* l_body3.c */
 int la_sim3_body(lua_State *L);
@@ -72,7 +75,7 @@ void la_open_pin3(lua_State *L);
 
 /* l_membrane3.c: sim:membrane on a 3D sim, lamina.sphere, lamina.rect3,
  * the membrane handle; the bytes the membrane points hold (charged with
- * the particles'); sim:checkpoint refused with membranes */
+ * the particles'); sim:checkpoint (the state file holds the membranes) */
 int la_sim3_membrane(lua_State *L);
 int la_sphere(lua_State *L);
 int la_rect3(lua_State *L);

@@ -9,7 +9,9 @@
  * (the grid's nodal fields of the last step, its cells as quads), and
  * rewrites out/run.pvd,
  * the collection of every output so far with its time, so that ParaView
- * opens out/run.pvd as one time series (render/vtk.c writes the files). */
+ * opens out/run.pvd as one time series (render/vtk.c writes the files).
+ * A 3D run with membranes adds out/run_membranes_000000.vtu (part 2: the
+ * membrane points, l_vtk3.c). */
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
@@ -21,12 +23,13 @@
 
 #define LA_VTK "lamina.vtk"
 #define PREFIX_MAX 1024
-#define NAME_MAX_LEN (PREFIX_MAX + 32)   /* prefix + "_grid_NNNNNN.vtu" */
+#define NAME_MAX_LEN (PREFIX_MAX + 32)   /* prefix + "_membranes_NNNNNN.vtu" */
 
 typedef struct la_vtk {
     char prefix[PREFIX_MAX];
     int count;              /* outputs written */
     double *times;
+    unsigned char *mem;     /* per output: 1 when it has a membranes piece */
     int cap;
 } la_vtk;
 
@@ -34,7 +37,9 @@ static int vtk_gc(lua_State *L)
 {
     la_vtk *v = luaL_checkudata(L, 1, LA_VTK);
     free(v->times);
+    free(v->mem);
     v->times = NULL;
+    v->mem = NULL;
     return 0;
 }
 
@@ -242,10 +247,12 @@ static int write_grid(const lm_sim *sim, const char *path, char *err, size_t err
     return la_vtk_grid_write(path, nn, nc, d, conn, offs, types, err, errlen);
 }
 
-/* The collection: every output so far, particles (part 0) and grid (1). */
+/* The collection: every output so far, particles (part 0), grid (1) and
+ * the membranes' points (2) where there are some. */
 static int write_pvd(const la_vtk *v, char *err, size_t errlen)
 {
-    int n = 2 * v->count;
+    int n = 0;
+    for (int k = 0; k < v->count; k++) n += 2 + v->mem[k];
     double *t = malloc((size_t)n * sizeof *t);
     int *part = malloc((size_t)n * sizeof *part);
     char *names = malloc((size_t)n * NAME_MAX_LEN);
@@ -257,13 +264,15 @@ static int write_pvd(const la_vtk *v, char *err, size_t errlen)
         goto done;
     }
     const char *base = base_of(v->prefix);
-    for (int k = 0; k < v->count; k++) {
-        for (int s = 0; s < 2; s++) {
-            char *nm = names + (size_t)(2 * k + s) * NAME_MAX_LEN;
-            snprintf(nm, NAME_MAX_LEN, s ? "%s_grid_%06d.vtu" : "%s_%06d.vtu", base, k);
-            files[2 * k + s] = nm;
-            t[2 * k + s] = v->times[k];
-            part[2 * k + s] = s;
+    static const char *const form[] = {"%s_%06d.vtu", "%s_grid_%06d.vtu",
+                                       "%s_membranes_%06d.vtu"};
+    for (int k = 0, i = 0; k < v->count; k++) {
+        for (int s = 0; s < 2 + v->mem[k]; s++, i++) {
+            char *nm = names + (size_t)i * NAME_MAX_LEN;
+            snprintf(nm, NAME_MAX_LEN, form[s], base, k);
+            files[i] = nm;
+            t[i] = v->times[k];
+            part[i] = s;
         }
     }
     snprintf(path, sizeof path, "%s.pvd", v->prefix);
@@ -287,6 +296,9 @@ static int vtk_output(lua_State *L)
         double *t = realloc(v->times, (size_t)cap * sizeof *t);
         if (!t) return luaL_error(L, "sim:vtk: out of memory");
         v->times = t;
+        unsigned char *m = realloc(v->mem, (size_t)cap);
+        if (!m) return luaL_error(L, "sim:vtk: out of memory");
+        v->mem = m;
         v->cap = cap;
     }
     char path[PREFIX_MAX + 32], err[PREFIX_MAX + 128];
@@ -298,6 +310,14 @@ static int vtk_output(lua_State *L)
     snprintf(path, sizeof path, "%s_grid_%06d.vtu", v->prefix, v->count);
     lua_pushstring(L, path);
     la_check_output_path(L, "sim:vtk", -1);
+    const int mem = s->s3 && la_vtk3_has_membranes(s->s3);
+    char mpath[PREFIX_MAX + 32];
+    snprintf(mpath, sizeof mpath, "%s_membranes_%06d.vtu", v->prefix, v->count);
+    if (mem) {
+        lua_pushstring(L, mpath);
+        la_check_output_path(L, "sim:vtk", -1);
+        lua_pop(L, 1);
+    }
     lua_pop(L, 2);
     /* a series on disk is its .pvd and the pieces it lists: when a piece
      * or the .pvd cannot be written (a full disk), this output's pieces
@@ -313,11 +333,18 @@ static int vtk_output(lua_State *L)
         unlink(path);
         return luaL_error(L, "sim:vtk: %s", err);
     }
+    if (mem && la_vtk3_write_membranes(s->s3, mpath, err, sizeof err)) {
+        unlink(path);
+        unlink(grid);
+        return luaL_error(L, "sim:vtk: %s", err);
+    }
+    v->mem[v->count] = (unsigned char)mem;
     v->times[v->count++] = s->s3 ? s->s3->sim->t : sim->t;
     if (write_pvd(v, err, sizeof err)) {
         v->count--;
         unlink(path);
         unlink(grid);
+        if (mem) unlink(mpath);
         return luaL_error(L, "sim:vtk: %s", err);
     }
     return 0;

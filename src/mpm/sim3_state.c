@@ -7,18 +7,21 @@
  * the particles, so a restarted run takes the same steps bit for bit.
  *
  * Layout: "LM3STATE", uint32 version, uint32 materials, uint64 particles,
- * uint64 the whole part's bytes, then doubles (t, dt, gravity[3], courant,
- * and per material its MAT_DOUBLES constants, the kind among them), int64
- * nstep, ARRAYS arrays of n doubles (x, v, m, rho, sigma, the gas's e), n
- * material bytes. Native byte order: a checkpoint is
- * read back on the machine that wrote it (as the 2D one). */
+ * uint64 the whole part's bytes, uint64 membrane points, uint32 membranes,
+ * uint32 membrane pins (version 3: the membranes, issue 34 item 2), then
+ * doubles (t, dt, gravity[3], courant, and per material its MAT_DOUBLES
+ * constants, the kind among them), int64 nstep, ARRAYS arrays of n doubles
+ * (x, v, m, rho, sigma, the gas's e), n material bytes, then the
+ * membranes' part (sim3_membrane_state.c). Native byte order: a checkpoint
+ * is read back on the machine that wrote it (as the 2D one). */
 #include <stdio.h>
 #include <string.h>
 
 #include "mpm3.h"
+#include "mpm3_membrane.h"
 
 #define MAGIC "LM3STATE"
-#define HEAD (8 + 4 + 4 + 8 + 8)
+#define HEAD (8 + 4 + 4 + 8 + 8 + 8 + 4 + 4)
 #define MAT_DOUBLES 12
 #define ARRAYS 15
 
@@ -30,7 +33,10 @@ static size_t bytes_for(size_t nmat, size_t n)
 
 size_t lm3_state_bytes(const lm3_sim *sim)
 {
-    return bytes_for((size_t)sim->nmat, sim->p.n);
+    uint64_t np;
+    uint32_t nmem, npins;
+    lm3_mstate_counts(sim, &np, &nmem, &npins);
+    return bytes_for((size_t)sim->nmat, sim->p.n) + lm3_mstate_bytes(np, nmem, npins);
 }
 
 /* the particle arrays in their saved order */
@@ -80,6 +86,12 @@ void lm3_state_save(const lm3_sim *sim, unsigned char *buf)
     memcpy(b, &nmat, 4); b += 4;
     memcpy(b, &n, 8); b += 8;
     memcpy(b, &total, 8); b += 8;
+    uint64_t np;
+    uint32_t nmem, npins;
+    lm3_mstate_counts(sim, &np, &nmem, &npins);
+    memcpy(b, &np, 8); b += 8;
+    memcpy(b, &nmem, 4); b += 4;
+    memcpy(b, &npins, 4); b += 4;
     const lm3_def *d = &sim->def;
     double head[6] = {sim->t, d->dt, d->gravity[0], d->gravity[1], d->gravity[2], d->courant};
     memcpy(b, head, sizeof head); b += sizeof head;
@@ -97,6 +109,7 @@ void lm3_state_save(const lm3_sim *sim, unsigned char *buf)
         b += n * sizeof(double);
     }
     if (n) memcpy(b, sim->p.mat, n);
+    lm3_mstate_save(sim, b + n);
 }
 
 size_t lm3_state_claimed(const unsigned char *buf, size_t len)
@@ -108,12 +121,20 @@ size_t lm3_state_claimed(const unsigned char *buf, size_t len)
     memcpy(&nmat, buf + 12, 4);
     memcpy(&n, buf + 16, 8);
     memcpy(&total, buf + 24, 8);
-    if (version != LM3_STATE_VERSION || nmat > LM3_MAX_MATERIALS) return 0;
-    /* the count must be the one the total implies (no overflow: n is
-     * bounded by the total, itself bounded by the file's size) */
-    size_t fixed = bytes_for(nmat, 0);
-    if (total < fixed || (total - fixed) % (ARRAYS * sizeof(double) + 1) != 0 ||
-        (total - fixed) / (ARRAYS * sizeof(double) + 1) != n)
+    uint64_t np;
+    uint32_t nmem, npins;
+    memcpy(&np, buf + 32, 8);
+    memcpy(&nmem, buf + 40, 4);
+    memcpy(&npins, buf + 44, 4);
+    if (version != LM3_STATE_VERSION || nmat > LM3_MAX_MATERIALS || nmem > LM3_MAX_MEMBRANES ||
+        npins > LM3_MAX_MEMBRANES)
+        return 0;
+    /* the counts must be the ones the total implies (no overflow: n and np
+     * are bounded by the total, itself bounded by the file's size) */
+    size_t fixed = bytes_for(nmat, 0) + lm3_mstate_bytes(0, nmem, npins);
+    if (total < fixed || n > (total - fixed) / (ARRAYS * sizeof(double) + 1) ||
+        np > (total - fixed) / lm3_mstate_bytes(1, 0, 0) ||
+        total != bytes_for(nmat, (size_t)n) + lm3_mstate_bytes(np, nmem, npins))
         return 0;
     return (size_t)total;
 }
@@ -125,10 +146,13 @@ lm_status lm3_state_load(lm3_sim *sim, const unsigned char *buf, size_t len)
         snprintf(sim->err, sizeof sim->err, "not a 3D simulation's state (or a damaged one)");
         return LM_ERR_INPUT;
     }
-    uint32_t nmat;
-    uint64_t n;
+    uint32_t nmat, nmem, npins;
+    uint64_t n, np;
     memcpy(&nmat, buf + 12, 4);
     memcpy(&n, buf + 16, 8);
+    memcpy(&np, buf + 32, 8);
+    memcpy(&nmem, buf + 40, 4);
+    memcpy(&npins, buf + 44, 4);
     /* the script rebuilt its bodies before the state replaces them: the
      * same particles and materials, or it is another script */
     if (n != sim->p.n || (int)nmat != sim->nmat) {
@@ -162,6 +186,9 @@ lm_status lm3_state_load(lm3_sim *sim, const unsigned char *buf, size_t len)
                      "%u", (unsigned long long)q, mat[q], nmat);
             return LM_ERR_INPUT;
         }
+    /* the membranes, checked then replaced (nothing if refused); the
+     * particles below are checked already */
+    if (lm3_mstate_load(sim, mat + n, np, nmem, npins) != LM_OK) return LM_ERR_INPUT;
     /* checked: now replace */
     sim->t = head[0];
     sim->def.dt = head[1];

@@ -123,4 +123,5 @@ def main():
           f"value read back equals lamina's and the grid the trilinear map computed here")
 
 
-main()
+if __name__ == "__main__":   # vtk3_membrane.py imports read_both
+    main()

@@ -262,7 +262,7 @@ size_t lm3_particle_bytes(size_t cap);
  * header gives (0 when it is not a 3D state); load replaces the clock,
  * live settings, materials and particles of a sim the script built with
  * the same particle count (LM_ERR_INPUT and err otherwise). */
-#define LM3_STATE_VERSION 2
+#define LM3_STATE_VERSION 3   /* 3: the membranes (sim3_membrane_state.c) */
 size_t lm3_state_bytes(const lm3_sim *sim);
 void lm3_state_save(const lm3_sim *sim, unsigned char *buf);
 size_t lm3_state_claimed(const unsigned char *buf, size_t len);

@@ -180,4 +180,17 @@ lm_status lm3_membrane_update(struct lm3_sim *sim);
 int lm3_membrane_construction_normals(struct lm3_sim *sim, int k, lm3_mnormals basis,
                                       double *const nrm[3], size_t *undefined);
 
+/* ---- the membranes in a run's state (sim3_membrane_state.c; framed by
+ * sim3_state.c for checkpoints and --restart) ---- */
+size_t lm3_mstate_bytes(uint64_t np, uint32_t nmem, uint32_t npins);
+void lm3_mstate_counts(const struct lm3_sim *sim, uint64_t *np, uint32_t *nmem,
+                       uint32_t *npins);
+/* Writes lm3_mstate_bytes(counts) bytes at b; returns b past them. */
+unsigned char *lm3_mstate_save(const struct lm3_sim *sim, unsigned char *b);
+/* Checks the part at b (of those counts) against the script's membranes
+ * and replaces their values, or changes nothing: LM_ERR_INPUT with
+ * sim->err. */
+lm_status lm3_mstate_load(struct lm3_sim *sim, const unsigned char *b, uint64_t np,
+                          uint32_t nmem, uint32_t npins);
+
 #endif
