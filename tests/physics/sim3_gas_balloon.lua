@@ -27,7 +27,10 @@
 --     space the membrane encloses, (gamma - 1) sum m e / V (the sum the
 --     internal forces use; V = sum A n . x / 3 over the points, the
 --     divergence theorem with their current areas and normals), r the radius
---     of the sphere of that volume: within 2 %; t11 and t22 each too;
+--     of the sphere of that volume: within 2 %; t11 and t22 each too. p and
+--     V are gas:pressure(mem) and mem:enclosed_volume(), checked against the
+--     sums made here at the start (1e-9: the API sums about the points'
+--     mean, this about the centre);
 --  2. the axisymmetric run (lamina.sim{axisymmetric = true}, the half
 --     section, grid damping 600 /s, the meridional stress and the points'
 --     hoop stress weighted by ring area, as tests/verify/lib/gas_balloon.lua
@@ -41,7 +44,8 @@
 --     (measured, 2.5e-4 sampling): the step's own error, which the damped
 --     run has too before it settles;
 --  4. no gas point farther than a quarter cell outside the skin (signed
---     distance along the nearest point's normal) at any 0.02 s sample.
+--     distance along the nearest point's normal) at any 0.02 s sample,
+--     counted here and by mem:escaped(gas) (the same count).
 -- Measured (level 1, 07:20): 3D +0.24 % (t11 / t22 +0.23 / +0.25 %), points
 -- rms 1.7 %; axisymmetric meridional -0.11 %, hoop +0.01 %; 3D against them
 -- +0.38 / +0.25 %; energy 9e-7 of the total (0.3 % of the damped work); no
@@ -81,6 +85,7 @@ local mem = sim:membrane{ material = skin, spacing = h / 3, initial_strain = eq 
 assert(#gas == np, "the probe counts the same points")
 
 -- p over the enclosed volume, the volume's radius, the points' tensions
+local checked = false
 local function state()
   local m = mem:particles()
   local V, T, T1, T2 = 0, 0, 0, 0
@@ -88,10 +93,18 @@ local function state()
     V = V + m.area[i] * (m.x[i] * m.nx[i] + m.y[i] * m.ny[i] + m.z[i] * m.nz[i]) / 3
     T, T1, T2 = T + m.tension[i], T1 + m.t11[i], T2 + m.t22[i]
   end
-  local g = gas:particles()
-  local me = 0
-  for i = 1, g.n do me = me + g.mass[i] * g.e[i] end
-  return 0.4 * me / V, (3 * V / (4 * math.pi)) ^ (1 / 3), T / m.n, T1 / m.n, T2 / m.n, V, m
+  -- the API's (l_membrane3_gas.c): the same sums, V about the points' mean
+  local Va, pa = mem:enclosed_volume(), gas:pressure(mem)
+  if not checked then
+    local g = gas:particles()
+    local me = 0
+    for i = 1, g.n do me = me + g.mass[i] * g.e[i] end
+    assert(math.abs(Va / V - 1) < 1e-9 and math.abs(pa / (0.4 * me / V) - 1) < 1e-9,
+           string.format("the API's volume and pressure: %.12g, %.12g against %.12g, %.12g", Va, pa, V,
+                         0.4 * me / V))
+    checked = true
+  end
+  return pa, (3 * Va / (4 * math.pi)) ^ (1 / 3), T / m.n, T1 / m.n, T2 / m.n, Va, m
 end
 
 local p, r, _, _, _, V = state()
@@ -152,6 +165,9 @@ sim:every(5e-4, function(s)
   end
   if math.abs(s.t / 0.02 - math.floor(s.t / 0.02 + 0.5)) < 1e-6 then
     local b, d = outside(m)
+    local ba, da, ga = mem:escaped(gas)   -- the API's, the same count
+    assert(ba == b and (d > 0 or (da == 0 and ga == 0)) and (d <= 0 or math.abs(da - d) < 1e-12),
+           string.format("mem:escaped(gas) = %d, %g, %d against %d, %g here", ba, da, ga, b, d))
     escaped, deepest = math.max(escaped, b), math.max(deepest, d)
     print(string.format("  t = %.3f: p = %.4f, r = %.6f, sigma t / (p r / 2) - 1 = %+.4f %%, gas beyond "
                         .. "h/4 %d (outermost %+.3f cells)", s.t, pp, rr, 100 * (T / (pp * rr / 2) - 1),

@@ -162,6 +162,21 @@ double lm3_membrane_mass(const struct lm3_sim *sim);
  * membrane"). */
 double lm3_membrane_damped(const struct lm3_sim *sim);
 
+/* A gas inside a closed membrane, measured (sim3_membrane_gas.c; docs/3d.md
+ * "A gas inside a 3D membrane"). The volume membrane k's points enclose:
+ * (1/3) sum A (x - c) . n over them (the divergence theorem; current areas,
+ * normals out), meaningful for a closed surface. */
+double lm3_membrane_volume(const struct lm3_sim *sim, int k);
+typedef struct lm3_escaped {
+    size_t beyond;     /* particles outside by more than `quarter` */
+    size_t grazing;    /* outside by at most `quarter` */
+    double deepest;    /* the largest distance outside (0 when none is) */
+} lm3_escaped;
+/* The particles first .. first + n - 1 outside closed membrane k (the 2D
+ * membrane:escaped's three numbers): 0, or -1 when out of memory. */
+int lm3_membrane_escaped(const struct lm3_sim *sim, int k, size_t first, size_t n,
+                         double quarter, lm3_escaped *out);
+
 /* ---- the step's hooks (sim3_step.c calls them; sim3_membrane_step.c) ---- */
 
 /* Place, then m, m v, the internal force -A t sum s_ab (t_a x t_b) . G_ip,
