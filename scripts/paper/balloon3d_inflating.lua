@@ -2,15 +2,15 @@
 -- source: normals paper §8, Fig 12 (its gas-filled circle, here a sphere in 3D, issue 34)
 -- look: an unstretched spherical skin (radius 0.3) around gas at 2 kPa; the
 --   gas pushes it out through the grid the two share, it overshoots to a
---   radius of 0.36, rings a few times and settles near 0.343 by t = 0.1
---   (14 % wider);
+--   radius of 0.35, rings a few times and settles at 0.343 by t = 0.2
+--   (14 % wider), where it stays;
 --   the membrane's points (blue) and their normals (red) stay on a sphere,
 --   the normals radial; the slice through the centre (y = 0) shows the gas
 --   pressure falling as it expands and the pressure waves inside dying out,
 --   one colour range (800 to 2100 Pa) for every time; no gas outside the
 --   skin; the plot: the tension against p r / 2 of the moment (dashed), which
 --   it meets once the ringing has gone
--- checks: the time mean over the last 0.05 s of the points' mean tension
+-- checks: the time mean over the last 0.1 s of the points' mean tension
 --   against p r / 2 (ours: Laplace's law for a thin sphere, p the gas's over
 --   the volume the skin encloses, gas:pressure(membrane), r the radius of
 --   that volume's sphere; 2 %, issue 34's); the gas's pressure at the end
@@ -27,26 +27,27 @@
 --   skin, E = 1e5, nu = 0.3, t = 0.01, rho = 100, plane stress, laid
 --   unstretched on the sphere r0 = 0.3; gas p0 = 2000, rho = 1.2, gamma =
 --   1.4, mu = 0.05, 27 points a cell in the ball; cell 0.05 (the box
---   [-0.5, 0.5]^3), B-spline, MUSL, dt = 4e-4, membrane points h / 3 apart
+--   [-0.5, 0.5]^3), B-spline, USL, dt = 4e-4, membrane points h / 3 apart
 --   with connectivity normals (the frame's t1 x t2); a damping load of
 --   60 /s on the membrane's points (lamina's, not the paper's: the gas's
 --   shear viscosity hardly resists the breathing, which is dilatation).
---   The run stops at t = 0.16: run on (measured to 0.4 s) the skin's points
---   start a motion of their own after about 0.15 s that the damping does not
---   hold (their kinetic energy 0.5 J at 0.15 s, 10 J at 0.4 s, fed by the
---   gas's internal energy, 480 -> 460 J; the points' areas summing to 3.5 %
---   less than the sphere's, the normals 8 degrees off radial, the radius
---   creeping to 0.3475): an open problem of the 3D membrane at 14 % strain
---   (docs/3d.md "A gas inside a 3D membrane"), not shown as settled here
+--   USL, not lamina's default MUSL: under MUSL the skin's points start a
+--   motion of their own after about 0.15 s that the damping does not hold
+--   (their kinetic energy 0.5 J at 0.15 s, 10 J at 0.4 s; the points' areas
+--   summing to 3.5 % less than the sphere's, the normals 8 degrees off
+--   radial, the radius creeping to 0.3475), with the gas or with a pressure
+--   load instead of it; under USL it stays settled to 0.4 s (docs/3d.md
+--   "A gas inside a 3D membrane": an open problem of MUSL's re-map with
+--   3D membranes)
 -- visual: t_end=0.02
--- thumb: balloon_t0.160.png
+-- thumb: balloon_t0.400.png
 local out = lamina.param("out", "out/balloon3d_inflating")
-local t_end = lamina.param("t_end", 0.16)
+local t_end = lamina.param("t_end", 0.4)
 local h, r0, p0, gamma = 0.05, 0.3, 2000, 1.4
 local E, nu, t = 1e5, 0.3, 0.01
 local c = 60
 local sim = lamina.sim{ dim = 3, domain = {-0.5, -0.5, -0.5, 0.5, 0.5, 0.5}, cell = h, dt = 4e-4,
-                        basis = "bspline2", scheme = "musl" }
+                        basis = "bspline2", scheme = "usl" }
 local air = lamina.gas{ rho = 1.2, p = p0, gamma = gamma, mu = 0.05 }
 local skin = lamina.membrane{ rho = 100, E = E, nu = nu, thickness = t, law = "plane_stress" }
 local gas = sim:body{ material = air, ppc = 27, name = "gas",
@@ -75,7 +76,7 @@ local sT, sX, n, escaped, worst, de = 0, 0, 0, 0, 0, 0
 sim:every(2e-3, function(s)
   local p, r, T = measure()
   ts[#ts + 1], rs[#rs + 1], Ts[#Ts + 1], prs[#prs + 1] = s.t, r, T, p * r / 2
-  if s.t >= t_end - 0.05 - 1e-9 then sT, sX, n = sT + T, sX + p * r / 2, n + 1 end
+  if s.t >= t_end - 0.1 - 1e-9 then sT, sX, n = sT + T, sX + p * r / 2, n + 1 end
   local e = sim:energy()
   de = math.max(de, math.abs(e.total + e.damped - e0.total) / e0.total)
   if math.abs(s.t / 0.02 - math.floor(s.t / 0.02 + 0.5)) < 1e-6 then
@@ -95,7 +96,7 @@ local function frame(tf)
                  slice = { axis = "y", at = 0, field = "pressure", range = {800, 2100},
                            colourmap = "viridis" } } } }
 end
-for _, tf in ipairs{0, 0.02, 0.06, 0.16} do
+for _, tf in ipairs{0, 0.02, 0.1, 0.4} do
   if tf <= t_end + 1e-12 then
     sim:run{ t_end = tf }
     frame(tf)
@@ -124,7 +125,7 @@ lamina.plot{ file = out .. "/radius.png", csv = true, width = 640, height = 360,
 local e = sim:energy()
 lamina.report{
   tension_balance = { 100 * (sT / sX - 1), ref = 0, tol = 2,
-                      unit = "% (time mean over the last 0.05 s against p r / 2; ours, issue 34)" },
+                      unit = "% (time mean over the last 0.1 s against p r / 2; ours, issue 34)" },
   pressure_adiabatic = { p, ref = padiabatic, tol = 0.02 * padiabatic,
                          unit = "Pa at the end (ours: p0 (V0 / V)^gamma; mu heats it)" },
   radius = { r, ref = r0 * lam_closed, tol = 0.02 * r0 * lam_closed,
