@@ -46,7 +46,7 @@
 --  4. no gas point farther than a quarter cell outside the skin (signed
 --     distance along the nearest point's normal) at any 0.02 s sample,
 --     counted here and by mem:escaped(gas) (the same count).
--- Measured (level 1, 07:20): 3D +0.24 % (t11 / t22 +0.23 / +0.25 %), points
+-- Measured (level 1): 3D +0.24 % (t11 / t22 +0.23 / +0.25 %), points
 -- rms 1.7 %; axisymmetric meridional -0.11 %, hoop +0.01 %; 3D against them
 -- +0.38 / +0.25 %; energy 9e-7 of the total (0.3 % of the damped work); no
 -- gas outside the skin. Level 2 (the heavy variant, 67 s CPU): 3D +0.70 %;
