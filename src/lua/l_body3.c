@@ -277,6 +277,12 @@ static const la_body3rec *rec_of(lua_State *L, la_sim3 **s3)
     return &(*s3)->bodies[b->index];
 }
 
+const la_body3rec *la_check_body3(lua_State *L, int idx, la_sim3 **s3)
+{
+    la_body3 *b = check_body3(L, idx, s3);
+    return &(*s3)->bodies[b->index];
+}
+
 static int body3_triple(lua_State *L, int which)
 {
     la_sim3 *s3;
@@ -416,6 +422,7 @@ void la_open_body3(lua_State *L)
                                        {"energy", body3_energy},
                                        {"particles", body3_particles},
                                        {"pin", body3_pin},
+                                       {"pressure", la_gas3_pressure},   /* l_membrane3_gas.c */
                                        {NULL, NULL}};
     la_new_metatable(L, LA_BODY3);
     luaL_setfuncs(L, meta, 0);

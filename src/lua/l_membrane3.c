@@ -87,6 +87,15 @@ static la_membrane3 *check_m3(lua_State *L, la_sim3 **s3)
     return m;
 }
 
+int la_check_membrane3(lua_State *L, int idx, la_sim3 **s3)
+{
+    la_membrane3 *m = luaL_checkudata(L, idx, LA_MEMBRANE3);
+    lua_getiuservalue(L, idx, 1);
+    *s3 = la_check_sim3(L, -1, "membrane");
+    lua_pop(L, 1);
+    return m->index;
+}
+
 static const lm3_membrane *rec_of(lua_State *L, la_sim3 **s3)
 {
     la_membrane3 *m = check_m3(L, s3);
@@ -458,6 +467,9 @@ void la_open_membrane3(lua_State *L)
     static const luaL_Reg methods[] = {{"particles", m3_particles},
                                        {"tension", m3_tension},
                                        {"reaction", m3_reaction},
+                                       /* l_membrane3_gas.c */
+                                       {"enclosed_volume", la_membrane3_volume},
+                                       {"escaped", la_membrane3_escaped},
                                        {NULL, NULL}};
     la_new_metatable(L, LA_MEMBRANE3);
     luaL_setfuncs(L, meta, 0);

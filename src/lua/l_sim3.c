@@ -12,6 +12,7 @@
 
 #include "l_frame3d.h"
 #include "l_sim3.h"
+#include "mpm3_membrane.h"
 #include "util.h"
 
 static const char *const schemes[] = {"musl", "usl", NULL};
@@ -312,6 +313,10 @@ static int sim3_energy(lua_State *L)
     lm3_energy e;
     lm3_energy_of(s3->sim, &e);
     la_sim3_push_energy(L, &e);
+    /* the membranes' damping work (not in total: total + damped is
+     * conserved), as the 2D sim's grid damping reports its own */
+    lua_pushnumber(L, lm3_membrane_damped(s3->sim));
+    lua_setfield(L, -2, "damped");
     return 1;
 }
 

@@ -83,6 +83,18 @@ size_t la_membrane3_bytes(const la_sim3 *s3);
 int la_sim3_checkpoint(lua_State *L);
 void la_open_membrane3(lua_State *L);
 
+/* The body at idx (a 3D body's handle; a Lua error otherwise), l_body3.c;
+ * the engine's index of the membrane at idx, l_membrane3.c. */
+const la_body3rec *la_check_body3(lua_State *L, int idx, la_sim3 **s3);
+int la_check_membrane3(lua_State *L, int idx, la_sim3 **s3);
+
+/* l_membrane3_gas.c: a gas inside a closed membrane (docs/3d.md "A gas
+ * inside a 3D membrane"): membrane:enclosed_volume(), membrane:escaped(gas),
+ * gas:pressure(membrane) */
+int la_membrane3_volume(lua_State *L);
+int la_membrane3_escaped(lua_State *L);
+int la_gas3_pressure(lua_State *L);
+
 /* l_region3.c: lamina.ball, lamina.box, lamina.cylinder */
 int la_ball(lua_State *L);
 int la_box(lua_State *L);

@@ -273,6 +273,11 @@ void lm3_membrane_momentum(const lm3_sim *sim, double P[3])
         for (size_t q = 0; q < p->n; q++) P[a] += p->m[q] * p->v[a][q];
 }
 
+double lm3_membrane_damped(const lm3_sim *sim)
+{
+    return sim->mem ? sim->mem->damped : 0;
+}
+
 double lm3_membrane_mass(const lm3_sim *sim)
 {
     double m = 0;

@@ -176,6 +176,15 @@ void lm3_membrane_g2p(lm3_sim *sim)
                             u[e] += N * g->p[e][i];
                         }
                     }
+            /* the damping load's work over the step: its force -c m v^k
+             * (p2g's) times the point's displacement at the grid's mean
+             * velocity over the step, u - dt a / 2 (v_i^k = v_i^L - dt a_i) */
+            const double c = sim->mem->mem[p->mem[q]].def.damping;
+            if (c > 0) {
+                double vu = 0;
+                for (int e = 0; e < 3; e++) vu += p->v[e][q] * (u[e] - 0.5 * dt * acc[e]);
+                sim->mem->damped += c * p->m[q] * vu * dt;
+            }
             for (int e = 0; e < 3; e++) {
                 p->v[e][q] += dt * acc[e];
                 p->x[e][q] += dt * u[e];

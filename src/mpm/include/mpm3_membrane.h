@@ -131,6 +131,7 @@ typedef struct lm3_membranes {
     lm3_mpin *pins;
     int npins;
     int32_t *held;          /* per node: the pin (1-based) holding it, 0 free */
+    double damped;          /* work the damping loads took out so far, J (lm3_membrane_g2p) */
 } lm3_membranes;
 
 /* A membrane from a sampled surface: its index, or -1 with sim->err
@@ -155,6 +156,26 @@ void lm3_membrane_energy(const struct lm3_sim *sim, double *kinetic, double *str
                          double *potential);
 void lm3_membrane_momentum(const struct lm3_sim *sim, double P[3]);
 double lm3_membrane_mass(const struct lm3_sim *sim);
+/* The energy the membranes' damping loads (-c m v) have taken out since
+ * the simulation was made, J: 0 without membranes or damping; total +
+ * damped is what the step conserves (docs/3d.md "A gas inside a 3D
+ * membrane"). */
+double lm3_membrane_damped(const struct lm3_sim *sim);
+
+/* A gas inside a closed membrane, measured (sim3_membrane_gas.c; docs/3d.md
+ * "A gas inside a 3D membrane"). The volume membrane k's points enclose:
+ * (1/3) sum A (x - c) . n over them (the divergence theorem; current areas,
+ * normals out), meaningful for a closed surface. */
+double lm3_membrane_volume(const struct lm3_sim *sim, int k);
+typedef struct lm3_escaped {
+    size_t beyond;     /* particles outside by more than `quarter` */
+    size_t grazing;    /* outside by at most `quarter` */
+    double deepest;    /* the largest distance outside (0 when none is) */
+} lm3_escaped;
+/* The particles first .. first + n - 1 outside closed membrane k (the 2D
+ * membrane:escaped's three numbers): 0, or -1 when out of memory. */
+int lm3_membrane_escaped(const struct lm3_sim *sim, int k, size_t first, size_t n,
+                         double quarter, lm3_escaped *out);
 
 /* ---- the step's hooks (sim3_step.c calls them; sim3_membrane_step.c) ---- */
 
