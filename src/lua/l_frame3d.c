@@ -39,7 +39,7 @@ typedef struct ctx3 {
     int fidx;
     size_t particles, slices, isos;     /* drawn, for lamina:layers */
     size_t mpoints, marrows;            /* membrane points drawn, and with normals */
-    size_t mphi;                        /* membranes drawn with their phi = 1 */
+    size_t mmem, mphi;                  /* membranes drawn, and with their phi = 1 */
 } ctx3;
 
 /* luaL_error with printf's formats (%g, which Lua's lacks). */
@@ -604,6 +604,7 @@ static void panel(lua_State *L, ctx3 *c, int pidx, const char *where, lr_panel3d
         p->membranes = m;
         p->nmembranes = (size_t)ms->nmem;
         c->mphi += nphi;
+        c->mmem += (size_t)ms->nmem;
     }
 
     /* slices and isosurfaces */
@@ -639,7 +640,7 @@ int l_frame3d(lua_State *L, const lm3_sim *sim, int opts_index)
     f.width = (int)w;
     f.height = (int)h;
     f.backend = la_frame_backend(L, fidx, fn, NULL);   /* PNG only (l_frame.c) */
-    ctx3 c = {fn, sim, 0, 0, fidx, 0, 0, 0, 0, 0, 0};
+    ctx3 c = {fn, sim, 0, 0, fidx, 0, 0, 0, 0, 0, 0, 0};
     lua_newtable(L);
     c.anchor = lua_gettop(L);
 
@@ -698,7 +699,8 @@ int l_frame3d(lua_State *L, const lm3_sim *sim, int opts_index)
      * their bytes */
     if (c.mpoints && used_l > 0 && (size_t)used_l < sizeof layers)
         snprintf(layers + used_l, sizeof layers - (size_t)used_l,
-                 " membrane_points=%zu normals=%zu phi=%zu", c.mpoints, c.marrows, c.mphi);
+                 " membrane_points=%zu normals=%zu membranes=%zu phi=%zu", c.mpoints,
+                 c.marrows, c.mmem, c.mphi);
     char range[MAX_PANELS * 56];
     size_t used = 0;
     range[0] = 0;

@@ -17,10 +17,10 @@ n=$(($2 + $3))
 layers() { python3 -c "import sys; sys.path.insert(0, '$S'); from png_text import png_texts; print(png_texts(sys.argv[1])['lamina:layers'])" "$1"; }
 l1=$(layers $O/normals.png); l2=$(layers $O/points.png); l3=$(layers $O/none.png)
 l4=$(layers $O/nophi.png); l5=$(layers $O/linear.png)
-[ "$l1" = "dim=3 particles=0 slices=0 isosurfaces=0 membrane_points=$n normals=$n phi=2" ] || fail "normals.png: $l1 (want $n points and normals, 2 phi)"
-[ "$l2" = "dim=3 particles=0 slices=0 isosurfaces=0 membrane_points=$n normals=0 phi=2" ] || fail "points.png: $l2"
+[ "$l1" = "dim=3 particles=0 slices=0 isosurfaces=0 membrane_points=$n normals=$n membranes=2 phi=2" ] || fail "normals.png: $l1 (want $n points and normals, 2 phi)"
+[ "$l2" = "dim=3 particles=0 slices=0 isosurfaces=0 membrane_points=$n normals=0 membranes=2 phi=2" ] || fail "points.png: $l2"
 [ "$l3" = "dim=3 particles=0 slices=0 isosurfaces=0" ] || fail "none.png: $l3"
-[ "$l4" = "dim=3 particles=0 slices=0 isosurfaces=0 membrane_points=$n normals=0 phi=0" ] || fail "nophi.png: $l4"
+[ "$l4" = "dim=3 particles=0 slices=0 isosurfaces=0 membrane_points=$n normals=0 membranes=2 phi=0" ] || fail "nophi.png: $l4"
 [ "$l5" = "$l1" ] || fail "linear.png: $l5"
 # the pixels (the IDAT chunks, not the text) differ: the arrows are drawn
 idat() { python3 -c "

@@ -26,11 +26,24 @@ from png_text import png_texts  # noqa: E402
 
 
 def layers(text):
-    """'membranes=2 with_phi=2 phi=2 normals=2' -> dict of ints."""
+    """'membranes=2 with_phi=2 phi=2 normals=2' -> dict of ints. A 3D
+    frame's (src/lua/l_frame3d.c) 'dim=3 particles=N slices=S
+    isosurfaces=I membrane_points=P normals=K membranes=M phi=F' becomes
+    the 2D form: every 3D membrane has a phi (its construction's), its
+    normals count when all its points carry them."""
     d = {}
     for item in text.split():
         k, _, v = item.partition("=")
         d[k] = int(v)
+    if d.get("dim") == 3:
+        if "membrane_points" not in d:
+            return {"membranes": 0, "with_phi": 0, "phi": 0, "normals": 0}
+        for k in ("membranes", "phi", "normals"):
+            if k not in d:
+                raise ValueError(f"lamina:layers '{text}' lacks {k}")
+        m = d["membranes"]
+        return {"membranes": m, "with_phi": m, "phi": d["phi"],
+                "normals": m if d["normals"] == d["membrane_points"] else 0}
     for k in ("membranes", "with_phi", "phi", "normals"):
         if k not in d:
             raise ValueError(f"lamina:layers '{text}' lacks {k}")
