@@ -30,7 +30,7 @@
 
 #define PANEL3_KEYS "colour", "colourmap", "range", "colourbar", "azimuth", "elevation", \
     "distance", "target", "fov", "box", "outline", "particles", "radius", "slice", \
-    "isosurface", "membranes", "normals"
+    "isosurface", "membranes", "normals", "phi"
 
 typedef struct ctx3 {
     const char *fn;
@@ -39,6 +39,7 @@ typedef struct ctx3 {
     int fidx;
     size_t particles, slices, isos;     /* drawn, for lamina:layers */
     size_t mpoints, marrows;            /* membrane points drawn, and with normals */
+    size_t mmem, mphi;                  /* membranes drawn, and with their phi = 1 */
 } ctx3;
 
 /* luaL_error with printf's formats (%g, which Lua's lacks). */
@@ -371,6 +372,116 @@ static void *layers(lua_State *L, ctx3 *c, int pidx, const char *where, const ch
     return out;
 }
 
+/* ---- membranes: the construction's normals and phi ---------------------- */
+
+enum { SHOW_NONE = 0, SHOW_OWN, SHOW_LINEAR, SHOW_QUADRATIC };
+
+/* normals / phi = true (the membrane's own), false, "linear" ([N] Fig 5's
+ * trilinear construction) or "quadratic" ([N] Fig 11's triquadratic) */
+static int construction_key(lua_State *L, const ctx3 *c, const char *where, int pidx,
+                            const char *key)
+{
+    int t = get(L, c, pidx, key), v = SHOW_OWN;
+    if (t == LUA_TBOOLEAN) {
+        v = lua_toboolean(L, -1) ? SHOW_OWN : SHOW_NONE;
+    } else if (t == LUA_TSTRING && strcmp(lua_tostring(L, -1), "linear") == 0) {
+        v = SHOW_LINEAR;
+    } else if (t == LUA_TSTRING && strcmp(lua_tostring(L, -1), "quadratic") == 0) {
+        v = SHOW_QUADRATIC;
+    } else if (t != LUA_TNIL) {
+        luaL_error(L, "%s: %s = %s: must be true, false, \"linear\" or \"quadratic\"", where,
+                   key, t == LUA_TSTRING ? lua_tostring(L, -1) : luaL_typename(L, -1));
+    }
+    lua_pop(L, 1);
+    return v;
+}
+
+/* The construction's normals of membrane k on its present points, turned
+ * out as the step's are (lm3_membrane_construction), into scratch. */
+static void construction_normals(lua_State *L, ctx3 *c, int k, lm3_mnormals b,
+                                 lr_membrane3d *m)
+{
+    double *n[3];
+    for (int a = 0; a < 3; a++) n[a] = scratch(L, c, (m->n ? m->n : 1) * sizeof(double));
+    char err[256];
+    if (lm3_membrane_construction(c->sim, k, b, n, NULL, NULL, err, sizeof err) != 0)
+        luaL_error(L, "%s: normals of membrane %d: %s", c->fn, k + 1, err);
+    m->nx = n[0];
+    m->ny = n[1];
+    m->nz = n[2];
+}
+
+/* The phi = 1 surface of membrane k's construction: the fits of its
+ * normals, each over the half-cell cube its element answers for, 4 nodes
+ * a cube edge (sim3_membrane_phi.c), contoured cube by cube by marching
+ * tetrahedra (frame3d_iso.c) into one list of triangles. */
+static void phi_surface(lua_State *L, ctx3 *c, int k, lm3_mnormals b, lr_tris3d *tris)
+{
+    lm3_phicubes cubes;
+    char err[256];
+    if (lm3_membrane_phi(c->sim, k, b, 4, &cubes, err, sizeof err) != 0)
+        luaL_error(L, "%s: phi of membrane %d: %s", c->fn, k + 1, err);
+    const int m = cubes.samples + 1;
+    const size_t m3 = (size_t)m * m * m;
+    double *xyz = NULL, *nrm = NULL;
+    size_t nt = 0, cap = 0;
+    int oom = 0;
+    for (size_t e = 0; e < cubes.n && !oom; e++) {
+        lr_grid3d g = {cubes.f + e * m3, {m, m, m}, {0, 0, 0}, {cubes.d, cubes.d, cubes.d}};
+        for (int a = 0; a < 3; a++) g.lo[a] = cubes.lo[3 * e + a];
+        double *t = NULL, *tn = NULL;
+        size_t n = 0;
+        if (lr_iso_triangles(&g, 1.0, &t, &tn, &n) != 0) {
+            oom = 1;
+            break;
+        }
+        if (n && nt + n > cap) {
+            size_t nc = cap ? 2 * cap : 4096;
+            while (nc < nt + n) nc *= 2;
+            double *x2 = realloc(xyz, 9 * nc * sizeof *x2);
+            if (x2) xyz = x2;
+            double *n2 = x2 ? realloc(nrm, 9 * nc * sizeof *n2) : NULL;
+            if (n2) nrm = n2;
+            if (!x2 || !n2) oom = 1;
+            else cap = nc;
+        }
+        if (n && !oom) {
+            memcpy(xyz + 9 * nt, t, 9 * n * sizeof *xyz);
+            memcpy(nrm + 9 * nt, tn, 9 * n * sizeof *nrm);
+            nt += n;
+        }
+        free(t);
+        free(tn);
+    }
+    lm3_phicubes_free(&cubes);
+    if (oom) {
+        free(xyz);
+        free(nrm);
+        luaL_error(L, "%s: phi of membrane %d: out of memory", c->fn, k + 1);
+    }
+    /* into anchored memory, so that a later Lua error in this frame leaks
+     * nothing (only Lua's own out-of-memory error between here and the
+     * frees below would leak the two buffers) */
+    double *ax = nt ? lua_newuserdatauv(L, 9 * nt * sizeof *ax, 0) : NULL;
+    if (ax) {
+        memcpy(ax, xyz, 9 * nt * sizeof *ax);
+        lua_rawseti(L, c->anchor, ++c->nanchored);
+    }
+    double *an = nt ? lua_newuserdatauv(L, 9 * nt * sizeof *an, 0) : NULL;
+    if (an) {
+        memcpy(an, nrm, 9 * nt * sizeof *an);
+        lua_rawseti(L, c->anchor, ++c->nanchored);
+    }
+    free(xyz);
+    free(nrm);
+    memset(tris, 0, sizeof *tris);
+    tris->n = nt;
+    tris->xyz = ax;
+    tris->normals = an;
+    /* see-through green: apart from the blue points and red arrows */
+    tris->colour = (lr_rgba){0.35, 0.75, 0.45, 0.4};
+}
+
 static void panel(lua_State *L, ctx3 *c, int pidx, const char *where, lr_panel3d *p)
 {
     const lm3_sim *s = c->sim;
@@ -446,13 +557,18 @@ static void panel(lua_State *L, ctx3 *c, int pidx, const char *where, lr_panel3d
         c->particles += s->p.n;
     }
 
-    /* membranes (sim:membrane in 3D): their points, and their normals as
-     * arrows thinned to about 16 pixels apart (frame3d.c add_membrane) */
+    /* membranes (sim:membrane in 3D): their points, their normals as
+     * arrows thinned to about 16 pixels apart (frame3d.c add_membrane),
+     * and the phi = 1 isosurface of their construction, see-through */
     const lm3_membranes *ms = s->mem;
     int show_m = bool_key(L, c, where, pidx, "membranes", 1);
-    int show_n = bool_key(L, c, where, pidx, "normals", 1);
+    int show_n = construction_key(L, c, where, pidx, "normals");
+    int show_phi = construction_key(L, c, where, pidx, "phi");
+    lr_tris3d *phis = NULL;
+    size_t nphi = 0;
     if (ms && ms->nmem > 0 && show_m) {
         lr_membrane3d *m = scratch(L, c, (size_t)ms->nmem * sizeof *m);
+        if (show_phi) phis = scratch(L, c, (size_t)ms->nmem * sizeof *phis);
         for (int k = 0; k < ms->nmem; k++) {
             const size_t q0 = ms->mem[k].first;
             memset(&m[k], 0, sizeof m[k]);
@@ -460,10 +576,13 @@ static void panel(lua_State *L, ctx3 *c, int pidx, const char *where, lr_panel3d
             m[k].x = ms->p.x[0] + q0;
             m[k].y = ms->p.x[1] + q0;
             m[k].z = ms->p.x[2] + q0;
-            if (show_n) {
+            if (show_n == SHOW_OWN) {
                 m[k].nx = ms->p.nrm[0] + q0;
                 m[k].ny = ms->p.nrm[1] + q0;
                 m[k].nz = ms->p.nrm[2] + q0;
+            } else if (show_n) {
+                construction_normals(L, c, k, show_n == SHOW_LINEAR ? LM3_MN_LINEAR
+                                                                    : LM3_MN_QUADRATIC, &m[k]);
             }
             m[k].colour = (lr_rgba){0.15, 0.35, 0.75, 1};
             m[k].radius = radius;
@@ -471,16 +590,30 @@ static void panel(lua_State *L, ctx3 *c, int pidx, const char *where, lr_panel3d
             m[k].arrow_colour = (lr_rgba){0.8, 0.15, 0.1, 1};
             c->mpoints += m[k].n;
             if (show_n) c->marrows += m[k].n;
+            if (show_phi && m[k].n >= 3) {
+                lm3_mnormals b = show_phi == SHOW_LINEAR ? LM3_MN_LINEAR
+                               : show_phi == SHOW_QUADRATIC ? LM3_MN_QUADRATIC
+                               /* the membrane's own construction; connectivity
+                                * membranes the triquadratic one ([N] Fig 11),
+                                * whose phi = 1 is the surface ([N] §6) */
+                               : ms->mem[k].def.normals == LM3_MN_LINEAR ? LM3_MN_LINEAR
+                               : LM3_MN_QUADRATIC;
+                phi_surface(L, c, k, b, &phis[nphi++]);
+            }
         }
         p->membranes = m;
         p->nmembranes = (size_t)ms->nmem;
+        c->mphi += nphi;
+        c->mmem += (size_t)ms->nmem;
     }
 
     /* slices and isosurfaces */
     p->slices = layers(L, c, pidx, where, "slice", sizeof *p->slices, slice_key, &p->nslices);
     c->slices += p->nslices;
     p->isos = layers(L, c, pidx, where, "isosurface", sizeof *p->isos, iso_key, &p->nisos);
-    c->isos += p->nisos;
+    c->isos += p->nisos;   /* the asked ones: lamina:layers counts phi apart */
+    p->tris = phis;
+    p->ntris = nphi;
 }
 
 int l_frame3d(lua_State *L, const lm3_sim *sim, int opts_index)
@@ -507,7 +640,7 @@ int l_frame3d(lua_State *L, const lm3_sim *sim, int opts_index)
     f.width = (int)w;
     f.height = (int)h;
     f.backend = la_frame_backend(L, fidx, fn, NULL);   /* PNG only (l_frame.c) */
-    ctx3 c = {fn, sim, 0, 0, fidx, 0, 0, 0, 0, 0};
+    ctx3 c = {fn, sim, 0, 0, fidx, 0, 0, 0, 0, 0, 0, 0};
     lua_newtable(L);
     c.anchor = lua_gettop(L);
 
@@ -566,7 +699,8 @@ int l_frame3d(lua_State *L, const lm3_sim *sim, int opts_index)
      * their bytes */
     if (c.mpoints && used_l > 0 && (size_t)used_l < sizeof layers)
         snprintf(layers + used_l, sizeof layers - (size_t)used_l,
-                 " membrane_points=%zu normals=%zu", c.mpoints, c.marrows);
+                 " membrane_points=%zu normals=%zu membranes=%zu phi=%zu", c.mpoints,
+                 c.marrows, c.mmem, c.mphi);
     char range[MAX_PANELS * 56];
     size_t used = 0;
     range[0] = 0;

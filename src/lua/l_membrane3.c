@@ -175,6 +175,39 @@ static int m3_reaction(lua_State *L)
     return 1;
 }
 
+/* m:normals("linear" | "quadratic") -> {nx, ny, nz, n, undefined}: the
+ * construction's normals from the present points alone ([N] Fig 5's
+ * trilinear or Fig 11's triquadratic fit on the running grid's centred
+ * elements, lm3_membrane_construction), turned out as the step's are;
+ * `undefined` counts the points given the frame's normal instead (zero
+ * gradient). Whatever the membrane's own `normals`: the step is untouched. */
+static int m3_normals(lua_State *L)
+{
+    la_sim3 *s3;
+    la_membrane3 *m = check_m3(L, &s3);
+    static const char *const bases[] = {"linear", "quadratic", NULL};
+    int b = luaL_checkoption(L, 2, NULL, bases);
+    const lm3_membrane *r = &s3->sim->mem->mem[m->index];
+    size_t n = r->count;
+    double *nrm[3];
+    for (int a = 0; a < 3; a++) {
+        nrm[a] = lua_newuserdatauv(L, (n ? n : 1) * sizeof(double), 0);  /* kept on the stack */
+    }
+    size_t und = 0;
+    char err[256];
+    if (lm3_membrane_construction(s3->sim, m->index, b ? LM3_MN_QUADRATIC : LM3_MN_LINEAR, nrm,
+                                  &und, NULL, err, sizeof err) != 0)
+        return luaL_error(L, "membrane:normals: %s", err);
+    lua_createtable(L, 0, 5);
+    static const char *const ns[] = {"nx", "ny", "nz"};
+    for (int a = 0; a < 3; a++) push_array(L, ns[a], nrm[a], 0, n, 1.0);
+    lua_pushinteger(L, (lua_Integer)n);
+    lua_setfield(L, -2, "n");
+    lua_pushinteger(L, (lua_Integer)und);
+    lua_setfield(L, -2, "undefined");
+    return 1;
+}
+
 static int m3_len(lua_State *L)
 {
     la_sim3 *s3;
@@ -203,7 +236,7 @@ static int m3_index(lua_State *L)
     luaL_getmetafield(L, 1, "methods");
     if (la_getfield(L, -1, k) != LUA_TNIL) return 1;
     return luaL_error(L, "membrane has no field or method '%s' (3D: particles, tension, "
-                      "reaction)", k);
+                      "reaction, normals)", k);
 }
 
 /* ---- sim:membrane ---------------------------------------------------- */
@@ -470,6 +503,7 @@ void la_open_membrane3(lua_State *L)
                                        /* l_membrane3_gas.c */
                                        {"enclosed_volume", la_membrane3_volume},
                                        {"escaped", la_membrane3_escaped},
+                                       {"normals", m3_normals},
                                        {NULL, NULL}};
     la_new_metatable(L, LA_MEMBRANE3);
     luaL_setfuncs(L, meta, 0);

@@ -302,6 +302,8 @@ lm_nerr lm_normals_centred(const lm_ngrid *g, const lm_nbins *b, size_t n,
         if (wid > 1)
             el.fit.flags |= LM_NF_MERGED;
         el.size = wid;
+        for (int a = 0; a < 3; a++)
+            el.site[a] = s[a];
         for (int a = 0; a < 3; a++) {
             double c = a < g->dim ? 0.5 * (box.lo[a] + box.hi[a]) : 0.0;
             el.cell[a] = a < g->dim ? floor_int((c - g->x0[a]) / g->h[a]) : 0;

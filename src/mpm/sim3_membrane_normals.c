@@ -24,10 +24,18 @@
 int lm3_membrane_construction_normals(lm3_sim *sim, int k, lm3_mnormals basis,
                                       double *const nrm[3], size_t *undefined)
 {
-    lm3_membranes *ms = sim->mem;
+    return lm3_membrane_construction(sim, k, basis, nrm, undefined, NULL, sim->err,
+                                     sizeof sim->err);
+}
+
+int lm3_membrane_construction(const lm3_sim *sim, int k, lm3_mnormals basis,
+                              double *const nrm[3], size_t *undefined, lm_nreport *rep,
+                              char *err, size_t errlen)
+{
+    const lm3_membranes *ms = sim->mem;
     if (!ms || k < 0 || k >= ms->nmem ||
         (basis != LM3_MN_LINEAR && basis != LM3_MN_QUADRATIC)) {
-        snprintf(sim->err, sizeof sim->err, "construction normals: no membrane %d or basis %d",
+        snprintf(err, errlen, "construction normals: no membrane %d or basis %d",
                  k + 1, (int)basis);
         return -1;
     }
@@ -56,15 +64,14 @@ int lm3_membrane_construction_normals(lm3_sim *sim, int k, lm3_mnormals basis,
     const double *x[3] = {p->x[0] + mb->first, p->x[1] + mb->first, p->x[2] + mb->first};
     unsigned char *flags = malloc(mb->count);
     if (!flags) {
-        snprintf(sim->err, sizeof sim->err, "out of memory for the normals of membrane %d",
-                 k + 1);
+        snprintf(err, errlen, "out of memory for the normals of membrane %d", k + 1);
         return -1;
     }
     char why[200];
-    lm_nerr e = lm_normals_grid(&ng, mb->count, x, &o, nrm, flags, NULL, why, sizeof why);
+    lm_nerr e = lm_normals_grid(&ng, mb->count, x, &o, nrm, flags, rep, why, sizeof why);
     if (e != LM_NERR_NONE && e != LM_NERR_UNDEFINED) {
         free(flags);
-        snprintf(sim->err, sizeof sim->err, "t = %g (step %ld): membrane %d's normals: %.120s",
+        snprintf(err, errlen, "t = %g (step %ld): membrane %d's normals: %.120s",
                  sim->t, sim->nstep, k + 1, why);
         return -1;
     }

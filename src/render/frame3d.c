@@ -160,6 +160,9 @@ static const char *panel_problem(const lr_panel3d *p)
     for (size_t k = 0; k < p->nisos; k++)
         if (!grid_ok(&p->isos[k].grid))
             return "an isosurface's grid needs values, >= 2 nodes and a spacing > 0 each way";
+    for (size_t k = 0; k < p->ntris; k++)
+        if (p->tris[k].n && !p->tris[k].xyz)
+            return "triangles without corners";
     for (size_t k = 0; k < p->nslices; k++) {
         const lr_slice3d *s = &p->slices[k];
         if (!grid_ok(&s->grid) || s->axis < 0 || s->axis > 2)
@@ -457,6 +460,10 @@ static int fill_scene(lr_scene3d *s, const lr_view *v, const lr_panel3d *p, doub
         rc |= add_membrane(s, v, &p->membranes[k], &lut);
     for (size_t k = 0; k < p->nisos && rc == 0; k++)
         rc |= add_iso(s, &p->isos[k]);
+    for (size_t k = 0; k < p->ntris && rc == 0; k++)
+        if (p->tris[k].n)
+            rc |= lr_scene3d_triangles(s, p->tris[k].n, p->tris[k].xyz, p->tris[k].normals,
+                                       NULL, p->tris[k].colour);
     return rc;
 }
 

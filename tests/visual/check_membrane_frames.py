@@ -27,21 +27,23 @@ from png_text import png_texts  # noqa: E402
 
 def layers(text):
     """'membranes=2 with_phi=2 phi=2 normals=2' -> dict of ints. A 3D
-    frame's chunk (src/lua/l_frame3d.c) is 'dim=3 particles=N slices=S
-    isosurfaces=I [membrane_points=M normals=K]': its membranes count as one
-    when it drew points, their normals as one when every point has its
-    arrow (K == M), and its phi as drawn: a 3D membrane's phi = 1 surface is
-    not bound in frames yet (docs/api.md "3D frames"), so a 3D frame cannot
-    be asked for it."""
+    frame's (src/lua/l_frame3d.c) 'dim=3 particles=N slices=S
+    isosurfaces=I membrane_points=P normals=K membranes=M phi=F' becomes
+    the 2D form: every 3D membrane has a phi (its construction's), its
+    normals count when all its points carry them."""
     d = {}
     for item in text.split():
         k, _, v = item.partition("=")
         d[k] = int(v)
     if d.get("dim") == 3:
-        m = d.get("membrane_points", 0)
-        shown = 1 if m > 0 else 0
-        return {"membranes": shown, "with_phi": 0, "phi": 0,
-                "normals": shown if d.get("normals", 0) == m else 0}
+        if "membrane_points" not in d:
+            return {"membranes": 0, "with_phi": 0, "phi": 0, "normals": 0}
+        for k in ("membranes", "phi", "normals"):
+            if k not in d:
+                raise ValueError(f"lamina:layers '{text}' lacks {k}")
+        m = d["membranes"]
+        return {"membranes": m, "with_phi": m, "phi": d["phi"],
+                "normals": m if d["normals"] == d["membrane_points"] else 0}
     for k in ("membranes", "with_phi", "phi", "normals"):
         if k not in d:
             raise ValueError(f"lamina:layers '{text}' lacks {k}")

@@ -214,4 +214,35 @@ unsigned char *lm3_mstate_save(const struct lm3_sim *sim, unsigned char *b);
 lm_status lm3_mstate_load(struct lm3_sim *sim, const unsigned char *b, uint64_t np,
                           uint32_t nmem, uint32_t npins);
 
+struct lm_nreport;
+/* The same, with the elements' fits (optional rep: mpm_normals.h's
+ * report, centred elements, freed with lm_nreport_free) and the message
+ * in err instead of sim->err, so that a frame can ask for it of a const
+ * simulation. */
+int lm3_membrane_construction(const struct lm3_sim *sim, int k, lm3_mnormals basis,
+                              double *const nrm[3], size_t *undefined,
+                              struct lm_nreport *rep, char *err, size_t errlen);
+
+/* phi of membrane k's construction (basis LM3_MN_LINEAR or
+ * LM3_MN_QUADRATIC), for its phi = 1 isosurface (sim3_membrane_phi.c):
+ * the very fits that give lm3_membrane_construction's normals, each
+ * element's phi sampled over the half-cell cube about its lattice site
+ * (the cubes tile space; each element answers for the points nearest its
+ * site) at (samples + 1)^3 nodes h / (2 samples) apart, cube c's node
+ * (i, j, k) at f[c m^3 + (k m + j) m + i], m = samples + 1, position
+ * lo[3 c ..] + (i, j, k) d. Contoured cube by cube the surface is
+ * piecewise, as phi is ([N] eq 10 per element). Arrays malloc'd
+ * (lm3_phicubes_free). */
+typedef struct lm3_phicubes {
+    size_t n;               /* cubes: the elements fitted */
+    int samples;
+    double d;               /* node spacing */
+    double *lo;             /* 3 n: each cube's first node */
+    double *f;              /* n (samples + 1)^3 */
+} lm3_phicubes;
+
+int lm3_membrane_phi(const struct lm3_sim *sim, int k, lm3_mnormals basis, int samples,
+                     lm3_phicubes *out, char *err, size_t errlen);
+void lm3_phicubes_free(lm3_phicubes *c);
+
 #endif

@@ -214,6 +214,9 @@ typedef struct lm_nelem {
     int lo[3], size;            /* the block solved: lower cell, cells/axis
                                    (CENTRED: the cells it overlaps from lo;
                                    size = its width in cells) */
+    int site[3];                /* CENTRED: the half-cell lattice site whose
+                                   points took this fit (centre x0 + (s + 1)
+                                   h / 2 per axis); 0 for per-cell fits */
     lm_nfit fit;
 } lm_nelem;
 

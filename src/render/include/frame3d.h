@@ -75,6 +75,15 @@ typedef struct lr_iso3d {       /* the surface f = level, see-through */
     lr_rgba colour;             /* alpha < 1 shows what is behind */
 } lr_iso3d;
 
+typedef struct lr_tris3d {      /* triangles made elsewhere, see-through
+                                   when alpha < 1 (a membrane's phi = 1,
+                                   contoured element by element) */
+    size_t n;
+    const double *xyz;          /* 9 n: the corners */
+    const double *normals;      /* 9 n, a normal a corner; NULL: flat */
+    lr_rgba colour;
+} lr_tris3d;
+
 typedef struct lr_slice3d {     /* the plane x_axis = at through a grid */
     lr_grid3d grid;
     int axis;                   /* 0 x, 1 y, 2 z */
@@ -96,6 +105,8 @@ typedef struct lr_panel3d {
     size_t nmembranes;
     const lr_iso3d *isos;
     size_t nisos;
+    const lr_tris3d *tris;
+    size_t ntris;
     const lr_slice3d *slices;
     size_t nslices;
     const char *title;
