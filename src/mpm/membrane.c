@@ -124,7 +124,7 @@ static void orient_away(lm_particles *p, const lm_body *bd)
  * simulation's own grid, from the points alone: "isosurface" is the
  * construction on centred elements with the curvature rows
  * (normals_centred.c, docs/normals.md), "hybrid" the paper's per-cell rule
- * ([N] §8), "linear" and "mass_matrix" per cell. The random points come
+ * ([N] §8), "linear", "mass_matrix" and "mass_matrix_quadratic" per cell. The random points come
  * from the simulation's seed, the body and the step, so a run is
  * reproducible; cond(T) is not needed here and not computed. A point whose
  * normal is undefined keeps last step's tangent. The sign of the normal
@@ -153,6 +153,22 @@ static void body_nopts(const lm_sim *sim, int b, lm_normals method, long step,
     o->orient_point[1] = bd->oy;
     if (method != LM_NORMALS_ISOSURFACE)
         o->basis = method == LM_NORMALS_HYBRID ? LM_NB_HYBRID : LM_NB_LINEAR;
+    if (method == LM_NORMALS_MASS_MATRIX_QUADRATIC) {
+        /* [T] §7.7 (the run of Fig 87): the quadratic functions on the
+         * nine cell centres in every cell with two points or more; "when a
+         * single membrane material point was in a cell, the region
+         * considered was expanded to a group of four cells and the mass
+         * matrix method with linear shape functions was used" */
+        o->basis = LM_NB_HYBRID;
+        o->quad_min = 2;
+        o->lin_min = 2;
+        /* the same least squares as the mass matrix T phi = S^T phi0 ([T]
+         * eq 7.12) by the pivoted QR: with 2-8 points a cell T (9 x 9) is
+         * singular and the elimination stops at a zero pivot (the dog-bone
+         * at cell 0.2, t = 0.256); [T] does not say how it solved those, the
+         * QR gives the minimum-norm solution (normals_mass_matrix_arc's
+         * Fig 85: 0.27 deg against the elimination's 2.7) */
+    }
     /* the centred elements' quadratic fits by the normal equations ([N]
      * eq 13, T = L D L^T), the pivoted QR where T is near singular
      * (normals_fit.c): the QR's normals to 5e-9 degrees (measured on the
