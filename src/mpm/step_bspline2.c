@@ -114,10 +114,13 @@ static LM_FORCE_INLINE size_t particles(lm_sim *sim, const pass_ctx *c)
             }
             acc += ra;
         }
-        p->vx[q] = (1 - pic) * (p->vx[q] + dt * acc[0]) + pic * acc[2];
-        p->vy[q] = (1 - pic) * (p->vy[q] + dt * acc[1]) + pic * acc[3];
-        p->x[q] += dt * acc[2];
-        p->y[q] += dt * acc[3];
+        /* the particle's values in registers from here on (the arrays
+         * could alias, so the compiler would reload them) */
+        const double vx = (1 - pic) * (p->vx[q] + dt * acc[0]) + pic * acc[2];
+        const double vy = (1 - pic) * (p->vy[q] + dt * acc[1]) + pic * acc[3];
+        double x = p->x[q] + dt * acc[2], y = p->y[q] + dt * acc[3];
+        p->vx[q] = vx;
+        p->vy[q] = vy;
         /* steps 7-8 (stress_at in step_fused.c) */
         lm_rate rt;
         rt.L[0] = L[0];
@@ -128,20 +131,36 @@ static LM_FORCE_INLINE size_t particles(lm_sim *sim, const pass_ctx *c)
         rt.deyy = dt * rt.L[3];
         rt.dexy = 0.5 * dt * (rt.L[1] + rt.L[2]);
         rt.w = 0.5 * (rt.L[1] - rt.L[2]);
-        rt.hoop = 0;
-        rt.dt = dt;
-        rt.max_div = 0;
-        rt.c_max = 0;
-        rt.h = h;
         const int mat = p->mat[q];
+        double rho, sxx, syy, sxy;
         if (mat < FUSED_MATS && mat < sim->nmats && c->el[mat].elastic) {
-            p->rho[q] /= 1 + rt.dexx + rt.deyy;
-            lm_elastic_update_moduli(&c->el[mat], rt.dexx, rt.deyy, rt.dexy, rt.w, dt,
-                                     &p->sxx[q], &p->syy[q], &p->sxy[q], &p->szz[q]);
+            rho = p->rho[q] / (1 + rt.dexx + rt.deyy);
+            sxx = p->sxx[q];
+            syy = p->syy[q];
+            sxy = p->sxy[q];
+            lm_elastic_update_moduli(&c->el[mat], rt.dexx, rt.deyy, rt.dexy, rt.w, dt, &sxx,
+                                     &syy, &sxy, &p->szz[q]);
+            p->rho[q] = rho;
+            p->sxx[q] = sxx;
+            p->syy[q] = syy;
+            p->sxy[q] = sxy;
         } else {
+            rt.hoop = 0;
+            rt.dt = dt;
+            rt.max_div = 0;
+            rt.c_max = 0;
+            rt.h = h;
+            p->x[q] = x;
+            p->y[q] = y;
             lm_update_at(sim, q, &rt, 0);
+            rho = p->rho[q];
+            sxx = p->sxx[q];
+            syy = p->syy[q];
+            sxy = p->sxy[q];
         }
-        if (lm_k_check(p, q, &box) && q < first) first = q;
+        if (lm_k_check_values(&x, &y, vx, vy, sxx, syy, sxy, rho, &box) && q < first) first = q;
+        p->x[q] = x;
+        p->y[q] = y;
         /* the shape at x^{k+1} and the next step's sums
          * (lm_k_scatter_mass_forces, no segment points here), lanes {p_x,
          * p_y, f_x, f_y}: X = {m, m, sxx, sxy} {N, N, Gx, Gx}, Y = {-0, -0,
@@ -150,16 +169,16 @@ static LM_FORCE_INLINE size_t particles(lm_sim *sim, const pass_ctx *c)
          * the momenta and taken from the forces; m gets w = X[0] */
         int nd;
         double dx, dy;
-        lm_bspline2_place(g, rx, ry, p->x[q], p->y[q], &nd, &dx, &dy);
+        lm_bspline2_place(g, rx, ry, x, y, &nd, &dx, &dy);
         p->node[q] = nd;
         p->xi[q] = dx;
         p->eta[q] = dy;
         lm_bspline2_1d(dx, rx, wx, gx);
         lm_bspline2_1d(dy, ry, wy, gy);
         const double mq = p->m[q];
-        const v4d s1 = {mq, mq, p->sxx[q], p->sxy[q]}, s2 = {-0.0, -0.0, p->sxy[q], p->syy[q]};
-        const double V = mq / p->rho[q];
-        const v4d u = {p->vx[q], p->vy[q], V, V};
+        const v4d s1 = {mq, mq, sxx, sxy}, s2 = {-0.0, -0.0, sxy, syy};
+        const double V = mq / rho;
+        const v4d u = {vx, vy, V, V};
         for (int b = 0; b < 3; b++) {
             const long row = nd + b * sx;
             const v4d wyb = wy[b] * one, gyb = {1, 1, gy[b], gy[b]};
@@ -218,8 +237,7 @@ size_t lm_fused_bspline2_usl(lm_sim *sim, const double *ux, const double *uy, do
     lm_elastic_moduli el[FUSED_MATS];
     for (int m = 0; m < sim->nmats && m < FUSED_MATS; m++)
         el[m] = lm_elastic_moduli_of(sim->mats[m]);
-    pack_nodes(g, ux, uy, rec, nn);
-    memset(sums, 0, 4 * nn * sizeof(double));
+    pack_nodes(g, ux, uy, rec, nn);   /* (sums: all zero between passes) */
     const pass_ctx c = {rec, sums, next[0], el};
     size_t first;
 #ifdef LM_B2_DISPATCH
@@ -227,13 +245,15 @@ size_t lm_fused_bspline2_usl(lm_sim *sim, const double *ux, const double *uy, do
     else
 #endif
         first = particles_default(sim, &c);
-    /* the records' sums to the grid's arrays the next step takes up */
+    /* the records' sums to the grid's arrays the next step takes up, and
+     * the records zeroed for the next pass in the same sweep */
     for (size_t i = 0; i < nn; i++) {
-        const double *s = sums + 4 * i;
+        double *s = sums + 4 * i;
         next[1][i] = s[0];
         next[2][i] = s[1];
         next[3][i] = s[2];
         next[4][i] = s[3];
+        s[0] = s[1] = s[2] = s[3] = 0;
     }
     return first;
 }

@@ -13,7 +13,8 @@
 
 /* Steps 4-8, the check, the shape at x^{k+1} and the next step's sums
  * (next: m, px, py, fx, fy, m zeroed by the caller) for every particle;
- * (ux, uy) step 4's v_i^L. rec (LM_B2_REC doubles a node) and sums (4 a node) are
+ * (ux, uy) step 4's v_i^L. rec (LM_B2_REC doubles a node) and sums (4 a node, zero before
+ * the first pass; the pass leaves them zero) are
  * the pass's scratch. Returns the lowest-numbered particle in trouble, or
  * n. */
 size_t lm_fused_bspline2_usl(lm_sim *sim, const double *ux, const double *uy, double *rec,

@@ -111,7 +111,7 @@ lm_status lm_ahead_reserve(lm_sim *sim)
     ok &= (a->uy = lm_arr_alloc(nn, sizeof(double), 15, 1)) != NULL;
     if (sim->def.basis == LM_BASIS_BSPLINE2) {
         ok &= (a->rec = lm_arr_alloc(nn, LM_B2_REC * sizeof(double), 16, 0)) != NULL;
-        ok &= (a->sums = lm_arr_alloc(nn, 4 * sizeof(double), 17, 0)) != NULL;
+        ok &= (a->sums = lm_arr_alloc(nn, 4 * sizeof(double), 17, 1)) != NULL;
     }
     if (ok) return LM_OK;
     lm_ahead_free(a);
