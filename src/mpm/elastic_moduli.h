@@ -66,4 +66,13 @@ static inline void lm_elastic_update_moduli(const lm_elastic_moduli *c, double d
     *szz += czz;
 }
 
+/* The moduli of the sim's first LM_FUSED_MATS materials (a pass's table;
+ * materials past them use the update table). */
+#define LM_FUSED_MATS 16
+static inline void lm_elastic_moduli_table(const lm_sim *sim, lm_elastic_moduli *el)
+{
+    for (int m = 0; m < sim->nmats && m < LM_FUSED_MATS; m++)
+        el[m] = lm_elastic_moduli_of(sim->mats[m]);
+}
+
 #endif

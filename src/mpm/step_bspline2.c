@@ -68,9 +68,6 @@ static void pack_nodes(const lm_grid *g, const double *ux, const double *uy, dou
     }
 }
 
-/* materials whose moduli the pass works out ahead (more: the table) */
-#define FUSED_MATS 16
-
 typedef struct pass_ctx {
     const double *rec;
     double *sums, *m0;
@@ -133,7 +130,7 @@ static LM_FORCE_INLINE size_t particles(lm_sim *sim, const pass_ctx *c)
         rt.w = 0.5 * (rt.L[1] - rt.L[2]);
         const int mat = p->mat[q];
         double rho, sxx, syy, sxy;
-        if (mat < FUSED_MATS && mat < sim->nmats && c->el[mat].elastic) {
+        if (mat < LM_FUSED_MATS && c->el[mat].elastic) {
             rho = p->rho[q] / (1 + rt.dexx + rt.deyy);
             sxx = p->sxx[q];
             syy = p->syy[q];
@@ -234,9 +231,8 @@ size_t lm_fused_bspline2_usl(lm_sim *sim, const double *ux, const double *uy, do
 {
     const lm_grid *g = &sim->grid;
     const size_t nn = lm_grid_nodes(g);
-    lm_elastic_moduli el[FUSED_MATS];
-    for (int m = 0; m < sim->nmats && m < FUSED_MATS; m++)
-        el[m] = lm_elastic_moduli_of(sim->mats[m]);
+    lm_elastic_moduli el[LM_FUSED_MATS];
+    lm_elastic_moduli_table(sim, el);
     pack_nodes(g, ux, uy, rec, nn);   /* (sums: all zero between passes) */
     const pass_ctx c = {rec, sums, next[0], el};
     size_t first;

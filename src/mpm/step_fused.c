@@ -146,9 +146,13 @@ int lm_step_take_ahead(lm_sim *sim)
 }
 
 /* Steps 7-8 at particle q: lm_step_stress's rate and update in the plane
- * (no contact here), with the gas's maxima of the step (md, cm). */
+ * (no contact here), with the gas's maxima of the step (md, cm); an
+ * elastic solid's update from the moduli el worked out once a pass
+ * (elastic_moduli.h: the same bits as its row of the table; el NULL: the
+ * table for every material). */
 static LM_FORCE_INLINE void stress_at(lm_sim *sim, size_t q, double rx, double ry, double h,
-                                      double md, double cm, const int W)
+                                      double md, double cm, const lm_elastic_moduli *el,
+                                      const int W)
 {
     lm_rate r;
     lm_k_velocity_gradient(&sim->grid, &sim->p, q, sim->grid.vx, sim->grid.vy, r.L, rx, ry, W);
@@ -157,6 +161,14 @@ static LM_FORCE_INLINE void stress_at(lm_sim *sim, size_t q, double rx, double r
     r.deyy = dt * L[3];
     r.dexy = 0.5 * dt * (L[1] + L[2]);
     r.w = 0.5 * (L[1] - L[2]);
+    const int m = sim->p.mat[q];
+    if (el && m < LM_FUSED_MATS && el[m].elastic) {
+        lm_particles *p = &sim->p;
+        p->rho[q] /= 1 + r.dexx + r.deyy;
+        lm_elastic_update_moduli(&el[m], r.dexx, r.deyy, r.dexy, r.w, dt, &p->sxx[q],
+                                 &p->syy[q], &p->sxy[q], &p->szz[q]);
+        return;
+    }
     r.hoop = 0;
     r.dt = dt;
     r.max_div = md;
@@ -211,7 +223,7 @@ static LM_FORCE_INLINE int mt_particle(lm_sim *sim, mt_kind k, const mt_ctx *c, 
         lm_k_g2p(&sim->grid, &sim->p, q, c->dt, c->pic, sim->grid.ax, sim->grid.ay, c->ux,
                  c->uy, W);
     if (k == MT_G2P) return 0;
-    stress_at(sim, q, c->rx, c->ry, c->h, c->md, c->cm, W);
+    stress_at(sim, q, c->rx, c->ry, c->h, c->md, c->cm, NULL, W);
     return lm_k_check(&sim->p, q, &c->box);
 }
 
@@ -247,13 +259,15 @@ static LM_FORCE_INLINE size_t pass_w(lm_sim *sim, double *const *next, lm_status
     const double dt = sim->def.dt, pic = sim->def.pic;
     const double rx = 1.0 / g->hx, ry = 1.0 / g->hy, h = fmin(g->hx, g->hy);
     const lm_k_box box = lm_k_box_of(g);
+    lm_elastic_moduli el[LM_FUSED_MATS];
+    lm_elastic_moduli_table(sim, el);
     size_t first = n;
     if (sim->def.scheme == LM_USL && one_pass(sim)) {
         if (W == 3 && next && bspline2_pass(sim))
             return lm_fused_bspline2_usl(sim, a->ux, a->uy, a->rec, a->sums, next);
         for (size_t q = 0; q < n; q++) {
             lm_k_g2p(g, p, q, dt, pic, g->ax, g->ay, a->ux, a->uy, W);
-            stress_at(sim, q, rx, ry, h, 0, 0, W);
+            stress_at(sim, q, rx, ry, h, 0, 0, el, W);
             if (finish_at(sim, q, rx, ry, &box, next, W) && q < first) first = q;
         }
         return first;
@@ -277,7 +291,7 @@ static LM_FORCE_INLINE size_t pass_w(lm_sim *sim, double *const *next, lm_status
     double md = 0, cm = 0;
     if ((*st = between_passes(sim, &md, &cm)) != LM_OK) return n;
     for (size_t q = 0; q < n; q++) {
-        stress_at(sim, q, rx, ry, h, md, cm, W);
+        stress_at(sim, q, rx, ry, h, md, cm, el, W);
         if (finish_at(sim, q, rx, ry, &box, next, W) && q < first) first = q;
     }
     return first;
