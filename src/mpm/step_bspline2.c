@@ -63,8 +63,8 @@ static void pack_nodes(const lm_grid *g, const double *ux, const double *uy, dou
         r[1] = g->ay[i];
         r[2] = ux[i];
         r[3] = uy[i];
-        r[4] = g->vx[i];
-        r[5] = g->vy[i];
+        r[4] = r[6] = g->vx[i];
+        r[5] = r[7] = g->vy[i];
     }
 }
 
@@ -86,7 +86,9 @@ static LM_FORCE_INLINE size_t particles(lm_sim *sim, const pass_ctx *c)
     const lm_k_box box = lm_k_box_of(g);
     const double *const rec = c->rec;
     double *const sums = c->sums, *const m0 = c->m0;
-    const v4d one = {1, 1, 1, 1}, sign = {1, 1, -1, -1};
+    const v4d one = {1, 1, 1, 1};
+    /* one material, an elastic solid (the common case): no look-up */
+    const lm_elastic_moduli *const el1 = sim->nmats == 1 && c->el[0].elastic ? c->el : NULL;
     size_t first = n;
     for (size_t q = 0; q < n; q++) {
         /* x^k: the place lm_k_shape kept, its 1D weights and gradients */
@@ -106,8 +108,7 @@ static LM_FORCE_INLINE size_t particles(lm_sim *sim, const pass_ctx *c)
             for (int a = 0; a < 3; a++) {
                 const double *ra_ = r + LM_B2_REC * a;
                 ra += (wx[a] * one * wyb) * v4_load(ra_);
-                const v4d v = {ra_[4], ra_[5], ra_[4], ra_[5]};
-                L += v * ((v4d){gx[a], gx[a], wx[a], wx[a]} * wgy);
+                L += v4_load(ra_ + 4) * ((v4d){gx[a], gx[a], wx[a], wx[a]} * wgy);
             }
             acc += ra;
         }
@@ -128,9 +129,9 @@ static LM_FORCE_INLINE size_t particles(lm_sim *sim, const pass_ctx *c)
         rt.deyy = dt * rt.L[3];
         rt.dexy = 0.5 * dt * (rt.L[1] + rt.L[2]);
         rt.w = 0.5 * (rt.L[1] - rt.L[2]);
-        const int mat = p->mat[q];
+        const int mat = el1 ? 0 : p->mat[q];
         double rho, sxx, syy, sxy;
-        if (mat < LM_FUSED_MATS && c->el[mat].elastic) {
+        if (el1 || (mat < LM_FUSED_MATS && c->el[mat].elastic)) {
             rho = p->rho[q] / (1 + rt.dexx + rt.deyy);
             sxx = p->sxx[q];
             syy = p->syy[q];
@@ -161,9 +162,10 @@ static LM_FORCE_INLINE size_t particles(lm_sim *sim, const pass_ctx *c)
         /* the shape at x^{k+1} and the next step's sums
          * (lm_k_scatter_mass_forces, no segment points here), lanes {p_x,
          * p_y, f_x, f_y}: X = {m, m, sxx, sxy} {N, N, Gx, Gx}, Y = {-0, -0,
-         * sxy, syy} {1, 1, Gy, Gy}, (X + Y) {vx, vy, V, V} is {w vx, w vy,
-         * V (sxx Gx + sxy Gy), V (sxy Gx + syy Gy)} (x + -0 = x), added to
-         * the momenta and taken from the forces; m gets w = X[0] */
+         * sxy, syy} {1, 1, Gy, Gy}, (X + Y) {vx, vy, -V, -V} is {w vx, w vy,
+         * -V (sxx Gx + sxy Gy), -V (sxy Gx + syy Gy)} (x + -0 = x; a
+         * product's sign is exact), added to the sums (f + -t = f - t, the
+         * forces' -=); m gets w = X[0] */
         int nd;
         double dx, dy;
         lm_bspline2_place(g, rx, ry, x, y, &nd, &dx, &dy);
@@ -175,16 +177,15 @@ static LM_FORCE_INLINE size_t particles(lm_sim *sim, const pass_ctx *c)
         const double mq = p->m[q];
         const v4d s1 = {mq, mq, sxx, sxy}, s2 = {-0.0, -0.0, sxy, syy};
         const double V = mq / rho;
-        const v4d u = {vx, vy, V, V};
+        const v4d u = {vx, vy, -V, -V};
         for (int b = 0; b < 3; b++) {
-            const long row = nd + b * sx;
+            double *const sr = sums + 4 * (nd + b * sx), *const mr = m0 + nd + b * sx;
             const v4d wyb = wy[b] * one, gyb = {1, 1, gy[b], gy[b]};
             for (int a = 0; a < 3; a++) {
                 const v4d X = s1 * ((v4d){wx[a], wx[a], gx[a], gx[a]} * wyb);
                 const v4d Y = s2 * ((v4d){1, 1, wx[a], wx[a]} * gyb);
-                double *s = sums + 4 * (row + a);
-                m0[row + a] += X[0];
-                v4_store(s, v4_load(s) + ((X + Y) * u) * sign);
+                mr[a] += X[0];
+                v4_store(sr + 4 * a, v4_load(sr + 4 * a) + (X + Y) * u);
             }
         }
     }

@@ -8,8 +8,8 @@
 #include "step.h"
 
 /* doubles in the pass's record of a node: {a_x, a_y, v^L_x, v^L_y, v_x,
- * v_y} */
-#define LM_B2_REC 6
+ * v_y, v_x, v_y} (a cache line) */
+#define LM_B2_REC 8
 
 /* Steps 4-8, the check, the shape at x^{k+1} and the next step's sums
  * (next: m, px, py, fx, fy, m zeroed by the caller) for every particle;
