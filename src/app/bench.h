@@ -51,6 +51,8 @@ int bench_bytes_count(lm_basis basis, lm_kind kind, lm_scheme scheme, int fused,
 /* Bytes a step moves per grid node in its passes over the whole grid
  * (bench_bytes.c; the same on the fused and the phased paths). */
 double bench_bytes_grid(lm_scheme scheme);
+/* What a basis's own fused pass adds to that a node (bench_bytes.c). */
+double bench_bytes_grid_pass(lm_basis basis, lm_scheme scheme);
 
 /* --sizes N,N,...: up to max particle counts in [100, 1e7] from arg into
  * sizes; their number, or -1 with the reason printed as `lamina bench CMD`. */

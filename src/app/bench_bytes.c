@@ -224,3 +224,15 @@ double bench_bytes_grid(lm_scheme scheme)
         n += 3 + 2;     /* m, px, py read; vx, vy written */
     return n * d;
 }
+
+/* The quadratic B-spline's own USL pass on one thread (step_bspline2.c,
+ * every bench case without gas or membrane) sweeps the grid twice more:
+ * its node records (a_x, a_y, v^L_x, v^L_y, v_x, v_y read; 8 doubles
+ * written) and the next step's sums handed out (4 read, 4 written to the
+ * grid's arrays, the 4 zeroed), and clears one of the five sums instead
+ * of five: 14 + 12 - 4 = 22 doubles a node more. */
+double bench_bytes_grid_pass(lm_basis basis, lm_scheme scheme)
+{
+    const lm_grid *g = 0;
+    return basis == LM_BASIS_BSPLINE2 && scheme == LM_USL ? 22.0 * (double)sizeof *g->m : 0;
+}

@@ -27,6 +27,7 @@
 
 #include "arrays.h"
 #include "step.h"
+#include "step_bspline2.h"
 #include "step_kernels.h"
 #include "threads.h"
 
@@ -34,6 +35,7 @@ struct lm_ahead {
     double *f[5];     /* the next step's m, px, py, fx, fy, scattered ahead */
     double *ux, *uy;  /* step 4's v_i^L = p_i^L (1 / m_i): not the same bits as
                          the USL strain velocity p_i^L / m_i, so kept apart */
+    double *rec, *sums;   /* the B-spline pass's node records (step_bspline2.c) */
     size_t nn;        /* nodes of the arrays */
     size_t n;         /* particles when the sums were made */
     int valid;        /* f holds the sums of the particles as they are now */
@@ -66,12 +68,22 @@ static int one_pass(const lm_sim *sim)
     return 1;
 }
 
+/* Does the one-thread pass that makes the next step's sums take the
+ * quadratic B-spline's own form (step_bspline2.c)? */
+static int bspline2_pass(const lm_sim *sim)
+{
+    return sim->def.basis == LM_BASIS_BSPLINE2 && sim->work->ahead->rec &&
+           sim->def.scheme == LM_USL && one_pass(sim);
+}
+
 void lm_ahead_free(struct lm_ahead *a)
 {
     if (!a) return;
     for (int k = 0; k < 5; k++) lm_arr_free(a->f[k]);
     lm_arr_free(a->ux);
     lm_arr_free(a->uy);
+    lm_arr_free(a->rec);
+    lm_arr_free(a->sums);
     free(a);
 }
 
@@ -97,6 +109,10 @@ lm_status lm_ahead_reserve(lm_sim *sim)
     for (int k = 0; k < 5; k++) ok &= (a->f[k] = lm_arr_alloc(nn, sizeof(double), 9 + k, 1)) != NULL;
     ok &= (a->ux = lm_arr_alloc(nn, sizeof(double), 14, 1)) != NULL;
     ok &= (a->uy = lm_arr_alloc(nn, sizeof(double), 15, 1)) != NULL;
+    if (sim->def.basis == LM_BASIS_BSPLINE2) {
+        ok &= (a->rec = lm_arr_alloc(nn, LM_B2_REC * sizeof(double), 16, 0)) != NULL;
+        ok &= (a->sums = lm_arr_alloc(nn, 4 * sizeof(double), 17, 1)) != NULL;
+    }
     if (ok) return LM_OK;
     lm_ahead_free(a);
     sim->work->ahead = NULL;
@@ -130,9 +146,13 @@ int lm_step_take_ahead(lm_sim *sim)
 }
 
 /* Steps 7-8 at particle q: lm_step_stress's rate and update in the plane
- * (no contact here), with the gas's maxima of the step (md, cm). */
+ * (no contact here), with the gas's maxima of the step (md, cm); an
+ * elastic solid's update from the moduli el worked out once a pass
+ * (elastic_moduli.h: the same bits as its row of the table; el NULL: the
+ * table for every material). */
 static LM_FORCE_INLINE void stress_at(lm_sim *sim, size_t q, double rx, double ry, double h,
-                                      double md, double cm, const int W)
+                                      double md, double cm, const lm_elastic_moduli *el,
+                                      const int W)
 {
     lm_rate r;
     lm_k_velocity_gradient(&sim->grid, &sim->p, q, sim->grid.vx, sim->grid.vy, r.L, rx, ry, W);
@@ -141,6 +161,14 @@ static LM_FORCE_INLINE void stress_at(lm_sim *sim, size_t q, double rx, double r
     r.deyy = dt * L[3];
     r.dexy = 0.5 * dt * (L[1] + L[2]);
     r.w = 0.5 * (L[1] - L[2]);
+    const int m = sim->p.mat[q];
+    if (el && m < LM_FUSED_MATS && el[m].elastic) {
+        lm_particles *p = &sim->p;
+        p->rho[q] /= 1 + r.dexx + r.deyy;
+        lm_elastic_update_moduli(&el[m], r.dexx, r.deyy, r.dexy, r.w, dt, &p->sxx[q],
+                                 &p->syy[q], &p->sxy[q], &p->szz[q]);
+        return;
+    }
     r.hoop = 0;
     r.dt = dt;
     r.max_div = md;
@@ -195,7 +223,7 @@ static LM_FORCE_INLINE int mt_particle(lm_sim *sim, mt_kind k, const mt_ctx *c, 
         lm_k_g2p(&sim->grid, &sim->p, q, c->dt, c->pic, sim->grid.ax, sim->grid.ay, c->ux,
                  c->uy, W);
     if (k == MT_G2P) return 0;
-    stress_at(sim, q, c->rx, c->ry, c->h, c->md, c->cm, W);
+    stress_at(sim, q, c->rx, c->ry, c->h, c->md, c->cm, NULL, W);
     return lm_k_check(&sim->p, q, &c->box);
 }
 
@@ -231,11 +259,15 @@ static LM_FORCE_INLINE size_t pass_w(lm_sim *sim, double *const *next, lm_status
     const double dt = sim->def.dt, pic = sim->def.pic;
     const double rx = 1.0 / g->hx, ry = 1.0 / g->hy, h = fmin(g->hx, g->hy);
     const lm_k_box box = lm_k_box_of(g);
+    lm_elastic_moduli el[LM_FUSED_MATS];
+    lm_elastic_moduli_table(sim, el);
     size_t first = n;
     if (sim->def.scheme == LM_USL && one_pass(sim)) {
+        if (W == 3 && next && bspline2_pass(sim))
+            return lm_fused_bspline2_usl(sim, a->ux, a->uy, a->rec, a->sums, next);
         for (size_t q = 0; q < n; q++) {
             lm_k_g2p(g, p, q, dt, pic, g->ax, g->ay, a->ux, a->uy, W);
-            stress_at(sim, q, rx, ry, h, 0, 0, W);
+            stress_at(sim, q, rx, ry, h, 0, 0, el, W);
             if (finish_at(sim, q, rx, ry, &box, next, W) && q < first) first = q;
         }
         return first;
@@ -259,7 +291,7 @@ static LM_FORCE_INLINE size_t pass_w(lm_sim *sim, double *const *next, lm_status
     double md = 0, cm = 0;
     if ((*st = between_passes(sim, &md, &cm)) != LM_OK) return n;
     for (size_t q = 0; q < n; q++) {
-        stress_at(sim, q, rx, ry, h, md, cm, W);
+        stress_at(sim, q, rx, ry, h, md, cm, el, W);
         if (finish_at(sim, q, rx, ry, &box, next, W) && q < first) first = q;
     }
     return first;
@@ -284,8 +316,11 @@ size_t lm_step_fused_particles(lm_sim *sim, int ahead, lm_status *st)
     const int one = lm_sim_threads(sim) == 1;
     double *const *next = ahead && one ? a->f : NULL;
     *st = LM_OK;
+    /* (the B-spline's pass writes the next step's momenta and forces
+     * whole: step_bspline2.c) */
+    const int whole = bspline2_pass(sim);
     if (next)
-        for (int k = 0; k < 5; k++) memset(a->f[k], 0, a->nn * sizeof(double));
+        for (int k = 0; k < (whole ? 1 : 5); k++) memset(a->f[k], 0, a->nn * sizeof(double));
     lm_step_g2p_nodes(sim, a->ux, a->uy);
     /* [N] §7: the USL strain from v_i^L = p_i^L / m_i, before any pass */
     if (sim->def.scheme == LM_USL) lm_step_strain_velocity(sim);

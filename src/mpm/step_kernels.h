@@ -259,25 +259,34 @@ static inline lm_k_box lm_k_box_of(const lm_grid *g)
     return b;
 }
 
-/* 0 if particle q is sound (a rounding stray past a wall is put back),
- * else what is wrong with it: 1 NaN, 2 no volume, 3 out of the domain. */
-static inline int lm_k_check(lm_particles *p, size_t q, const lm_k_box *b)
+/* 0 if a particle at (*x, *y) with these values is sound (a rounding
+ * stray past a wall is put back in *x, *y), else what is wrong with it:
+ * 1 NaN, 2 no volume, 3 out of the domain. From values a pass holds in
+ * registers (step_bspline2.c) or from the arrays (lm_k_check). */
+static inline int lm_k_check_values(double *x, double *y, double vx, double vy, double sxx,
+                                    double syy, double sxy, double rho, const lm_k_box *b)
 {
     /* a sum is finite unless a term is NaN or infinite (or it overflows,
      * which is trouble too): one test where seven would do */
-    double sum = p->x[q] + p->y[q] + p->vx[q] + p->vy[q] + p->sxx[q] + p->syy[q] + p->sxy[q];
+    double sum = *x + *y + vx + vy + sxx + syy + sxy;
     if (!isfinite(sum)) return 1;
-    if (!(p->rho[q] > 0) || !isfinite(p->rho[q])) return 2;
-    if (p->x[q] < b->x0 || p->x[q] > b->x1 || p->y[q] < b->y0 || p->y[q] > b->y1) {
+    if (!(rho > 0) || !isfinite(rho)) return 2;
+    if (*x < b->x0 || *x > b->x1 || *y < b->y0 || *y > b->y1) {
         /* A point on a wall or symmetry line can stray by rounding (1e-17
          * of a cell per step); that is put back, not reported. */
-        if (p->x[q] < b->x0 - b->tx || p->x[q] > b->x1 + b->tx || p->y[q] < b->y0 - b->ty ||
-            p->y[q] > b->y1 + b->ty)
+        if (*x < b->x0 - b->tx || *x > b->x1 + b->tx || *y < b->y0 - b->ty ||
+            *y > b->y1 + b->ty)
             return 3;
-        p->x[q] = fmin(fmax(p->x[q], b->x0), b->x1);
-        p->y[q] = fmin(fmax(p->y[q], b->y0), b->y1);
+        *x = fmin(fmax(*x, b->x0), b->x1);
+        *y = fmin(fmax(*y, b->y0), b->y1);
     }
     return 0;
+}
+/* The same for particle q from its arrays. */
+static inline int lm_k_check(lm_particles *p, size_t q, const lm_k_box *b)
+{
+    return lm_k_check_values(&p->x[q], &p->y[q], p->vx[q], p->vy[q], p->sxx[q], p->syy[q],
+                             p->sxy[q], p->rho[q], b);
 }
 
 #endif

@@ -63,6 +63,11 @@ int main(void)
      * 9, USL's v = p / m 5 doubles; MUSL's re-map 7 for those 5 */
     CHECK(bench_bytes_grid(LM_USL) == 30 * D);
     CHECK(bench_bytes_grid(LM_MUSL) == 32 * D);
+    /* the B-spline's USL pass: records (6 read, 8 written), the sums
+     * handed out (4 read, 4 written, 4 zeroed), 4 fewer cleared */
+    CHECK(bench_bytes_grid_pass(LM_BASIS_BSPLINE2, LM_USL) == 22 * D);
+    CHECK(bench_bytes_grid_pass(LM_BASIS_BSPLINE2, LM_MUSL) == 0);
+    CHECK(bench_bytes_grid_pass(LM_BASIS_LINEAR, LM_USL) == 0);
     CHECK(bench_bytes_count((lm_basis)7, LM_ELASTIC, LM_USL, 1, &b) == -1);
     return CHECK_DONE();
 }

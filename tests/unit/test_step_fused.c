@@ -14,7 +14,9 @@
  *   - on 2 or 3 threads, the same bits whatever the OS team that runs them
  *     (lm_sim_fix_team: one OS thread doing every part; threads.h);
  *   - with the grid damping (damping.c), the same bits and the same damped
- *     energy. */
+ *     energy;
+ *   - the quadratic B-spline's own USL pass (step_bspline2.c) forced to
+ *     each instruction set it has (portable, AVX2): the same bits. */
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -22,6 +24,7 @@
 #include "check.h"
 #include "sim_fixture.h"
 #include "step.h"
+#include "step_bspline2.h"
 #include "threads.h"
 
 typedef struct setup {
@@ -261,6 +264,23 @@ int main(void)
                 memcpy(s.bc, walls[w], sizeof s.bc);
                 compare(&s, 150);
             }
+    /* the B-spline's USL pass (step_bspline2.c) in each instruction set
+     * it has, forced: the phases' bits from both (issue 36 item 2) */
+    for (int set = LM_B2_ISA_BASELINE; set <= LM_B2_ISA_AVX2; set++) {
+#if defined(__x86_64__) && defined(__GNUC__)
+        __builtin_cpu_init();
+        if (set == LM_B2_ISA_AVX2 && !__builtin_cpu_supports("avx2")) continue;
+#else
+        if (set == LM_B2_ISA_AVX2) continue;
+#endif
+        lm_fused_bspline2_isa(set);
+        for (int w = 0; w < 3; w++) {
+            setup s = {LM_BASIS_BSPLINE2, LM_USL, {0}, w == 2 ? 0.3 : 0, 1e-4, 1, 0, 0, 0};
+            memcpy(s.bc, walls[w], sizeof s.bc);
+            compare(&s, 150);
+        }
+        lm_fused_bspline2_isa(-1);
+    }
     for (int scene = 1; scene <= 2; scene++)
         for (int b = 0; b < 3; b++)
             for (int sc = 0; sc < 2; sc++) {
