@@ -9,6 +9,7 @@
 #include "mpm3.h"
 #include "sim3_kernels2.h"
 #include "sim3_shape.h"
+#include "sim3_simd.h"
 #include "sim3_threads.h"
 #include "mpm3_membrane.h"
 #include "sim3_walls.h"
@@ -116,7 +117,9 @@ static LM3_INLINE void p2g_at(const lm3_sim *sim, const lm3_grid *g, size_t q, c
  * grid's or a thread's copy: sim3_threads.c). */
 static void p2g_range(lm3_sim *sim, const lm3_grid *g, size_t q0, size_t q1)
 {
-    if (g->W == 2) {
+    if (g->W == 2 && lm3_simd_level() == LM3_SIMD_AVX512) {
+        lm3_p2g2_avx512(sim, g, q0, q1);   /* the same bits (sim3_simd512.c) */
+    } else if (g->W == 2) {
         for (size_t q = q0; q < q1; q++) {
             place_at(sim, q, 2);
             p2g_at(sim, g, q, 2);
@@ -265,7 +268,9 @@ static LM3_INLINE void remap_at(const lm3_sim *sim, const lm3_grid *g, size_t q,
  * and the re-map's three compete for the cache. */
 static void remap_range(lm3_sim *sim, const lm3_grid *g, size_t q0, size_t q1)
 {
-    if (g->W == 2)
+    if (g->W == 2 && lm3_simd_level() == LM3_SIMD_AVX512)
+        lm3_remap2_avx512(sim, g, q0, q1);   /* the same bits (sim3_simd512.c) */
+    else if (g->W == 2)
         for (size_t q = q0; q < q1; q++) remap_at(sim, g, q, 2);
     else
         for (size_t q = q0; q < q1; q++) remap_at(sim, g, q, 3);
@@ -497,6 +502,7 @@ lm_status lm3_step(lm3_sim *sim)
         sim->recheck = 0;
     }
     const int nt = lm3_threads(sim);
+    (void)lm3_simd_level();   /* asked here, before the threads ask it */
     step_p2g_forces(sim, nt);
     step_grid_update(sim, nt);
     if (sim->pins) lm3_pins_grid(sim);     /* body:pin (sim3_pin.c) */
