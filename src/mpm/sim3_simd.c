@@ -12,7 +12,9 @@ static int have(void)
     if (cached < 0) {
         int h = LM3_SIMD_SSE2;
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-        if (lm3_avx512_built() && __builtin_cpu_supports("avx512f")) h = LM3_SIMD_AVX512;
+        /* the processor first: no function of sim3_simd512.c runs
+         * where it lacks AVX-512F */
+        if (__builtin_cpu_supports("avx512f") && lm3_avx512_built()) h = LM3_SIMD_AVX512;
 #endif
         cached = h;
     }
