@@ -77,7 +77,9 @@ static const command_help commands[] = {
      "                    [--threads N] [--basis linear|gimp|bspline2]",
      "particle-steps per second of the step (README, \"Engine performance\");\n"
      "--dim 3 (also `lamina bench --dim 3`): the 3D engine's block, trilinear and\n"
-     "B-spline, and its bytes a particle (docs/performance.md, \"3D\")"},
+     "B-spline, and its bytes a particle (docs/performance.md, \"3D\"); there\n"
+     "--simd sse2 holds the trilinear scatters to two lanes (default best: AVX-512F\n"
+     "where the processor has it, the same bits)"},
     {"bench threads",
      "lamina bench threads [--sizes N,...] [--steps N] [--pairs N] [--threads N]\n"
      "                     [--idle | --loaded]",

@@ -161,6 +161,15 @@ void lm3_energy_of(const lm3_sim *sim, lm3_energy *e);
  * into *exact when not NULL), its grid's nodal fields and the threads'
  * copies of them into *grid; the sum is returned. */
 size_t lm3_memory(const lm3_sim *sim, size_t *particles, size_t *exact, size_t *grid);
+/* The trilinear scatters' kernels (sim3_simd.c): LM3_SIMD_AVX512 (eight
+ * lanes, a particle's whole stencil) when lamina was built with them and
+ * the processor has AVX-512F, else LM3_SIMD_SSE2 (two lanes); the same
+ * bits either way (docs/3d.md "Speed"). lm3_simd_limit(LM3_SIMD_SSE2)
+ * holds the whole process to two lanes (the test of the same bits,
+ * `lamina bench --dim 3 --simd sse2`); call it between steps. */
+enum { LM3_SIMD_SSE2 = 0, LM3_SIMD_AVX512 = 1 };
+int lm3_simd_level(void);
+void lm3_simd_limit(int level);
 void lm3_momentum(const lm3_sim *sim, double P[3]);
 double lm3_mass(const lm3_sim *sim);
 
