@@ -185,10 +185,12 @@ int lm3_membrane_escaped(const struct lm3_sim *sim, int k, size_t first, size_t 
 void lm3_membrane_p2g(struct lm3_sim *sim);
 /* After the grid update: the pins' nodes held at rest, their reactions. */
 void lm3_membrane_hold(struct lm3_sim *sim);
-/* After the particles' g2p and MUSL re-map: the points' own. */
+/* After the particles' g2p and MUSL re-map: the points' own (their
+ * velocity; their position too under USL, under MUSL in the update). */
 void lm3_membrane_g2p(struct lm3_sim *sim);
 /* After the strain velocity: held nodes at rest again, then each point's
- * L projected on its tangent plane, strain, tangents, law, normals. A
+ * position under MUSL (the re-mapped velocity), L projected on its tangent
+ * plane, strain, tangents, law, normals. A
  * status other than LM_OK with sim->err naming the point. */
 lm_status lm3_membrane_update(struct lm3_sim *sim);
 
