@@ -35,9 +35,9 @@
 --   rho = 100, pre-strain 2 %: T0 = E t e0 / (1 - nu) = 28.6 N/m, plane stress), points h/2
 --   apart on the cell h = 1/16, quadratic B-spline grid, MUSL; a ball of radius 0.1 (rho 35,
 --   E = 1 MPa, 27 points a cell: 0.124 kg) released at rest 0.1 above the sheet; gravity
---   9.81; dt = 1e-4 (0.17 of the sheet's Courant limit: at 2e-4, 0.34 of it, the sheet
---   alone under gravity grows an in-plane ripple after about 1 s - its points' tension
---   spreads from 28.6 N/m to 21-36 N/m by 2 s - which the Courant check does not catch);
+--   9.81; dt = 1e-4 (0.17 of the sheet's Courant limit: chosen when, at 2e-4, the sheet
+--   alone under gravity grew an in-plane ripple after about 1 s - fixed since, MUSL's
+--   points now move with the re-mapped velocity: physics.sim3_sheet_gravity holds it);
 --   the damped run's sheet damping 60 1/s on its points (lamina's, to reach rest)
 -- visual: t_drop=0.2 t_rest=0.1
 -- thumb: drop_t0.2000.png
