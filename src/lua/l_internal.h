@@ -197,6 +197,8 @@ void la_ref_free(la_sim *s);
 #define LA_LEAK_EVERY 20
 void la_leak_watch(lua_State *L, la_sim *s);
 void la_option_warn(const la_sim *s);
+struct lm3_sim;
+void la_option_warn3(const struct lm3_sim *sim);   /* the 3D sims' share */
 
 /* A warning line to stderr (clearing the progress line) and the run log. */
 void la_warn(lua_State *L, const char *line);

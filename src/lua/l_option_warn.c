@@ -93,6 +93,7 @@
 
 #include "mpm_contact.h"
 #include "l_internal.h"
+#include "l_sim3.h"
 
 /* The first solid body (not a membrane, not a gas) whose rigid rotation
  * about its mass centre carries at least half its kinetic energy (the
@@ -141,9 +142,22 @@ static void say_once(const lm_sim *sim, int body, int *said, const char *text)
     fprintf(stderr, "lamina: warning: %s %s\n", lm_body_label(sim, body, who, sizeof who), text);
 }
 
+/* One warning a process for a gas with av, 2D or 3D (the 3D gas is the 2D
+ * one's scheme, [F] eqs 21-25, so it stalls the same way). */
+static int said_av;
+static const char av_text[] =
+             "has av (the artificial viscosity, [F] eq 24): its switch, div v < 0 at the "
+             "point, fires behind a rarefaction too, on the fan's wake and on the velocity "
+             "fluctuations of gas crossing the cells, and the plateau's pressure sits low by "
+             "the mean q there: the verification suite's Sod left plateau misses by -4.38 / "
+             "-2.15 % at cells 0.01 / 0.005 and stalls at -0.9 % with 3 points a cell along "
+             "the flow (docs/verification.md, case sod; half its points carry q, +0.53 % of "
+             "p); 5 or more points a cell along the flow take the stall to -0.2 %, and a "
+             "plateau needs about 30 cells across for 2 %, 60 for 1 %";
+
 void la_option_warn(const la_sim *s)
 {
-    static int said_gas, said_point, said_friction, said_lumped, said_spin, said_av;
+    static int said_gas, said_point, said_friction, said_lumped, said_spin;
     const lm_sim *sim = s->sim;
     int gas = -1, point = -1, lumped = -1, av = -1;
     for (int b = 0; b < sim->nbodies; b++) {
@@ -179,15 +193,7 @@ void la_option_warn(const la_sim *s)
              "of the quadratic B-spline, predicted +4.1 / +9.5 %); mass = \"membrane\" (the "
              "consistent mass on the membranes' points only, 1.2-1.5 x the step) gives "
              "+0.34 / +1.12 and +0.05 / +0.14 % and passes every membrane case");
-    say_once(sim, av, &said_av,
-             "has av (the artificial viscosity, [F] eq 24): its switch, div v < 0 at the "
-             "point, fires behind a rarefaction too, on the fan's wake and on the velocity "
-             "fluctuations of gas crossing the cells, and the plateau's pressure sits low by "
-             "the mean q there: the verification suite's Sod left plateau misses by -4.38 / "
-             "-2.15 % at cells 0.01 / 0.005 and stalls at -0.9 % with 3 points a cell along "
-             "the flow (docs/verification.md, case sod; half its points carry q, +0.53 % of "
-             "p); 5 or more points a cell along the flow take the stall to -0.2 %, and a "
-             "plateau needs about 30 cells across for 2 %, 60 for 1 %");
+    say_once(sim, av, &said_av, av_text);
     if (!said_spin && !sim->def.apic) {
         double share = 0;
         int spin = spinning_solid(sim, &share);
@@ -203,6 +209,24 @@ void la_option_warn(const la_sim *s)
                      "and passes (+0.06 / -0.10 %%)",
                      100 * share);
             say_once(sim, spin, &said_spin, text);
+        }
+    }
+}
+
+/* The 3D sims' share of the warnings above: the gas's artificial viscosity
+ * (the only option of that list a 3D sim has today). */
+void la_option_warn3(const lm3_sim *sim)
+{
+    int any = 0;
+    for (int k = 0; k < sim->nmat; k++) any |= sim->mats[k].kind == LM3_GAS && sim->mats[k].av;
+    if (said_av || !any) return;
+    for (size_t q = 0; q < sim->p.n; q++) {
+        const lm3_material *m = &sim->mats[sim->p.mat[q]];
+        if (m->kind == LM3_GAS && m->av) {
+            said_av++;
+            fprintf(stderr, "lamina: warning: a 3D gas (material %d) %s\n", (int)sim->p.mat[q] + 1,
+                    av_text);
+            return;
         }
     }
 }

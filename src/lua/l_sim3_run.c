@@ -97,6 +97,7 @@ static int run_steps(lua_State *L)
     check_courant3(L, sim, "");
     if (la_sim_fire_due(L, s)) check_courant3(L, sim, " after a live change");
     la_checkpoint_due(L, 1, s);   /* after the callbacks, as in 2D */
+    la_option_warn3(sim);
     for (long n = 0; n < a->nsteps; n++) {
         la_pins3_update(L, 1, s);   /* driven pins, then the held points' velocities */
         lm_status st = lm3_step(sim);
