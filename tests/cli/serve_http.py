@@ -176,7 +176,11 @@ check(s3.request("GET", "/api/state")[0] == 200, "wildcard bind: Host 127.0.0.1:
 check(s3.request("GET", "/api/state", host="evil.example:%d" % s3.port)[0] == 403,
       "wildcard bind: a DNS name in Host refused (403)")
 s3.proc.send_signal(signal.SIGTERM)
-check(s3.wait() == 143, "wildcard server ends on SIGTERM")
+rc3 = s3.wait()
+# once seen failing under the sanitizers at load (2026-12-05 CI, passed
+# when re-run): the status and stderr's tail say why next time
+check(rc3 == 143, "wildcard server ends on SIGTERM (got %s; stderr ends %r)"
+      % (rc3, s3.stderr()[-600:]))
 
 # a short run: the server stops at the run's end with its status
 s2 = Server(LAMINA, SCENE, W + "_short", "--set", "t_end=0.05", "--quiet")
