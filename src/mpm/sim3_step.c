@@ -383,6 +383,17 @@ static void step_gas_maxima(lm3_sim *sim, double *max_div, double *c_max, int nt
     *c_max = cm;
 }
 
+/* A solid's shear increments de[3..5] (Voigt yz, xz, xy of dt/2 (L + L^T))
+ * and spin W = 1/2 (L - L^T): both stress passes' share of steps 7-8. */
+static LM3_INLINE void shear_and_spin(const double L[9], double dt, double de[6], double W[9])
+{
+    de[3] = 0.5 * dt * (L[5] + L[7]);
+    de[4] = 0.5 * dt * (L[2] + L[6]);
+    de[5] = 0.5 * dt * (L[1] + L[3]);
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) W[3 * i + j] = 0.5 * (L[3 * i + j] - L[3 * j + i]);
+}
+
 /* Steps 7-8 ([F] eqs 14-25): de = dt/2 (L + L^T), W = 1/2 (L - L^T),
  * rho / (1 + tr de) ([F] eq 16), then the material's law: the elastic
  * solid's Jaumann update, or the gas's stress from its rate, pressure and
@@ -412,11 +423,7 @@ static LM3_INLINE int stress_at(lm3_sim *sim, size_t q, const stress_ctx *c, con
                                sim->grid.h);
         lm3_gas_update(mat, L, dt, p->rho[q], qv, &p->e[q], s);
     } else {
-        de[3] = 0.5 * dt * (L[5] + L[7]);
-        de[4] = 0.5 * dt * (L[2] + L[6]);
-        de[5] = 0.5 * dt * (L[1] + L[3]);
-        for (int i = 0; i < 3; i++)
-            for (int j = 0; j < 3; j++) W[3 * i + j] = 0.5 * (L[3 * i + j] - L[3 * j + i]);
+        shear_and_spin(L, dt, de, W);
         for (int e = 0; e < 6; e++) s[e] = p->s[e][q];
         lm3_elastic_update_gl(c->G[k], c->lam[k], de, W, dt, s);
     }
@@ -470,11 +477,7 @@ static int stress_generic(lm3_sim *sim, double max_div, double c_max, int nt)
                                    sim->grid.h);
             lm3_gas_update(mat, L, dt, p->rho[q], qv, &p->e[q], s);
         } else {
-            de[3] = 0.5 * dt * (L[5] + L[7]);
-            de[4] = 0.5 * dt * (L[2] + L[6]);
-            de[5] = 0.5 * dt * (L[1] + L[3]);
-            for (int i = 0; i < 3; i++)
-                for (int j = 0; j < 3; j++) W[3 * i + j] = 0.5 * (L[3 * i + j] - L[3 * j + i]);
+            shear_and_spin(L, dt, de, W);
             for (int c = 0; c < 6; c++) s[c] = p->s[c][q];
             lm3_elastic_update(mat, de, W, dt, s);
         }
