@@ -109,16 +109,24 @@ int cmd_serve(int argc, char **argv)
     obs.ud = &st;
     run.observer = &obs;
     lua_State *L = lamina_open_state(&run);
+    /* the stops before the server: a client that sees it answer may send
+     * SIGTERM at once (cli.serve_http caught the default action, status
+     * -15, when they came after) */
+    if (L) {
+        lamina_interrupt_install(L);
+        lamina_interrupt_install_term();
+    }
     serve_http *h = L ? serve_http_start(&st, &a.http) : NULL;
     if (!h) {
         if (!L) fprintf(stderr, "lamina serve: cannot create a Lua state (out of memory)\n");
-        if (L) lua_close(L);
+        if (L) {
+            lamina_interrupt_uninstall();
+            lua_close(L);
+        }
         serve_state_free(&st);
         wb_free_sets(&run);
         return LAMINA_EXIT_USAGE;
     }
-    lamina_interrupt_install(L);
-    lamina_interrupt_install_term();
     int rc = lamina_run_script(L, &run);
     if (run.stopped == LAMINA_STOP_SIGINT) rc = 128 + lamina_interrupt_signal();
     pthread_mutex_lock(&st.mu);
