@@ -164,6 +164,8 @@ typedef struct la_ref_body {
 typedef struct la_sim {
     lm_sim *sim;
     int running;                /* inside run/step: no nested runs */
+    int mass_auto;              /* mass = "auto" (the default): resolved as each
+                                   run starts (l_sim.c, mass_resolve) */
     la_event *ev;
     int nev, capev;
     la_pin_fn *pinf;            /* pins driven by a function of time */

@@ -24,7 +24,8 @@
  *    -0.16 % (incline; docs/robustness.md "Verification cases on the
  *    default"). Friction is refused on the default basis, so every
  *    friction scene is on gimp or linear; the warning names the scheme.
- *  - a membrane with segment forces on the lumped mass (the default): the
+ *  - a membrane with segment forces on an explicit mass = "lumped" (the
+ *    default, "auto", gives such a sim "membrane", l_sim.c): the
  *    lumped mass's dispersion rings a taut string's higher modes too
  *    slowly, periods of modes 2 / 3 +4.3 / +10.1 % at cell 1/16 (the
  *    string 16 cells long), +1.04 / +2.35 % at 1/32, second order
@@ -38,11 +39,11 @@
  *    a cell (+9.1 % for mode 3 at 8 a cell). mass = "membrane" (the
  *    consistent-mass correction on the membranes' points only) and
  *    "corrected" pass them (+0.34 / +1.12, +0.05 / +0.14 %) and every
- *    other membrane case, but are not the default: "membrane" costs 1.18 x
+ *    other membrane case; "membrane" is the default's choice and costs 1.18 x
  *    a step on a gas-filled circle and 1.48 x on the trampoline (a sheet
  *    and a small ball), "corrected" about 2 x and a Courant factor of
- *    0.63, and either would change every default page with a membrane
- *    (docs/robustness.md "The membranes' consistent mass").
+ *    0.63 (the default changed every gallery page with a segment membrane;
+ *    docs/robustness.md "The membranes' consistent mass").
  *  - (transfer = "apic" with a gas inside a membrane was warned of while
  *    the membrane's FLIP and the gas's APIC did not conserve momentum
  *    together, src/mpm/apic.c: the gas-filled circle at 0.4 cells' spacing
@@ -185,14 +186,17 @@ void la_option_warn(const la_sim *s)
              "than Coulomb allows as the cell shrinks, acceleration -0.32 / -13.6 / -11.9 % at "
              "cells 0.1 / 0.05 / 0.025 on basis = \"gimp\" (docs/verification.md, case "
              "incline); scheme = \"usl\" gives -0.07 / -2.44 / -0.16 %");
-    say_once(sim, sim->def.mass == LM_MASS_LUMPED ? lumped : -1, &said_lumped,
-             "has the lumped mass (mass = \"lumped\", the default): its dispersion rings a "
+    /* only an explicit "lumped": the default ("auto") is "membrane" here,
+     * or lumped because substeps asked for it (l_sim.c, mass_resolve) */
+    say_once(sim, sim->def.mass == LM_MASS_LUMPED && !s->mass_auto ? lumped : -1, &said_lumped,
+             "has the lumped mass (mass = \"lumped\"): its dispersion rings a "
              "taut string's modes 2 and 3 too slowly, periods +4.3 / +10.1 % with the string 16 "
              "cells long, +1.0 / +2.35 % at 32 (docs/verification.md, cases string_wall_mode2, "
              "string_wall_mode3, string_pin_mode2, string_pin_mode3: two lumped-mass smoothings "
              "of the quadratic B-spline, predicted +4.1 / +9.5 %); mass = \"membrane\" (the "
              "consistent mass on the membranes' points only, 1.2-1.5 x the step) gives "
-             "+0.34 / +1.12 and +0.05 / +0.14 % and passes every membrane case");
+             "+0.34 / +1.12 and +0.05 / +0.14 % and passes every membrane case (mass = "
+             "\"auto\", the default, picks it for segment-force membranes)");
     say_once(sim, av, &said_av, av_text);
     if (!said_spin && !sim->def.apic) {
         double share = 0;
