@@ -11,7 +11,7 @@ function M.setup(o)
   o = o or {}
   local h = o.cell or 0.05
   local sim = lamina.sim{ domain = {0, 0, 1.2, 1.2}, cell = h, dt = o.dt or 1e-4, basis = o.basis,
-                          gravity = {0, -10},
+                          mass = o.mass, gravity = {0, -10},
                           boundary = { left = "fixed", right = "fixed", bottom = "fixed",
                                        top = "fixed" } }
   local air = lamina.gas{ rho = 1, p = o.p or 30, gamma = 1.4, mu = 0.05 }
