@@ -466,14 +466,14 @@ static long steps_to(const la_sim *s, double t_end)
  * in a ring of tests/physics/apic_membrane_momentum.lua drifts by 6.3e-2
  * of its momentum (lumped: 2e-15). Resolved as each run starts (bodies may
  * be added between runs) and when sim.mass is read. */
-static void mass_resolve(la_sim *s)
+static void mass_resolve(lua_State *L, la_sim *s)
 {
     if (!s->mass_auto) return;
     lm_sim *m = s->sim;
     lm_mass to = LM_MASS_LUMPED;
     for (int b = 0; b < m->nbodies && m->def.substeps == 0 && !m->def.apic; b++)
         if (m->bodies[b].membrane && m->bodies[b].force == LM_MFORCE_SEGMENT) to = LM_MASS_MEMBRANE;
-    m->def.mass = to;
+    if (to != m->def.mass && lm_sim_set_mass(m, to) != LM_OK) luaL_error(L, "%s", m->err);
 }
 
 typedef struct run_steps_arg {
@@ -494,7 +494,7 @@ static int run_steps(lua_State *L)
     long nsteps = a->nsteps;
     double t_end = a->t_end;
     lamina_run *run = la_run(L);
-    mass_resolve(s);
+    mass_resolve(L, s);
     check_courant(L, s);
     la_progress_begin(L, 1, nsteps);
     a->guard->progress = 1;
@@ -698,7 +698,7 @@ static int sim_index(lua_State *L)
     if (la_check_sim_any(L, 1)->s3) return la_sim3_index(L);
     la_sim *s = la_check_sim(L, 1);
     const char *k = luaL_checkstring(L, 2);
-    if (strcmp(k, "mass") == 0) mass_resolve(s);   /* what the next step uses */
+    if (strcmp(k, "mass") == 0) mass_resolve(L, s);   /* what the next step uses */
     const lm_sim *m = s->sim;
     if (strcmp(k, "t") == 0) lua_pushnumber(L, m->t);
     else if (strcmp(k, "dim") == 0) lua_pushinteger(L, 2);

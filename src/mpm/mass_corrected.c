@@ -42,7 +42,34 @@
  * N_ip sum to one: M_C 1 = M_L 1), and sum_i of the correction is zero,
  * so momentum is conserved. The loops are serial and in particle order:
  * same bits for the same script. */
+#include <stdio.h>
+#include <stdlib.h>
+
 #include "gather.h"
+#include "sim_work.h"
+
+/* The grid's mass between steps (lamina.sim{mass = "auto"} resolves here
+ * as a run starts: l_sim.c). A mass other than lumped needs the lumped
+ * momenta the damping's account reads (damping.c lm_damp_keep_momentum),
+ * made here as lm_sim_new makes them for a mass named at creation. */
+lm_status lm_sim_set_mass(lm_sim *sim, lm_mass mass)
+{
+    if (mass != LM_MASS_LUMPED && mass != LM_MASS_CORRECTED && mass != LM_MASS_MEMBRANE) {
+        snprintf(sim->err, sizeof sim->err, "unknown mass mode %d", (int)mass);
+        return LM_ERR_INPUT;
+    }
+    if (mass != LM_MASS_LUMPED && !sim->work->mass_p0) {
+        double *p0 = malloc(2 * lm_grid_nodes(&sim->grid) * sizeof *p0);
+        if (!p0) {
+            snprintf(sim->err, sizeof sim->err, "out of memory for the nodal momenta of a %d x %d grid",
+                     sim->grid.nx, sim->grid.ny);
+            return LM_ERR_MEMORY;
+        }
+        sim->work->mass_p0 = p0;
+    }
+    sim->def.mass = mass;
+    return LM_OK;
+}
 
 /* mass = "membrane" with no membrane in the sim is the lumped step, to the
  * bit (and the step stays on the lumped path's constraint solves). */

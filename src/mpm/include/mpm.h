@@ -531,6 +531,9 @@ lm_status lm_sim_set_pic(lm_sim *sim, double pic);
 lm_status lm_sim_set_courant(lm_sim *sim, double courant);
 /* The grid damping c (1/s, finite, >= 0; damping.c). */
 lm_status lm_sim_set_damping(lm_sim *sim, double c);
+/* The grid's mass (lm_mass) between steps; LM_ERR_MEMORY when the
+ * momenta a non-lumped mass keeps cannot be made (mass_corrected.c). */
+lm_status lm_sim_set_mass(lm_sim *sim, lm_mass mass);
 
 /* One step of docs/physics.md §1. On failure sim->err says why. */
 lm_status lm_sim_step(lm_sim *sim);
