@@ -60,6 +60,9 @@ function M.impact(o)
   local hr, hz = width / (cells_r * refine), 0.5 / (26 * refine)
   local sim = lamina.sim{ domain = {0, -0.001, width, 0.499}, cell = {hr, hz}, dt = 3.5e-6 / refine,
                           axisymmetric = true, basis = o.basis or "bspline2", threads = o.threads,
+                          -- the papers' lumped mass ([F] eq 7; the default "auto" would make the
+                          -- bag's consistent: issue 30)
+                          mass = o.mass or "lumped",
                           boundary = { left = "symmetry", bottom = "fixed", right = "fixed",
                                        top = "fixed" } }
   local air = lamina.gas{ rho = 1.2156, e = 8226.39, gamma = 1.4 }

@@ -64,7 +64,8 @@ end
 -- Returns sim, ball, net.
 function M.ball_net(o)
   local h = o.cell or 0.25
-  local sim = lamina.sim{ basis = "linear", domain = {0, 0, 10, 10}, cell = h, dt = 1e-3 * h / 0.25 }
+  local sim = lamina.sim{ basis = "linear", domain = {0, 0, 10, 10}, cell = h, dt = 1e-3 * h / 0.25,
+                          mass = "lumped" }   -- the papers' lumped mass ([F] eq 7)
   local ballm = lamina.elastic{ rho = 1, E = 1e4, nu = 0.3, plane = "stress" }
   local netm = lamina.membrane{ rho = 0.5, E = 1e4, nu = 0, thickness = 0.0125, law = "uniaxial" }
   local R, x0, xn = o.R or 1.5, o.x0 or 5.625, o.xn or 7.5

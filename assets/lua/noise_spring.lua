@@ -41,6 +41,7 @@ function M.setup(o)
   o = o or {}
   local def = { domain = {0, 1.4, 0.2, M.top}, cell = M.h, dt = M.dt, gravity = {0, -M.g},
                 stress = o.stress, scheme = o.scheme, basis = "linear",
+                mass = "lumped",   -- the papers' lumped mass ([M] eq 7), every variant
                 boundary = { left = "symmetry", right = "symmetry" } }
   for key, v in pairs(o.sim or {}) do def[key] = v end
   local ok, sim = pcall(lamina.sim, def)

@@ -74,7 +74,7 @@ local fem = barfem.run{ from = {px, py}, to = {mx, my}, elements = 20, rho = rho
 
 local function run(one_way, force, kink_until)
   local sim = lamina.sim{ basis = "linear", domain = {0, 0, 1.2, 1.0}, cell = h, dt = 0.63 * h / c,
-                          gravity = {0, -g} }
+                          gravity = {0, -g}, mass = "lumped" }   -- [T]'s lumped mass
   local wire = lamina.membrane{ rho = rho, E = E, nu = 0, thickness = t, law = "uniaxial",
                                 one_way = one_way }
   local s = sim:membrane{ force = force, material = wire, count = n, end_mass = m, name = "string",
