@@ -17,7 +17,7 @@
 /* In the order of lm_normals (mpm.h). */
 static const char *const normal_methods[] = {"connectivity", "isosurface", "hybrid", "linear",
                                              "colour", "quadratic_colour", "mass_matrix",
-                                             "mass_matrix_quadratic", NULL};
+                                             "mass_matrix_quadratic", "cubic_colour", NULL};
 
 /* initial_strain: a number for every point, or a function (u, i) -> strain
  * of the curve parameter u in [0, 1] and the point's index i (1-based). */

@@ -182,7 +182,7 @@ int lm_membrane_phi(const lm_sim *sim, int b, struct lm_nreport *rep, char *err,
 {
     const lm_body *bd = &sim->bodies[b];
     if (!bd->membrane || bd->count < 2 || bd->normals == LM_NORMALS_COLOUR ||
-        bd->normals == LM_NORMALS_QUADRATIC_COLOUR) {
+        bd->normals == LM_NORMALS_QUADRATIC_COLOUR || bd->normals == LM_NORMALS_CUBIC_COLOUR) {
         snprintf(err, errlen, "body %d has no phi (not a membrane, or a colour-function "
                  "method)", b + 1);
         return -1;
@@ -239,12 +239,16 @@ static lm_status without_connectivity(lm_sim *sim, int b)
     case LM_NORMALS_QUADRATIC_COLOUR:
         e = lm_normals_quadratic_colour(&g, n, x, nrm, flags, why, sizeof why);
         break;
+    case LM_NORMALS_CUBIC_COLOUR:
+        e = lm_normals_cubic_colour(&g, n, x, nrm, flags, why, sizeof why);
+        break;
     default:
         e = lm_normals_grid_ws(&g, n, x, &o, nrm, flags, NULL, sim->work->nwork, why, sizeof why);
         break;
     }
     if (e == LM_NERR_NONE && (bd->normals == LM_NORMALS_COLOUR ||
-                              bd->normals == LM_NORMALS_QUADRATIC_COLOUR) && bd->orient)
+                              bd->normals == LM_NORMALS_QUADRATIC_COLOUR ||
+                              bd->normals == LM_NORMALS_CUBIC_COLOUR) && bd->orient)
         lm_normals_orient(n, 2, x, nrm, o.orient, o.orient_point);
     if (e != LM_NERR_NONE) {
         snprintf(sim->err, sizeof sim->err,

@@ -109,7 +109,7 @@ static lm_status check(lm_sim *sim, const lm_membrane_def *def)
         snprintf(sim->err, sizeof sim->err, "%s: unknown force form %d", what, (int)def->force);
         return LM_ERR_INPUT;
     }
-    if ((int)def->normals < LM_NORMALS_CONNECTIVITY || def->normals > LM_NORMALS_MASS_MATRIX_QUADRATIC) {
+    if ((int)def->normals < LM_NORMALS_CONNECTIVITY || def->normals > LM_NORMALS_CUBIC_COLOUR) {
         snprintf(sim->err, sizeof sim->err, "%s: unknown normals method %d", what,
                  (int)def->normals);
         return LM_ERR_INPUT;

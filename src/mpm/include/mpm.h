@@ -201,8 +201,9 @@ typedef enum lm_normals {
     LM_NORMALS_COLOUR,           /* [T] §7.1 simple colour function */
     LM_NORMALS_QUADRATIC_COLOUR, /* [T] §7.2 */
     LM_NORMALS_MASS_MATRIX,      /* [T] §7.4 per cell (linear, normal equations) */
-    LM_NORMALS_MASS_MATRIX_QUADRATIC /* [T] §7.7: quadratic per cell, a lone
-                                      * point's 2 x 2 block linear (Fig 87) */
+    LM_NORMALS_MASS_MATRIX_QUADRATIC, /* [T] §7.7: quadratic per cell, a lone
+                                       * point's 2 x 2 block linear (Fig 87) */
+    LM_NORMALS_CUBIC_COLOUR           /* [T] §7.3, read as the cubic B-spline */
 } lm_normals;
 
 /* How a membrane's tangential stress reaches the grid. "point" is the
