@@ -120,3 +120,49 @@ local okm, errm = pcall(lamina.normals, {points = circ, box = {-1.5, -1.5, 1.5, 
                                          method = "cubic"})
 assert(not okm and errm:find("cubic_colour", 1, true), "an unknown method names the known ones: " .. errm)
 print("membrane with normals = 'cubic_colour': 3 steps; phi refused: " .. err:match("phi of membrane[^\n]*"))
+
+-- 4. colour_points = body: the colour carried on the gas's points too ([T]
+-- §7.5, Fig 66(b)); only for the colour-function methods, only a body of
+-- points of this simulation
+local function membrane_with(normals, colour_points)
+  return pcall(sim.membrane, sim, {material = lamina.membrane{rho = 0.5, E = 1e6, nu = 0.3, thickness = 0.1},
+    curve = lamina.arc{center = {0, 0}, radius = 0.5, from = 0, to = 360}, count = 64,
+    normals = normals, colour_points = colour_points})
+end
+local bad = {
+  {"connectivity", gas, "colour-function normals method"},
+  {"cubic_colour", mem, "not a body of points"},
+  {"cubic_colour", 2, "must be a body of this simulation"},
+}
+for _, b in ipairs(bad) do
+  local okb, eb = membrane_with(b[1], b[2])
+  assert(not okb and eb:find(b[3], 1, true), "colour_points refused: " .. tostring(eb))
+  print("refused: " .. eb:match("sim:membrane.*"))
+end
+local sim2 = lamina.sim{basis = "linear", domain = {-1.5, -1.5, 1.5, 1.5}, cell = h, dt = 2e-5}
+local gas2 = sim2:body{material = lamina.gas{rho = 1, p = 1000, gamma = 1.4}, ppc = 4, fill = "clipped",
+                       region = lamina.disk{center = {0, 0}, radius = 1}}
+local okc, ec = pcall(sim.membrane, sim, {material = lamina.membrane{rho = 0.5, E = 1e6, nu = 0.3, thickness = 0.1},
+  curve = lamina.arc{center = {0, 0}, radius = 0.5, from = 0, to = 360}, count = 64,
+  normals = "cubic_colour", colour_points = gas2})
+assert(not okc and ec:find("of this simulation", 1, true), "another simulation's body: " .. tostring(ec))
+-- with the gas's points the cubic normals of the circle at the first step
+-- are those lamina.normals gives for the same points (membrane's first)
+local sim3 = lamina.sim{basis = "linear", domain = {-1.5, -1.5, 1.5, 1.5}, cell = h, dt = 1e-12}
+local gas3 = sim3:body{material = lamina.gas{rho = 1, p = 1000, gamma = 1.4}, ppc = 4, fill = "clipped",
+                       region = lamina.disk{center = {0, 0}, radius = 1}}
+local mem3 = sim3:membrane{material = lamina.membrane{rho = 0.5, E = 1e6, nu = 0.3, thickness = 0.1},
+                           curve = lamina.arc{center = {0, 0}, radius = 1, from = 0, to = 360}, count = 128,
+                           normals = "cubic_colour", colour_points = gas3}
+local m0, g0, pts3 = mem3:particles(), gas3:particles(), {}
+for i = 1, m0.n do pts3[#pts3 + 1] = {m0.x[i], m0.y[i]} end
+for i = 1, g0.n do pts3[#pts3 + 1] = {g0.x[i], g0.y[i]} end
+local want = lamina.normals{points = pts3, box = {-1.5, -1.5, 1.5, 1.5}, cells = {30, 30},
+                            method = "cubic_colour", orient = {0, 0}}.normals
+sim3:step(1)                                 -- the normals of the step's start positions
+local m1, wc = mem3:particles(), 0
+for i = 1, m1.n do
+  wc = math.max(wc, math.abs(m1.nx[i] - want[i][1]), math.abs(m1.ny[i] - want[i][2]))
+end
+print(string.format("membrane with colour_points = gas: normals as lamina.normals on the same points to %.2e", wc))
+assert(wc < 1e-12, "the membrane's colour_points normals: " .. wc)
