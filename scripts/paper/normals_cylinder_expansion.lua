@@ -1,4 +1,4 @@
--- title: An expanding cylindrical membrane run with each per-step normals method (no cubic)
+-- title: An expanding cylindrical membrane run with each per-step normals method
 -- source: York's dissertation [T] §7.5.2, Figs 73, 74 and 75
 -- look: Fig 73: the change of the mean radius (points at 0, 45 and 90
 --   degrees) against time. With the connectivity normals (thick) the
@@ -7,8 +7,16 @@
 --   function the membrane barely resists from the first steps and the gas
 --   pushes it against the walls at x, y = 1.5 ([T]: "by t=0.005 ... virtually
 --   no resistance", Fig 75(d)); the simple colour function (not in [T]'s Fig
---   73) does the same. Fig 74: points and normals at t = 0.01, quadratic (the
---   normals scattered); Fig 75: positions at t = 0.05 for each method
+--   73) does the same. The cubic method (thin, reddish purple: [T]'s thin
+--   solid line) falls behind the quadratic run the same way (thin, sky blue)
+--   from the start, holds for a moment near delta r = 0.06 (t = 0.007: [T]'s
+--   "only temporarily stop it from expanding"), then goes to the walls too.
+--   Fig 74: points and normals at t = 0.01, (a) cubic, (b) quadratic (the
+--   normals scattered; the cubic's drawn on its whole circle's first
+--   quadrant, its gas points small: a clipped first point sets the disc
+--   size); Fig 75: positions at t = 0.05 for each method, (c) the cubic's
+--   against the walls like (d)'s - not [T]'s Fig 75(c), where "some forces in
+--   the membrane were generated to resist expansion" (the ✗ shows it)
 -- checks: [T]'s "similar" as a number: the mass matrix run's mean radius
 --   change over two periods (t = 0.01-0.05) within 5 % of the connectivity
 --   run's (our tolerance, [F] Table IV's 5 % agreement); both against the
@@ -17,14 +25,34 @@
 --   within the same 5 %: they fall 13 % short (the ✗ shows it: the grid's
 --   gas reaches a little past the membrane's line, a softer gas); the
 --   quadratic run's membrane against the walls at t = 0.05 (its points
---   within a cell of x or y = 1.5: [T] Fig 75(d))
+--   within a cell of x or y = 1.5: [T] Fig 75(d)). The cubic's three
+--   findings, each a ratio whose side of 1 the text fixes (0.5 +- 0.5, "below
+--   1", as the Figs 67-71 page; ours): "only temporarily stop": its slowest
+--   1 ms of expansion (after it passed all the connectivity run reaches,
+--   before half way to the walls) over the connectivity run's fastest 1 ms
+--   (0.39; the quadratic run alike 1.28 and the cubic with the colour on the
+--   membrane's points alone 1.98: no pause);
+--   "the quadratic method is worse than the cubic": delta r at t = 0.005,
+--   cubic over quadratic run alike (0.81); Fig 75(c): its delta r at t =
+--   0.045-0.05 as a fraction of the way from the connectivity run's to the
+--   quadratic's against the walls, between 0 and 1 (1.12: ✗, further out)
 -- assumed: [T] gives no parameters for this run. The cylinder of radius 1.0
 --   in quarter symmetry, walls at x, y = 1.5 (zero velocity, as [T]); the
 --   normals paper's circle (assets/lua/circle_membrane.lua) scaled to it:
 --   gas rho 1, p0 1000, gamma 1.4, mu 0.2, 16 ppc (clipped fill), membrane
 --   rho 0.5, E 1e6, nu 0.3, t 0.1 plane stress, 181 points, point forces, cell
---   0.1, linear basis, dt 2e-5, to t = 0.05. The cubic method ([T]'s thin
---   line, Figs 74(a), 75(c)) is not run: its equations are lost in the text
+--   0.1, linear basis, dt 2e-5, to t = 0.05. The cubic method: its equations
+--   (7.6-7.7) are lost in the text, read as the cubic B-spline on the 16
+--   vertices about each point (normals = "cubic_colour", the Figs 70-71
+--   page's construction). [T] ran it on the whole circle, "the boundary
+--   conditions for the cubic gradient were not implemented", and so does this
+--   page (no mirrored ghost points): [-1.5, 1.5]^2, fixed walls on every
+--   side, 720 points (the quarter's spacing), the same gas; the colour carried
+--   on the gas's points too (colour_points = gas: [T] §7.5's "with the
+--   internal fluid", Figs 66(b), 70(b), 71), and a quadratic run made the
+--   same way as its like-for-like comparison (Fig 73's sky-blue line; not in
+--   [T]'s figure). The quarter runs' colour methods use the membrane's points
+--   alone, as before
 -- thumb: fig73_radius.png
 local out = lamina.param("out", "out/normals_cylinder_expansion")
 local t_end = lamina.param("t_end", 0.05)
@@ -42,53 +70,76 @@ local function eq_radius()
 end
 local d_eq = eq_radius() - R
 
+-- whole: [T] ran the cubic method on the whole circle ("the boundary
+-- conditions for the cubic gradient were not implemented"): the grid
+-- [-1.5, 1.5]^2 with fixed walls on every side, 720 points (the quarter's
+-- spacing), the colour carried on the gas's points too (colour_points:
+-- [T] §7.5's "with the internal fluid", Figs 66(b), 70(b), 71). The
+-- quadratic run the same way is the cubic's like-for-like comparison; the
+-- cubic on the membrane's points alone shows what the gas's colour does.
 local methods = {
   { key = "connectivity", label = "connectivity", width = 3 },
   { key = "mass_matrix", label = "mass matrix (linear)", dashed = true },
   { key = "quadratic_colour", label = "quadratic colour" },
   { key = "colour", label = "simple colour (not in Fig 73)", width = 1 },
+  { key = "cubic_colour", label = "cubic (whole circle, gas coloured)", width = 1, color = 6,
+    whole = true, gas_colour = true, fig74 = "74(a)", fig75 = "75(c)" },
+  { key = "quadratic_colour", name = "quadratic_whole", label = "quadratic (whole circle, gas coloured)",
+    whole = true, gas_colour = true, width = 1, color = 5 },
+  { key = "cubic_colour", name = "cubic_membrane_only", whole = true, unplotted = true,
+    label = "cubic (whole circle, membrane's points only)" },
 }
 local curves, runs, hashes = {}, {}, {}
 for _, m in ipairs(methods) do
-  local sim = lamina.sim{ basis = "linear", domain = {0, 0, 1.5, 1.5}, cell = h, dt = 2e-5,
-    boundary = { left = "symmetry", bottom = "symmetry", right = "fixed", top = "fixed" } }
-  local gas = sim:body{ material = lamina.gas{ rho = 1, p = p0, gamma = gam, mu = 0.2 }, ppc = 16,
-                        name = "gas", fill = "clipped",
-                        region = lamina.disk{ center = {0, 0}, radius = R } }
-  local mem = sim:membrane{ material = lamina.membrane{ rho = 0.5, E = E, nu = nu, thickness = th,
-                                                       law = "plane_stress" },
-                            curve = lamina.arc{ center = {0, 0}, radius = R, from = 0, to = 90 },
-                            count = 181, force = "point", normals = m.key, orient = {0, 0},
-                            name = "membrane" }
-  local _ = gas
+  local name = m.name or m.key
+  local sim, gas, mem
+  if m.whole then
+    sim = lamina.sim{ basis = "linear", domain = {-1.5, -1.5, 1.5, 1.5}, cell = h, dt = 2e-5,
+      boundary = { left = "fixed", bottom = "fixed", right = "fixed", top = "fixed" } }
+  else
+    sim = lamina.sim{ basis = "linear", domain = {0, 0, 1.5, 1.5}, cell = h, dt = 2e-5,
+      boundary = { left = "symmetry", bottom = "symmetry", right = "fixed", top = "fixed" } }
+  end
+  gas = sim:body{ material = lamina.gas{ rho = 1, p = p0, gamma = gam, mu = 0.2 }, ppc = 16,
+                  name = "gas", fill = "clipped", region = lamina.disk{ center = {0, 0}, radius = R } }
+  mem = sim:membrane{ material = lamina.membrane{ rho = 0.5, E = E, nu = nu, thickness = th,
+                                                  law = "plane_stress" },
+                      curve = lamina.arc{ center = {0, 0}, radius = R, from = 0, to = m.whole and 360 or 90 },
+                      count = m.whole and 720 or 181, force = "point", normals = m.key, orient = {0, 0},
+                      colour_points = m.gas_colour and gas or nil, name = "membrane" }
   -- [T]: "the change in the radius of material points at 0, 45, and 90 degrees are averaged"
+  -- (points 1, 91 and 181 on the quarter and on the whole circle alike)
   local rec = sim:record{ every = 2.5e-4, values = { dr = function()
     local P, s = mem:particles(), 0
     for _, i in ipairs{1, 91, 181} do s = s + math.sqrt(P.x[i] ^ 2 + P.y[i] ^ 2) - R end
     return s / 3 end } }
   local function frame(tf, fig)
     sim:at(tf, function(s)
-      s:frame{ file = string.format("%s/%s_%s_t%.3f.png", out, fig, m.key, tf), width = 420, height = 440,
-               window = {0, 0, 1.5, 1.5}, discs = "spacing",
+      s:frame{ file = string.format("%s/%s_%s_t%.3f.png", out, fig:sub(1, 2), name, tf), width = 420,
+               height = 440, window = {0, 0, 1.5, 1.5}, discs = "spacing",
                title = string.format("Fig %s: %s, t = %.2f", fig, m.label:gsub(" %(.*", ""), tf) }
     end)
   end
-  if m.key == "quadratic_colour" or m.key == "colour" then frame(math.min(0.01, t_end), "74") end
-  frame(t_end, "75")
+  if m.fig74 or (not m.whole and (m.key == "quadratic_colour" or m.key == "colour")) then
+    frame(math.min(0.01, t_end), m.fig74 or "74")
+  end
+  if not m.name then frame(t_end, m.fig75 or "75") end
   sim:run{ t_end = t_end }
   local P = mem:particles()
   local reach = 0
-  for i = 1, P.n do reach = math.max(reach, P.x[i], P.y[i]) end
-  runs[m.key] = { t = rec:column("t"), dr = rec:column("dr"), rec = rec, reach = reach }
+  for i = 1, P.n do reach = math.max(reach, math.abs(P.x[i]), math.abs(P.y[i])) end
+  runs[name] = { t = rec:column("t"), dr = rec:column("dr"), rec = rec, reach = reach }
   hashes[#hashes + 1] = sim:hash()
-  curves[#curves + 1] = { x = runs[m.key].t, y = runs[m.key].dr, label = m.label, dashed = m.dashed,
-                          width = m.width }
+  if not m.unplotted then
+    curves[#curves + 1] = { x = runs[name].t, y = runs[name].dr, label = m.label, dashed = m.dashed,
+                            width = m.width, color = m.color }
+  end
 end
 curves[#curves + 1] = { x = {0, t_end}, y = {d_eq, d_eq}, dashed = true, color = 8,
                         label = "equilibrium (Laplace, adiabatic gas; ours)" }
 lamina.plot{ file = out .. "/fig73_radius.png", csv = true, width = 760, height = 440,
              title = "Fig 73: change of the mean radius (points at 0, 45, 90 deg)", xlabel = "t",
-             ylabel = "delta r", legend = "best", yrange = {-0.02, 0.62}, series = curves }
+             ylabel = "delta r", legend = "best", yrange = {-0.02, 0.68}, series = curves }
 
 local t0 = math.min(0.01, 0.2 * t_end)
 local conn = runs.connectivity.rec:mean("dr", t0, t_end)
@@ -100,6 +151,51 @@ end
 print(string.format("equilibrium delta r %.5f; mean over t = %g-%g: connectivity %.5f, mass matrix %.5f; "
   .. "largest distance between them %.5f; reach at the end: quadratic %.3f, colour %.3f",
   d_eq, t0, t_end, conn, mm, apart, runs.quadratic_colour.reach, runs.colour.reach))
+
+-- [T] on the cubic method (Fig 73's thin solid line), three findings as
+-- numbers (each a ratio whose sign the text fixes: 0.5 +- 0.5 is "below 1",
+-- as on the Figs 67-71 page; ours):
+-- (1) "the forces in the membrane only temporarily stop it from
+-- expanding": a pause - for 1 ms the radius grows no faster than the
+-- connectivity membrane, which resists, ever moves (its largest change of
+-- delta r in 1 ms, the pace of its oscillation) - taken after the cubic
+-- run has passed everything the connectivity run reaches and before it is
+-- half way to the walls (delta r 0.25), so that it expands again after it
+local function pause_of(run)
+  local cmax, pace = 0, 0
+  local cd = runs.connectivity.dr
+  for i = 1, #cd do cmax = math.max(cmax, cd[i]) end
+  for i = 1, #cd - 4 do pace = math.max(pace, math.abs(cd[i + 4] - cd[i])) end
+  local slow, at_t = math.huge, nil
+  for i = 1, #run.dr - 4 do
+    if run.dr[i] > cmax and run.dr[i + 4] < 0.25 and run.dr[i + 4] - run.dr[i] < slow then
+      slow, at_t = run.dr[i + 4] - run.dr[i], run.t[i]
+    end
+  end
+  return slow / pace, at_t, pace
+end
+local function dr_at(run, t) return run.rec:mean("dr", t - 5e-4, t + 5e-4) end
+local function dr_end(run) return run.rec:mean("dr", t_end - 5e-3, t_end) end
+local cub, qw, cmo = runs.cubic_colour, runs.quadratic_whole, runs.cubic_membrane_only
+local pause, pause_t, pace = pause_of(cub)
+local pause_mo, pause_qw = pause_of(cmo), pause_of(qw)
+-- (2) "The quadratic method is worse than the cubic method. By t=0.005
+-- ... virtually no resistance": the cubic's delta r at t = 0.005 over the
+-- quadratic's, run the same way (whole circle, gas coloured)
+local c_q = dr_at(cub, 0.005) / dr_at(qw, 0.005)
+-- (3) Fig 75(c): "some forces in the membrane were generated to resist
+-- expansion", against (d) the quadratic's membrane "pushed against the
+-- boundaries": at t = 0.05 the cubic's delta r between the successful
+-- runs' (connectivity) and the quadratic's (Fig 75(d)'s run), as a
+-- fraction of the way from one to the other (mean over t = 0.045-0.05)
+local c_end, q_end, k_end = dr_end(cub), dr_end(runs.quadratic_colour), dr_end(runs.connectivity)
+local between = (c_end - k_end) / (q_end - k_end)
+print(string.format("cubic (whole circle, gas coloured): slowest 1 ms %.4f of the connectivity run's pace %.4f "
+  .. "(at t = %.4f); membrane's points only: %.3f; the quadratic alike: %.3f; delta r at t = 0.005: cubic %.4f, quadratic (whole) %.4f, "
+  .. "quadratic (quarter) %.4f, cubic (membrane only) %.4f; at the end: cubic %.4f, quadratic %.4f "
+  .. "(whole %.4f), connectivity %.4f; reach: cubic %.3f",
+  pause * pace, pace, pause_t or -1, pause_mo, pause_qw, dr_at(cub, 0.005), dr_at(qw, 0.005),
+  dr_at(runs.quadratic_colour, 0.005), dr_at(cmo, 0.005), c_end, q_end, dr_end(qw), k_end, cub.reach))
 local h64 = 0xcbf29ce484222325
 for _, c in ipairs(hashes) do for i = 1, #c do h64 = (h64 ~ c:byte(i)) * 0x100000001b3 end end
 lamina.report{
@@ -115,5 +211,17 @@ lamina.report{
   quadratic_dr_0_005 = { runs.quadratic_colour.rec:mean("dr", 0.0045, 0.0055) / d_eq,
                          unit = "x the equilibrium at t = 0.005 ([T]: virtually no resistance)" },
   colour_reach = { runs.colour.reach, unit = "(walls at 1.5)" },
+  cubic_pause = { pause, ref = 0.5, tol = 0.5,
+                  unit = "(slowest 1 ms of its expansion over the connectivity run's fastest; [T] Fig 73: "
+                         .. "'only temporarily stop it': below 1)" },
+  cubic_pause_membrane_only = { pause_mo, unit = "(the same, the colour on the membrane's points alone)" },
+  quadratic_whole_pause = { pause_qw, unit = "(the same for the quadratic run alike: whole circle, gas coloured)" },
+  cubic_over_quadratic_0_005 = { c_q, ref = 0.5, tol = 0.5,
+                                 unit = "(delta r at t = 0.005, both whole circle, gas coloured; [T]: "
+                                        .. "'the quadratic method is worse than the cubic': below 1)" },
+  cubic_between_t_end = { between, ref = 0.5, tol = 0.5,
+                          unit = "(delta r at t = 0.045-0.05: 0 connectivity's, 1 the quadratic's against "
+                                 .. "the walls; [T] Fig 75(c) 'some forces ... to resist': between)" },
+  cubic_reach = { cub.reach, unit = "largest |x| or |y| of its points at the end (walls at 1.5)" },
   state_hash = string.format("%016x", h64),
 }

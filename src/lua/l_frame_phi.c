@@ -99,7 +99,7 @@ static void contour_body(const lm_sim *sim, const lm_nreport *rep, int centred, 
 int la_membrane_has_phi(const lm_body *bd)
 {
     return bd->membrane && bd->count >= 2 && bd->normals != LM_NORMALS_COLOUR &&
-           bd->normals != LM_NORMALS_QUADRATIC_COLOUR;
+           bd->normals != LM_NORMALS_QUADRATIC_COLOUR && bd->normals != LM_NORMALS_CUBIC_COLOUR;
 }
 
 size_t la_frame_phi(lua_State *L, la_frame_ctx *ctx, lm_sim *sim, int strict, int hairline,

@@ -17,7 +17,7 @@
 /* In the order of lm_normals (mpm.h). */
 static const char *const normal_methods[] = {"connectivity", "isosurface", "hybrid", "linear",
                                              "colour", "quadratic_colour", "mass_matrix",
-                                             "mass_matrix_quadratic", NULL};
+                                             "mass_matrix_quadratic", "cubic_colour", NULL};
 
 /* initial_strain: a number for every point, or a function (u, i) -> strain
  * of the curve parameter u in [0, 1] and the point's index i (1-based). */
@@ -84,7 +84,7 @@ int la_sim_membrane(lua_State *L)
 {
     static const char *const keys[] = {"material", "curve", "spacing", "count", "normals",
                                        "initial_strain", "end_mass", "velocity", "name",
-                                       "orient", "force", NULL};
+                                       "orient", "force", "colour_points", NULL};
     const char *fn = "sim:membrane";
     la_sim *s = la_check_sim(L, 1);
     la_check_keys(L, 2, fn, keys);
@@ -139,6 +139,20 @@ int la_sim_membrane(lua_State *L)
         luaL_error(L, "%s: 'orient' must be {x, y} or \"neighbours\" or \"none\"", fn);
     }
 
+    /* colour_points = body: the colour-function methods' colour carried on
+     * that body's points too ([T] §7.5, Fig 66(b): fluid inside) */
+    int colour_with = 0;
+    if (la_getfield(L, 2, "colour_points") != LUA_TNIL) {
+        lm_sim *cs = NULL;
+        if (!luaL_testudata(L, -1, LA_BODY))
+            return luaL_error(L, "%s: colour_points must be a body of this simulation (got %s)",
+                              fn, luaL_typename(L, -1));
+        int cb = la_check_body(L, lua_gettop(L), &cs);
+        if (cs != sim)
+            return luaL_error(L, "%s: colour_points must be a body of this simulation", fn);
+        colour_with = cb + 1;
+    }
+    lua_pop(L, 1);
     double end_mass = la_opt_number(L, 2, fn, "end_mass", 0);
     if (la_has(L, 2, "end_mass") && !(end_mass > 0))
         return luaL_error(L, "%s: end_mass must be positive (got %f)", fn, end_mass);
@@ -194,6 +208,7 @@ int la_sim_membrane(lua_State *L)
     def.end_mass = end_mass;
     def.normals = (lm_normals)method;
     def.force = (lm_mforce)force;
+    def.colour_with = colour_with;
     def.name = nameidx && lua_type(L, nameidx) == LUA_TSTRING ? lua_tostring(L, nameidx) : NULL;
     if (ot != LUA_TNIL) {
         def.orient = (lm_orient)orient;

@@ -26,8 +26,8 @@ static const char *const BASES[] = {"linear", "quadratic", "hybrid", NULL};
 static const char *const SOLVERS[] = {"qr", "normal_equations", NULL};
 static const char *const ORIENTS[] = {"none", "sequence", "neighbours", NULL};
 static const char *const METHODS[] = {"isosurface", "colour", "quadratic_colour",
-                                      "mass_matrix", "mass_matrix_global", NULL};
-enum { M_ISO, M_COLOUR, M_QCOLOUR, M_MASS, M_MASS_GLOBAL };
+                                      "mass_matrix", "mass_matrix_global", "cubic_colour", NULL};
+enum { M_ISO, M_COLOUR, M_QCOLOUR, M_MASS, M_MASS_GLOBAL, M_CCOLOUR };
 
 static const char *FN = "lamina.normals";
 
@@ -522,6 +522,8 @@ static int grid_variant(lua_State *L, const lm_ngrid *g, int method, size_t n,
                     ? lm_normals_colour(g, n, cx, nrm, flags, err, sizeof err)
                 : method == M_QCOLOUR
                     ? lm_normals_quadratic_colour(g, n, cx, nrm, flags, err, sizeof err)
+                : method == M_CCOLOUR
+                    ? lm_normals_cubic_colour(g, n, cx, nrm, flags, err, sizeof err)
                     : lm_normals_mass_matrix_global(g, n, cx, &o, nrm, flags, &cond,
                                                     err, sizeof err);
     if (e)

@@ -257,7 +257,7 @@ static int check_state(const lm_sim *sim, const unsigned char *b, size_t n, char
             return -1;
         }
         if (r.force < 0 || r.force > LM_MFORCE_SEGMENT || r.normals < 0 ||
-            r.normals > LM_NORMALS_MASS_MATRIX_QUADRATIC || (r.seg_ready != 0 && r.seg_ready != 1) ||
+            r.normals > LM_NORMALS_CUBIC_COLOUR || (r.seg_ready != 0 && r.seg_ready != 1) ||
             !isfinite(r.ox) || !isfinite(r.oy) || !isfinite(r.pe_ref)) {
             snprintf(why, wl, "%s has settings out of range", who);
             return -1;

@@ -13,6 +13,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "membrane_law.h"
 #include "normals.h"
@@ -182,7 +183,7 @@ int lm_membrane_phi(const lm_sim *sim, int b, struct lm_nreport *rep, char *err,
 {
     const lm_body *bd = &sim->bodies[b];
     if (!bd->membrane || bd->count < 2 || bd->normals == LM_NORMALS_COLOUR ||
-        bd->normals == LM_NORMALS_QUADRATIC_COLOUR) {
+        bd->normals == LM_NORMALS_QUADRATIC_COLOUR || bd->normals == LM_NORMALS_CUBIC_COLOUR) {
         snprintf(err, errlen, "body %d has no phi (not a membrane, or a colour-function "
                  "method)", b + 1);
         return -1;
@@ -210,6 +211,51 @@ int lm_membrane_phi(const lm_sim *sim, int b, struct lm_nreport *rep, char *err,
     return e == LM_NERR_NONE ? 0 : -1;
 }
 
+/* The colour-function methods ([T] §7.1-7.3) on the membrane's points, and
+ * with colour_with on another body's points too ([T] §7.5: "adding
+ * material points interior to the membrane as in Fig. 66(b)"; each point
+ * colour 1, so the colour marks the region the membrane holds): the
+ * points handed over after the membrane's, their own normals dropped. That
+ * case allocates its copy every step (the option of one comparison page). */
+static lm_nerr colour_normals(const lm_sim *sim, const lm_body *bd, const lm_ngrid *g,
+                              const double *const x[3], double *const nrm[3],
+                              unsigned char *flags, char *why, size_t wl)
+{
+    lm_nerr (*method)(const lm_ngrid *, size_t, const double *const[3], double *const[3],
+                      unsigned char *, char *, size_t) =
+        bd->normals == LM_NORMALS_COLOUR ? lm_normals_colour
+        : bd->normals == LM_NORMALS_QUADRATIC_COLOUR ? lm_normals_quadratic_colour
+                                                     : lm_normals_cubic_colour;
+    size_t n = bd->count;
+    if (!bd->colour_with)
+        return method(g, n, x, nrm, flags, why, wl);
+    const lm_body *fb = &sim->bodies[bd->colour_with - 1];
+    size_t m = n + fb->count;
+    double *buf = malloc(4 * m * sizeof *buf);
+    unsigned char *fl = malloc(m);
+    if (!buf || !fl) {
+        free(buf);
+        free(fl);
+        snprintf(why, wl, "out of memory for %zu colour points", m);
+        return LM_NERR_MEMORY;
+    }
+    memcpy(buf, x[0], n * sizeof *buf);
+    memcpy(buf + m, x[1], n * sizeof *buf);
+    memcpy(buf + n, sim->p.x + fb->first, fb->count * sizeof *buf);
+    memcpy(buf + m + n, sim->p.y + fb->first, fb->count * sizeof *buf);
+    const double *ax[3] = {buf, buf + m, NULL};
+    double *an[3] = {buf + 2 * m, buf + 3 * m, NULL};
+    lm_nerr e = method(g, m, ax, an, fl, why, wl);
+    if (e == LM_NERR_NONE) {
+        memcpy(nrm[0], an[0], n * sizeof *buf);
+        memcpy(nrm[1], an[1], n * sizeof *buf);
+        memcpy(flags, fl, n);
+    }
+    free(buf);
+    free(fl);
+    return e;
+}
+
 static lm_status without_connectivity(lm_sim *sim, int b)
 {
     const lm_body *bd = &sim->bodies[b];
@@ -234,17 +280,17 @@ static lm_status without_connectivity(lm_sim *sim, int b)
     lm_nerr e;
     switch (bd->normals) {
     case LM_NORMALS_COLOUR:
-        e = lm_normals_colour(&g, n, x, nrm, flags, why, sizeof why);
-        break;
     case LM_NORMALS_QUADRATIC_COLOUR:
-        e = lm_normals_quadratic_colour(&g, n, x, nrm, flags, why, sizeof why);
+    case LM_NORMALS_CUBIC_COLOUR:
+        e = colour_normals(sim, bd, &g, x, nrm, flags, why, sizeof why);
         break;
     default:
         e = lm_normals_grid_ws(&g, n, x, &o, nrm, flags, NULL, sim->work->nwork, why, sizeof why);
         break;
     }
     if (e == LM_NERR_NONE && (bd->normals == LM_NORMALS_COLOUR ||
-                              bd->normals == LM_NORMALS_QUADRATIC_COLOUR) && bd->orient)
+                              bd->normals == LM_NORMALS_QUADRATIC_COLOUR ||
+                              bd->normals == LM_NORMALS_CUBIC_COLOUR) && bd->orient)
         lm_normals_orient(n, 2, x, nrm, o.orient, o.orient_point);
     if (e != LM_NERR_NONE) {
         snprintf(sim->err, sizeof sim->err,

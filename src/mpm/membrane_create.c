@@ -109,10 +109,24 @@ static lm_status check(lm_sim *sim, const lm_membrane_def *def)
         snprintf(sim->err, sizeof sim->err, "%s: unknown force form %d", what, (int)def->force);
         return LM_ERR_INPUT;
     }
-    if ((int)def->normals < LM_NORMALS_CONNECTIVITY || def->normals > LM_NORMALS_MASS_MATRIX_QUADRATIC) {
+    if ((int)def->normals < LM_NORMALS_CONNECTIVITY || def->normals > LM_NORMALS_CUBIC_COLOUR) {
         snprintf(sim->err, sizeof sim->err, "%s: unknown normals method %d", what,
                  (int)def->normals);
         return LM_ERR_INPUT;
+    }
+    if (def->colour_with) {
+        int cb = def->colour_with - 1;
+        if (def->normals != LM_NORMALS_COLOUR && def->normals != LM_NORMALS_QUADRATIC_COLOUR &&
+            def->normals != LM_NORMALS_CUBIC_COLOUR) {
+            snprintf(sim->err, sizeof sim->err, "%s: colour_points needs a colour-function "
+                     "normals method (colour, quadratic_colour, cubic_colour)", what);
+            return LM_ERR_INPUT;
+        }
+        if (cb < 0 || cb >= sim->nbodies || sim->bodies[cb].membrane) {
+            snprintf(sim->err, sizeof sim->err, "%s: colour_points: body %d is not a body of "
+                     "points (a membrane's or none)", what, cb + 1);
+            return LM_ERR_INPUT;
+        }
     }
     return LM_OK;
 }
@@ -206,6 +220,7 @@ int lm_sim_create_membrane(lm_sim *sim, const lm_membrane_def *def)
     }
     bd->normals = def->normals;
     bd->force = def->force;
+    bd->colour_with = def->colour_with;
     lm_sim_set_body_name(sim, b, def->name);
     orient(sim, bd, def);
     if (lm_sim_prepare(sim) != LM_OK) {

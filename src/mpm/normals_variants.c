@@ -8,8 +8,12 @@
  *  - the mass matrix method ([T] §7.4, eqs 7.8-7.12) solved globally; solved
  *    per cell it is the linear isosurface construction with the normal
  *    equations, lm_normals_grid(LM_NB_LINEAR, LM_NS_NORMAL).
- * [T] §7.3 (cubic) is not reproduced: its equations are lost in the text we
- * have. The OCR also lost eqs 7.2-7.12; the forms below are those the
+ *  - the cubic method ([T] §7.3, eqs 7.6-7.7): the colour on the vertices
+ *    by a cubic weighting, each point reaching 16 of them (2D), and the
+ *    normals its "cubic gradient" at the points. Its equations are lost in
+ *    the text we have; read as the cubic B-spline, the quadratic method's
+ *    B-spline one degree up (its support, 4 x 4 vertices, is the 16).
+ * The OCR also lost eqs 7.2-7.12; the forms below are those the
  * surrounding text describes (docs/physics.md §3) with chi_p = 1 for every
  * membrane point. Signs do not matter: every normal is normalised and the
  * orientation is a separate pass. */
@@ -337,4 +341,93 @@ out:
     free(phi);
     free(nn);
     return e;
+}
+
+/* The cubic B-spline of r cells and its derivative (support |r| < 2). */
+static double bspline3(double r)
+{
+    double a = fabs(r);
+    if (a < 1)
+        return 2.0 / 3.0 - a * a + 0.5 * a * a * a;
+    return a < 2 ? (2 - a) * (2 - a) * (2 - a) / 6.0 : 0.0;
+}
+
+static double bspline3_d(double r)
+{
+    double a = fabs(r), sg = r < 0 ? -1.0 : 1.0;
+    if (a < 1)
+        return sg * (-2 * a + 1.5 * a * a);
+    return a < 2 ? -0.5 * sg * (2 - a) * (2 - a) : 0.0;
+}
+
+/* The four vertices per axis a point reaches, from its cell c - 1 (the
+ * ghost ring's index + 1 = c), their weights and derivatives (per world
+ * unit); unused axes weigh 1 at their one vertex. */
+static void cubic_weights(const lm_ngrid *g, const double p[3], const int c[3],
+                          double w[3][4], double dw[3][4])
+{
+    for (int a = 0; a < 3; a++)
+        for (int k = 0; k < 4; k++) {
+            if (a >= g->dim) {
+                w[a][k] = k == 0;
+                dw[a][k] = 0;
+                continue;
+            }
+            double r = (p[a] - g->x0[a]) / g->h[a] - (c[a] - 1 + k);
+            w[a][k] = bspline3(r);
+            dw[a][k] = bspline3_d(r) / g->h[a];
+        }
+}
+
+lm_nerr lm_normals_cubic_colour(const lm_ngrid *g, size_t n, const double *const x[3],
+                                double *const nrm[3], unsigned char *flags,
+                                char *err, size_t errlen)
+{
+    lm_nerr e = check_all(g, n, x, err, errlen);
+    if (e)
+        return e;
+    /* vertices -1 .. n + 1 per axis (a ring of ghosts: a point on the grid's
+     * edge reaches one vertex past it), index v + 1 */
+    int V[3] = {g->n[0] + 3, g->n[1] + 3, g->dim == 3 ? g->n[2] + 3 : 1};
+    int K[3] = {4, 4, g->dim == 3 ? 4 : 1};
+    long nv = (long)V[0] * V[1] * V[2];
+    double *chi = calloc((size_t)nv, sizeof *chi);
+    if (!chi) {
+        snprintf(err, errlen, "out of memory (%ld vertices)", nv);
+        return LM_NERR_MEMORY;
+    }
+    for (size_t i = 0; i < n; i++) {        /* chi_v = sum_p S3(x_p - x_v), 7.6 as read */
+        double p[3], w[3][4], dw[3][4];
+        int c[3];
+        locate(g, x, i, p, c, err, errlen);
+        cubic_weights(g, p, c, w, dw);
+        for (int k = 0; k < K[2]; k++)
+            for (int j = 0; j < K[1]; j++)
+                for (int l = 0; l < K[0]; l++)
+                    chi[(c[0] + l) + (long)V[0] * ((c[1] + j) + (long)V[1] * (c[2] + k))] +=
+                        w[0][l] * w[1][j] * w[2][k];
+    }
+    for (size_t i = 0; i < n; i++) {        /* n_p = -grad sum_v chi_v S3, 7.7 as read */
+        double p[3], w[3][4], dw[3][4], v[3] = {0, 0, 0};
+        int c[3];
+        locate(g, x, i, p, c, err, errlen);
+        cubic_weights(g, p, c, w, dw);
+        for (int k = 0; k < K[2]; k++)
+            for (int j = 0; j < K[1]; j++)
+                for (int l = 0; l < K[0]; l++) {
+                    double f = chi[(c[0] + l) + (long)V[0] * ((c[1] + j) +
+                                   (long)V[1] * (c[2] + k))];
+                    v[0] -= f * dw[0][l] * w[1][j] * w[2][k];
+                    v[1] -= f * w[0][l] * dw[1][j] * w[2][k];
+                    v[2] -= f * w[0][l] * w[1][j] * dw[2][k];
+                }
+        double len = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        int ok = len > 0 && isfinite(len);
+        for (int a = 0; a < g->dim; a++)
+            nrm[a][i] = ok ? v[a] / len : 0.0;
+        if (flags)
+            flags[i] = ok ? 0 : LM_NF_UNDEFINED;
+    }
+    free(chi);
+    return LM_NERR_NONE;
 }

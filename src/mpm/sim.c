@@ -495,7 +495,7 @@ lm_status lm_sim_set_membrane_force(lm_sim *sim, int b, lm_mforce force)
 lm_status lm_sim_set_membrane_normals(lm_sim *sim, int b, lm_normals normals)
 {
     if (b < 0 || b >= sim->nbodies || !sim->bodies[b].membrane ||
-        normals < LM_NORMALS_CONNECTIVITY || normals > LM_NORMALS_MASS_MATRIX_QUADRATIC) {
+        normals < LM_NORMALS_CONNECTIVITY || normals > LM_NORMALS_CUBIC_COLOUR) {
         snprintf(sim->err, sizeof sim->err, "body %d is not a membrane, or normals %d is "
                  "not a method", b + 1, (int)normals);
         return LM_ERR_INPUT;

@@ -201,8 +201,9 @@ typedef enum lm_normals {
     LM_NORMALS_COLOUR,           /* [T] §7.1 simple colour function */
     LM_NORMALS_QUADRATIC_COLOUR, /* [T] §7.2 */
     LM_NORMALS_MASS_MATRIX,      /* [T] §7.4 per cell (linear, normal equations) */
-    LM_NORMALS_MASS_MATRIX_QUADRATIC /* [T] §7.7: quadratic per cell, a lone
-                                      * point's 2 x 2 block linear (Fig 87) */
+    LM_NORMALS_MASS_MATRIX_QUADRATIC, /* [T] §7.7: quadratic per cell, a lone
+                                       * point's 2 x 2 block linear (Fig 87) */
+    LM_NORMALS_CUBIC_COLOUR           /* [T] §7.3, read as the cubic B-spline */
 } lm_normals;
 
 /* How a membrane's tangential stress reaches the grid. "point" is the
@@ -241,6 +242,9 @@ typedef struct lm_body {
     int side;              /* LM_ORIENT_CURVE, open: +1 left, -1 right */
     double pe_ref;         /* this body's share of sim->pe_ref */
     lm_mforce force;       /* membrane: how its stress reaches the grid */
+    int colour_with;       /* membrane, colour-function normals: 1 + the body
+                              whose points carry the colour too ([T] §7.5,
+                              Fig 66(b)); 0: the membrane's points alone */
     int seg_ready;         /* segment rest lengths set (membrane_force.c) */
     double end_grid_mass;  /* > 0: the last point is a heavy end point whose
                               mass beyond this wire share rides off the lumped
@@ -410,6 +414,10 @@ typedef struct lm_membrane_def {
     lm_orient orient;
     double ox, oy;            /* LM_ORIENT_AWAY: from this point */
     lm_mforce force;
+    int colour_with;          /* colour-function normals only: 1 + the index of a
+                                 (non-membrane) body whose points carry the
+                                 colour too, [T] §7.5's "material points interior
+                                 to the membrane" (Fig 66(b)); 0: none */
     const char *name;         /* for messages; NULL or "" = unnamed */
 } lm_membrane_def;
 

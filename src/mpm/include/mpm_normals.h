@@ -275,6 +275,13 @@ lm_nerr lm_normals_quadratic_colour(const lm_ngrid *g, size_t n,
                                     const double *const x[3],
                                     double *const nrm[3], unsigned char *flags,
                                     char *err, size_t errlen);
+/* [T] §7.3, its eqs 7.6-7.7 lost in the text and read as the cubic
+ * B-spline (normals_variants.c): chi_v = sum_p S3(x_p - x_v) on the
+ * vertices (16 a point in 2D, 64 in 3D; a ring of ghost vertices past the
+ * grid's edge), n_p = -grad sum_v chi_v S3(x - x_v) at x_p, normalised. */
+lm_nerr lm_normals_cubic_colour(const lm_ngrid *g, size_t n, const double *const x[3],
+                                double *const nrm[3], unsigned char *flags,
+                                char *err, size_t errlen);
 /* [T] §7.4 solved globally: one least-squares system over all the nodes of
  * the occupied cells (linear basis), rows phi = 1 at every point and
  * phi = 0 at one random point per occupied cell; dense QR, minimum norm.
