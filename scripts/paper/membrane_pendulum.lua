@@ -28,7 +28,9 @@
 --   change: segment forces (lamina's default, on the membranes' consistent
 --   mass, mass = "membrane", that the "auto" default picks for them),
 --   because the papers' point form tears there at cells 0.05 (t = 0.638)
---   and 0.025 (t = 0.684), the ratchet below; [M] prints no point counts
+--   and 0.025 (t = 0.684), the ratchet below (the points' mean strain
+--   falls 0.068 / 0.105 below the log strain of the string's length at
+--   cells 0.1 / 0.05, the latter by its tear); [M] prints no point counts
 --   ([T]'s are used).
 --   The cause (membrane_pendulum_no_wrinkle's page): under the one-way law
 --   the point form's strains, sums of the grid's noisy t.de.t, ratchet
@@ -136,9 +138,10 @@ lamina.plot{ file = out .. "/fig12_theta.png", csv = true, title = "Fig 12: angl
 -- length, EA ten times smaller, so c = 1000 and the step 3.2 times longer),
 -- at the same four cells and point counts, against our bar FEM at these
 -- inputs. The papers' scheme (point quadrature, PIC 0.001) tears here at
--- cells 0.05 and 0.025 (its strains ratchet down under the one-way law:
--- membrane_pendulum_no_wrinkle's page); it runs beside, its outcome
--- printed. The runs that are checked change one thing: the tension
+-- cells 0.05 and 0.025 (its strains ratchet down under the one-way law,
+-- membrane_pendulum_no_wrinkle's page: measured, the points' mean strain
+-- 0.105 below the log strain of the length at cell 0.05 by t = 0.638);
+-- it runs beside, its outcome printed. The runs that are checked change one thing: the tension
 -- integrated along segments (force = "segment", lamina's default, with the
 -- membranes' consistent mass that the "auto" default picks for them,
 -- named); basis, MUSL, the PIC blend and the counts stay the page's.
