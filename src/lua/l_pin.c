@@ -92,7 +92,7 @@ int la_body_pin(lua_State *L)
     int pin = lm_sim_add_pin(sim, b, idx, n, vx, vy);
     if (pin < 0) return luaL_error(L, "%s: %s", fn, sim->err);
     if (fidx) la_sim_add_pin_function(L, sidx, pin, fidx);
-    la_pin_handle_push(L, LA_PIN, sidx, pin);
+    la_handle_push(L, LA_PIN, sidx, pin, 1);
     return 1;
 }
 
@@ -113,7 +113,7 @@ void la_pins_update(lua_State *L, int sidx, la_sim *s)
  * the last step (per unit depth; 0, 0 before the first step). */
 static int pin_reaction(lua_State *L)
 {
-    int pin = la_pin_handle_check(L, 1, LA_PIN);
+    int pin = la_handle_check(L, 1, LA_PIN);
     lm_sim *sim = la_check_sim(L, -1)->sim;
     const lm_pin *pn = &sim->pins[pin];
     lua_pushnumber(L, pn->rx);
@@ -123,7 +123,7 @@ static int pin_reaction(lua_State *L)
 
 static int pin_len(lua_State *L)
 {
-    int pin = la_pin_handle_check(L, 1, LA_PIN);
+    int pin = la_handle_check(L, 1, LA_PIN);
     lm_sim *sim = la_check_sim(L, -1)->sim;
     lua_pushinteger(L, (lua_Integer)sim->pins[pin].n);
     return 1;
@@ -131,7 +131,7 @@ static int pin_len(lua_State *L)
 
 static int pin_tostring(lua_State *L)
 {
-    return la_push_handle_name(L, LA_PIN, la_pin_handle_check(L, 1, LA_PIN));
+    return la_push_handle_name(L, LA_PIN, la_handle_check(L, 1, LA_PIN));
 }
 
 void la_open_pin(lua_State *L)

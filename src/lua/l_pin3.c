@@ -82,13 +82,13 @@ int la_body3_pin(lua_State *L, la_sim3 *s3, size_t first, size_t n)
     int pi = lm3_pin_add(sim, idx, k, v);
     if (pi < 0) return luaL_error(L, "%s: %s", fn, sim->err);
     if (vf) la_sim_add_pin_function(L, sidx, pi, vf);
-    la_pin_handle_push(L, LA_PIN3, sidx, pi);
+    la_handle_push(L, LA_PIN3, sidx, pi, 1);
     return 1;
 }
 
 static const lm3_pin *check_pin3(lua_State *L)
 {
-    int pin = la_pin_handle_check(L, 1, LA_PIN3);
+    int pin = la_handle_check(L, 1, LA_PIN3);
     la_sim3 *s3 = la_check_sim3(L, -1, "pin");
     lua_pop(L, 1);
     return &s3->sim->pins->pin[pin];
@@ -111,7 +111,7 @@ static int pin3_len(lua_State *L)
 
 static int pin3_tostring(lua_State *L)
 {
-    return la_push_handle_name(L, "lamina.pin", la_pin_handle_check(L, 1, LA_PIN3) + 1);
+    return la_push_handle_name(L, "lamina.pin", la_handle_check(L, 1, LA_PIN3) + 1);
 }
 
 void la_open_pin3(lua_State *L)

@@ -1,12 +1,10 @@
 /* l_pin_common.c - body:pin's reading of `points` and of a velocity
- * function, the driven pins' loop and the pin handle, for both dimensions
+ * function and the driven pins' loop, for both dimensions
  * (l_pin_common.h; l_pin.c and l_pin3.c hold each one's engine calls). */
 #include <math.h>
 #include <string.h>
 
 #include "l_pin_common.h"
-
-typedef struct la_pin_handle { int index; } la_pin_handle;
 
 /* The list's and the string's cases; tables are read raw (no metamethods,
  * as la_getfield: l_args.c). */
@@ -93,21 +91,4 @@ void la_pins_drive(lua_State *L, int sidx, la_sim *s,
         lua_pop(L, 1);
     }
     lua_pop(L, 1);
-}
-
-void la_pin_handle_push(lua_State *L, const char *meta, int sidx, int index)
-{
-    sidx = lua_absindex(L, sidx);
-    la_pin_handle *h = lua_newuserdatauv(L, sizeof *h, 1);
-    h->index = index;
-    luaL_setmetatable(L, meta);
-    lua_pushvalue(L, sidx);
-    lua_setiuservalue(L, -2, 1);
-}
-
-int la_pin_handle_check(lua_State *L, int idx, const char *meta)
-{
-    la_pin_handle *h = luaL_checkudata(L, idx, meta);
-    lua_getiuservalue(L, idx, 1);
-    return h->index;
 }

@@ -1,6 +1,7 @@
 /* l_pin_common.h - what body:pin does alike for a 2D body (l_pin.c) and a
  * 3D one (l_pin3.c): reading `points`, calling a velocity function,
- * driving the pins' functions before each step, the pin handle. The
+ * driving the pins' functions before each step (the pin handle:
+ * la_handle_push, l_handle.c). The
  * dimension-specific parts (the engine's pin, its reaction) stay in those
  * files. */
 #ifndef LAMINA_L_PIN_COMMON_H
@@ -45,11 +46,5 @@ int la_pin_velocity_call(lua_State *L, int fidx, double t, int n, double *v);
  * at sidx, its function at fidx (the sim's uservalue holds them). */
 void la_pins_drive(lua_State *L, int sidx, la_sim *s,
                    void (*drive)(lua_State *L, la_sim *s, int pin, int fidx));
-
-/* The pin handle: a userdata of class meta holding the engine's pin index
- * and, as its uservalue, the sim at sidx (a pin keeps its sim alive). */
-void la_pin_handle_push(lua_State *L, const char *meta, int sidx, int index);
-/* The pin index of the handle at idx and its sim, pushed. */
-int la_pin_handle_check(lua_State *L, int idx, const char *meta);
 
 #endif
