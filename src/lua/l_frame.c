@@ -154,24 +154,16 @@ int la_sim_frame(lua_State *L)
     f.label = la_frame_label(L, 2, fn, sim->t, sim->step);
     /* label and title strings stay on the stack until we return */
 
-    la_prov prov;
-    la_provenance(L, &prov);
     /* lamina:layers: what the frame shows of its membranes, so that a
      * check can read it from the file (tests/visual/check_membrane_frames.py) */
     char layers[96];
     snprintf(layers, sizeof layers, "membranes=%d with_phi=%d phi=%d normals=%d", ctx.membranes,
              ctx.with_phi, ctx.phi, ctx.normals);
-    char range[LA_FRAME_RANGE_LEN];
-    la_frame_range_text(range, p, f.npanels, panel_range);
     /* the title as text too: what a frame says it shows - "displacements
      * x k" - can be read back by a check */
-    lr_text_chunk text[7];
-    f.ntext = la_frame_text(text, &prov, layers, f.title, range);
-    f.text = text;
+    la_frame_texts tx;
+    f.ntext = la_frame_text(L, &tx, layers, f.title, (la_frame_ranges){p, f.npanels, panel_range});
+    f.text = tx.text;
     char err[512];
-    if (lr_figure_write(&f, file, err, sizeof err))
-        return luaL_error(L, "%s: %s", fn, err);
-    la_note_image(L, file);
-    lua_pushstring(L, file);
-    return 1;
+    return la_frame_written(L, fn, file, lr_figure_write(&f, file, err, sizeof err), err);
 }

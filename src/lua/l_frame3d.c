@@ -680,8 +680,6 @@ int l_frame3d(lua_State *L, const lm3_sim *sim, int opts_index)
     f.label = la_frame_label(L, fidx, fn, sim->t, sim->nstep);
     /* label and title strings stay on the stack until we return */
 
-    la_prov prov;
-    la_provenance(L, &prov);
     char layers[192];
     int used_l = snprintf(layers, sizeof layers, "dim=3 particles=%zu slices=%zu isosurfaces=%zu",
                           c.particles, c.slices, c.isos);
@@ -691,15 +689,10 @@ int l_frame3d(lua_State *L, const lm3_sim *sim, int opts_index)
         snprintf(layers + used_l, sizeof layers - (size_t)used_l,
                  " membrane_points=%zu normals=%zu membranes=%zu phi=%zu", c.mpoints,
                  c.marrows, c.mmem, c.mphi);
-    char range[LA_FRAME_RANGE_LEN];
-    la_frame_range_text(range, p, f.npanels, panel3_range);
-    lr_text_chunk text[7];
-    f.ntext = la_frame_text(text, &prov, layers, f.title, range);
-    f.text = text;
+    la_frame_texts tx;   /* the provenance, layers, title, lamina:range */
+    f.ntext = la_frame_text(L, &tx, layers, f.title,
+                            (la_frame_ranges){p, f.npanels, panel3_range});
+    f.text = tx.text;
     char err[512];
-    if (lr_figure3d_write(&f, file, err, sizeof err) != 0)
-        return luaL_error(L, "%s: %s", fn, err);
-    la_note_image(L, file);
-    lua_pushstring(L, file);
-    return 1;
+    return la_frame_written(L, fn, file, lr_figure3d_write(&f, file, err, sizeof err), err);
 }

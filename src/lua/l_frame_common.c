@@ -48,24 +48,27 @@ void la_frame_layout(lua_State *L, const char *fn, double r, double c, size_t n,
     *cols = (int)c;
 }
 
-void la_frame_range_text(char out[LA_FRAME_RANGE_LEN], const void *panels, size_t n,
-                         int (*range)(const void *panels, size_t k, double *lo, double *hi))
+static void range_text(char out[LA_FRAME_RANGE_LEN], la_frame_ranges r)
 {
     size_t used = 0;
     out[0] = 0;
-    for (size_t k = 0; k < n; k++) {
+    for (size_t k = 0; k < r.n; k++) {
         double lo, hi;
-        if (used >= LA_FRAME_RANGE_LEN - 1 || !range(panels, k, &lo, &hi)) continue;
+        if (used >= LA_FRAME_RANGE_LEN - 1 || !r.range(r.panels, k, &lo, &hi)) continue;
         int len = snprintf(out + used, LA_FRAME_RANGE_LEN - used, "%s%.17g %.17g",
                            used ? "; " : "", lo, hi);
         used = len > 0 ? used + (size_t)len : used;
     }
 }
 
-size_t la_frame_text(lr_text_chunk text[7], const la_prov *prov, const char *layers,
-                     const char *title, const char *range)
+size_t la_frame_text(lua_State *L, la_frame_texts *t, const char *layers, const char *title,
+                     la_frame_ranges r)
 {
-    memcpy(text, prov->text, sizeof prov->text);
+    la_provenance(L, &t->prov);
+    range_text(t->range, r);
+    lr_text_chunk *text = t->text;
+    const char *range = t->range;
+    memcpy(text, t->prov.text, sizeof t->prov.text);
     size_t n = 4;
     text[n].key = "lamina:layers";
     text[n++].value = layers;
@@ -78,4 +81,12 @@ size_t la_frame_text(lr_text_chunk text[7], const la_prov *prov, const char *lay
         text[n++].value = range;
     }
     return n;
+}
+
+int la_frame_written(lua_State *L, const char *fn, const char *file, int rc, const char *err)
+{
+    if (rc != 0) return luaL_error(L, "%s: %s", fn, err);
+    la_note_image(L, file);
+    lua_pushstring(L, file);
+    return 1;
 }

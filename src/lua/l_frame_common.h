@@ -29,20 +29,35 @@ void la_frame_panel_at(lua_State *L, int idx, size_t k, const char *fn, const ch
 void la_frame_layout(lua_State *L, const char *fn, double r, double c, size_t n, int *rows,
                      int *cols);
 
-/* lamina:range: each coloured panel's value range, the colour bar's ends
- * ("lo hi; lo hi ..."), so that a check can compare it with the fields the
- * other outputs write (tests/io/fields_agree.py). range(panels, k, lo, hi)
- * gives panel k's, or 0 when it has no colour bar. out is empty when none
- * has. */
-#define LA_FRAME_RANGE_LEN (LA_FRAME_MAX_PANELS * 56)
-void la_frame_range_text(char out[LA_FRAME_RANGE_LEN], const void *panels, size_t n,
-                         int (*range)(const void *panels, size_t k, double *lo, double *hi));
+/* The panels' value ranges for lamina:range: range(panels, k, lo, hi)
+ * gives panel k's colour bar's ends, or 0 when it has none. */
+typedef struct la_frame_ranges {
+    const void *panels;
+    size_t n;
+    int (*range)(const void *panels, size_t k, double *lo, double *hi);
+} la_frame_ranges;
 
-/* The image's text chunks into text (7 at the most): the provenance, then
- * lamina:layers, the title as PNG's "Title" when there is one (what a
- * frame says it shows can be read back), lamina:range when not empty.
- * Returns how many. */
-size_t la_frame_text(lr_text_chunk text[7], const la_prov *prov, const char *layers,
-                     const char *title, const char *range);
+/* What an image's text chunks point into: kept by the caller until the
+ * image is written. */
+#define LA_FRAME_RANGE_LEN (LA_FRAME_MAX_PANELS * 56)
+typedef struct la_frame_texts {
+    la_prov prov;
+    char range[LA_FRAME_RANGE_LEN];
+    lr_text_chunk text[7];
+} la_frame_texts;
+
+/* The image's text chunks into t->text: the provenance (la_provenance: it
+ * pushes a string that stays on the stack), then lamina:layers, the title
+ * as PNG's "Title" when there is one (what a frame says it shows can be
+ * read back), and lamina:range - each coloured panel's "lo hi; ...", so
+ * that a check can compare it with the fields the other outputs write
+ * (tests/io/fields_agree.py) - when a panel has a colour bar. Returns how
+ * many. */
+size_t la_frame_text(lua_State *L, la_frame_texts *t, const char *layers, const char *title,
+                     la_frame_ranges r);
+
+/* After the writer's rc (0: written) and err: the file noted and its name
+ * returned to the script (1 result), or a Lua error naming fn. */
+int la_frame_written(lua_State *L, const char *fn, const char *file, int rc, const char *err);
 
 #endif
