@@ -6,7 +6,7 @@
 #include "l_sim_run_common.h"
 
 /* The sim's clock: its time, step and dt, whichever its dimension. */
-static double clock_t(const la_sim *s) { return s->s3 ? s->s3->sim->t : s->sim->t; }
+static double clock_time(const la_sim *s) { return s->s3 ? s->s3->sim->t : s->sim->t; }
 static double clock_dt(const la_sim *s)
 {
     return s->s3 ? s->s3->sim->def.dt : s->sim->def.dt;
@@ -39,7 +39,7 @@ long la_sim_run_steps(lua_State *L, la_sim *s, double *t_end)
         return luaL_error(L, "sim:run: t_end must be a finite number (got %f)", *t_end);
     if (!s->running) la_checkpoint_restore(L, 1, s);   /* --restart: before counting steps */
     /* the clock is step x dt: the steps to the one nearest t_end */
-    double n = floor((*t_end - clock_t(s)) / clock_dt(s) + 0.5);
+    double n = floor((*t_end - clock_time(s)) / clock_dt(s) + 0.5);
     if (n > LA_STEP_CAP)
         return luaL_error(L, "sim:run: t_end = %f needs %f steps", *t_end, n);
     return n > 0 ? (long)n : 0;
