@@ -207,11 +207,17 @@ int la_new_metatable(lua_State *L, const char *name)
 void la_new_class(lua_State *L, const char *name, const luaL_Reg *meta,
                   const luaL_Reg *methods)
 {
+    la_new_class_in(L, name, meta, methods, "__index");
+}
+
+void la_new_class_in(lua_State *L, const char *name, const luaL_Reg *meta,
+                     const luaL_Reg *methods, const char *field)
+{
     la_new_metatable(L, name);
     luaL_setfuncs(L, meta, 0);
     lua_newtable(L);
     luaL_setfuncs(L, methods, 0);
-    lua_setfield(L, -2, "__index");
+    lua_setfield(L, -2, field);
 }
 
 int la_push_handle_name(lua_State *L, const char *name, int index)

@@ -6,16 +6,16 @@
 #include <string.h>
 
 #include "fields.h"
+#include "l_body_common.h"
 #include "l_internal.h"
 
 typedef struct la_body { int index; } la_body;
 
 /* The body and, through its uservalue, the simulation it lives in: a body
- * handle keeps its simulation alive. */
-static la_body *check_body(lua_State *L, int idx, lm_sim **sim)
+ * handle keeps its simulation alive (l_body_common.c). */
+static la_body check_body(lua_State *L, int idx, lm_sim **sim)
 {
-    la_body *b = luaL_checkudata(L, idx, LA_BODY);
-    lua_getiuservalue(L, idx, 1);
+    la_body b = {la_handle_check(L, idx, LA_BODY)};
     *sim = la_check_sim(L, -1)->sim;
     lua_pop(L, 1);
     return b;
@@ -65,10 +65,7 @@ typedef struct fill_ctx { lua_State *L; int ridx, vidx; } fill_ctx;
 static int region_fn(void *ctx, double x, double y)
 {
     fill_ctx *c = ctx;
-    lua_pushvalue(c->L, c->ridx);
-    lua_pushnumber(c->L, x);
-    lua_pushnumber(c->L, y);
-    if (lua_pcall(c->L, 2, 1, 0) != LUA_OK) return -1;
+    if (la_body_call(c->L, c->ridx, (const double[]){x, y}, 2, 1)) return -1;
     int in = lua_toboolean(c->L, -1);
     lua_pop(c->L, 1);
     return in;
@@ -99,10 +96,7 @@ static int velocity_fn(void *ctx, double x, double y, double *vx, double *vy)
 {
     fill_ctx *c = ctx;
     lua_State *L = c->L;
-    lua_pushvalue(L, c->vidx);
-    lua_pushnumber(L, x);
-    lua_pushnumber(L, y);
-    if (lua_pcall(L, 2, 2, 0) != LUA_OK) return -1;
+    if (la_body_call(L, c->vidx, (const double[]){x, y}, 2, 2)) return -1;
     int ok1, ok2;
     *vx = lua_tonumberx(L, -2, &ok1);
     *vy = lua_tonumberx(L, -1, &ok2);
@@ -122,18 +116,9 @@ int la_sim_body(lua_State *L)
                                        "fill", NULL};
     const char *fn = "sim:body";
     la_sim *s = la_check_sim(L, 1);
-    la_check_keys(L, 2, fn, keys);
-    la_opt_string(L, 2, fn, "name", NULL);   /* text or nothing (issue 31 item 7) */
-    if (s->running) return luaL_error(L, "%s: bodies cannot be added during a run", fn);
+    int midx = la_body_args(L, s, fn, keys);   /* the material, the region above it */
     lm_sim *sim = s->sim;
-
-    la_getfield(L, 2, "material");
-    if (lua_isnil(L, -1)) return luaL_error(L, "%s: 'material' is required", fn);
-    if (!luaL_testudata(L, -1, LA_MATERIAL)) return luaL_error(L, "%s: 'material' must be a material (lamina.elastic{...})", fn);
-    int midx = lua_gettop(L);
-
-    la_getfield(L, 2, "region");
-    int ridx = lua_gettop(L);
+    int ridx = midx + 1;
     lm_region *region = la_test_region(L, ridx);
     if (!region && !lua_isfunction(L, ridx))
         return luaL_error(L, "%s: 'region' must be lamina.disk/rect/polygon or a "
@@ -175,31 +160,23 @@ void la_push_body(lua_State *L, int sidx, int bi, int nameidx)
 {
     sidx = lua_absindex(L, sidx);
     if (nameidx) nameidx = lua_absindex(L, nameidx);
-    la_body *b = lua_newuserdatauv(L, sizeof *b, 2);
-    b->index = bi;
-    luaL_setmetatable(L, LA_BODY);
-    lua_pushvalue(L, sidx);
-    lua_setiuservalue(L, -2, 1);
-    if (nameidx) {
-        lua_pushvalue(L, nameidx);
-        lua_setiuservalue(L, -2, 2);
-        if (lua_type(L, nameidx) == LUA_TSTRING)   /* for the engine's messages */
-            lm_sim_set_body_name(la_check_sim(L, sidx)->sim, bi, lua_tostring(L, nameidx));
-    }
+    la_body_handle_push(L, LA_BODY, sidx, bi, nameidx);
+    if (nameidx && lua_type(L, nameidx) == LUA_TSTRING)   /* for the engine's messages */
+        lm_sim_set_body_name(la_check_sim(L, sidx)->sim, bi, lua_tostring(L, nameidx));
 }
 
 int la_check_body(lua_State *L, int idx, lm_sim **sim)
 {
-    return check_body(L, idx, sim)->index;
+    return check_body(L, idx, sim).index;
 }
 
 /* body:com() and body:velocity(): a pair of the engine's body sums. */
 static int body_pair(lua_State *L, void (*of)(const lm_sim *, int, double *, double *))
 {
     lm_sim *sim;
-    la_body *b = check_body(L, 1, &sim);
+    la_body b = check_body(L, 1, &sim);
     double x, y;
-    of(sim, b->index, &x, &y);
+    of(sim, b.index, &x, &y);
     lua_pushnumber(L, x);
     lua_pushnumber(L, y);
     return 2;
@@ -211,8 +188,8 @@ static int body_velocity(lua_State *L) { return body_pair(L, lm_body_velocity); 
 static int body_mass(lua_State *L)
 {
     lm_sim *sim;
-    la_body *b = check_body(L, 1, &sim);
-    lua_pushnumber(L, lm_body_mass(sim, b->index));
+    la_body b = check_body(L, 1, &sim);
+    lua_pushnumber(L, lm_body_mass(sim, b.index));
     return 1;
 }
 
@@ -220,18 +197,18 @@ static int body_mass(lua_State *L)
 static int body_energy(lua_State *L)
 {
     lm_sim *sim;
-    la_body *b = check_body(L, 1, &sim);
-    la_push_energy(L, lm_body_energy(sim, b->index));
+    la_body b = check_body(L, 1, &sim);
+    la_push_energy(L, lm_body_energy(sim, b.index));
     return 1;
 }
 
 static void center_arg(lua_State *L, int idx, double *cx, double *cy);
 
 /* A membrane's handle at idx, or an error naming the method. */
-static la_body *check_membrane(lua_State *L, int idx, lm_sim **sim, const char *method)
+static la_body check_membrane(lua_State *L, int idx, lm_sim **sim, const char *method)
 {
-    la_body *b = check_body(L, idx, sim);
-    if (!(*sim)->bodies[b->index].membrane)
+    la_body b = check_body(L, idx, sim);
+    if (!(*sim)->bodies[b.index].membrane)
         luaL_error(L, "body:%s(): the body is not a membrane", method);
     return b;
 }
@@ -246,12 +223,12 @@ static la_body *check_membrane(lua_State *L, int idx, lm_sim **sim, const char *
 static int body_pressure(lua_State *L)
 {
     lm_sim *sim, *sim2;
-    la_body *b = check_body(L, 1, &sim);
-    if (sim->mats[sim->bodies[b->index].mat]->kind != LM_GAS)
+    la_body b = check_body(L, 1, &sim);
+    if (sim->mats[sim->bodies[b.index].mat]->kind != LM_GAS)
         return luaL_error(L, "body:pressure(): the body is not a gas");
     if (lua_isnoneornil(L, 2)) {
         size_t nodes;
-        double pr = lm_gas_space_pressure(sim, b->index, &nodes);
+        double pr = lm_gas_space_pressure(sim, b.index, &nodes);
         if (isnan(pr)) return luaL_error(L, "gas:pressure(): out of memory");
         lua_pushnumber(L, pr);
         lua_pushinteger(L, (lua_Integer)nodes);
@@ -261,7 +238,7 @@ static int body_pressure(lua_State *L)
         if (strcmp(lua_tostring(L, 2), "particles") != 0)
             return luaL_error(L, "gas:pressure('%s'): unknown option (the one known is "
                               "\"particles\")", lua_tostring(L, 2));
-        lua_pushnumber(L, lm_body_mean_pressure(sim, b->index));
+        lua_pushnumber(L, lm_body_mean_pressure(sim, b.index));
         return 1;
     }
     int m = la_check_body(L, 2, &sim2);
@@ -272,7 +249,7 @@ static int body_pressure(lua_State *L)
     double a = lm_membrane_enclosed_volume(sim, m, cx, cy);
     if (!(a > 0))
         return luaL_error(L, "gas:pressure(membrane): the membrane encloses no area");
-    lua_pushnumber(L, lm_body_pressure_integral(sim, b->index) / a);
+    lua_pushnumber(L, lm_body_pressure_integral(sim, b.index) / a);
     return 1;
 }
 
@@ -280,8 +257,8 @@ static int body_pressure(lua_State *L)
 static int body_hoop_stress(lua_State *L)
 {
     lm_sim *sim;
-    la_body *b = check_membrane(L, 1, &sim, "hoop_stress");
-    lua_pushnumber(L, lm_body_mean_tangential_stress(sim, b->index));
+    la_body b = check_membrane(L, 1, &sim, "hoop_stress");
+    lua_pushnumber(L, lm_body_mean_tangential_stress(sim, b.index));
     return 1;
 }
 
@@ -303,10 +280,10 @@ static void center_arg(lua_State *L, int idx, double *cx, double *cy)
 static int body_radius_at(lua_State *L)
 {
     lm_sim *sim;
-    la_body *b = check_membrane(L, 1, &sim, "radius_at");
+    la_body b = check_membrane(L, 1, &sim, "radius_at");
     double cx, cy;
     center_arg(L, 3, &cx, &cy);
-    double r = lm_membrane_radius_at(sim, b->index, luaL_checknumber(L, 2), cx, cy);
+    double r = lm_membrane_radius_at(sim, b.index, luaL_checknumber(L, 2), cx, cy);
     if (r < 0) lua_pushnil(L);
     else lua_pushnumber(L, r);
     return 1;
@@ -317,10 +294,10 @@ static int body_radius_at(lua_State *L)
 static int body_enclosed_area(lua_State *L)
 {
     lm_sim *sim;
-    la_body *b = check_membrane(L, 1, &sim, "enclosed_area");
+    la_body b = check_membrane(L, 1, &sim, "enclosed_area");
     double cx, cy;
     center_arg(L, 2, &cx, &cy);
-    lua_pushnumber(L, lm_membrane_enclosed_area(sim, b->index, cx, cy));
+    lua_pushnumber(L, lm_membrane_enclosed_area(sim, b.index, cx, cy));
     return 1;
 }
 
@@ -331,15 +308,15 @@ static int body_enclosed_area(lua_State *L)
 static int body_escaped(lua_State *L)
 {
     lm_sim *sim, *sim2;
-    la_body *b = check_body(L, 1, &sim);
+    la_body b = check_body(L, 1, &sim);
     int g = la_check_body(L, 2, &sim2);
-    if (sim != sim2 || !sim->bodies[b->index].membrane ||
+    if (sim != sim2 || !sim->bodies[b.index].membrane ||
         sim->mats[sim->bodies[g].mat]->kind != LM_GAS)
         return luaL_error(L, "membrane:escaped(gas): needs a membrane and a gas of one sim");
     double cx, cy;
     center_arg(L, 3, &cx, &cy);
     lm_far far;
-    if (lm_gas_far_side(sim, g, b->index, cx, cy, 0, 0.25 * fmin(sim->grid.hx, sim->grid.hy),
+    if (lm_gas_far_side(sim, g, b.index, cx, cy, 0, 0.25 * fmin(sim->grid.hx, sim->grid.hy),
                         &far))
         return luaL_error(L, "membrane:escaped(gas): out of memory");
     lua_pushinteger(L, (lua_Integer)far.beyond);
@@ -373,8 +350,8 @@ static void push_field(lua_State *L, const lm_sim *sim, const lm_field *f, int c
 static int body_particles(lua_State *L)
 {
     lm_sim *sim;
-    la_body *b = check_body(L, 1, &sim);
-    const lm_body *bd = &sim->bodies[b->index];
+    la_body b = check_body(L, 1, &sim);
+    const lm_body *bd = &sim->bodies[b.index];
     size_t a = bd->first, n = bd->count;
     unsigned kind = 1u << sim->mats[bd->mat]->kind;
     lua_createtable(L, 0, 32);
@@ -388,54 +365,25 @@ static int body_particles(lua_State *L)
     return 1;
 }
 
-static int body_len(lua_State *L)
-{
-    lm_sim *sim;
-    la_body *b = check_body(L, 1, &sim);
-    lua_pushinteger(L, (lua_Integer)sim->bodies[b->index].count);
-    return 1;
-}
-
-static int body_tostring(lua_State *L)
-{
-    lm_sim *sim;
-    la_body *b = check_body(L, 1, &sim);
-    lua_getiuservalue(L, 1, 2);
-    const char *name = lua_isstring(L, -1) ? lua_tostring(L, -1) : "";
-    lua_pushfstring(L, "lamina.body %d%s%s (%d particles)", b->index + 1,
-                    *name ? " " : "", name, (int)sim->bodies[b->index].count);
-    return 1;
-}
-
 static int body_index(lua_State *L)
 {
     lm_sim *sim;
-    la_body *b = check_body(L, 1, &sim);
+    la_body b = check_body(L, 1, &sim);
     const char *k = luaL_checkstring(L, 2);
-    if (strcmp(k, "name") == 0) {
-        lua_getiuservalue(L, 1, 2);
-        return 1;
-    }
-    if (strcmp(k, "index") == 0) {
-        lua_pushinteger(L, b->index + 1);
-        return 1;
-    }
+    if (la_body_handle_field(L, b.index, k)) return 1;   /* name, index, a method */
     /* a membrane's force form, so a script can see which default it got */
-    if (strcmp(k, "force") == 0 && sim->bodies[b->index].membrane) {
-        lua_pushstring(L, sim->bodies[b->index].force == LM_MFORCE_SEGMENT ? "segment" : "point");
+    if (strcmp(k, "force") == 0 && sim->bodies[b.index].membrane) {
+        lua_pushstring(L, sim->bodies[b.index].force == LM_MFORCE_SEGMENT ? "segment" : "point");
         return 1;
     }
-    luaL_getmetafield(L, 1, "methods");
-    la_getfield(L, -1, k);
-    if (lua_isnil(L, -1)) return luaL_error(L, "body has no field or method '%s'", k);
-    return 1;
+    return luaL_error(L, "body has no field or method '%s'", k);
 }
 
 void la_open_body(lua_State *L)
 {
     static const luaL_Reg meta[] = {{"__index", body_index},
-                                    {"__len", body_len},
-                                    {"__tostring", body_tostring},
+                                    {"__len", la_body_len},
+                                    {"__tostring", la_body_tostring},
                                     {NULL, NULL}};
     static const luaL_Reg methods[] = {{"com", body_com},
                                        {"velocity", body_velocity},
@@ -450,9 +398,6 @@ void la_open_body(lua_State *L)
                                        {"pin", la_body_pin},
                                        {"phi", la_body_phi},
                                        {NULL, NULL}};
-    la_new_metatable(L, LA_BODY);
-    luaL_setfuncs(L, meta, 0);
-    luaL_newlib(L, methods);
-    lua_setfield(L, -2, "methods");
+    la_new_class_in(L, LA_BODY, meta, methods, "methods");   /* body_index looks there */
     lua_pop(L, 1);
 }

@@ -7,16 +7,16 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "l_body_common.h"
 #include "l_mesh3.h"
 #include "l_pressure3.h"
 #include "l_sim3.h"
 
 typedef struct la_body3 { int index; } la_body3;
 
-static la_body3 *check_body3(lua_State *L, int idx, la_sim3 **s3)
+static la_body3 check_body3(lua_State *L, int idx, la_sim3 **s3)
 {
-    la_body3 *b = luaL_checkudata(L, idx, LA_BODY3);
-    lua_getiuservalue(L, idx, 1);
+    la_body3 b = {la_handle_check(L, idx, LA_BODY3)};   /* l_handle.c */
     *s3 = la_check_sim3(L, -1, "body");
     lua_pop(L, 1);
     return b;
@@ -78,9 +78,7 @@ static int inside3(void *ctx, const double x[3])
         if (in < 0) lua_pushliteral(L, "sim:body: out of memory in the mesh's inside test");
         return in;
     }
-    lua_pushvalue(L, c->ridx);
-    for (int a = 0; a < 3; a++) lua_pushnumber(L, x[a]);
-    if (lua_pcall(L, 3, 1, 0) != LUA_OK) return -1;
+    if (la_body_call(L, c->ridx, x, 3, 1)) return -1;
     int in = lua_toboolean(L, -1);
     lua_pop(L, 1);
     return in;
@@ -90,9 +88,7 @@ static int velocity3(void *ctx, const double x[3], double v[3])
 {
     fill3 *c = ctx;
     lua_State *L = c->L;
-    lua_pushvalue(L, c->vidx);
-    for (int a = 0; a < 3; a++) lua_pushnumber(L, x[a]);
-    if (lua_pcall(L, 3, 3, 0) != LUA_OK) return -1;
+    if (la_body_call(L, c->vidx, x, 3, 3)) return -1;
     for (int a = 0; a < 3; a++) {
         int ok;
         v[a] = lua_tonumberx(L, a - 3, &ok);
@@ -183,19 +179,9 @@ int la_sim3_body(lua_State *L)
     if (la_has(L, 2, "fill"))
         luaL_error(L, "%s: 'fill' is 2D only (3D fills the sub-cell centres, the papers' rule)",
                    fn);
-    la_check_keys(L, 2, fn, keys);
-    la_opt_string(L, 2, fn, "name", NULL);
-    if (s->running) return luaL_error(L, "%s: bodies cannot be added during a run", fn);
+    int midx = la_body_args(L, s, fn, keys);   /* the material, the region above it */
     lm3_sim *sim = s3->sim;
-
-    if (la_getfield(L, 2, "material") == LUA_TNIL)
-        return luaL_error(L, "%s: 'material' is required", fn);
-    if (!luaL_testudata(L, -1, LA_MATERIAL))
-        return luaL_error(L, "%s: 'material' must be a material (lamina.elastic{...})", fn);
-    int midx = lua_gettop(L);
-
-    la_getfield(L, 2, "region");
-    int ridx = lua_gettop(L);
+    int ridx = midx + 1;
     fill3 fc = {L, ridx, 0, la_test_region3(L, ridx), NULL};
     la_mesh3 *mesh = la_test_mesh3(L, ridx);
     if (mesh) fc.mesh = la_mesh3_region(L, mesh, fn);   /* refused when open */
@@ -259,13 +245,8 @@ int la_sim3_body(lua_State *L)
     rec->mat = d.mat;
     int bi = s3->nbodies++;
 
-    la_body3 *b = lua_newuserdatauv(L, sizeof *b, 2);
-    b->index = bi;
-    luaL_setmetatable(L, LA_BODY3);
-    lua_pushvalue(L, 1);
-    lua_setiuservalue(L, -2, 1);
     la_getfield(L, 2, "name");
-    lua_setiuservalue(L, -2, 2);
+    la_body_handle_push(L, LA_BODY3, 1, bi, lua_gettop(L));
     return 1;
 }
 
@@ -273,14 +254,14 @@ int la_sim3_body(lua_State *L)
 
 static const la_body3rec *rec_of(lua_State *L, la_sim3 **s3)
 {
-    la_body3 *b = check_body3(L, 1, s3);
-    return &(*s3)->bodies[b->index];
+    la_body3 b = check_body3(L, 1, s3);
+    return &(*s3)->bodies[b.index];
 }
 
 const la_body3rec *la_check_body3(lua_State *L, int idx, la_sim3 **s3)
 {
-    la_body3 *b = check_body3(L, idx, s3);
-    return &(*s3)->bodies[b->index];
+    la_body3 b = check_body3(L, idx, s3);
+    return &(*s3)->bodies[b.index];
 }
 
 static int body3_triple(lua_State *L, int which)
@@ -369,39 +350,12 @@ static int body3_pin(lua_State *L)
     return la_body3_pin(L, s3, r->first, r->n);
 }
 
-static int body3_len(lua_State *L)
-{
-    la_sim3 *s3;
-    lua_pushinteger(L, (lua_Integer)rec_of(L, &s3)->n);
-    return 1;
-}
-
-static int body3_tostring(lua_State *L)
-{
-    la_sim3 *s3;
-    la_body3 *b = check_body3(L, 1, &s3);
-    lua_getiuservalue(L, 1, 2);
-    const char *name = lua_isstring(L, -1) ? lua_tostring(L, -1) : "";
-    lua_pushfstring(L, "lamina.body %d%s%s (3D, %d particles)", b->index + 1, *name ? " " : "",
-                    name, (int)s3->bodies[b->index].n);
-    return 1;
-}
-
 static int body3_index(lua_State *L)
 {
     la_sim3 *s3;
-    la_body3 *b = check_body3(L, 1, &s3);
+    la_body3 b = check_body3(L, 1, &s3);
     const char *k = luaL_checkstring(L, 2);
-    if (strcmp(k, "name") == 0) {
-        lua_getiuservalue(L, 1, 2);
-        return 1;
-    }
-    if (strcmp(k, "index") == 0) {
-        lua_pushinteger(L, b->index + 1);
-        return 1;
-    }
-    luaL_getmetafield(L, 1, "methods");
-    if (la_getfield(L, -1, k) != LUA_TNIL) return 1;
+    if (la_body_handle_field(L, b.index, k)) return 1;   /* name, index, a method */
     /* the 2D handle's methods with no 3D form yet, named */
     luaL_getmetatable(L, LA_BODY);
     if (lua_istable(L, -1) && la_getfield(L, -1, "methods") == LUA_TTABLE &&
@@ -413,8 +367,8 @@ static int body3_index(lua_State *L)
 void la_open_body3(lua_State *L)
 {
     static const luaL_Reg meta[] = {{"__index", body3_index},
-                                    {"__len", body3_len},
-                                    {"__tostring", body3_tostring},
+                                    {"__len", la_body_len},
+                                    {"__tostring", la_body_tostring},
                                     {NULL, NULL}};
     static const luaL_Reg methods[] = {{"com", body3_com},
                                        {"velocity", body3_velocity},
@@ -424,9 +378,6 @@ void la_open_body3(lua_State *L)
                                        {"pin", body3_pin},
                                        {"pressure", la_gas3_pressure},   /* l_membrane3_gas.c */
                                        {NULL, NULL}};
-    la_new_metatable(L, LA_BODY3);
-    luaL_setfuncs(L, meta, 0);
-    luaL_newlib(L, methods);
-    lua_setfield(L, -2, "methods");
+    la_new_class_in(L, LA_BODY3, meta, methods, "methods");   /* body3_index looks there */
     lua_pop(L, 1);
 }

@@ -9,11 +9,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "l_frame_common.h"
 #include "l_frame_panel.h"
 #include "l_internal.h"
 #include "render.h"
-
-#define MAX_PANELS 64
 
 /* backend = "cairo" | "osmesa" | "egl" | "gl" (EGL, else OSMesa); else
  * `lamina run --backend`; else cairo. SVG and PDF are cairo's: a run-wide
@@ -48,17 +47,11 @@ static size_t panels(lua_State *L, la_frame_ctx *ctx, lr_panel **out)
         return 1;
     }
     int idx = lua_gettop(L);
-    size_t n = lua_istable(L, idx) ? lua_rawlen(L, idx) : 0;
-    if (n < 1 || n > MAX_PANELS)
-        luaL_error(L, "%s: 'panels' must be a list of 1 to %d panel tables", ctx->fn,
-                   MAX_PANELS);
+    size_t n = la_frame_panel_count(L, idx, ctx->fn);   /* l_frame_common.c */
     *out = la_frame_scratch(L, ctx, n * sizeof **out);
     for (size_t i = 0; i < n; i++) {
         char name[48];
-        snprintf(name, sizeof name, "%s: panels[%zu]", ctx->fn, i + 1);
-        if (lua_rawgeti(L, idx, (lua_Integer)i + 1) != LUA_TTABLE)
-            luaL_error(L, "%s must be a table", name);
-        la_check_keys(L, -1, name, panel_keys);
+        la_frame_panel_at(L, idx, i, ctx->fn, panel_keys, name);
         la_frame_panel(L, ctx, 2, lua_gettop(L), 1, &(*out)[i]);
         lua_pop(L, 1);
     }
@@ -96,14 +89,7 @@ static void layout(lua_State *L, const char *fn, size_t n, lr_figure *f)
             c = lua_tonumber(L, -1);
             lua_pop(L, 2);
         }
-        if (!(r >= 1 && c >= 1 && r <= MAX_PANELS && c <= MAX_PANELS) ||
-            r != floor(r) || c != floor(c))
-            luaL_error(L, "%s: 'layout' must be {rows, cols}, whole numbers >= 1", fn);
-        if (r * c < (double)n)
-            luaL_error(L, "%s: 'layout' {%d, %d} has fewer cells than the %d panels",
-                       fn, (int)r, (int)c, (int)n);
-        f->rows = (int)r;
-        f->cols = (int)c;
+        la_frame_layout(L, fn, r, c, n, &f->rows, &f->cols);
     }
     lua_pop(L, 1);
 }
@@ -126,6 +112,15 @@ const char *la_frame_label(lua_State *L, int idx, const char *fn, double t, long
     return NULL;
 }
 
+/* A panel's colour bar's ends, for lamina:range (0: it has none). */
+static int panel_range(const void *panels, size_t k, double *lo, double *hi)
+{
+    const lr_panel *p = (const lr_panel *)panels + k;
+    if (!p->colourbar) return 0;
+    lr_panel_value_range(p, lo, hi);
+    return 1;
+}
+
 int la_sim_frame(lua_State *L)
 {
     static const char *const keys[] = { "file", "width", "height", "title", "label",
@@ -138,15 +133,9 @@ int la_sim_frame(lua_State *L)
     const lm_sim *sim = s->sim;
     const char *file = la_opt_output_path(L, 2, fn, "file");
     if (!file) return luaL_error(L, "%s: 'file' is required", fn);
-    double w = la_opt_number(L, 2, fn, "width", 800);
-    double h = la_opt_number(L, 2, fn, "height", 800);
-    if (!(w >= 16 && w <= 16384) || !(h >= 16 && h <= 16384) || w != (int)w || h != (int)h)
-        return luaL_error(L, "%s: width and height must be whole numbers in [16, 16384] "
-                          "(got %f x %f)", fn, w, h);
     lr_figure f;
     memset(&f, 0, sizeof f);
-    f.width = (int)w;
-    f.height = (int)h;
+    la_frame_size(L, 2, fn, &f.width, &f.height);
     f.backend = la_frame_backend(L, 2, fn, file);
     la_frame_ctx ctx = { fn, 0, 0, 0, 0, 0, 0, scale_opt(L, fn) };
     lua_newtable(L);
@@ -165,45 +154,16 @@ int la_sim_frame(lua_State *L)
     f.label = la_frame_label(L, 2, fn, sim->t, sim->step);
     /* label and title strings stay on the stack until we return */
 
-    la_prov prov;
-    la_provenance(L, &prov);
     /* lamina:layers: what the frame shows of its membranes, so that a
      * check can read it from the file (tests/visual/check_membrane_frames.py) */
     char layers[96];
     snprintf(layers, sizeof layers, "membranes=%d with_phi=%d phi=%d normals=%d", ctx.membranes,
              ctx.with_phi, ctx.phi, ctx.normals);
-    /* lamina:range: each coloured panel's value range, the colour bar's
-     * ends, so that a check can compare it with the fields the other
-     * outputs write (tests/io/fields_agree.py) */
-    char range[MAX_PANELS * 56];
-    size_t used = 0;
-    range[0] = 0;
-    for (size_t k = 0; k < f.npanels; k++) {
-        if (!p[k].colourbar || used >= sizeof range - 1) continue;
-        double lo, hi;
-        lr_panel_value_range(&p[k], &lo, &hi);
-        int len = snprintf(range + used, sizeof range - used, "%s%.17g %.17g", used ? "; " : "",
-                           lo, hi);
-        used = len > 0 ? used + (size_t)len : used;
-    }
-    lr_text_chunk text[7];
-    memcpy(text, prov.text, sizeof prov.text);
-    text[4].key = "lamina:layers";
-    text[4].value = layers;
-    /* the title as text too (PNG's own "Title" keyword): what a frame
-     * says it shows - "displacements x k" - can be read back by a check */
-    text[5].key = "Title";
-    text[5].value = f.title;
-    f.text = text;
-    f.ntext = f.title && *f.title ? 6 : 5;
-    if (range[0]) {
-        text[f.ntext].key = "lamina:range";
-        text[f.ntext++].value = range;
-    }
+    /* the title as text too: what a frame says it shows - "displacements
+     * x k" - can be read back by a check */
+    la_frame_texts tx;
+    f.ntext = la_frame_text(L, &tx, layers, f.title, (la_frame_ranges){p, f.npanels, panel_range});
+    f.text = tx.text;
     char err[512];
-    if (lr_figure_write(&f, file, err, sizeof err))
-        return luaL_error(L, "%s: %s", fn, err);
-    la_note_image(L, file);
-    lua_pushstring(L, file);
-    return 1;
+    return la_frame_written(L, fn, file, lr_figure_write(&f, file, err, sizeof err), err);
 }

@@ -20,12 +20,12 @@
 
 #include "frame3d.h"
 #include "l_frame3d.h"
+#include "l_frame_common.h"
 #include "l_internal.h"
 #include "l_pressure3.h"
 #include "mpm3_membrane.h"
 #include "render.h"
 
-#define MAX_PANELS 64
 #define MAX_SLICES 8
 
 #define PANEL3_KEYS "colour", "colourmap", "range", "colourbar", "azimuth", "elevation", \
@@ -616,6 +616,15 @@ static void panel(lua_State *L, ctx3 *c, int pidx, const char *where, lr_panel3d
     p->ntris = nphi;
 }
 
+/* A panel's colour bar's ends, for lamina:range (0: it has none). */
+static int panel3_range(const void *panels, size_t k, double *lo, double *hi)
+{
+    const lr_panel3d *p = (const lr_panel3d *)panels + k;
+    if (!p->colourbar) return 0;
+    lr_panel3d_range(p, lo, hi);
+    return 1;
+}
+
 int l_frame3d(lua_State *L, const lm3_sim *sim, int opts_index)
 {
     static const char *const keys[] = {"file", "width", "height", "title", "label", "backend",
@@ -630,15 +639,9 @@ int l_frame3d(lua_State *L, const lm3_sim *sim, int opts_index)
         return luaL_error(L, "%s: 'file' is required", fn);
     if (lr_format_of(file) != LR_FORMAT_PNG)
         return luaL_error(L, "%s: file '%s': a 3D frame is written as PNG", fn, file);
-    double w = la_opt_number(L, fidx, fn, "width", 800);
-    double h = la_opt_number(L, fidx, fn, "height", 800);
-    if (!(w >= 16 && w <= 16384) || !(h >= 16 && h <= 16384) || w != (int)w || h != (int)h)
-        return luaL_error(L, "%s: width and height must be whole numbers in [16, 16384] "
-                          "(got %f x %f)", fn, w, h);
     lr_figure3d f;
     memset(&f, 0, sizeof f);
-    f.width = (int)w;
-    f.height = (int)h;
+    la_frame_size(L, fidx, fn, &f.width, &f.height);   /* l_frame_common.c */
     f.backend = la_frame_backend(L, fidx, fn, NULL);   /* PNG only (l_frame.c) */
     ctx3 c = {fn, sim, 0, 0, fidx, 0, 0, 0, 0, 0, 0, 0};
     lua_newtable(L);
@@ -652,17 +655,11 @@ int l_frame3d(lua_State *L, const lm3_sim *sim, int opts_index)
         f.npanels = 1;
     } else {
         int idx = lua_gettop(L);
-        size_t n = lua_istable(L, idx) ? lua_rawlen(L, idx) : 0;
-        if (n < 1 || n > MAX_PANELS)
-            return luaL_error(L, "%s: 'panels' must be a list of 1 to %d panel tables", fn,
-                              MAX_PANELS);
+        size_t n = la_frame_panel_count(L, idx, fn);
         p = scratch(L, &c, n * sizeof *p);
         for (size_t k = 0; k < n; k++) {
             char name[48];
-            snprintf(name, sizeof name, "%s: panels[%zu]", fn, k + 1);
-            if (lua_rawgeti(L, idx, (lua_Integer)k + 1) != LUA_TTABLE)
-                return luaL_error(L, "%s must be a table", name);
-            la_check_keys(L, -1, name, panel_keys);
+            la_frame_panel_at(L, idx, k, fn, panel_keys, name);
             panel(L, &c, lua_gettop(L), name, &p[k]);
             p[k].title = la_opt_string(L, -1, name, "title", NULL);
             /* the title string stays alive in the panel table, held by
@@ -676,22 +673,13 @@ int l_frame3d(lua_State *L, const lm3_sim *sim, int opts_index)
     if (la_getfield(L, fidx, "layout") != LUA_TNIL) {
         double rc[2];
         numbers(L, fn, "layout", 2, rc);
-        if (!(rc[0] >= 1 && rc[1] >= 1 && rc[0] <= MAX_PANELS && rc[1] <= MAX_PANELS) ||
-            rc[0] != floor(rc[0]) || rc[1] != floor(rc[1]))
-            return luaL_error(L, "%s: 'layout' must be {rows, cols}, whole numbers >= 1", fn);
-        if (rc[0] * rc[1] < (double)f.npanels)
-            return luaL_error(L, "%s: 'layout' {%d, %d} has fewer cells than the %d panels",
-                              fn, (int)rc[0], (int)rc[1], (int)f.npanels);
-        f.rows = (int)rc[0];
-        f.cols = (int)rc[1];
+        la_frame_layout(L, fn, rc[0], rc[1], f.npanels, &f.rows, &f.cols);
     }
     lua_pop(L, 1);
     f.title = la_opt_string(L, fidx, fn, "title", NULL);
     f.label = la_frame_label(L, fidx, fn, sim->t, sim->nstep);
     /* label and title strings stay on the stack until we return */
 
-    la_prov prov;
-    la_provenance(L, &prov);
     char layers[192];
     int used_l = snprintf(layers, sizeof layers, "dim=3 particles=%zu slices=%zu isosurfaces=%zu",
                           c.particles, c.slices, c.isos);
@@ -701,36 +689,10 @@ int l_frame3d(lua_State *L, const lm3_sim *sim, int opts_index)
         snprintf(layers + used_l, sizeof layers - (size_t)used_l,
                  " membrane_points=%zu normals=%zu membranes=%zu phi=%zu", c.mpoints,
                  c.marrows, c.mmem, c.mphi);
-    char range[MAX_PANELS * 56];
-    size_t used = 0;
-    range[0] = 0;
-    for (size_t k = 0; k < f.npanels; k++) {
-        if (!p[k].colourbar || used >= sizeof range - 1)
-            continue;
-        double lo, hi;
-        lr_panel3d_range(&p[k], &lo, &hi);
-        int len = snprintf(range + used, sizeof range - used, "%s%.17g %.17g",
-                           used ? "; " : "", lo, hi);
-        used = len > 0 ? used + (size_t)len : used;
-    }
-    lr_text_chunk text[7];
-    memcpy(text, prov.text, sizeof prov.text);
-    text[4].key = "lamina:layers";
-    text[4].value = layers;
-    f.ntext = 5;
-    if (f.title && *f.title) {
-        text[f.ntext].key = "Title";
-        text[f.ntext++].value = f.title;
-    }
-    if (range[0]) {
-        text[f.ntext].key = "lamina:range";
-        text[f.ntext++].value = range;
-    }
-    f.text = text;
+    la_frame_texts tx;   /* the provenance, layers, title, lamina:range */
+    f.ntext = la_frame_text(L, &tx, layers, f.title,
+                            (la_frame_ranges){p, f.npanels, panel3_range});
+    f.text = tx.text;
     char err[512];
-    if (lr_figure3d_write(&f, file, err, sizeof err) != 0)
-        return luaL_error(L, "%s: %s", fn, err);
-    la_note_image(L, file);
-    lua_pushstring(L, file);
-    return 1;
+    return la_frame_written(L, fn, file, lr_figure3d_write(&f, file, err, sizeof err), err);
 }

@@ -55,6 +55,16 @@ void la_new_class(lua_State *L, const char *name, const luaL_Reg *meta,
 /* A handle's __tostring: "CLASS N", N its 1-based index in the sim (pins,
  * links). */
 int la_push_handle_name(lua_State *L, const char *name, int index);
+/* la_new_class with the method table at field: "methods" for a class
+ * whose own __index function looks in it (the body handles). */
+void la_new_class_in(lua_State *L, const char *name, const luaL_Reg *meta,
+                     const luaL_Reg *methods, const char *field);
+/* l_handle.c: a handle into a sim (a body, a pin): a userdata of class
+ * meta holding the engine's index, with the sim at sidx as uservalue 1
+ * (a handle keeps its sim alive) and nuv uservalues in all. */
+void la_handle_push(lua_State *L, const char *meta, int sidx, int index, int nuv);
+/* The index held by the handle at idx; its sim pushed. */
+int la_handle_check(lua_State *L, int idx, const char *meta);
 
 /* l_provenance.c: the tEXt chunks of every image (Software, lamina:script,
  * lamina:script-hash, lamina:set); la_provenance pushes one string that must

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "l_internal.h"
+#include "l_region_common.h"
 
 lm_region *la_test_region(lua_State *L, int idx)
 {
@@ -13,10 +14,8 @@ lm_region *la_test_region(lua_State *L, int idx)
 
 static lm_region *push_region(lua_State *L, lm_region_kind kind)
 {
-    lm_region *r = lua_newuserdatauv(L, sizeof *r, 0);
-    memset(r, 0, sizeof *r);
+    lm_region *r = la_region_new(L, sizeof *r, LA_REGION);
     r->kind = kind;
-    luaL_setmetatable(L, LA_REGION);
     return r;
 }
 

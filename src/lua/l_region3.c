@@ -5,6 +5,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "l_region_common.h"
 #include "l_sim3.h"
 
 lm3_region *la_test_region3(lua_State *L, int idx)
@@ -14,10 +15,8 @@ lm3_region *la_test_region3(lua_State *L, int idx)
 
 static lm3_region *push_region3(lua_State *L, lm3_region_kind kind)
 {
-    lm3_region *r = lua_newuserdatauv(L, sizeof *r, 0);
-    memset(r, 0, sizeof *r);
+    lm3_region *r = la_region_new(L, sizeof *r, LA_REGION3);
     r->kind = kind;
-    luaL_setmetatable(L, LA_REGION3);
     return r;
 }
 

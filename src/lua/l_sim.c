@@ -11,6 +11,7 @@
 
 #include "l_internal.h"
 #include "l_sim3.h"
+#include "l_sim_run_common.h"
 
 static const char *const schemes[] = {"musl", "usl", NULL};
 static const char *const masses[] = {"lumped", "corrected", "membrane", NULL};
@@ -300,22 +301,14 @@ void la_sim_add_pin_function(lua_State *L, int sidx, int pin, int fidx)
  * every interval of simulated time after. */
 static int sim_every(lua_State *L)
 {
-    la_sim *s = la_check_sim(L, 1);
-    double dt = luaL_checknumber(L, 2);
-    la_check_interval(L, "sim:every", "interval", dt, s->sim->t);
-    la_sim_add_event(L, 1, s->sim->t, dt, 3);
-    return 0;
+    return la_sim_every_from(L, la_check_sim(L, 1)->sim->t);   /* l_sim_run_common.c */
 }
 
 /* sim:at(t, fn): fn(sim) once, at the first step boundary at or after t. */
 static int sim_at(lua_State *L)
 {
     la_check_sim(L, 1);
-    double t = luaL_checknumber(L, 2);
-    if (!isfinite(t))   /* NaN compares false: it never fired (issue 31) */
-        return luaL_error(L, "sim:at: the time must be a finite number (got %f)", t);
-    la_sim_add_event(L, 1, t, 0, 3);
-    return 0;
+    return la_sim_at_time(L);
 }
 
 double la_next_multiple(double t0, double interval, double *k, double now)
@@ -443,7 +436,7 @@ static void energy_report(lua_State *L, la_sim *s, const lm_energy_watch *w)
  * applies at once, so the run still ends on t_end instead of overshooting. */
 /* The most steps one sim:run may take (checked at the call and again when
  * a callback changes dt). */
-#define STEP_CAP 1e12
+#define STEP_CAP LA_STEP_CAP
 
 static long steps_to(const la_sim *s, double t_end)
 {
@@ -552,16 +545,8 @@ static int run_steps(lua_State *L)
  * (l_run_guard.c): the sim is not left running, the records are written. */
 static void advance(lua_State *L, la_sim *s, long nsteps, double t_end)
 {
-    /* not the guard's: the run in progress goes on (a pcall may catch this) */
-    if (s->running) luaL_error(L, "sim:run/sim:step called from inside a callback");
-    la_run_guard g;
-    la_run_guard_begin(L, &g, 1, s);
-    run_steps_arg a = {&g, nsteps, t_end};
-    lua_pushcfunction(L, run_steps);
-    lua_pushvalue(L, 1);
-    lua_pushlightuserdata(L, &a);
-    int failed = lua_pcall(L, 2, 0, 0) != LUA_OK;
-    la_run_guard_end(L, &g, failed);
+    run_steps_arg a = {NULL, nsteps, t_end};
+    la_sim_run_protected(L, s, run_steps, &a, &a.guard);   /* l_sim_run_common.c */
 }
 
 void la_sim_advance(lua_State *L, la_sim *s, long nsteps)
@@ -606,16 +591,10 @@ void la_warn(lua_State *L, const char *line)
 
 static int sim_run(lua_State *L)
 {
-    static const char *const keys[] = {"t_end", NULL};
     la_sim *s = la_check_sim(L, 1);
-    la_check_keys(L, 2, "sim:run", keys);
-    double t_end = la_number(L, 2, "sim:run", "t_end");
-    if (!isfinite(t_end))   /* NaN compared false everywhere: 0 steps, exit 0 */
-        return luaL_error(L, "sim:run: t_end must be a finite number (got %f)", t_end);
-    if (!s->running) la_checkpoint_restore(L, 1, s);   /* --restart: before counting steps */
-    double n = floor((t_end - s->sim->t) / s->sim->def.dt + 0.5);
-    if (n > STEP_CAP) return luaL_error(L, "sim:run: t_end = %f needs %f steps", t_end, n);
-    advance(L, s, n > 0 ? (long)n : 0, t_end);
+    double t_end;
+    long n = la_sim_run_steps(L, s, &t_end);
+    advance(L, s, n, t_end);
     warn_bunched(L, s);
     return 0;
 }
@@ -623,21 +602,7 @@ static int sim_run(lua_State *L)
 static int sim_step(lua_State *L)
 {
     la_sim *s = la_check_sim(L, 1);
-    /* read as a number: luaL_optinteger said "bad argument #1 to 'step'
-     * (number has no integer representation)" of NaN (issue 31 item 7) */
-    double nd = lua_isnoneornil(L, 2) ? 1 : luaL_checknumber(L, 2);
-    if (!(nd >= 0 && nd <= STEP_CAP) || nd != floor(nd))
-        return luaL_error(L, "sim:step: n must be a whole number from 0 to 1e12 (got %f)", nd);
-    lua_Integer n = (lua_Integer)nd;
-    if (!s->running) {
-        /* --restart: the call's last step is the same; the steps the
-         * checkpoint already took are not taken again */
-        long before = s->sim->step;
-        la_checkpoint_restore(L, 1, s);
-        n -= s->sim->step - before;
-        if (n < 0) n = 0;
-    }
-    advance(L, s, (long)n, NAN);
+    advance(L, s, la_sim_step_count(L, s), NAN);
     warn_bunched(L, s);
     return 0;
 }

@@ -10,25 +10,19 @@
 #include <string.h>
 
 #include "l_sim3.h"
+#include "l_sim_run_common.h"
 
-#define STEP_CAP 1e12   /* as sim:run in 2D */
-
+/* sim:every, sim:at, and the arguments of sim:run and sim:step are read
+ * as in 2D (l_sim_run_common.c) */
 int la_sim3_every(lua_State *L)
 {
-    la_sim3 *s3 = la_check_sim3(L, 1, "sim:every");
-    double dt = luaL_checknumber(L, 2);
-    la_check_interval(L, "sim:every", "interval", dt, s3->sim->t);
-    la_sim_add_event(L, 1, s3->sim->t, dt, 3);
-    return 0;
+    return la_sim_every_from(L, la_check_sim3(L, 1, "sim:every")->sim->t);
 }
 
 int la_sim3_at(lua_State *L)
 {
     la_check_sim3(L, 1, "sim:at");
-    double t = luaL_checknumber(L, 2);
-    if (!isfinite(t)) return luaL_error(L, "sim:at: the time must be a finite number (got %f)", t);
-    la_sim_add_event(L, 1, t, 0, 3);
-    return 0;
+    return la_sim_at_time(L);
 }
 
 /* What the engine's failure most likely means, after its own message (which
@@ -112,37 +106,17 @@ static int run_steps(lua_State *L)
 
 static void advance(lua_State *L, la_sim *s, long nsteps)
 {
-    if (s->running) luaL_error(L, "sim:run/sim:step called from inside a callback");
-    la_run_guard g;
-    la_run_guard_begin(L, &g, 1, s);
-    /* the clock live changes are logged at (l_runlog.c) */
-    lamina_run *run = la_run(L);
-    const lm3_sim *outer3 = run ? run->active3 : NULL;
-    if (run) run->active3 = s->s3->sim;
-    run_arg a = {&g, nsteps};
-    lua_pushcfunction(L, run_steps);
-    lua_pushvalue(L, 1);
-    lua_pushlightuserdata(L, &a);
-    int failed = lua_pcall(L, 2, 0, 0) != LUA_OK;
-    if (run) run->active3 = outer3;
-    la_run_guard_end(L, &g, failed);
+    run_arg a = {NULL, nsteps};
+    /* the guard, and the clock live changes are logged at (l_runlog.c) */
+    la_sim_run_protected(L, s, run_steps, &a, &a.guard);
 }
 
 int la_sim3_run(lua_State *L)
 {
-    static const char *const keys[] = {"t_end", NULL};
-    la_sim3 *s3 = la_check_sim3(L, 1, "sim:run");
+    la_check_sim3(L, 1, "sim:run");
     la_sim *s = la_check_sim_any(L, 1);
-    la_check_keys(L, 2, "sim:run", keys);
-    double t_end = la_number(L, 2, "sim:run", "t_end");
-    if (!isfinite(t_end))
-        return luaL_error(L, "sim:run: t_end must be a finite number (got %f)", t_end);
-    if (!s->running) la_checkpoint_restore(L, 1, s);   /* --restart: before counting steps */
-    /* the clock is nstep x dt (sim3_step.c): the steps to the one nearest
-     * t_end, as in 2D */
-    double n = floor((t_end - s3->sim->t) / s3->sim->def.dt + 0.5);
-    if (n > STEP_CAP) return luaL_error(L, "sim:run: t_end = %f needs %f steps", t_end, n);
-    advance(L, s, n > 0 ? (long)n : 0);
+    double t_end;   /* the clock is nstep x dt (sim3_step.c) */
+    advance(L, s, la_sim_run_steps(L, s, &t_end));
     return 0;
 }
 
@@ -150,18 +124,6 @@ int la_sim3_step(lua_State *L)
 {
     la_check_sim3(L, 1, "sim:step");
     la_sim *s = la_check_sim_any(L, 1);
-    double nd = lua_isnoneornil(L, 2) ? 1 : luaL_checknumber(L, 2);
-    if (!(nd >= 0 && nd <= STEP_CAP) || nd != floor(nd))
-        return luaL_error(L, "sim:step: n must be a whole number from 0 to 1e12 (got %f)", nd);
-    long n = (long)nd;
-    if (!s->running) {
-        /* --restart: the call's last step is the same; the steps the
-         * checkpoint already took are not taken again (as in 2D) */
-        long before = s->s3->sim->nstep;
-        la_checkpoint_restore(L, 1, s);
-        n -= s->s3->sim->nstep - before;
-        if (n < 0) n = 0;
-    }
-    advance(L, s, n);
+    advance(L, s, la_sim_step_count(L, s));
     return 0;
 }

@@ -557,13 +557,17 @@ int lm3_mesh_closed(const char *name, const lm3_mesh *m, char *err, size_t errle
     return ok;
 }
 
+/* Corner k (0, 1, 2) of triangle t: its vertex's coordinates. */
+static const double *corner(const lm3_mesh *m, size_t t, int k)
+{
+    return m->xyz + 3 * (size_t)m->tri[3 * t + k];
+}
+
 double lm3_mesh_volume6(const lm3_mesh *m)
 {
     double v = 0;
     for (size_t t = 0; t < m->nt; t++) {
-        const double *p = m->xyz + 3 * (size_t)m->tri[3 * t];
-        const double *q = m->xyz + 3 * (size_t)m->tri[3 * t + 1];
-        const double *r = m->xyz + 3 * (size_t)m->tri[3 * t + 2];
+        const double *p = corner(m, t, 0), *q = corner(m, t, 1), *r = corner(m, t, 2);
         v += p[0] * (q[1] * r[2] - q[2] * r[1]) - p[1] * (q[0] * r[2] - q[2] * r[0]) +
              p[2] * (q[0] * r[1] - q[1] * r[0]);
     }
@@ -574,9 +578,7 @@ double lm3_mesh_area(const lm3_mesh *m)
 {
     double A = 0;
     for (size_t t = 0; t < m->nt; t++) {
-        const double *p = m->xyz + 3 * (size_t)m->tri[3 * t];
-        const double *q = m->xyz + 3 * (size_t)m->tri[3 * t + 1];
-        const double *r = m->xyz + 3 * (size_t)m->tri[3 * t + 2];
+        const double *p = corner(m, t, 0), *q = corner(m, t, 1), *r = corner(m, t, 2);
         double a[3], b[3];
         for (int k = 0; k < 3; k++) {
             a[k] = q[k] - p[k];
@@ -611,7 +613,7 @@ int lm3_mesh_inside(const lm3_mesh *m, const double x[3])
     for (size_t t = 0; t < m->nt; t++) {
         double v[3][3];
         for (int k = 0; k < 3; k++)
-            for (int a = 0; a < 3; a++) v[k][a] = m->xyz[3 * (size_t)m->tri[3 * t + k] + a] - x[a];
+            for (int a = 0; a < 3; a++) v[k][a] = corner(m, t, k)[a] - x[a];
         w += solid_angle(v[0], v[1], v[2]);
     }
     return fabs(w) / (4 * pi) > 0.5;
