@@ -17,6 +17,12 @@
  * says so. */
 void lm3_p2g2_avx512(lm3_sim *sim, const lm3_grid *g, size_t q0, size_t q1);
 void lm3_remap2_avx512(lm3_sim *sim, const lm3_grid *g, size_t q0, size_t q1);
+/* The trilinear stress pass (sim3_step.c) at particles q .. q + 7 in
+ * eight lanes, the scalar pass's bits: 1, 0 when a particle's volume went
+ * to nothing (that particle left as it was), -1 when the eight are not all
+ * of one elastic material (nothing done). G, lam: each material's
+ * moduli. */
+int lm3_stress2_avx512(lm3_sim *sim, const double *G, const double *lam, size_t q);
 /* 1 when sim3_simd512.c was built with AVX-512F (x86-64, a compiler with
  * -mavx512f) */
 int lm3_avx512_built(void);

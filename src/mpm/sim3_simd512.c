@@ -134,6 +134,111 @@ void lm3_remap2_avx512(lm3_sim *sim, const lm3_grid *g, size_t q0, size_t q1)
     }
 }
 
+/* The trilinear stress pass (sim3_step.c stress_at with W = 2, an
+ * elastic material) at the eight particles q .. q + 7, one a lane
+ * (perf34; docs/3d.md "Speed"): each lane makes its particle's velocity
+ * gradient, strain increment, spin and Jaumann update with the scalar
+ * pass's operations in the scalar pass's order (gradient_at's rows c
+ * outer, b inner, each row's S = v0 g0[0] + v1 g0[1] and T likewise with
+ * w0, L += S wyz, T gyz, T wgz from 0; sim3_elastic.h's expressions), so
+ * every lane's result is the scalar one's bits. The 24 nodal values a
+ * particle reads (3 fields, 4 rows, 2 nodes) are gathered across the
+ * lanes. A lane whose 1 + tr de is not positive is left as the scalar
+ * pass leaves it (nothing written) and the answer is 0. -1 when the eight
+ * are not all of one elastic material: nothing done, the caller takes
+ * them one by one. G, lam: each material's moduli (sim3_elastic.h). */
+int lm3_stress2_avx512(lm3_sim *sim, const double *G, const double *lam, size_t q)
+{
+    lm3_particles *p = &sim->p;
+    const lm3_grid *g = &sim->grid;
+    const uint8_t k = p->mat[q];
+    if (sim->mats[k].kind == LM3_GAS) return -1;
+    for (int l = 1; l < 8; l++)
+        if (p->mat[q + l] != k) return -1;
+    const double dt = sim->def.dt, r = 1.0 / g->h;
+    const __m512d one = _mm512_set1_pd(1), zero = _mm512_setzero_pd(), vdt = _mm512_set1_pd(dt);
+    /* lm_linear_1d: w = (1 - d, d), g = (-r, r) */
+    __m512d w[3][2], gr[3][2];
+    for (int a = 0; a < 3; a++) {
+        const __m512d d = _mm512_loadu_pd(p->d[a] + q);
+        w[a][0] = _mm512_sub_pd(one, d);
+        w[a][1] = d;
+        gr[a][0] = _mm512_set1_pd(-r);
+        gr[a][1] = _mm512_set1_pd(r);
+    }
+    const __m256i node = _mm256_loadu_si256((const __m256i *)(p->node + q));
+    __m512d L[9];
+    for (int e = 0; e < 9; e++) L[e] = zero;
+    for (int c = 0; c < 2; c++)
+        for (int b = 0; b < 2; b++) {
+            const __m512d wyz = _mm512_mul_pd(w[1][b], w[2][c]);
+            const __m512d gyz = _mm512_mul_pd(gr[1][b], w[2][c]);
+            const __m512d wgz = _mm512_mul_pd(w[1][b], gr[2][c]);
+            const __m256i i0 = _mm256_add_epi32(
+                node, _mm256_set1_epi32((int)((c * g->s[1] + b) * g->s[0])));
+            const __m256i i1 = _mm256_add_epi32(i0, _mm256_set1_epi32(1));
+            for (int e = 0; e < 3; e++) {
+                const __m512d v0 = _mm512_i32gather_pd(i0, g->v[e], 8);
+                const __m512d v1 = _mm512_i32gather_pd(i1, g->v[e], 8);
+                const __m512d S = _mm512_add_pd(_mm512_mul_pd(v0, gr[0][0]),
+                                                _mm512_mul_pd(v1, gr[0][1]));
+                const __m512d T = _mm512_add_pd(_mm512_mul_pd(v0, w[0][0]),
+                                                _mm512_mul_pd(v1, w[0][1]));
+                L[3 * e] = _mm512_add_pd(L[3 * e], _mm512_mul_pd(S, wyz));
+                L[3 * e + 1] = _mm512_add_pd(L[3 * e + 1], _mm512_mul_pd(T, gyz));
+                L[3 * e + 2] = _mm512_add_pd(L[3 * e + 2], _mm512_mul_pd(T, wgz));
+            }
+        }
+    /* stress_at: de's diagonal, J ([F] eq 16) */
+    __m512d de[6];
+    de[0] = _mm512_mul_pd(vdt, L[0]);
+    de[1] = _mm512_mul_pd(vdt, L[4]);
+    de[2] = _mm512_mul_pd(vdt, L[8]);
+    const __m512d J = _mm512_add_pd(_mm512_add_pd(_mm512_add_pd(one, de[0]), de[1]), de[2]);
+    const __mmask8 ok = _mm512_cmp_pd_mask(J, zero, _CMP_GT_OQ);
+    __m512d rho = _mm512_loadu_pd(p->rho + q);
+    rho = _mm512_div_pd(rho, J);
+    _mm512_mask_storeu_pd(p->rho + q, ok, rho);
+    /* shear_and_spin: de[3..5], W_xy, W_xz, W_yz */
+    const __m512d hdt = _mm512_set1_pd(0.5 * dt), half = _mm512_set1_pd(0.5);
+    de[3] = _mm512_mul_pd(hdt, _mm512_add_pd(L[5], L[7]));
+    de[4] = _mm512_mul_pd(hdt, _mm512_add_pd(L[2], L[6]));
+    de[5] = _mm512_mul_pd(hdt, _mm512_add_pd(L[1], L[3]));
+    const __m512d a = _mm512_mul_pd(half, _mm512_sub_pd(L[1], L[3]));
+    const __m512d bb = _mm512_mul_pd(half, _mm512_sub_pd(L[2], L[6]));
+    const __m512d cc = _mm512_mul_pd(half, _mm512_sub_pd(L[5], L[7]));
+    /* lm3_elastic_update_gl */
+    __m512d s[6];
+    for (int e = 0; e < 6; e++) s[e] = _mm512_loadu_pd(p->s[e] + q);
+    const __m512d xx = s[0], yy = s[1], zz = s[2], yz = s[3], xz = s[4], xy = s[5];
+    /* -a and -b as C's unary minus makes them (a zero's sign turned too) */
+    const __m512d m1 = _mm512_set1_pd(-1);
+    const __m512d na = _mm512_mul_pd(a, m1), nb = _mm512_mul_pd(bb, m1);
+#define MUL _mm512_mul_pd
+#define ADD _mm512_add_pd
+#define SUB _mm512_sub_pd
+    const __m512d M00 = ADD(MUL(a, xy), MUL(bb, xz)), M01 = ADD(MUL(a, yy), MUL(bb, yz));
+    const __m512d M02 = ADD(MUL(a, yz), MUL(bb, zz));
+    const __m512d M10 = ADD(MUL(na, xx), MUL(cc, xz)), M11 = ADD(MUL(na, xy), MUL(cc, yz));
+    const __m512d M12 = ADD(MUL(na, xz), MUL(cc, zz));
+    const __m512d M20 = SUB(MUL(nb, xx), MUL(cc, xy)), M21 = SUB(MUL(nb, xy), MUL(cc, yy));
+    const __m512d M22 = SUB(MUL(nb, xz), MUL(cc, yz));
+    const __m512d two = _mm512_set1_pd(2);
+    const __m512d R[6] = {MUL(MUL(two, M00), vdt), MUL(MUL(two, M11), vdt),
+                          MUL(MUL(two, M22), vdt), MUL(ADD(M12, M21), vdt),
+                          MUL(ADD(M02, M20), vdt), MUL(ADD(M01, M10), vdt)};
+    const __m512d tr = ADD(ADD(de[0], de[1]), de[2]);
+    const __m512d ltr = MUL(_mm512_set1_pd(lam[k]), tr), G2 = _mm512_set1_pd(2 * G[k]);
+    for (int e = 0; e < 3; e++)
+        _mm512_mask_storeu_pd(p->s[e] + q, ok, ADD(s[e], ADD(ADD(R[e], ltr), MUL(G2, de[e]))));
+    for (int e = 3; e < 6; e++)
+        _mm512_mask_storeu_pd(p->s[e] + q, ok, ADD(s[e], ADD(R[e], MUL(G2, de[e]))));
+#undef MUL
+#undef ADD
+#undef SUB
+    return ok == 0xff;
+}
+
 int lm3_avx512_built(void)
 {
     return 1;
@@ -151,6 +256,12 @@ void lm3_p2g2_avx512(lm3_sim *sim, const lm3_grid *g, size_t q0, size_t q1)
 void lm3_remap2_avx512(lm3_sim *sim, const lm3_grid *g, size_t q0, size_t q1)
 {
     (void)sim, (void)g, (void)q0, (void)q1;
+}
+
+int lm3_stress2_avx512(lm3_sim *sim, const double *G, const double *lam, size_t q)
+{
+    (void)sim, (void)G, (void)lam, (void)q;
+    return -1;
 }
 
 int lm3_avx512_built(void)
