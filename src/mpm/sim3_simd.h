@@ -17,6 +17,10 @@
  * says so. */
 void lm3_p2g2_avx512(lm3_sim *sim, const lm3_grid *g, size_t q0, size_t q1);
 void lm3_remap2_avx512(lm3_sim *sim, const lm3_grid *g, size_t q0, size_t q1);
+/* Step 4 (sim3_step.c g2p_at, trilinear) at particles q .. q + 7 in eight
+ * lanes, the scalar bits: 1, or 0 when a new position left the grid or a
+ * new velocity is not finite. */
+int lm3_g2p2_avx512(lm3_sim *sim, size_t q);
 /* The trilinear stress pass (sim3_step.c) at particles q .. q + 7 in
  * eight lanes, the scalar pass's bits: 1, 0 when a particle's volume went
  * to nothing (that particle left as it was), -1 when the eight are not all

@@ -19,6 +19,7 @@
 
 #if defined(__AVX512F__)
 #include <immintrin.h>
+#include <math.h>
 
 #include "sim3_shape.h"
 
@@ -132,6 +133,61 @@ void lm3_remap2_avx512(lm3_sim *sim, const lm3_grid *g, size_t q0, size_t q1)
         add8(g->v[1], &s, N, m * p->v[1][q]);
         add8(g->v[2], &s, N, m * p->v[2][q]);
     }
+}
+
+/* Step 4 (sim3_step.c g2p_at with W = 2) at the eight particles q .. q + 7,
+ * one a lane (perf34): each lane takes its particle's sums of N f and
+ * N v^L in g2p_at's order (rows c outer, b inner, node 0 then node 1,
+ * from 0), then v += dt a, x += dt u, so every lane's result is the
+ * scalar one's bits; the 48 nodal values a particle reads are gathered
+ * across the lanes. 1 when every new position is on the grid and every
+ * new velocity finite, else 0 (g2p_at's answer). */
+int lm3_g2p2_avx512(lm3_sim *sim, size_t q)
+{
+    lm3_particles *p = &sim->p;
+    const lm3_grid *g = &sim->grid;
+    const __m512d one = _mm512_set1_pd(1), vdt = _mm512_set1_pd(sim->def.dt);
+    __m512d w[3][2];
+    for (int a = 0; a < 3; a++) {
+        const __m512d d = _mm512_loadu_pd(p->d[a] + q);
+        w[a][0] = _mm512_sub_pd(one, d);
+        w[a][1] = d;
+    }
+    const __m256i node = _mm256_loadu_si256((const __m256i *)(p->node + q));
+    __m512d acc[6];
+    for (int e = 0; e < 6; e++) acc[e] = _mm512_setzero_pd();
+    for (int c = 0; c < 2; c++)
+        for (int b = 0; b < 2; b++) {
+            const __m512d wyz = _mm512_mul_pd(w[1][b], w[2][c]);
+            const __m512d N0 = _mm512_mul_pd(w[0][0], wyz), N1 = _mm512_mul_pd(w[0][1], wyz);
+            const __m256i i0 = _mm256_add_epi32(
+                node, _mm256_set1_epi32((int)((c * g->s[1] + b) * g->s[0])));
+            const __m256i i1 = _mm256_add_epi32(i0, _mm256_set1_epi32(1));
+            for (int e = 0; e < 3; e++) {
+                const __m512d f0 = _mm512_i32gather_pd(i0, g->f[e], 8);
+                const __m512d f1 = _mm512_i32gather_pd(i1, g->f[e], 8);
+                const __m512d u0 = _mm512_i32gather_pd(i0, g->p[e], 8);
+                const __m512d u1 = _mm512_i32gather_pd(i1, g->p[e], 8);
+                acc[e] = _mm512_add_pd(acc[e], _mm512_mul_pd(N0, f0));
+                acc[e] = _mm512_add_pd(acc[e], _mm512_mul_pd(N1, f1));
+                acc[3 + e] = _mm512_add_pd(acc[3 + e], _mm512_mul_pd(N0, u0));
+                acc[3 + e] = _mm512_add_pd(acc[3 + e], _mm512_mul_pd(N1, u1));
+            }
+        }
+    __mmask8 ok = 0xff;
+    const __m512d inf = _mm512_set1_pd(HUGE_VAL);
+    for (int k = 0; k < 3; k++) {
+        const __m512d v = _mm512_add_pd(_mm512_loadu_pd(p->v[k] + q), _mm512_mul_pd(vdt, acc[k]));
+        const __m512d x =
+            _mm512_add_pd(_mm512_loadu_pd(p->x[k] + q), _mm512_mul_pd(vdt, acc[3 + k]));
+        _mm512_storeu_pd(p->v[k] + q, v);
+        _mm512_storeu_pd(p->x[k] + q, x);
+        const double lo = g->lo[k], hi = lo + g->n[k] * g->h;
+        ok &= _mm512_cmp_pd_mask(x, _mm512_set1_pd(lo), _CMP_GE_OQ);
+        ok &= _mm512_cmp_pd_mask(x, _mm512_set1_pd(hi), _CMP_LE_OQ);
+        ok &= _mm512_cmp_pd_mask(_mm512_abs_pd(v), inf, _CMP_LT_OQ);
+    }
+    return ok == 0xff;
 }
 
 /* The trilinear stress pass (sim3_step.c stress_at with W = 2, an
@@ -262,6 +318,12 @@ int lm3_stress2_avx512(lm3_sim *sim, const double *G, const double *lam, size_t 
 {
     (void)sim, (void)G, (void)lam, (void)q;
     return -1;
+}
+
+int lm3_g2p2_avx512(lm3_sim *sim, size_t q)
+{
+    (void)sim, (void)q;
+    return 0;
 }
 
 int lm3_avx512_built(void)

@@ -281,11 +281,21 @@ static int step_g2p_remap(lm3_sim *sim, int nt)
     lm3_grid *g = &sim->grid;
     const long n = (long)sim->p.n, nn = (long)g->nn;
     int ok = 1;
+    if (g->W == 2 && lm3_simd_level() == LM3_SIMD_AVX512) {
+        /* eight particles a call, the same bits (sim3_simd512.c) */
+        const long groups = n / 8;
 #ifdef _OPENMP
 #pragma omp parallel for num_threads(nt) schedule(static) reduction(& : ok) if (nt > 1)
 #endif
-    for (long q = 0; q < n; q++)
-        ok &= g->W == 2 ? g2p_at(sim, (size_t)q, 2) : g2p_at(sim, (size_t)q, 3);
+        for (long k = 0; k < groups; k++) ok &= lm3_g2p2_avx512(sim, (size_t)k * 8);
+        for (long q = groups * 8; q < n; q++) ok &= g2p_at(sim, (size_t)q, 2);
+    } else {
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(nt) schedule(static) reduction(& : ok) if (nt > 1)
+#endif
+        for (long q = 0; q < n; q++)
+            ok &= g->W == 2 ? g2p_at(sim, (size_t)q, 2) : g2p_at(sim, (size_t)q, 3);
+    }
     if (sim->def.scheme != LM_MUSL) return ok;
     LM3_PAR(nt)
     for (long i = 0; i < nn; i++) g->v[0][i] = g->v[1][i] = g->v[2][i] = 0;
