@@ -318,7 +318,10 @@ static void step_strain_velocity(lm3_sim *sim, int nt)
             if (g->m[i] > 0)
                 for (int a = 0; a < 3; a++) g->v[a][i] /= g->m[i];
     } else {
-        for (int a = 0; a < 3; a++) memcpy(g->v[a], g->p[a], g->nn * sizeof(double));
+        /* on the step's threads, not one (perf34) */
+        LM3_PAR(nt)
+        for (long i = 0; i < nn; i++)
+            for (int a = 0; a < 3; a++) g->v[a][i] = g->p[a][i];
     }
     lm3_grid_apply_bc(g, g->v);
     lm3_grid_fill(g, 3, g->v, comp_vec);
