@@ -3,7 +3,9 @@
  * engine. The default build has no -march: the trilinear scatters use
  * SSE2's two lanes (sim3_kernels2.h) everywhere, and AVX-512F's eight
  * (sim3_simd512.c, the only file built with -mavx512f) where the
- * processor has it. Both give the same bits. */
+ * processor has it; there too g2p and the stress pass take eight
+ * particles a call, one a lane, their nodal values gathered (perf34).
+ * All give the same bits. */
 #ifndef LAMINA_SIM3_SIMD_H
 #define LAMINA_SIM3_SIMD_H
 

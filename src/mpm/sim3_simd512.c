@@ -1,6 +1,7 @@
 /* sim3_simd512.c - the trilinear step's scatters with a particle's whole
- * 2 x 2 x 2 stencil in one AVX-512 vector (issue 34 item 6; docs/3d.md
- * "Speed"), chosen at run time (sim3_simd.h): the build stays portable
+ * 2 x 2 x 2 stencil in one AVX-512 vector, and its gathers (g2p, the
+ * stress pass) with eight particles in the lanes (issue 34 item 6;
+ * docs/3d.md "Speed"), chosen at run time (sim3_simd.h): the build stays portable
  * (no -march; this file alone is compiled with -mavx512f, and its
  * functions run only where the processor says it has AVX-512F).
  *
