@@ -51,31 +51,58 @@ typedef struct stencil8 {
     __m512d W0, G0, WYZ, GYZ, WGZ;
 } stencil8;
 
+/* Each lane's factor: lane 2 r + a, r = b + 2 c, takes w[0][a], w[1][b],
+ * w[2][c] (and g likewise): a blend of two broadcasts by the lanes' bits
+ * of a (0xAA), b (0xCC) or c (0xF0). The values are the scalar weights'
+ * (lm_linear_1d: w = (1 - d, d), g = (-r, r)) moved, not recomputed. */
+static inline __m512d lanes_of(double v0, double v1, __mmask8 bit)
+{
+    return _mm512_mask_blend_pd(bit, _mm512_set1_pd(v0), _mm512_set1_pd(v1));
+}
+
 static inline void stencil_of(const lm3_grid *g, int32_t node, const double d[3], stencil8 *s)
 {
-    lm3_weights w;
-    lm3_weights_w(g, node, d, &w, 2);
-    const long n0 = w.node, s0 = g->s[0], s01 = g->s[0] * g->s[1];
+    const double r = 1.0 / g->h;
+    const long n0 = node, s0 = g->s[0], s01 = g->s[0] * g->s[1];
     s->o[0] = n0;
     s->o[1] = n0 + s0;
     s->o[2] = n0 + s01;
     s->o[3] = n0 + s01 + s0;
     /* lanes 0..7: (a, b, c) = (0,0,0) (1,0,0) (0,1,0) (1,1,0) (0,0,1) ... */
-    const __m512d W1 = _mm512_setr_pd(w.w[1][0], w.w[1][0], w.w[1][1], w.w[1][1], w.w[1][0],
-                                      w.w[1][0], w.w[1][1], w.w[1][1]);
-    const __m512d G1 = _mm512_setr_pd(w.g[1][0], w.g[1][0], w.g[1][1], w.g[1][1], w.g[1][0],
-                                      w.g[1][0], w.g[1][1], w.g[1][1]);
-    const __m512d W2 = _mm512_setr_pd(w.w[2][0], w.w[2][0], w.w[2][0], w.w[2][0], w.w[2][1],
-                                      w.w[2][1], w.w[2][1], w.w[2][1]);
-    const __m512d G2 = _mm512_setr_pd(w.g[2][0], w.g[2][0], w.g[2][0], w.g[2][0], w.g[2][1],
-                                      w.g[2][1], w.g[2][1], w.g[2][1]);
-    s->W0 = _mm512_setr_pd(w.w[0][0], w.w[0][1], w.w[0][0], w.w[0][1], w.w[0][0], w.w[0][1],
-                           w.w[0][0], w.w[0][1]);
-    s->G0 = _mm512_setr_pd(w.g[0][0], w.g[0][1], w.g[0][0], w.g[0][1], w.g[0][0], w.g[0][1],
-                           w.g[0][0], w.g[0][1]);
+    const __m512d W1 = lanes_of(1 - d[1], d[1], 0xCC), G1 = lanes_of(-r, r, 0xCC);
+    const __m512d W2 = lanes_of(1 - d[2], d[2], 0xF0), G2 = lanes_of(-r, r, 0xF0);
+    s->W0 = lanes_of(1 - d[0], d[0], 0xAA);
+    s->G0 = lanes_of(-r, r, 0xAA);
     s->WYZ = _mm512_mul_pd(W1, W2);
     s->GYZ = _mm512_mul_pd(G1, W2);
     s->WGZ = _mm512_mul_pd(W1, G2);
+}
+
+/* Step 0 (sim3_shape.h lm3_place_w, W = 2) at the eight particles q ..
+ * q + 7 in the lanes: f = (x - lo) / h as (x - lo) r, the cell floor(f)
+ * (what the scalar (int) f or floor gives; out of range both clamp the
+ * same way, (int) of a huge or NaN f being INT_MIN on x86 as the vector
+ * conversion's), clamped to [0, n - 1], the offset f - i; the stencil's
+ * first node (pad 0). Writes p->d and p->node as place_at does. */
+static inline void place8(lm3_sim *sim, size_t q)
+{
+    lm3_particles *p = &sim->p;
+    const lm3_grid *g = &sim->grid;
+    const __m512d r = _mm512_set1_pd(1.0 / g->h);
+    __m256i c[3];
+    for (int a = 0; a < 3; a++) {
+        const __m512d f =
+            _mm512_mul_pd(_mm512_sub_pd(_mm512_loadu_pd(p->x[a] + q), _mm512_set1_pd(g->lo[a])), r);
+        __m256i i = _mm512_cvttpd_epi32(_mm512_roundscale_pd(f, _MM_FROUND_TO_NEG_INF));
+        i = _mm256_min_epi32(i, _mm256_set1_epi32(g->n[a] - 1));
+        i = _mm256_max_epi32(i, _mm256_setzero_si256());
+        c[a] = i;
+        _mm512_storeu_pd(p->d[a] + q, _mm512_sub_pd(f, _mm512_cvtepi32_pd(i)));
+    }
+    const __m256i s0 = _mm256_set1_epi32((int)g->s[0]), s1 = _mm256_set1_epi32((int)g->s[1]);
+    const __m256i node = _mm256_add_epi32(
+        _mm256_mullo_epi32(_mm256_add_epi32(_mm256_mullo_epi32(c[2], s1), c[1]), s0), c[0]);
+    _mm256_storeu_si256((__m256i *)(p->node + q), node);
 }
 
 /* f -= A g0 + B w0 with A = a WYZ, B = b GYZ + c WGZ (sim3_step.c p2g_at) */
@@ -93,10 +120,36 @@ static inline void add8(double *f, const stencil8 *s, __m512d N, double a)
     store8(f, s->o, _mm512_add_pd(load8(f, s->o), _mm512_mul_pd(N, _mm512_set1_pd(a))));
 }
 
+/* Steps 1-2 (sim3_step.c p2g_at) at particle q, placed */
+static inline void p2g1(lm3_sim *sim, const lm3_grid *g, size_t q)
+{
+    lm3_particles *p = &sim->p;
+    const double d[3] = {p->d[0][q], p->d[1][q], p->d[2][q]};
+    stencil8 s;
+    stencil_of(g, p->node[q], d, &s);
+    const double m = p->m[q], V = m / p->rho[q];
+    const double sxx = V * p->s[0][q], syy = V * p->s[1][q], szz = V * p->s[2][q];
+    const double syz = V * p->s[3][q], sxz = V * p->s[4][q], sxy = V * p->s[5][q];
+    const __m512d N = _mm512_mul_pd(s.W0, s.WYZ);
+    add8(g->m, &s, N, m);
+    add8(g->p[0], &s, N, m * p->v[0][q]);
+    add8(g->p[1], &s, N, m * p->v[1][q]);
+    add8(g->p[2], &s, N, m * p->v[2][q]);
+    force8(g->f[0], &s, sxx, sxy, sxz);
+    force8(g->f[1], &s, sxy, syy, syz);
+    force8(g->f[2], &s, sxz, syz, szz);
+}
+
 void lm3_p2g2_avx512(lm3_sim *sim, const lm3_grid *g, size_t q0, size_t q1)
 {
     lm3_particles *p = &sim->p;
-    for (size_t q = q0; q < q1; q++) {
+    size_t q = q0;
+    /* step 0 eight particles at a time, then each one's sums in order */
+    for (; q + 8 <= q1; q += 8) {
+        place8(sim, q);
+        for (size_t l = q; l < q + 8; l++) p2g1(sim, g, l);
+    }
+    for (; q < q1; q++) {
         /* step 0: the place at x^k (sim3_step.c place_at) */
         const double x[3] = {p->x[0][q], p->x[1][q], p->x[2][q]};
         double d[3];
@@ -104,20 +157,7 @@ void lm3_p2g2_avx512(lm3_sim *sim, const lm3_grid *g, size_t q0, size_t q1)
         p->d[0][q] = d[0];
         p->d[1][q] = d[1];
         p->d[2][q] = d[2];
-        stencil8 s;
-        stencil_of(g, p->node[q], d, &s);
-        /* steps 1-2 (sim3_step.c p2g_at) */
-        const double m = p->m[q], V = m / p->rho[q];
-        const double sxx = V * p->s[0][q], syy = V * p->s[1][q], szz = V * p->s[2][q];
-        const double syz = V * p->s[3][q], sxz = V * p->s[4][q], sxy = V * p->s[5][q];
-        const __m512d N = _mm512_mul_pd(s.W0, s.WYZ);
-        add8(g->m, &s, N, m);
-        add8(g->p[0], &s, N, m * p->v[0][q]);
-        add8(g->p[1], &s, N, m * p->v[1][q]);
-        add8(g->p[2], &s, N, m * p->v[2][q]);
-        force8(g->f[0], &s, sxx, sxy, sxz);
-        force8(g->f[1], &s, sxy, syy, syz);
-        force8(g->f[2], &s, sxz, syz, szz);
+        p2g1(sim, g, q);
     }
 }
 
