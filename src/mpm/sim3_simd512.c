@@ -120,34 +120,46 @@ static inline void add8(double *f, const stencil8 *s, __m512d N, double a)
     store8(f, s->o, _mm512_add_pd(load8(f, s->o), _mm512_mul_pd(N, _mm512_set1_pd(a))));
 }
 
-/* Steps 1-2 (sim3_step.c p2g_at) at particle q, placed */
-static inline void p2g1(lm3_sim *sim, const lm3_grid *g, size_t q)
+/* Steps 1-2 (sim3_step.c p2g_at) at particle q, placed, with its mass m,
+ * momenta mv[3] and V sigma (Voigt) vs[6] made */
+static inline void p2g1(const lm3_particles *p, const lm3_grid *g, size_t q, double m,
+                        const double mv[3], const double vs[6])
 {
-    lm3_particles *p = &sim->p;
     const double d[3] = {p->d[0][q], p->d[1][q], p->d[2][q]};
     stencil8 s;
     stencil_of(g, p->node[q], d, &s);
-    const double m = p->m[q], V = m / p->rho[q];
-    const double sxx = V * p->s[0][q], syy = V * p->s[1][q], szz = V * p->s[2][q];
-    const double syz = V * p->s[3][q], sxz = V * p->s[4][q], sxy = V * p->s[5][q];
     const __m512d N = _mm512_mul_pd(s.W0, s.WYZ);
     add8(g->m, &s, N, m);
-    add8(g->p[0], &s, N, m * p->v[0][q]);
-    add8(g->p[1], &s, N, m * p->v[1][q]);
-    add8(g->p[2], &s, N, m * p->v[2][q]);
-    force8(g->f[0], &s, sxx, sxy, sxz);
-    force8(g->f[1], &s, sxy, syy, syz);
-    force8(g->f[2], &s, sxz, syz, szz);
+    add8(g->p[0], &s, N, mv[0]);
+    add8(g->p[1], &s, N, mv[1]);
+    add8(g->p[2], &s, N, mv[2]);
+    force8(g->f[0], &s, vs[0], vs[5], vs[4]);
+    force8(g->f[1], &s, vs[5], vs[1], vs[3]);
+    force8(g->f[2], &s, vs[4], vs[3], vs[2]);
 }
 
 void lm3_p2g2_avx512(lm3_sim *sim, const lm3_grid *g, size_t q0, size_t q1)
 {
     lm3_particles *p = &sim->p;
     size_t q = q0;
-    /* step 0 eight particles at a time, then each one's sums in order */
+    /* step 0 and each particle's m v and V sigma (V = m / rho, the same
+     * products as p2g_at's) eight particles at a time, then each one's
+     * sums in order */
     for (; q + 8 <= q1; q += 8) {
         place8(sim, q);
-        for (size_t l = q; l < q + 8; l++) p2g1(sim, g, l);
+        double b[10][8] __attribute__((aligned(64)));
+        const __m512d m = _mm512_loadu_pd(p->m + q);
+        const __m512d V = _mm512_div_pd(m, _mm512_loadu_pd(p->rho + q));
+        _mm512_store_pd(b[0], m);
+        for (int e = 0; e < 3; e++)
+            _mm512_store_pd(b[1 + e], _mm512_mul_pd(m, _mm512_loadu_pd(p->v[e] + q)));
+        for (int e = 0; e < 6; e++)
+            _mm512_store_pd(b[4 + e], _mm512_mul_pd(V, _mm512_loadu_pd(p->s[e] + q)));
+        for (int l = 0; l < 8; l++) {
+            const double mv[3] = {b[1][l], b[2][l], b[3][l]};
+            const double vs[6] = {b[4][l], b[5][l], b[6][l], b[7][l], b[8][l], b[9][l]};
+            p2g1(p, g, q + (size_t)l, b[0][l], mv, vs);
+        }
     }
     for (; q < q1; q++) {
         /* step 0: the place at x^k (sim3_step.c place_at) */
@@ -157,7 +169,11 @@ void lm3_p2g2_avx512(lm3_sim *sim, const lm3_grid *g, size_t q0, size_t q1)
         p->d[0][q] = d[0];
         p->d[1][q] = d[1];
         p->d[2][q] = d[2];
-        p2g1(sim, g, q);
+        const double m = p->m[q], V = m / p->rho[q];
+        const double mv[3] = {m * p->v[0][q], m * p->v[1][q], m * p->v[2][q]};
+        const double vs[6] = {V * p->s[0][q], V * p->s[1][q], V * p->s[2][q],
+                              V * p->s[3][q], V * p->s[4][q], V * p->s[5][q]};
+        p2g1(p, g, q, m, mv, vs);
     }
 }
 
