@@ -134,7 +134,9 @@ static void p2g_range(lm3_sim *sim, const lm3_grid *g, size_t q0, size_t q1)
 }
 
 /* Steps 0-2 in one pass over the particles (each particle's place, then
- * its sums), the ghosts folded, then f_i^ext = m_i g. */
+ * its sums), the ghosts folded. v is not cleared here: the MUSL re-map
+ * clears it before its sums, USL copies v^L over it (step 5), and nothing
+ * between reads it (perf34: three fields of the ten a pass less). */
 static void step_p2g_forces(lm3_sim *sim, int nt)
 {
     lm3_grid *g = &sim->grid;
@@ -142,43 +144,40 @@ static void step_p2g_forces(lm3_sim *sim, int nt)
     LM3_PAR(nt)
     for (long i = 0; i < nn; i++) {
         g->m[i] = 0;
-        for (int a = 0; a < 3; a++) g->p[a][i] = g->f[a][i] = g->v[a][i] = 0;
+        for (int a = 0; a < 3; a++) g->p[a][i] = g->f[a][i] = 0;
     }
     if (nt < 2 || lm3_scatter_threads(sim, nt, 7, p2g_range) != 0)
         p2g_range(sim, g, 0, sim->p.n);
     lm3_membrane_p2g(sim);   /* membrane points (sim3_membrane_step.c) */
     double *const f[7] = {g->m, g->p[0], g->p[1], g->p[2], g->f[0], g->f[1], g->f[2]};
     lm3_grid_fold(g, 7, f, comp_mpf);
-    const double *gv = sim->def.gravity;
-    LM3_PAR(nt)
-    for (long i = 0; i < nn; i++) {
-        g->f[0][i] += g->m[i] * gv[0];
-        g->f[1][i] += g->m[i] * gv[1];
-        g->f[2][i] += g->m[i] * gv[2];
-    }
 }
 
-/* Step 3: p_i^L = p_i + dt f_i ([F] eq 10); the walls act on both, then
- * a_i = f_i / m_i replaces f and v_i^L = p_i^L / m_i replaces p (zero at
- * massless nodes), ghosts filled for the gather. */
+/* Step 2's f_i^ext = m_i g, then step 3: p_i^L = p_i + dt f_i ([F] eq
+ * 10); a_i = f_i / m_i replaces f and v_i^L = p_i^L / m_i replaces p
+ * (zero at massless nodes); then the walls on both, ghosts filled for the
+ * gather. One pass over the nodes where there were three (perf34): each
+ * node's operations are the ones, in the order, the three passes made,
+ * and the walls, which only set components to zero, give the same zero
+ * after the division (0 r = +0 for the finite r >= 0 of any node whose
+ * mass is a normal number) as before it. */
 static void step_grid_update(lm3_sim *sim, int nt)
 {
     lm3_grid *g = &sim->grid;
     const double dt = sim->def.dt;
+    const double *gv = sim->def.gravity;
     const long nn = (long)g->nn;
     LM3_PAR(nt)
-    for (long i = 0; i < nn; i++)
-        for (int a = 0; a < 3; a++) g->p[a][i] += dt * g->f[a][i];
-    lm3_grid_apply_bc(g, g->p);
-    lm3_grid_apply_bc(g, g->f);
-    LM3_PAR(nt)
     for (long i = 0; i < nn; i++) {
-        double r = g->m[i] > 0 ? 1.0 / g->m[i] : 0;
+        const double m = g->m[i], r = m > 0 ? 1.0 / m : 0;
         for (int a = 0; a < 3; a++) {
-            g->f[a][i] *= r;
-            g->p[a][i] *= r;
+            const double f = g->f[a][i] + m * gv[a];
+            g->p[a][i] = (g->p[a][i] + dt * f) * r;
+            g->f[a][i] = f * r;
         }
     }
+    lm3_grid_apply_bc(g, g->p);
+    lm3_grid_apply_bc(g, g->f);
     double *const f[6] = {g->f[0], g->f[1], g->f[2], g->p[0], g->p[1], g->p[2]};
     static const int comp[6] = {0, 1, 2, 0, 1, 2};
     lm3_grid_fill(g, 6, f, comp);
@@ -266,7 +265,8 @@ static LM3_INLINE void remap_at(const lm3_sim *sim, const lm3_grid *g, size_t q,
  * its own: one pass doing both (a particle's re-map needs only its own
  * new velocity) was measured slower, 5.1 against 5.3 M particle-steps/s
  * of CPU time (trilinear, docs/3d.md "Speed"): the gather's six fields
- * and the re-map's three compete for the cache. */
+ * and the re-map's three compete for the cache. Measured again with the
+ * AVX-512 re-map (perf34): 7 % slower still. */
 static void remap_range(lm3_sim *sim, const lm3_grid *g, size_t q0, size_t q1)
 {
     if (g->W == 2 && lm3_simd_level() == LM3_SIMD_AVX512)
@@ -282,11 +282,21 @@ static int step_g2p_remap(lm3_sim *sim, int nt)
     lm3_grid *g = &sim->grid;
     const long n = (long)sim->p.n, nn = (long)g->nn;
     int ok = 1;
+    if (g->W == 2 && lm3_simd_level() == LM3_SIMD_AVX512) {
+        /* eight particles a call, the same bits (sim3_simd512.c) */
+        const long groups = n / 8;
 #ifdef _OPENMP
 #pragma omp parallel for num_threads(nt) schedule(static) reduction(& : ok) if (nt > 1)
 #endif
-    for (long q = 0; q < n; q++)
-        ok &= g->W == 2 ? g2p_at(sim, (size_t)q, 2) : g2p_at(sim, (size_t)q, 3);
+        for (long k = 0; k < groups; k++) ok &= lm3_g2p2_avx512(sim, (size_t)k * 8);
+        for (long q = groups * 8; q < n; q++) ok &= g2p_at(sim, (size_t)q, 2);
+    } else {
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(nt) schedule(static) reduction(& : ok) if (nt > 1)
+#endif
+        for (long q = 0; q < n; q++)
+            ok &= g->W == 2 ? g2p_at(sim, (size_t)q, 2) : g2p_at(sim, (size_t)q, 3);
+    }
     if (sim->def.scheme != LM_MUSL) return ok;
     LM3_PAR(nt)
     for (long i = 0; i < nn; i++) g->v[0][i] = g->v[1][i] = g->v[2][i] = 0;
@@ -309,7 +319,10 @@ static void step_strain_velocity(lm3_sim *sim, int nt)
             if (g->m[i] > 0)
                 for (int a = 0; a < 3; a++) g->v[a][i] /= g->m[i];
     } else {
-        for (int a = 0; a < 3; a++) memcpy(g->v[a], g->p[a], g->nn * sizeof(double));
+        /* on the step's threads, not one (perf34) */
+        LM3_PAR(nt)
+        for (long i = 0; i < nn; i++)
+            for (int a = 0; a < 3; a++) g->v[a][i] = g->p[a][i];
     }
     lm3_grid_apply_bc(g, g->v);
     lm3_grid_fill(g, 3, g->v, comp_vec);
@@ -438,6 +451,24 @@ static int stress_trilinear(lm3_sim *sim, const stress_ctx *c, int nt)
 {
     const long n = (long)sim->p.n;
     int ok = 1;
+    if (lm3_simd_level() == LM3_SIMD_AVX512) {
+        /* eight particles a call, the scalar bits (sim3_simd512.c); a
+         * group of mixed or gas materials, and the last n mod 8, one by
+         * one */
+        const long groups = n / 8;
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(nt) schedule(static) reduction(& : ok) if (nt > 1)
+#endif
+        for (long k = 0; k < groups; k++) {
+            const size_t q = (size_t)k * 8;
+            const int r = lm3_stress2_avx512(sim, c->G, c->lam, q);
+            if (r >= 0) ok &= r;
+            else
+                for (size_t l = q; l < q + 8; l++) ok &= stress_at(sim, l, c, 2);
+        }
+        for (long q = groups * 8; q < n; q++) ok &= stress_at(sim, (size_t)q, c, 2);
+        return ok;
+    }
 #ifdef _OPENMP
 #pragma omp parallel for num_threads(nt) schedule(static) reduction(& : ok) if (nt > 1)
 #endif

@@ -1,20 +1,29 @@
-/* test_sim3_simd.c - the 3D trilinear scatters in AVX-512's eight lanes
- * (sim3_simd512.c, chosen at run time) give the bits of the two-lane SSE2
- * kernels (issue 34 item 6; docs/3d.md "Speed"): an elastic block and a
- * gas spinning, sheared and falling in a fixed box, 8 000 particles, 40
- * steps, MUSL (both scatters: p2g and the re-map) and USL, on one and two
- * threads, run with the kernels limited to SSE2 and with the processor's
- * best; every particle array and the state hash the same bits. On a
+/* test_sim3_simd.c - the 3D trilinear scatters and stress pass in
+ * AVX-512's eight lanes (sim3_simd512.c, chosen at run time) give the bits
+ * of the two-lane SSE2 and scalar kernels (issue 34 item 6; docs/3d.md
+ * "Speed"): an elastic block and a gas spinning, sheared and falling in a
+ * fixed box, 8 000 particles, 40 steps, MUSL (both scatters: p2g and the
+ * re-map) and USL, on one and two threads, run with the kernels limited
+ * to SSE2 and with the processor's best; every particle array and the
+ * state hash the same bits. Two more for the stress pass's groups of
+ * eight (perf34): the block with a second elastic material on every fifth
+ * particle and a gas on every seventh, three particles more (groups of
+ * mixed materials and a tail taken one by one), and the block with one
+ * particle thrown at 10^5 m/s, whose first step fails (1 + tr de <= 0 at
+ * some particles: the lanes of those left as they were). On a
  * processor without AVX-512F (or a build without it) both runs take the
  * same kernels: the test says so and its checks hold trivially. */
+#include <stdint.h>
 #include <string.h>
 
 #include "check.h"
 #include "mpm3.h"
 #include "sim3_simd.h"
 
-static lm3_sim *run(lm_scheme scheme, int gas, int threads, int level)
+/* kind: 0 elastic, 1 gas, 2 mixed materials and a tail, 3 a failing step */
+static lm3_sim *run(lm_scheme scheme, int kind, int threads, int level)
 {
+    const int gas = kind == 1;
     lm3_simd_limit(level);
     lm3_def d;
     memset(&d, 0, sizeof d);
@@ -37,11 +46,34 @@ static lm3_sim *run(lm_scheme scheme, int gas, int threads, int level)
     int mi = lm3_material_add(sim, &m, err, sizeof err);
     double lo[3] = {0.25, 0.25, 0.25}, hi[3] = {0.75, 0.75, 0.75}, v[3] = {0, 0, 0};
     CHECK(lm3_seed_box(sim, mi, lo, hi, 2, v) > 4096);
+    if (kind == 2) {
+        lm3_material m2 = {.rho = 1000, .E = 2e6, .nu = 0.25};
+        lm3_material g = {.rho = 1000, .kind = LM3_GAS, .gamma = 1.4, .mu = 0.1, .av = 1,
+                          .av_c1 = 1, .av_c2 = 1, .av_lambda = 0.75, .e0 = 1.35e3 / 0.56};
+        int m2i = lm3_material_add(sim, &m2, err, sizeof err),
+            gi = lm3_material_add(sim, &g, err, sizeof err);
+        CHECK(m2i > 0 && gi > 0);
+        for (size_t q = 0; q < sim->p.n; q++)
+            if (q % 7 == 3) sim->p.mat[q] = (uint8_t)gi;
+            else if (q % 5 == 1) sim->p.mat[q] = (uint8_t)m2i;
+        for (int k = 0; k < 3; k++) {
+            const double x[3] = {0.3 + 0.1 * k, 0.5, 0.5}, v0[3] = {0, 0, 0};
+            CHECK(lm3_particle_add(sim, mi, x, v0, 1.5e-5) == LM_OK);
+        }
+        CHECK(sim->p.n % 8 != 0);
+    }
     for (size_t q = 0; q < sim->p.n; q++) {
         double x = sim->p.x[0][q] - 0.5, y = sim->p.x[1][q] - 0.5, z = sim->p.x[2][q] - 0.5;
         sim->p.v[0][q] = -2 * y + 0.5 * z;
         sim->p.v[1][q] = 2 * x;
         sim->p.v[2][q] = 0.3 * x - 1;
+    }
+    if (kind == 3) {
+        sim->p.v[0][4321] = -1e5;
+        CHECK(lm3_step(sim) == LM_ERR_UNSTABLE);
+        CHECK(strstr(sim->err, "volume went to nothing") != NULL);
+        lm3_simd_limit(LM3_SIMD_AVX512);
+        return sim;
     }
     for (int k = 0; k < 40; k++)
         if (lm3_step(sim) != LM_OK) {
@@ -65,13 +97,14 @@ static int same_bits(const lm3_sim *a, const lm3_sim *b)
     return !memcmp(a->p.rho, b->p.rho, n) && !memcmp(a->p.e, b->p.e, n);
 }
 
-static void case_(const char *name, lm_scheme scheme, int gas, int threads)
+static void case_(const char *name, lm_scheme scheme, int kind, int threads)
 {
-    lm3_sim *sse2 = run(scheme, gas, threads, LM3_SIMD_SSE2),
-            *best = run(scheme, gas, threads, LM3_SIMD_AVX512);
+    lm3_sim *sse2 = run(scheme, kind, threads, LM3_SIMD_SSE2),
+            *best = run(scheme, kind, threads, LM3_SIMD_AVX512);
     int same = same_bits(sse2, best);
-    printf("%s, %d thread%s, %zu particles, 40 steps: AVX-512 against SSE2: %s\n", name,
-           threads, threads > 1 ? "s" : "", sse2->p.n, same ? "the same bits" : "DIFFER");
+    printf("%s, %d thread%s, %zu particles, %d steps: AVX-512 against SSE2: %s\n", name,
+           threads, threads > 1 ? "s" : "", sse2->p.n, kind == 3 ? 1 : 40,
+           same ? "the same bits" : "DIFFER");
     CHECK(same);
     lm3_sim_free(sse2);
     lm3_sim_free(best);
@@ -87,6 +120,8 @@ int main(void)
         case_("trilinear MUSL", LM_MUSL, 0, t);
         case_("trilinear USL", LM_USL, 0, t);
         case_("gas trilinear MUSL", LM_MUSL, 1, t);
+        case_("two solids and a gas, trilinear MUSL", LM_MUSL, 2, t);
+        case_("a failing first step, trilinear USL", LM_USL, 3, t);
     }
     return CHECK_DONE();
 }
