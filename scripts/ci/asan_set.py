@@ -164,7 +164,8 @@ def main():
     ap.add_argument("--build", default=os.path.join(ROOT, "build-cov"),
                     help="the coverage build tree (made when missing)")
     ap.add_argument("--asan-costs", default=os.path.join(ROOT, "build-asan"),
-                    help="build tree whose CTestCostData.txt gives the ASan times")
+                    help="the sanitized build tree: its tests (only those are measured)"
+                         " and its CTestCostData.txt (the ASan times)")
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 2)
     ap.add_argument("--out", default=os.path.join(ROOT, "tests", "asan_set.tsv"))
     ap.add_argument("--asan-log", action="append", default=[],
@@ -181,21 +182,32 @@ def main():
         cov = {n: {tuple(x) for x in v} for n, v in saved["lines"].items()}
         seconds = saved["seconds"]
     else:
-        must, cov, seconds = measure(bdir, a.jobs)
+        must, cov, seconds = measure(bdir, a.jobs, os.path.abspath(a.asan_costs))
         with open(cache, "w") as f:
             json.dump({"always": sorted(must), "seconds": seconds,
                        "lines": {n: sorted(v) for n, v in cov.items()}}, f)
     write(a, must, cov, seconds)
 
 
-def measure(bdir, jobs):
+def listing_of(tree):
+    out = subprocess.run(["ctest", "--show-only=json-v1"], cwd=tree, check=True,
+                         capture_output=True, text=True).stdout
+    return json.loads(out)["tests"]
+
+
+def measure(bdir, jobs, adir):
     """Lines of src/ run by the always-sanitized tests together, and by
-    each candidate alone; the candidates' seconds in the coverage build."""
+    each candidate alone; the candidates' seconds in the coverage build.
+    A test the sanitized build does not define (security.frame_oom_names_size:
+    `ulimit -v` cannot hold the sanitizers' reservations) is left out."""
     build_coverage_tree(bdir, jobs)
-    listing = subprocess.run(["ctest", "--show-only=json-v1"], cwd=bdir, check=True,
-                             capture_output=True, text=True).stdout
-    tests = [t for t in json.loads(listing)["tests"]
+    tests = [t for t in listing_of(bdir)
              if labels_of(t) & (ALWAYS | CHOSEN) and not labels_of(t) & NEVER]
+    absent = []
+    if os.path.exists(os.path.join(adir, "CTestTestfile.cmake")):
+        there = {t["name"] for t in listing_of(adir)}
+        absent = sorted(t["name"] for t in tests if t["name"] not in there)
+        tests = [t for t in tests if t["name"] in there]
     always = [t for t in tests if labels_of(t) & ALWAYS]
     cands = [t for t in tests if not labels_of(t) & ALWAYS]
     covdir = os.path.join(bdir, "asan-set-coverage")
@@ -209,7 +221,8 @@ def measure(bdir, jobs):
           flush=True)
     env = dict(os.environ, GCOV_PREFIX=os.path.join(covdir, "_always"), GCOV_PREFIX_STRIP="0")
     regex = "|".join(sorted(ALWAYS))
-    r = subprocess.run(["ctest", "-j%d" % jobs, "-L", regex, "-LE", "|".join(NEVER)],
+    skip = ["-E", "^(%s)$" % "|".join(re.escape(n) for n in absent)] if absent else []
+    r = subprocess.run(["ctest", "-j%d" % jobs, "-L", regex, "-LE", "|".join(NEVER)] + skip,
                        cwd=bdir, env=env, stdout=subprocess.DEVNULL)
     if r.returncode:
         print("asan_set: warning: some always-sanitized tests failed in the coverage build",
