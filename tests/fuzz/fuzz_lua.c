@@ -4,8 +4,13 @@
  * tables with metatables, objects of the wrong kind); the script runs in
  * the sandbox of `lamina run`, each statement in a pcall, so that one
  * error does not end the input. A run is capped at 50 steps, the Lua state
- * at 64 MB, the script at 20 million instructions. Any crash, sanitizer
- * report or leak is a finding. */
+ * at 64 MB, the process (Lua, engine and canvases: src/util/lu_budget.c) at
+ * 128 MB, the script at 20 million instructions. Any crash, sanitizer
+ * report or leak is a finding. The process cap keeps an input's work
+ * bounded: without it a 1000 x 1000 grid filled with 9 million gas points
+ * (a disk of radius 17 clipped to the domain, ppc 9), drawn in six frames,
+ * is a legitimate 2.5 GB run that passed libFuzzer's 20 s per input, a
+ * timeout that says nothing about crashes. */
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -16,6 +21,7 @@
 
 #include "lamina_lua.h"
 #include "fuzz_target.h"
+#include "util.h"
 
 static const char *const statements[] = {
     "S = lamina.sim{dt = %s, domain = %s, cell = %s, gravity = %s}",
@@ -130,6 +136,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     run.quiet = 1;
     run.max_steps = 50;                 /* runs stop at 50 steps */
     run.lua_mem_limit = (size_t)64 << 20;
+    lu_budget_set_limit((size_t)128 << 20);
     lua_State *L = lamina_open_state(&run);
     if (L) {
         lua_sethook(L, budget, LUA_MASKCOUNT, 20000000);
