@@ -89,6 +89,19 @@ static void linear_at(const lm_ngrid *g, const double p[3], const int c[3],
 }
 
 /* n_p = sum_i n_i N_ip ([T] eq 7.3), normalised; flags the zero ones. */
+/* Point i's normal is v / |v|; a zero or non-finite v leaves it 0 and
+ * flagged undefined (every variant ends this way). */
+static void put_unit(int dim, const double v[3], size_t i, double *const nrm[3],
+                     unsigned char *flags)
+{
+    double len = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    int ok = len > 0 && isfinite(len);
+    for (int a = 0; a < dim; a++)
+        nrm[a][i] = ok ? v[a] / len : 0.0;
+    if (flags)
+        flags[i] = ok ? 0 : LM_NF_UNDEFINED;
+}
+
 static void nodes_to_points(const lm_ngrid *g, const nodes *s, size_t n,
                             const double *const x[3], const double *nn,
                             double *const nrm[3], unsigned char *flags)
@@ -105,12 +118,7 @@ static void nodes_to_points(const lm_ngrid *g, const nodes *s, size_t n,
             for (int a = 0; a < g->dim; a++)
                 v[a] += nn[3 * k + a] * w[I];
         }
-        double len = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-        int ok = len > 0 && isfinite(len);
-        for (int a = 0; a < g->dim; a++)
-            nrm[a][i] = ok ? v[a] / len : 0.0;
-        if (flags)
-            flags[i] = ok ? 0 : LM_NF_UNDEFINED;
+        put_unit(g->dim, v, i, nrm, flags);
     }
 }
 
@@ -421,12 +429,7 @@ lm_nerr lm_normals_cubic_colour(const lm_ngrid *g, size_t n, const double *const
                     v[1] -= f * w[0][l] * dw[1][j] * w[2][k];
                     v[2] -= f * w[0][l] * w[1][j] * dw[2][k];
                 }
-        double len = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-        int ok = len > 0 && isfinite(len);
-        for (int a = 0; a < g->dim; a++)
-            nrm[a][i] = ok ? v[a] / len : 0.0;
-        if (flags)
-            flags[i] = ok ? 0 : LM_NF_UNDEFINED;
+        put_unit(g->dim, v, i, nrm, flags);
     }
     free(chi);
     return LM_NERR_NONE;
