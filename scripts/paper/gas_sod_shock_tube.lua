@@ -1,5 +1,5 @@
 -- title: Sod's shock tube: the gas model against the exact Riemann solution
--- source: York, Sulsky & Schreyer 2000 (fluid-membrane), §4.1, Figs 5 and 6
+-- source: York, Sulsky & Schreyer 2000 (fluid-membrane), §4.1, Fig 6 (the set-up drawn on sketch_sod)
 -- look: density, velocity, pressure and internal energy along x at
 --   t = 0.143 follow the dashed exact solution: the rarefaction on the left,
 --   the contact near 0.63 and the shock at 0.75, slightly smeared by the
