@@ -185,6 +185,24 @@ function M.left_decomposition(bodies, t, h)
            fan_entropy_spacing = ss / nf / sL, n = w.n, n_fan = nf }
 end
 
+-- The density from the points' spacing, m / (s h) with s half the distance
+-- between a point's two neighbours, for a tube of one row of points: arrays
+-- x, rho in x order (the row's two end points left out).
+function M.spacing_density(bodies, h)
+  local pts = {}
+  for _, b in ipairs(bodies) do
+    local q = b:particles()
+    for i = 1, q.n do pts[#pts + 1] = { x = q.x[i], m = q.mass[i] } end
+  end
+  table.sort(pts, function(a, b) return a.x < b.x end)
+  local r = { x = {}, rho = {} }
+  for i = 2, #pts - 1 do
+    r.x[#r.x + 1] = pts[i].x
+    r.rho[#r.rho + 1] = pts[i].m / (0.5 * (pts[i + 1].x - pts[i - 1].x) * h)
+  end
+  return r
+end
+
 -- Mean particle density per cell, for [T] Fig 13's "density at cell
 -- centres": an array over the ncells cells (nil where no particle is).
 function M.cell_density(f, dx, ncells)
