@@ -36,8 +36,8 @@
 --   oscillations at the shock front"): both must be lower with it.
 --   Without viscosity (a) the star state is checked where the run is
 --   smooth, from the fan's tail to the contact (the middle 60 %), with the
---   star region's tolerances (u 3.8 %, stricter than the 6.3 % the rule
---   gives behind the fan's kink): between the contact and the shock (a)
+--   stricter of the star region's tolerance and the fan's kink's (u 3.8 %,
+--   not the kink's 6.3 %; p 8.2 %): between the contact and the shock (a)
 --   rings as [T]'s (a) does, rms 0.46 u* (0.031 with viscosity; p 0.39 /
 --   0.062 p*), and a mean over the whole star region takes that swing
 --   (u 0.883, -4.8 %, printed beside: noav_star_region_means); measured
@@ -152,13 +152,15 @@ for _, r in ipairs(runs) do
     -- figure shows how the artificial viscosity smooths the oscillations
     -- at the shock front"): its star state is checked where the run is
     -- smooth, from the fan's tail to the contact (the middle 60 %), with
-    -- the star region's tolerances (3.8 % in u, stricter than the 6.3 %
-    -- the first-order rule gives behind the fan's kink alone); the ringing
+    -- the stricter of the star region's and the kink's tolerances (u 3.8 %,
+    -- not the kink's 6.3 %; p the kink's 8.2 %, not 8.8 %); the ringing
     -- is checked apart (viscosity_smooths_ringing_rms) and the whole
     -- region's means printed beside it
     local la, lb = tail + 0.2 * lgap, xc - 0.2 * lgap
-    report[k .. "p_tail_to_contact"] = compare(mean_between(f, "p", la, lb), ex.p_star, tl.p_star)
-    report[k .. "u_tail_to_contact"] = compare(mean_between(f, "u", la, lb), ex.u_star, tl.u_star)
+    report[k .. "p_tail_to_contact"] = compare(mean_between(f, "p", la, lb), ex.p_star,
+                                               math.min(tl.p_star, tl.p_left))
+    report[k .. "u_tail_to_contact"] = compare(mean_between(f, "u", la, lb), ex.u_star,
+                                               math.min(tl.u_star, tl.u_left))
     report[k .. "star_region_means"] = string.format(
       "u %.4f (%+.1f %%), p %.4f (%+.1f %%) over tail to shock (x = %.3f to %.3f): the mean takes the ringing's swing",
       u_star_region, 100 * (u_star_region / ex.u_star - 1), p_star_region,
