@@ -137,6 +137,72 @@ function M.first_order_tol(t, h)
   }
 end
 
+-- What the left plateau's reported density and pressure are made of
+-- (issue 32; docs/robustness.md "Sod on the papers' basis"), for a tube of
+-- one row of points ({n, 1}) and cell h: over the same window as measure's
+-- left plateau, the mean density from the points' spacing m / (s h), s
+-- half the distance between a point's two neighbours (the gas's own state,
+-- which the grid feels: a point pushes with (gamma - 1) m e), the mean of
+-- the continuity density (rho / (1 + tr de), [F] eq 16) beside it and its
+-- drift (sum m / rho over the length the points span, - 1), the mean
+-- specific energy, the mean artificial viscosity q / p* ([F] eqs 24-25:
+-- it fires where div v < 0 at the point), and the entropy p / rho^gamma
+-- over its left value along the fan (its inner 80 %: an isentrope, 1
+-- exactly), from the continuity density (which the explicit energy update
+-- keeps the point's e locked to) and from the spacing.
+function M.left_decomposition(bodies, t, h)
+  local ex, g = M.exact, M.exact.gamma
+  local pts = {}
+  for _, b in ipairs(bodies) do
+    local q = b:particles()
+    for i = 1, q.n do
+      pts[#pts + 1] = { x = q.x[i], m = q.mass[i], rho = q.rho[i], e = q.e[i], q = q.q[i] }
+    end
+  end
+  table.sort(pts, function(a, b) return a.x < b.x end)
+  local r = M.measure(M.profile(bodies), t)
+  local head = 0.5 - ex.left[4] * t
+  local fa, fb = head + 0.1 * (r.x_tail - head), r.x_tail - 0.1 * (r.x_tail - head)
+  local w = { n = 0, rs = 0, rc = 0, e = 0, q = 0, vol = 0 }
+  local sc, ss, nf = 0, 0, 0
+  local x0, x1
+  for i = 2, #pts - 1 do
+    local P = pts[i]
+    local rs = P.m / (0.5 * (pts[i + 1].x - pts[i - 1].x) * h)
+    if P.x > r.left_a and P.x < r.left_b then
+      w.n, w.rs, w.rc, w.e, w.q = w.n + 1, w.rs + rs, w.rc + P.rho, w.e + P.e, w.q + P.q
+      w.vol = w.vol + P.m / P.rho
+      x0, x1 = x0 or 0.5 * (P.x + pts[i - 1].x), 0.5 * (P.x + pts[i + 1].x)
+    elseif P.x > fa and P.x < fb then
+      sc, ss, nf = sc + (g - 1) * P.e * P.rho^(1 - g), ss + (g - 1) * P.e * rs^(1 - g), nf + 1
+    end
+  end
+  if w.n == 0 or nf == 0 then return nil end
+  local sL = ex.left[3] / ex.left[1]^g
+  return { rho_spacing = w.rs / w.n, rho_continuity = w.rc / w.n, e = w.e / w.n,
+           e_star = ex.p_star / ((g - 1) * ex.rho_star_left), q = w.q / w.n / ex.p_star,
+           drift = w.vol / ((x1 - x0) * h) - 1, fan_entropy_continuity = sc / nf / sL,
+           fan_entropy_spacing = ss / nf / sL, n = w.n, n_fan = nf }
+end
+
+-- The density from the points' spacing, m / (s h) with s half the distance
+-- between a point's two neighbours, for a tube of one row of points: arrays
+-- x, rho in x order (the row's two end points left out).
+function M.spacing_density(bodies, h)
+  local pts = {}
+  for _, b in ipairs(bodies) do
+    local q = b:particles()
+    for i = 1, q.n do pts[#pts + 1] = { x = q.x[i], m = q.mass[i] } end
+  end
+  table.sort(pts, function(a, b) return a.x < b.x end)
+  local r = { x = {}, rho = {} }
+  for i = 2, #pts - 1 do
+    r.x[#r.x + 1] = pts[i].x
+    r.rho[#r.rho + 1] = pts[i].m / (0.5 * (pts[i + 1].x - pts[i - 1].x) * h)
+  end
+  return r
+end
+
 -- Mean particle density per cell, for [T] Fig 13's "density at cell
 -- centres": an array over the ncells cells (nil where no particle is).
 function M.cell_density(f, dx, ncells)
