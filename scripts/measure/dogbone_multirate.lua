@@ -26,7 +26,8 @@ local threads = lamina.param("threads", 2)
 local h, d = 0.05, b.deck
 local dt0 = b.dt(h) * lamina.param("dt_scale", 1)
 -- M.setup's sim with the scheme free (the page's script is not edited here)
-local sim = lamina.sim{ domain = {0, 0, d.width, d.width}, cell = h, dt = dt0 * m, courant = 1.05,
+local sim = lamina.sim{ domain = {0, 0, d.width, d.width}, cell = h, dt = dt0 * m,
+                        courant = lamina.param("courant", 1.05),   -- the page's: the deck's 1.04
                         boundary = { left = "symmetry", bottom = "symmetry",
                                      right = "symmetry", top = "symmetry" },
                         pic = 0, threads = threads, basis = "bspline2", scheme = scheme,
