@@ -28,7 +28,7 @@ function M.run(o)
   -- o.substeps = k: multi-rate stepping (docs/api.md), k sub-steps of the
   -- same 0.4 h / c in each step
   local sim = lamina.sim{ basis = o.basis, dt = 0.4 * h / math.sqrt(E / rho) * (o.substeps or 1),
-    cell = h, substeps = o.substeps, mass = o.mass,
+    cell = h, substeps = o.substeps, mass = o.mass, scheme = o.scheme,
     domain = {0, 0, pins and 1.4 or 1, 1},
     boundary = pins and "free" or {left = "fixed", right = "fixed", top = "free", bottom = "free"} }
   local mat = lamina.membrane{ rho = rho, E = E, nu = 0, thickness = t, law = "uniaxial" }
