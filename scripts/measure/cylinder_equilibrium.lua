@@ -15,12 +15,13 @@
 -- show how little the 13 % the page once missed can come from the path or the
 -- strain measure.
 local fine = lamina.param("fine", false)
-local R, p0, gam, E, nu, th = 1.0, 1000, 1.4, 1e6, 0.3, 0.1
-local Ep = E / (1 - nu * nu)
+local C = require("cylinder_expansion")   -- the page's scene and reference
+local R, p0, gam, nu, th = C.R, C.p0, C.gamma, C.nu, C.thickness
+local Ep = C.E / (1 - nu * nu)
 local A0 = math.pi * R * R / 4
 
-local function bisect(F, radius)
-  local a, b = radius, 2 * radius
+local function bisect(F)
+  local a, b = R, 2 * R
   for _ = 1, 200 do
     local m = 0.5 * (a + b)
     if F(m) > 0 then a = m else b = m end
@@ -28,11 +29,7 @@ local function bisect(F, radius)
   return 0.5 * (a + b)
 end
 -- the page's: adiabatic from the start, p0 (R/r)^(2 gamma)
-local function eq_adiabat(radius)
-  return bisect(function(r) return p0 * (radius / r) ^ (2 * gam) - Ep * th * math.log(r / radius) / r end,
-                radius) - radius
-end
-local d_eq = eq_adiabat(R)
+local d_eq = C.equilibrium()
 -- the oscillation's energy dissipated into the gas (an undamped run keeps it
 -- as motion): the gas's internal energy is the start's less the strain
 -- energy, E_t L0 t [(eps - 1) e^eps + 1] for the quarter's length L0 = pi R / 2
@@ -41,9 +38,9 @@ local d_heat = bisect(function(r)
   local e = math.log(r / R)
   local Es = Ep * th * (math.pi / 2 * R) * ((e - 1) * math.exp(e) + 1)
   return (gam - 1) * (Eint0 - Es) / (math.pi * r * r / 4) - Ep * th * e / r
-end, R) - R
-local d_iso = bisect(function(r) return p0 * (R / r) ^ 2 - Ep * th * math.log(r / R) / r end, R) - R
-local d_lin = bisect(function(r) return p0 * (R / r) ^ (2 * gam) - Ep * th * (r / R - 1) / r end, R) - R
+end) - R
+local d_iso = bisect(function(r) return p0 * (R / r) ^ 2 - Ep * th * math.log(r / R) / r end) - R
+local d_lin = bisect(function(r) return p0 * (R / r) ^ (2 * gam) - Ep * th * (r / R - 1) / r end) - R
 print(string.format("equilibrium delta r: adiabatic %.6f (the page's); the oscillation's energy turned to "
   .. "heat %.6f (%+.2f %%); isothermal %.6f (%+.2f %%); engineering strain %.6f (%+.2f %%)",
   d_eq, d_heat, 100 * (d_heat / d_eq - 1), d_iso, 100 * (d_iso / d_eq - 1), d_lin, 100 * (d_lin / d_eq - 1)))
@@ -54,37 +51,22 @@ print(string.format("equilibrium delta r: adiabatic %.6f (the page's); the oscil
 -- the membrane's space against p0 (A0 / A)^gamma (largest relative gap over
 -- the samples), and the total energy's drift.
 local function run(o)
-  local h, radius = o.cell or 0.1, o.radius or R
+  local radius = o.radius or R
   local whole = o.whole
   local count = o.count or (whole and 720 or 181)
-  local sim = lamina.sim{ basis = o.basis or "linear", cell = h, dt = 2e-5 * h / 0.1,
-    domain = whole and {-1.5, -1.5, 1.5, 1.5} or {0, 0, 1.5, 1.5},
-    boundary = whole and { left = "fixed", bottom = "fixed", right = "fixed", top = "fixed" }
-                      or { left = "symmetry", bottom = "symmetry", right = "fixed", top = "fixed" } }
-  local gas = sim:body{ material = lamina.gas{ rho = 1, p = p0, gamma = gam, mu = 0.2 }, ppc = 16,
-                        name = "gas", fill = "clipped",
-                        region = lamina.disk{ center = {0, 0}, radius = radius } }
-  local mem = sim:membrane{ material = lamina.membrane{ rho = 0.5, E = E, nu = nu, thickness = th,
-                                                        law = "plane_stress" },
-                            curve = lamina.arc{ center = {0, 0}, radius = radius, from = 0,
-                                                to = whole and 360 or 90 },
-                            count = count, force = o.force or "point", normals = "connectivity",
-                            orient = {0, 0}, name = "membrane" }
+  local sim, gas, mem = C.setup(o)
   local c = (not whole) and {0, 0} or nil
   local q = whole and count // 4 or count - 1   -- the point at 90 deg, less one
   local area0 = mem:enclosed_area(c)
   local function r_of(P, i) return math.sqrt(P.x[i] ^ 2 + P.y[i] ^ 2) - radius end
   local worst_p = 0
   local rec = sim:record{ every = 2.5e-4, energy = true, values = {
-    all = function() local P, s = mem:particles(), 0
-      for i = 1, P.n do s = s + r_of(P, i) end return s / P.n end,
+    all = function() return C.dr_all(mem, radius) end,
     area = function() return math.sqrt(mem:enclosed_area(c) / area0) * radius - radius end,
-    three = function() local P = mem:particles()
-      return (r_of(P, 1) + r_of(P, 1 + q // 2) + r_of(P, 1 + q)) / 3 end,
+    three = function() return C.dr3(mem, q, radius) end,
     at0 = function() return r_of(mem:particles(), 1) end,
     at45 = function() return r_of(mem:particles(), 1 + q // 2) end,
-    et = function() local P, s = mem:particles(), 0
-      for i = 1, P.n do s = s + P.et[i] end return s / P.n end,
+    et = function() return C.strain(mem) end,
     padiab = function()
       local A = mem:enclosed_area(c)
       local gap = gas:pressure(mem, c) / (p0 * (area0 / A) ^ gam) - 1
@@ -96,7 +78,7 @@ local function run(o)
   local r = {}
   for _, k in ipairs{ "all", "area", "three", "at0", "at45", "et" } do r[k] = rec:mean(k, t0, t1) end
   r.padiab, r.drift, r.t0, r.t1 = worst_p, math.abs(tot[#tot] / tot[1] - 1), t0, t1
-  r.eq = radius == R and d_eq or eq_adiabat(radius)
+  r.eq = C.equilibrium(radius)
   return r
 end
 

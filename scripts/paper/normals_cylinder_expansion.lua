@@ -1,5 +1,5 @@
 -- title: An expanding cylindrical membrane run with each per-step normals method
--- source: York's dissertation [T] §7.5.2, Figs 73, 74 and 75
+-- source: York's dissertation [T] §7.5.2, Figs 73 and 75
 -- look: Fig 73: the change of the mean radius (points at 0, 45 and 90
 --   degrees) against time. With the connectivity normals (thick) the
 --   cylinder expands and oscillates about its equilibrium (the black dashed
@@ -13,10 +13,10 @@
 --   solid line) falls behind the quadratic run the same way (thin, sky blue)
 --   from the start, holds for a moment near delta r = 0.06 (t = 0.007: [T]'s
 --   "only temporarily stop it from expanding"), then goes to the walls too.
---   Fig 74: points and normals at t = 0.01, (a) cubic, (b) quadratic (the
---   normals scattered; the cubic's drawn on its whole circle's first
---   quadrant, its gas points small: a clipped first point sets the disc
---   size); Fig 75: positions at t = 0.05 for each method, (c) the cubic's
+--   (The same runs at t = 0.01, [T]'s Fig 74, are the page
+--   normals_cylinder_expansion_fig74.) Fig 75: positions at t = 0.05 for
+--   each method (the cubic's drawn on its whole circle's first quadrant, its
+--   gas points small: a clipped first point sets the disc size), (c) the cubic's
 --   against the walls like (d)'s - not [T]'s Fig 75(c), where "some forces in
 --   the membrane were generated to resist expansion" (the ✗ shows it)
 -- checks: [T]'s "similar" as a number: the mass matrix run's mean radius
@@ -79,18 +79,9 @@
 local out = lamina.param("out", "out/normals_cylinder_expansion")
 local t_end = lamina.param("t_end", 0.05)
 
-local R, p0, gam, E, nu, th, h = 1.0, 1000, 1.4, 1e6, 0.3, 0.1, 0.1
--- the equilibrium: bisection on p0 (R/r)^(2 gamma) - E t ln(r/R) / ((1 - nu^2) r)
-local function eq_radius()
-  local function F(r) return p0 * (R / r) ^ (2 * gam) - E * th * math.log(r / R) / ((1 - nu * nu) * r) end
-  local a, b = R, 2 * R
-  for _ = 1, 100 do
-    local m = 0.5 * (a + b)
-    if F(m) > 0 then a = m else b = m end
-  end
-  return 0.5 * (a + b)
-end
-local d_eq = eq_radius() - R
+local C = require("cylinder_expansion")
+local R, h = C.R, C.cell
+local d_eq = C.equilibrium()
 
 -- whole: [T] ran the cubic method on the whole circle ("the boundary
 -- conditions for the cubic gradient were not implemented"): the grid
@@ -105,7 +96,7 @@ local methods = {
   { key = "quadratic_colour", label = "quadratic colour" },
   { key = "colour", label = "simple colour (not in Fig 73)", width = 1 },
   { key = "cubic_colour", label = "cubic (whole circle, gas coloured)", width = 1, color = 6,
-    whole = true, gas_colour = true, fig74 = "74(a)", fig75 = "75(c)" },
+    whole = true, gas_colour = true, fig75 = "75(c)" },
   { key = "quadratic_colour", name = "quadratic_whole", label = "quadratic (whole circle, gas coloured)",
     whole = true, gas_colour = true, width = 1, color = 5 },
   { key = "cubic_colour", name = "cubic_membrane_only", whole = true, unplotted = true,
@@ -114,40 +105,17 @@ local methods = {
 local curves, runs, hashes = {}, {}, {}
 for _, m in ipairs(methods) do
   local name = m.name or m.key
-  local sim, gas, mem
-  if m.whole then
-    sim = lamina.sim{ basis = "linear", domain = {-1.5, -1.5, 1.5, 1.5}, cell = h, dt = 2e-5,
-      boundary = { left = "fixed", bottom = "fixed", right = "fixed", top = "fixed" } }
-  else
-    sim = lamina.sim{ basis = "linear", domain = {0, 0, 1.5, 1.5}, cell = h, dt = 2e-5,
-      boundary = { left = "symmetry", bottom = "symmetry", right = "fixed", top = "fixed" } }
-  end
-  gas = sim:body{ material = lamina.gas{ rho = 1, p = p0, gamma = gam, mu = 0.2 }, ppc = 16,
-                  name = "gas", fill = "clipped", region = lamina.disk{ center = {0, 0}, radius = R } }
-  mem = sim:membrane{ material = lamina.membrane{ rho = 0.5, E = E, nu = nu, thickness = th,
-                                                  law = "plane_stress" },
-                      curve = lamina.arc{ center = {0, 0}, radius = R, from = 0, to = m.whole and 360 or 90 },
-                      count = m.whole and 720 or 181, force = "point", normals = m.key, orient = {0, 0},
-                      colour_points = m.gas_colour and gas or nil, name = "membrane" }
+  local sim, gas, mem = C.setup{ normals = m.key, whole = m.whole, gas_colour = m.gas_colour }
   -- [T]: "the change in the radius of material points at 0, 45, and 90 degrees are averaged"
   -- (points 1, 91 and 181 on the quarter and on the whole circle alike)
   -- and, for the equilibrium (Laplace's law is about the circle's radius), the
   -- mean over every point of the quarter (the quarter runs only: the colour
   -- methods' membranes leave the circle), its mean strain and the radius at 0
   -- and 45 degrees alone
-  local vals = { dr = function()
-    local P, s = mem:particles(), 0
-    for _, i in ipairs{1, 91, 181} do s = s + math.sqrt(P.x[i] ^ 2 + P.y[i] ^ 2) - R end
-    return s / 3 end }
+  local vals = { dr = function() return C.dr3(mem) end }
   if not m.whole then
-    vals.dr_all = function()
-      local P, s = mem:particles(), 0
-      for i = 1, P.n do s = s + math.sqrt(P.x[i] ^ 2 + P.y[i] ^ 2) - R end
-      return s / P.n end
-    vals.et_all = function()
-      local P, s = mem:particles(), 0
-      for i = 1, P.n do s = s + P.et[i] end
-      return s / P.n end
+    vals.dr_all = function() return C.dr_all(mem) end
+    vals.et_all = function() return C.strain(mem) end
     vals.dr_0 = function() local P = mem:particles(); return math.sqrt(P.x[1] ^ 2 + P.y[1] ^ 2) - R end
     vals.dr_45 = function() local P = mem:particles(); return math.sqrt(P.x[91] ^ 2 + P.y[91] ^ 2) - R end
   end
@@ -158,9 +126,6 @@ for _, m in ipairs(methods) do
                height = 440, window = {0, 0, 1.5, 1.5}, discs = "spacing",
                title = string.format("Fig %s: %s, t = %.2f", fig, m.label:gsub(" %(.*", ""), tf) }
     end)
-  end
-  if m.fig74 or (not m.whole and (m.key == "quadratic_colour" or m.key == "colour")) then
-    frame(math.min(0.01, t_end), m.fig74 or "74")
   end
   if not m.name then frame(t_end, m.fig75 or "75") end
   sim:run{ t_end = t_end }
