@@ -24,6 +24,8 @@
 --   local r = gn.inside(sim, gas, polygon_points, {domain = {0, 0, 1.6, 1.6},
 --                       mirror = {x = 0, y = 0}})   -- basis: the sim's
 --   r.energy (mean P_i), r.mass (mean mass-weighted), r.nodes (count)
+--   gn.reached(sim, gas, {domain = ...}): the mean P_i over the grid's
+--   interior nodes (off the domain's boundary) that the gas reaches
 local M = {}
 
 -- one axis' weights: {node, weight} pairs for coordinate u, cell h, origin u0
@@ -98,6 +100,27 @@ function M.inside(sim, gas, points, o)
     end
   end
   if r.nodes > 0 then r.energy, r.mass = r.energy / r.nodes, r.mass / r.nodes end
+  return r
+end
+
+-- The other reading of "interior grid points": the grid's nodes off the
+-- domain's boundary that the gas reaches (sum m N > 0), whether inside the
+-- membrane or not; a node the gas only partly covers reads the part.
+function M.reached(sim, gas, o)
+  o = o or {}
+  local gamma1 = o.gamma1 or 0.4
+  local S = M.sums(sim, gas, o)
+  local r = { energy = 0, nodes = 0 }
+  for j = 1, S.ny - 1 do
+    for i = 1, S.nx - 1 do
+      local key = j * (S.nx + 1) + i
+      if (S.mass[key] or 0) > 0 then
+        r.energy = r.energy + gamma1 * S.energy[key] / (S.h * S.h)
+        r.nodes = r.nodes + 1
+      end
+    end
+  end
+  if r.nodes > 0 then r.energy = r.energy / r.nodes end
   return r
 end
 

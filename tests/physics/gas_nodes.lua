@@ -56,6 +56,18 @@ for _, basis in ipairs{"linear", "bspline2"} do
   end
 end
 
+-- the grid's interior nodes the gas reaches: on the linear basis the 7 x 7
+-- nodes 0.2 ... 0.8, of which 5 x 5 read 100, the 20 on the edge 50 but the
+-- 4 corners 25: (25 * 100 + 20 * 50 + 4 * 25) / 49
+do
+  local sim = lamina.sim{ domain = {0, 0, 1, 1}, cell = 0.1, dt = 1e-4, basis = "linear" }
+  local gas = sim:body{ material = lamina.gas{ rho = 1, e = 250, gamma = 1.4 }, ppc = 4,
+                        region = lamina.rect{x0 = 0.2, y0 = 0.2, x1 = 0.8, y1 = 0.8}, name = "gas" }
+  local r = gn.reached(sim, gas, { domain = {0, 0, 1, 1} })
+  assert(r.nodes == 49, "reached: 49 nodes, got " .. r.nodes)
+  close(r.energy, (25 * 100 + 20 * 50 + 4 * 25) / 49, "reached: the mean over the nodes the gas reaches")
+end
+
 -- a quarter gas against symmetry walls at x = 0, y = 0, mirrored
 do
   local sim = lamina.sim{ domain = {0, 0, 1, 1}, cell = 0.1, dt = 1e-4, basis = "linear",
