@@ -22,12 +22,13 @@
 --   ("gasonly"). Also the final energies and the pressure the energy alone
 --   implies, 0.4 E_int / A (the whole enclosed space at one pressure).
 --   lamina run scripts/measure/dogbone_pressure_defs.lua
---     [--set cells="0.4 0.2 0.1"] [--set t_end=8.5] [--set nodes=1]
+--     [--set cells="0.4 0.2 0.1"] [--set t_end=8.5] [--set nodes=1] [--set count=100]
 local b = require("dogbone_box9")
 local cells = lamina.param("cells", "0.4 0.2 0.1")
 local t_end = lamina.param("t_end", 8.5)
 local threads = lamina.param("threads", 2)
 local out = lamina.param("out", "out/dogbone_pressure_defs")
+local count = lamina.param("count", 0)   -- membrane points; 0: the deck's 600 ([T] Table 5: 56 / 100 / 200 / 400)
 
 -- one axis' weights: node index and weight pairs for coordinate x on cell h
 local function weights(x, h, basis)
@@ -72,7 +73,7 @@ print("cell  basis  t  encl  space(nodes)  part  VN_in(n)  MW_in  VN_gasonly(n) 
 for hs in cells:gmatch("[%d.]+") do
   local h = tonumber(hs)
   local basis = h < 0.075 and "bspline2" or "linear"
-  local sim, gas, mem = b.setup(h, { basis = basis, threads = threads })
+  local sim, gas, mem = b.setup(h, { basis = basis, threads = threads, count = count > 0 and count or nil })
   local rec = sim:record{ every = 0.01, energy = true,
                           file = string.format("%s/energy_cell%.3f.csv", out, h), values = {
     gk = function() return sim:energy().grid_kinetic end,
