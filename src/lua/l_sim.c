@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "l_boundary.h"
 #include "l_internal.h"
 #include "l_sim3.h"
 #include "l_sim_run_common.h"
@@ -24,7 +25,6 @@ static const char *const transfers[] = {"flip", "apic", NULL};
 static const char *const bases[] = {"linear", "gimp", "bspline2", NULL};
 /* lm_stress: [T] §5.4.3 (stress_cell.c) */
 static const char *const stresses[] = {"points", "cell", NULL};
-static const char *const bcs[] = {"fixed", "symmetry", "free", NULL};
 static const char *const sides[] = {"left", "right", "bottom", "top", NULL};
 
 la_sim *la_check_sim_any(lua_State *L, int idx)
@@ -88,20 +88,7 @@ static void read_domain(lua_State *L, const char *fn, lm_sim_def *d)
  * top = ...}; sides not named keep the default, fixed. */
 static void read_boundary(lua_State *L, const char *fn, lm_sim_def *d)
 {
-    int t = la_getfield(L, 1, "boundary");
-    if (t == LUA_TSTRING) {
-        int bc = la_option(L, fn, "boundary", lua_tostring(L, -1), bcs);
-        for (int s = 0; s < 4; s++) d->bc[s] = (lm_bc)bc;
-    } else if (t == LUA_TTABLE) {
-        la_check_keys(L, -1, "lamina.sim boundary", sides);
-        for (int s = 0; s < 4; s++) {
-            const char *v = la_opt_string(L, -1, fn, sides[s], NULL);
-            if (v) d->bc[s] = (lm_bc)la_option(L, fn, sides[s], v, bcs);
-        }
-    } else if (t != LUA_TNIL) {
-        luaL_error(L, "%s: 'boundary' must be a string or a table of sides", fn);
-    }
-    lua_pop(L, 1);
+    la_read_boundary(L, fn, sides, "sides", NULL, d->bc);
 }
 
 int la_sim_new(lua_State *L)
