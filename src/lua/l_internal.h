@@ -21,6 +21,9 @@
  * line (docs/design.md, "Conventions"). */
 /* lua_getfield without metamethods on tables (l_args.c says why). */
 int la_getfield(lua_State *L, int idx, const char *key);
+/* t[key] of the table t at idx (la_getfield), or a new empty table stored
+ * there when it is not a table; pushed (l_subtable.c). */
+void la_subtable(lua_State *L, int idx, const char *key);
 void la_check_table(lua_State *L, int idx, const char *fn);
 void la_check_keys(lua_State *L, int idx, const char *fn, const char *const keys[]);
 int la_has(lua_State *L, int idx, const char *key);

@@ -590,12 +590,7 @@ int la_sim_record(lua_State *L)
 
     /* the sim keeps its recorders (to flush them); the event samples */
     lua_getiuservalue(L, 1, 1);
-    if (la_getfield(L, -1, "recorders") != LUA_TTABLE) {
-        lua_pop(L, 1);
-        lua_newtable(L);
-        lua_pushvalue(L, -1);
-        lua_setfield(L, -3, "recorders");
-    }
+    la_subtable(L, -1, "recorders");
     lua_pushvalue(L, ridx);
     lua_rawseti(L, -2, (lua_Integer)lua_rawlen(L, -2) + 1);
     lua_pop(L, 2);
