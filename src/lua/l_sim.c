@@ -456,20 +456,13 @@ static void mass_resolve(lua_State *L, la_sim *s)
     if (to != m->def.mass && lm_sim_set_mass(m, to) != LM_OK) luaL_error(L, "%s", m->err);
 }
 
-typedef struct run_steps_arg {
-    la_run_guard *guard;
-    long nsteps;
-    double t_end;
-} run_steps_arg;
-
 /* The steps of one run, called protected by advance() with the sim at
  * index 1: any error raised here - the Courant refusal, a callback's, a pin
  * velocity function's, a failed checkpoint, a failed step, a signal - ends
  * in advance()'s run guard. */
 static int run_steps(lua_State *L)
 {
-    run_steps_arg *a = lua_touserdata(L, 2);
-    lua_settop(L, 1);
+    la_run_arg *a = la_run_arg_take(L);
     la_sim *s = a->guard->s;
     long nsteps = a->nsteps;
     double t_end = a->t_end;
@@ -532,8 +525,8 @@ static int run_steps(lua_State *L)
  * (l_run_guard.c): the sim is not left running, the records are written. */
 static void advance(lua_State *L, la_sim *s, long nsteps, double t_end)
 {
-    run_steps_arg a = {NULL, nsteps, t_end};
-    la_sim_run_protected(L, s, run_steps, &a, &a.guard);   /* l_sim_run_common.c */
+    la_run_arg a = {NULL, nsteps, t_end};
+    la_sim_run_protected(L, s, run_steps, &a);   /* l_sim_run_common.c */
 }
 
 void la_sim_advance(lua_State *L, la_sim *s, long nsteps)
