@@ -18,6 +18,7 @@
 #include "fields.h"
 #include "l_internal.h"
 #include "l_sim3.h"
+#include "util.h"
 
 #define LA_RECORD "lamina.record"
 
@@ -58,11 +59,9 @@ static la_record *check_record(lua_State *L, int idx)
 
 static la_column *add_column(lua_State *L, la_record *r, const char *name, int src)
 {
-    la_column *c = realloc(r->cols, (size_t)(r->ncols + 1) * sizeof *c);
+    la_column *c = lu_push(&r->cols, (size_t)r->ncols, sizeof *r->cols);
     if (!c) luaL_error(L, "sim:record: out of memory");
-    r->cols = c;
-    c = &r->cols[r->ncols++];
-    memset(c, 0, sizeof *c);
+    r->ncols++;
     if (strlen(name) >= sizeof c->name)
         luaL_error(L, "sim:record: column name '%s' is too long", name);
     /* a CSV header field: nothing that runs as shell or Python (l_path.c) */
