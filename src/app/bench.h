@@ -90,12 +90,14 @@ double bench_cpu_s(void);
 /* A case of bench engine's tables, its engine (2D or 3D) behind the
  * callbacks. bench_time_case runs it for about `work` particle-steps after
  * a warm-up step each build, rebuilding it whenever its simulated time
- * would pass t_max (the cost per step does not depend on it), and prints
+ * would pass t_max or it has run steps_max steps (the cost per step does
+ * not depend on it), and prints
  * its row; 0, or -1 with the reason on stderr as `lamina bench CMD`. */
 typedef struct bench_case {
     const char *cmd, *name;  /* "engine" or "engine --dim 3"; the row's */
     int width;               /* the table's case column */
     double t_max;
+    long steps_max;          /* rebuilt after this many steps too (0: no cap) */
     void *ctx;
     void *(*build)(void *ctx);   /* a fresh case, or NULL */
     size_t (*particles)(const void *sim);

@@ -161,7 +161,7 @@ static int time_case(const char *name, builder make, double h, void *ctx, double
                      double work, double plain, double plain_cpu)
 {
     case2 c = {make, h, ctx};
-    bench_case k = {"engine", name, 12, t_max, &c, build2, particles2, dt2, counted2,
+    bench_case k = {"engine", name, 12, t_max, 0, &c, build2, particles2, dt2, counted2,
                     step2, error2, release2};
     return bench_time_case(&k, work, plain, plain_cpu);
 }

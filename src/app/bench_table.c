@@ -62,6 +62,7 @@ int bench_time_case(const bench_case *k, double work, double plain, double plain
         }
         n = k->particles(sim);
         long steps = (long)fmin(fmax(10, (work - done) / (double)n), k->t_max / k->dt(sim));
+        if (k->steps_max > 0 && steps > k->steps_max) steps = k->steps_max;
         if (steps < 1) steps = 1;
         /* as a script's sim:run steps: each step knows another follows */
         if (k->step(sim, 1) != 0) goto failed;     /* warm-up */
