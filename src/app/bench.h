@@ -62,9 +62,55 @@ int bench_sizes(const char *cmd, const char *arg, double *sizes, int max);
  * printed as `lamina bench CMD`. */
 int bench_whole(const char *cmd, const char *opt, const char *arg, long lo, long hi,
                 long *out);
+/* (bench_args.c) --work: a particle-step count in [1e3, 1e10] from arg into
+ * *work; -1 with the reason printed as `lamina bench CMD`. */
+int bench_work(const char *cmd, const char *arg, double *work);
+/* (bench_args.c) The options bench engine's 2D and 3D tables share, at
+ * argv[*i] with its value after it: --work, --threads (1 to
+ * LM_MAX_THREADS), --sizes (at most max). 1 taken (*i on its value), 0 not
+ * one of them (or no value follows), -1 a bad value (said on stderr). */
+int bench_engine_opt(int argc, char **argv, int *i, double *work, int *threads,
+                     double *sizes, int max, int *nsizes);
 /* Prints "unknown option 'ARG' (usage: lamina bench CMD USAGE)"; returns 2,
  * the exit status of a usage error. */
 int bench_unknown(const char *cmd, const char *arg, const char *usage);
+/* bench engine's table (bench_table.c), its case column `width` wide:
+ * the header; a row of n particles stepped `steps` times over secs of wall
+ * clock and cpu of CPU time, `done` particle-steps, against the plain
+ * loop's rates plain and plain_cpu; and the plain loop's own row at about
+ * `particles` (its rate, its CPU-time rate in *plain_cpu; -1 out of
+ * memory, said on stderr). The clocks: wall (monotonic) and the process's
+ * CPU time, in seconds. */
+void bench_table_head(int width);
+void bench_table_row(int width, const char *name, size_t n, long steps, double secs,
+                     double cpu, double done, double plain, double plain_cpu);
+double bench_plain_row(int width, double particles, double work, double *plain_cpu);
+double bench_wall_s(void);
+double bench_cpu_s(void);
+/* A case of bench engine's tables, its engine (2D or 3D) behind the
+ * callbacks. bench_time_case runs it for about `work` particle-steps after
+ * a warm-up step each build, rebuilding it whenever its simulated time
+ * would pass t_max or it has run steps_max steps (the cost per step does
+ * not depend on it), and prints
+ * its row; 0, or -1 with the reason on stderr as `lamina bench CMD`. */
+typedef struct bench_case {
+    const char *cmd, *name;  /* "engine" or "engine --dim 3"; the row's */
+    int width;               /* the table's case column */
+    double t_max;
+    long steps_max;          /* rebuilt after this many steps too (0: no cap) */
+    void *ctx;
+    void *(*build)(void *ctx);   /* a fresh case, or NULL */
+    size_t (*particles)(const void *sim);
+    double (*dt)(const void *sim);
+    /* after the steps: the single-rate steps one step counts as */
+    double (*counted)(const void *sim);
+    /* one step, `more` when another follows; 0 or not with error(sim) */
+    int (*step)(void *sim, int more);
+    const char *(*error)(const void *sim);
+    /* frees the case, after the steps (stepped) or a failed one */
+    void (*release)(void *sim, void *ctx, int stepped);
+} bench_case;
+int bench_time_case(const bench_case *k, double work, double plain, double plain_cpu);
 /* The median of v[0..n) (n >= 1; v is sorted in place). */
 double bench_median(double *v, int n);
 

@@ -2,6 +2,7 @@
  * options' parsing and messages, and the median of their timings. */
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "bench.h"
 
@@ -33,6 +34,38 @@ int bench_whole(const char *cmd, const char *opt, const char *arg, long lo, long
     }
     *out = v;
     return 0;
+}
+
+int bench_work(const char *cmd, const char *arg, double *work)
+{
+    double v = atof(arg);
+    if (!(v >= 1e3 && v <= 1e10)) {
+        fprintf(stderr, "lamina bench %s: --work needs a number in [1e3, 1e10]\n", cmd);
+        return -1;
+    }
+    *work = v;
+    return 0;
+}
+
+int bench_engine_opt(int argc, char **argv, int *i, double *work, int *threads,
+                     double *sizes, int max, int *nsizes)
+{
+    const char *opt = argv[*i];
+    if (*i + 1 >= argc) return 0;
+    const char *arg = argv[*i + 1];
+    if (strcmp(opt, "--work") == 0) {
+        if (bench_work("engine", arg, work) != 0) return -1;
+    } else if (strcmp(opt, "--threads") == 0) {
+        long v;
+        if (bench_whole("engine", "--threads", arg, 1, LM_MAX_THREADS, &v) != 0) return -1;
+        *threads = (int)v;
+    } else if (strcmp(opt, "--sizes") == 0) {
+        if ((*nsizes = bench_sizes("engine", arg, sizes, max)) < 0) return -1;
+    } else {
+        return 0;
+    }
+    ++*i;
+    return 1;
 }
 
 int bench_unknown(const char *cmd, const char *arg, const char *usage)

@@ -33,21 +33,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "bench.h"
 #include "mpm.h"
 #include "mpm_contact.h"
-
-static double clock_s(clockid_t id)
-{
-    struct timespec ts;
-    clock_gettime(id, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static double now(void) { return clock_s(CLOCK_MONOTONIC); }
-static double cpu_now(void) { return clock_s(CLOCK_PROCESS_CPUTIME_ID); }
 
 /* Seeds a region (disk of centre c and radius r, or a quarter disk when
  * quarter) of material m into a new body with 2^k x 2^k points per cell. */
@@ -136,49 +125,45 @@ static lm_sim *make_gas(double h, lm_material *gas, lm_material *skin, lm_normal
 
 typedef lm_sim *(*builder)(double h, void *ctx);
 
+/* A 2D case for bench_time_case (bench_table.c): its builder at cell size h */
+typedef struct case2 {
+    builder make;
+    double h;
+    void *ctx;
+} case2;
+
+static void *build2(void *ctx)
+{
+    const case2 *c = ctx;
+    return c->make(c->h, c->ctx);
+}
+
+static size_t particles2(const void *sim) { return ((const lm_sim *)sim)->p.n; }
+static double dt2(const void *sim) { return ((const lm_sim *)sim)->def.dt; }
+/* multi-rate: each step counts as the k steps a single-rate run would
+ * take (the membrane's dt) */
+static double counted2(const void *sim) { return lm_subcycle_count(sim); }
+static int step2(void *sim, int more) { return lm_sim_step_then(sim, more) != LM_OK; }
+static const char *error2(const void *sim) { return ((const lm_sim *)sim)->err; }
+
+static void release2(void *sim, void *ctx, int stepped)
+{
+    (void)ctx;
+    (void)stepped;
+    lm_sim_free(sim);
+}
+
 /* Runs about `work` particle-steps, rebuilding the case whenever its
  * simulated time would pass t_max (the disks must not collide and the USL
- * run must not grow unstable: the cost per step does not depend on it);
- * prints one row. */
-/* plain, plain_cpu: the plain loop's rates, wall clock and CPU time */
+ * run must not grow unstable); prints one row. plain, plain_cpu: the plain
+ * loop's rates, wall clock and CPU time */
 static int time_case(const char *name, builder make, double h, void *ctx, double t_max,
                      double work, double plain, double plain_cpu)
 {
-    double secs = 0, cpu = 0, done = 0;
-    long steps_total = 0;
-    size_t n = 0;
-    while (done < work) {
-        lm_sim *sim = make(h, ctx);
-        if (!sim) {
-            fprintf(stderr, "lamina bench engine: %s: could not build the case\n", name);
-            return -1;
-        }
-        n = sim->p.n;
-        long steps = (long)fmin(fmax(10, (work - done) / (double)n), t_max / sim->def.dt);
-        if (steps < 1) steps = 1;
-        /* as a script's sim:run steps: each step knows another follows */
-        if (lm_sim_step_then(sim, 1) != LM_OK) goto failed;     /* warm-up */
-        double t0 = now(), c0 = cpu_now();
-        for (long s = 0; s < steps; s++)
-            if (lm_sim_step_then(sim, s + 1 < steps) != LM_OK) goto failed;
-        secs += now() - t0;
-        cpu += cpu_now() - c0;
-        /* multi-rate: each step counts as the k steps a single-rate run
-         * would take (the membrane's dt) */
-        done += (double)n * (double)steps * lm_subcycle_count(sim);
-        steps_total += steps;
-        lm_sim_free(sim);
-        continue;
-    failed:
-        fprintf(stderr, "lamina bench engine: %s: %s\n", name, sim->err);
-        lm_sim_free(sim);
-        return -1;
-    }
-    printf("| %-12s | %9zu | %7ld | %7.3f | %7.2f | %7.2f | %5.2f | %5.2f |\n", name, n,
-           steps_total, secs, done / secs / 1e6, done / cpu / 1e6, done / secs / plain,
-           done / cpu / plain_cpu);
-    fflush(stdout);
-    return 0;
+    case2 c = {make, h, ctx};
+    bench_case k = {"engine", name, 12, t_max, 0, &c, build2, particles2, dt2, counted2,
+                    step2, error2, release2};
+    return bench_time_case(&k, work, plain, plain_cpu);
 }
 
 typedef struct bench_ctx {
@@ -240,18 +225,10 @@ int bench_engine(int argc, char **argv)
     double sizes[8] = {1e3, 1e4, 1e5};
     int nsizes = 3;
     for (int i = 0; i < argc; i++) {
-        if (strcmp(argv[i], "--work") == 0 && i + 1 < argc) {
-            work = atof(argv[++i]);
-            if (!(work >= 1e3 && work <= 1e10)) {
-                fprintf(stderr, "lamina bench engine: --work needs a number in [1e3, 1e10]\n");
-                return 2;
-            }
-        } else if (strcmp(argv[i], "--threads") == 0 && i + 1 < argc) {
-            long v;
-            if (bench_whole("engine", "--threads", argv[++i], 1, LM_MAX_THREADS, &v) != 0)
-                return 2;
-            threads = (int)v;
-        } else if (strcmp(argv[i], "--basis") == 0 && i + 1 < argc) {
+        int taken = bench_engine_opt(argc, argv, &i, &work, &threads, sizes, 8, &nsizes);
+        if (taken < 0) return 2;
+        if (taken) continue;   /* --work, --threads, --sizes */
+        if (strcmp(argv[i], "--basis") == 0 && i + 1 < argc) {
             const char *name = argv[++i];
             int b = 0;
             while (b <= LM_BASIS_BSPLINE2 && strcmp(name, lm_basis_name((lm_basis)b)) != 0) b++;
@@ -261,8 +238,6 @@ int bench_engine(int argc, char **argv)
                 return 2;
             }
             basis = (lm_basis)b;
-        } else if (strcmp(argv[i], "--sizes") == 0 && i + 1 < argc) {
-            if ((nsizes = bench_sizes("engine", argv[++i], sizes, 8)) < 0) return 2;
         } else if (strcmp(argv[i], "--dim") == 0 && i + 1 < argc) {
             i++;   /* 2 (cmd_bench.c sends any other to bench_engine3.c) */
         } else {
@@ -273,22 +248,14 @@ int bench_engine(int argc, char **argv)
     }
     printf("lamina bench engine: %d thread%s, basis %s, about %.3g particle-steps per case\n\n",
            threads, threads == 1 ? "" : "s", lm_basis_name(basis), work);
-    printf("| case         | particles |   steps |       s | M p-steps/s | M p-steps/CPU-s | "
-           "x plain | x plain, CPU |\n");
-    printf("|---|---:|---:|---:|---:|---:|---:|---:|\n");
+    bench_table_head(12);
     int bad = 0;
     for (int k = 0; k < nsizes; k++) {
         /* the plain loop on the same disks (bench_plain.c, bilinear, USL,
          * one thread), the last column's yardstick: each row's wall-clock
          * rate over its (issue 36 item 2) */
-        size_t np = 0;
-        double pc = 0, plain = bench_plain_rate(sizes[k], work, &np, &pc);
-        if (plain <= 0) {
-            fprintf(stderr, "lamina bench engine: plain loop: out of memory\n");
-            return 1;
-        }
-        printf("| %-12s | %9zu | %7s | %7s | %7.2f | %7.2f | %5.2f | %5.2f |\n", "plain loop", np,
-               "", "", plain / 1e6, pc / 1e6, 1.0, 1.0);
+        double pc = 0, plain = bench_plain_row(12, sizes[k], work, &pc);
+        if (plain <= 0) return 1;
         /* two disks of radius 0.2, 4 ppc: about 1.005 / h^2 particles */
         double h = sqrt(1.005 / sizes[k]);
         bench_ctx musl = {&rubber, NULL, LM_MUSL, 0, LM_NORMALS_CONNECTIVITY, 0};

@@ -22,17 +22,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "bench.h"
 #include "mpm3.h"
-
-static double clock_s(clockid_t id)
-{
-    struct timespec ts;
-    clock_gettime(id, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 typedef struct case3 {
     const char *name;
@@ -113,51 +105,58 @@ static lm3_sim *make_block(double particles, const case3 *c)
     return sim;
 }
 
-/* One row; the memory of the last build into *bytes, *bytes_exact (a
- * particle with its grid). */
+/* A 3D case for bench_time_case (bench_table.c), and the memory of its
+ * last build: bytes a particle with its grid, at the arrays' capacity and
+ * at the count */
+typedef struct run3 {
+    const case3 *c;
+    double particles;
+    double bytes, bytes_exact;
+} run3;
+
+static void *build3(void *ctx)
+{
+    const run3 *r = ctx;
+    return make_block(r->particles, r->c);
+}
+
+static size_t particles3(const void *sim) { return ((const lm3_sim *)sim)->p.n; }
+static double dt3(const void *sim) { return ((const lm3_sim *)sim)->def.dt; }
+static double counted3(const void *sim) { (void)sim; return 1; }
+
+static int step3(void *sim, int more)
+{
+    (void)more;
+    return lm3_step(sim) != LM_OK;
+}
+
+static const char *error3(const void *sim) { return ((const lm3_sim *)sim)->err; }
+
+static void release3(void *sim, void *ctx, int stepped)
+{
+    if (stepped) {
+        /* after the steps: with the threads' copies and the sums made
+         * ahead, which the steps allocate */
+        run3 *r = ctx;
+        size_t pb, pe, gb, n = particles3(sim);
+        lm3_memory(sim, &pb, &pe, &gb);
+        r->bytes = (double)(pb + gb) / (double)n;
+        r->bytes_exact = (double)(pe + gb) / (double)n;
+    }
+    lm3_sim_free(sim);
+}
+
+/* One row; the memory of the last build into *bytes, *bytes_exact. */
 static int time_case3(const case3 *c, double particles, double work, double plain,
                       double plain_cpu, double *bytes, double *bytes_exact)
 {
-    double secs = 0, cpu = 0, done = 0;
-    long steps_total = 0;
-    size_t n = 0;
-    while (done < work) {
-        lm3_sim *sim = make_block(particles, c);
-        if (!sim) {
-            fprintf(stderr, "lamina bench engine --dim 3: %s: could not build the case "
-                    "(out of memory?)\n", c->name);
-            return -1;
-        }
-        n = sim->p.n;
-        long steps = (long)fmin(fmin(fmax(10, (work - done) / (double)n), 0.05 / sim->def.dt),
-                                BENCH3_STEPS_MAX);
-        if (steps < 1) steps = 1;
-        if (lm3_step(sim) != LM_OK) goto failed;   /* warm-up */
-        double t0 = clock_s(CLOCK_MONOTONIC), c0 = clock_s(CLOCK_PROCESS_CPUTIME_ID);
-        for (long s = 0; s < steps; s++)
-            if (lm3_step(sim) != LM_OK) goto failed;
-        secs += clock_s(CLOCK_MONOTONIC) - t0;
-        cpu += clock_s(CLOCK_PROCESS_CPUTIME_ID) - c0;
-        done += (double)n * (double)steps;
-        steps_total += steps;
-        /* after the steps: with the threads' copies and the sums made
-         * ahead, which the steps allocate */
-        size_t pb, pe, gb;
-        lm3_memory(sim, &pb, &pe, &gb);
-        *bytes = (double)(pb + gb) / (double)n;
-        *bytes_exact = (double)(pe + gb) / (double)n;
-        lm3_sim_free(sim);
-        continue;
-    failed:
-        fprintf(stderr, "lamina bench engine --dim 3: %s: %s\n", c->name, sim->err);
-        lm3_sim_free(sim);
-        return -1;
-    }
-    printf("| %-13s | %9zu | %7ld | %7.3f | %7.2f | %7.2f | %5.2f | %5.2f |\n", c->name, n,
-           steps_total, secs, done / secs / 1e6, done / cpu / 1e6, done / secs / plain,
-           done / cpu / plain_cpu);
-    fflush(stdout);
-    return 0;
+    run3 r = {c, particles, *bytes, *bytes_exact};
+    bench_case k = {"engine --dim 3", c->name, 13, 0.05, BENCH3_STEPS_MAX, &r, build3,
+                    particles3, dt3, counted3, step3, error3, release3};
+    int rc = bench_time_case(&k, work, plain, plain_cpu);
+    *bytes = r.bytes;
+    *bytes_exact = r.bytes_exact;
+    return rc;
 }
 
 int bench_engine3(int argc, char **argv)
@@ -175,23 +174,15 @@ int bench_engine3(int argc, char **argv)
     const char *usage = "--dim 3 [--sizes N,N,...] [--work PARTICLE_STEPS] [--threads N] "
                         "[--basis linear|bspline2] [--simd sse2|best]";
     for (int i = 0; i < argc; i++) {
+        int taken = bench_engine_opt(argc, argv, &i, &work, &threads3, sizes, 8, &nsizes);
+        if (taken < 0) return 2;
+        if (taken) continue;   /* --work, --threads, --sizes */
         if (strcmp(argv[i], "--dim") == 0 && i + 1 < argc) {
             if (strcmp(argv[++i], "3") != 0) {
                 fprintf(stderr, "lamina bench engine: --dim '%s': 3 here (2 is the default "
                         "without --dim)\n", argv[i]);
                 return 2;
             }
-        } else if (strcmp(argv[i], "--work") == 0 && i + 1 < argc) {
-            work = atof(argv[++i]);
-            if (!(work >= 1e3 && work <= 1e10)) {
-                fprintf(stderr, "lamina bench engine: --work needs a number in [1e3, 1e10]\n");
-                return 2;
-            }
-        } else if (strcmp(argv[i], "--threads") == 0 && i + 1 < argc) {
-            long v;
-            if (bench_whole("engine", "--threads", argv[++i], 1, LM_MAX_THREADS, &v) != 0)
-                return 2;
-            threads3 = (int)v;
         } else if (strcmp(argv[i], "--basis") == 0 && i + 1 < argc) {
             const char *b = argv[++i];
             if (strcmp(b, "linear") == 0) only = LM_BASIS_LINEAR;
@@ -211,8 +202,6 @@ int bench_engine3(int argc, char **argv)
                         "it)\n", f);
                 return 2;
             }
-        } else if (strcmp(argv[i], "--sizes") == 0 && i + 1 < argc) {
-            if ((nsizes = bench_sizes("engine", argv[++i], sizes, 8)) < 0) return 2;
         } else {
             return bench_unknown("engine", argv[i], usage);
         }
@@ -220,21 +209,13 @@ int bench_engine3(int argc, char **argv)
     printf("lamina bench engine --dim 3: %d thread%s, about %.3g particle-steps per case, "
            "trilinear scatters in %s\n\n", threads3, threads3 == 1 ? "" : "s", work,
            lm3_simd_level() == LM3_SIMD_AVX512 ? "AVX-512F" : "SSE2");
-    printf("| case          | particles |   steps |       s | M p-steps/s | M p-steps/CPU-s | "
-           "x plain | x plain, CPU |\n");
-    printf("|---|---:|---:|---:|---:|---:|---:|---:|\n");
+    bench_table_head(13);
     int bad = 0;
     double mem[8][2] = {{0}};
     size_t counts[8] = {0};
     for (int k = 0; k < nsizes; k++) {
-        size_t np = 0;
-        double pc = 0, plain = bench_plain_rate(sizes[k], work, &np, &pc);
-        if (plain <= 0) {
-            fprintf(stderr, "lamina bench engine: plain loop: out of memory\n");
-            return 1;
-        }
-        printf("| %-13s | %9zu | %7s | %7s | %7.2f | %7.2f | %5.2f | %5.2f |\n", "plain loop", np,
-               "", "", plain / 1e6, pc / 1e6, 1.0, 1.0);
+        double pc = 0, plain = bench_plain_row(13, sizes[k], work, &pc);
+        if (plain <= 0) return 1;
         for (int c = 0; c < ncases; c++) {
             if (only >= 0 && (int)cases[c].basis != only) continue;
             double b = 0, be = 0;

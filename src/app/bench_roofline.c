@@ -16,17 +16,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "bench.h"
 #include "mpm.h"
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 double bench_triad_gbs(size_t n, int repeats)
 {
@@ -46,9 +38,9 @@ double bench_triad_gbs(size_t n, int repeats)
     volatile double s = 3.0;   /* not a constant the compiler could fold */
     for (int r = 0; r < repeats; r++) {
         const double sc = s;
-        double t0 = now();
+        double t0 = bench_wall_s();
         for (size_t i = 0; i < n; i++) a[i] = b[i] + sc * c[i];
-        double t = now() - t0;
+        double t = bench_wall_s() - t0;
         if (t < best) best = t;
         s = a[n / 2] * 1e-300 + 3.0;   /* the result is used */
     }
@@ -100,14 +92,14 @@ static int run_case(const rcase *c, double particles, double work, lm_basis basi
             lm_sim_free(sim);
             return -1;
         }
-        double t0 = now();
+        double t0 = bench_wall_s();
         for (long s = 0; s < steps; s++)
             if (lm_sim_step_then(sim, s + 1 < steps) != LM_OK) {
                 fprintf(stderr, "lamina bench roofline: %s: %s\n", c->name, sim->err);
                 lm_sim_free(sim);
                 return -1;
             }
-        secs += now() - t0;
+        secs += bench_wall_s() - t0;
         done += (double)n * (double)steps;
         lm_sim_free(sim);
     }
@@ -182,11 +174,7 @@ int bench_roofline(int argc, char **argv)
             particles = s[0];
             i++;
         } else if (strcmp(argv[i], "--work") == 0 && v) {
-            work = atof(v);
-            if (!(work >= 1e3 && work <= 1e10)) {
-                fprintf(stderr, "lamina bench roofline: --work needs a number in [1e3, 1e10]\n");
-                return 2;
-            }
+            if (bench_work("roofline", v, &work) != 0) return 2;
             i++;
         } else if (strcmp(argv[i], "--basis") == 0 && v) {
             if (parse_basis(v, &which) != 0) return 2;

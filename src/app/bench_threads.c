@@ -32,13 +32,6 @@
 
 #include "bench.h"
 
-static double clock_s(clockid_t id)
-{
-    struct timespec ts;
-    clock_gettime(id, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 /* The first number of /proc/loadavg, or -1. */
 static double load_average(void)
 {
@@ -88,12 +81,12 @@ static double run_once(double particles, int nt, long steps, double *cpu, uint64
     }
     double t0 = 0, c0 = 0, secs = -1;
     if (lm_sim_step_then(sim, 1) != LM_OK) goto done;   /* warm-up */
-    t0 = clock_s(CLOCK_MONOTONIC);
-    c0 = clock_s(CLOCK_PROCESS_CPUTIME_ID);
+    t0 = bench_wall_s();
+    c0 = bench_cpu_s();
     for (long s = 0; s < steps; s++)
         if (lm_sim_step_then(sim, s + 1 < steps) != LM_OK) goto done;
-    secs = clock_s(CLOCK_MONOTONIC) - t0;
-    *cpu = clock_s(CLOCK_PROCESS_CPUTIME_ID) - c0;
+    secs = bench_wall_s() - t0;
+    *cpu = bench_cpu_s() - c0;
     *hash = lm_sim_hash(sim);
 done:
     if (secs < 0) fprintf(stderr, "lamina bench threads: %s\n", sim->err);

@@ -35,6 +35,23 @@ static int once(const char *opt, const char *v, const char *needs, const char **
     return 0;
 }
 
+/* A size option in MB from lo to 1048576 (1 TB): its bytes into *bytes;
+ * 0, or -1 with the message, which names the default def (and `also`,
+ * where else it may come from). */
+static int megabytes(const char *opt, const char *v, double lo, int def, const char *also,
+                     size_t *bytes)
+{
+    char *end = NULL;
+    double mb = v ? strtod(v, &end) : 0;
+    if (!v || !*v || *end || !(mb >= lo && mb <= 1048576)) {
+        fprintf(stderr, "lamina run: %s needs a size in MB from %.0f to 1048576 "
+                "(default %d%s)\n", opt, lo, def, also);
+        return -1;
+    }
+    *bytes = (size_t)(mb * 1048576.0);
+    return 0;
+}
+
 static int parse_args(int argc, char **argv, lamina_run *run, const char **report,
                       const char **out_root)
 {
@@ -49,25 +66,17 @@ static int parse_args(int argc, char **argv, lamina_run *run, const char **repor
             if (once("--out-root", v, "needs a DIR", out_root)) return -1;
         } else if (lu_opt_value(argc, argv, &i, "--lua-mem", &v)) {
             /* the cap on the script's Lua memory (l_alloc.c), MB */
-            char *end = NULL;
-            double mb = v ? strtod(v, &end) : 0;
-            if (!v || !*v || *end || !(mb >= 1 && mb <= 1048576)) {
-                fprintf(stderr, "lamina run: --lua-mem needs a size in MB from 1 to 1048576 "
-                        "(default %d)\n", LAMINA_LUA_MEM_DEFAULT_MB);
+            if (megabytes("--lua-mem", v, 1, LAMINA_LUA_MEM_DEFAULT_MB, "",
+                          &run->lua_mem_limit))
                 return -1;
-            }
-            run->lua_mem_limit = (size_t)(mb * 1048576.0);
         } else if (lu_opt_value(argc, argv, &i, "--memory", &v)) {
             /* the process's one cap over the engine, the pictures and Lua
              * (src/util/lu_budget.c), MB; over LAMINA_MEMORY_MB */
-            char *end = NULL;
-            double mb = v ? strtod(v, &end) : 0;
-            if (!v || !*v || *end || !(mb >= 16 && mb <= 1048576)) {
-                fprintf(stderr, "lamina run: --memory needs a size in MB from 16 to 1048576 "
-                        "(default %d, or LAMINA_MEMORY_MB)\n", LU_BUDGET_DEFAULT_MB);
+            size_t bytes;
+            if (megabytes("--memory", v, 16, LU_BUDGET_DEFAULT_MB, ", or LAMINA_MEMORY_MB",
+                          &bytes))
                 return -1;
-            }
-            lu_budget_set_limit((size_t)(mb * 1048576.0));
+            lu_budget_set_limit(bytes);
         } else if (lu_opt_value(argc, argv, &i, "--backend", &v)) {
             /* sim:frame's default renderer for this run (docs/rendering.md) */
             lr_backend which;

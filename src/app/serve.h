@@ -22,6 +22,9 @@ void sb_fmt(sbuf *b, const char *fmt, ...) __attribute__((format(printf, 2, 3)))
 /* s as a JSON string, quotes included: every byte that is not printable
  * ASCII, and < > & ' (the answer may be shown as HTML), as \u00XX */
 void sb_json(sbuf *b, const char *s);
+/* the opening of a list's object number i (from 0) with its name:
+ * {"name":NAME, with a comma before it but the first */
+void sb_named(sbuf *b, int i, const char *name);
 /* a number as JSON (null when not finite) */
 void sb_num(sbuf *b, double v);
 

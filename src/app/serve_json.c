@@ -69,6 +69,12 @@ void sb_json(sbuf *b, const char *s)
     sb_add(b, "\"", 1);
 }
 
+void sb_named(sbuf *b, int i, const char *name)
+{
+    sb_str(b, i ? ",{\"name\":" : "{\"name\":");
+    sb_json(b, name);
+}
+
 void sb_num(sbuf *b, double v)
 {
     if (isfinite(v)) sb_fmt(b, "%.10g", v);
@@ -110,8 +116,7 @@ void serve_json_state(serve_state *st, sbuf *b)
            st->finished ? "true" : "false", st->status, st->ncmds);
     sb_str(b, ",\"frames\":[");
     for (int i = 0; i < st->nframes; i++) {
-        sb_str(b, i ? ",{\"name\":" : "{\"name\":");
-        sb_json(b, st->frames[i].name);
+        sb_named(b, i, st->frames[i].name);
         sb_str(b, ",\"file\":");
         sb_json(b, st->frames[i].path);
         sb_fmt(b, ",\"count\":%ld}", st->frames[i].count);
@@ -132,8 +137,7 @@ void serve_json_params(serve_state *st, sbuf *b)
     sb_str(b, "{\"params\":[");
     for (int i = 0; i < st->nparams; i++) {
         const serve_param *p = &st->params[i];
-        sb_str(b, i ? ",{\"name\":" : "{\"name\":");
-        sb_json(b, p->name);
+        sb_named(b, i, p->name);
         sb_str(b, ",\"type\":");
         sb_json(b, p->type == LUA_TNUMBER ? "number"
                    : p->type == LUA_TBOOLEAN ? "boolean" : "string");
@@ -143,8 +147,7 @@ void serve_json_params(serve_state *st, sbuf *b)
     }
     sb_str(b, "],\"settings\":[");
     for (int k = 0; st->have_settings && lamina_live_settings[k] && k < 5; k++) {
-        sb_str(b, k ? ",{\"name\":" : "{\"name\":");
-        sb_json(b, lamina_live_settings[k]);
+        sb_named(b, k, lamina_live_settings[k]);
         sb_str(b, ",\"value\":");
         sb_json(b, st->settings[k]);
         sb_str(b, "}");
@@ -159,8 +162,7 @@ void serve_json_records(serve_state *st, sbuf *b)
     sb_str(b, "{\"records\":[");
     for (int i = 0; i < st->nseries; i++) {
         const serve_series *s = &st->series[i];
-        sb_str(b, i ? ",{\"name\":" : "{\"name\":");
-        sb_json(b, s->label);
+        sb_named(b, i, s->label);
         sb_fmt(b, ",\"every\":%ld,\"columns\":[", s->every);
         for (int c = 0; c < s->ncols; c++) {
             if (c) sb_str(b, ",");

@@ -128,12 +128,7 @@ static int material3(lua_State *L, la_sim3 *s3, int midx, const char *fn)
         luaL_error(L, "%s: 'material' has 'plane' set: a 3D solid has no plane assumption "
                    "(leave plane out of lamina.elastic{} for a 3D sim)", fn);
     lua_getiuservalue(L, 1, 1);
-    if (la_getfield(L, -1, "mats3") != LUA_TTABLE) {
-        lua_pop(L, 1);
-        lua_newtable(L);
-        lua_pushvalue(L, -1);
-        lua_setfield(L, -3, "mats3");
-    }
+    la_subtable(L, -1, "mats3");
     lua_pushvalue(L, midx);
     if (lua_rawget(L, -2) == LUA_TNUMBER) {
         int k = (int)lua_tointeger(L, -1);

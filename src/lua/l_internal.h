@@ -21,6 +21,9 @@
  * line (docs/design.md, "Conventions"). */
 /* lua_getfield without metamethods on tables (l_args.c says why). */
 int la_getfield(lua_State *L, int idx, const char *key);
+/* t[key] of the table t at idx (la_getfield), or a new empty table stored
+ * there when it is not a table; pushed (l_subtable.c). */
+void la_subtable(lua_State *L, int idx, const char *key);
 void la_check_table(lua_State *L, int idx, const char *fn);
 void la_check_keys(lua_State *L, int idx, const char *fn, const char *const keys[]);
 int la_has(lua_State *L, int idx, const char *key);
@@ -335,8 +338,19 @@ const char *la_frame_label(lua_State *L, int idx, const char *fn, double t, long
 lr_backend la_frame_backend(lua_State *L, int idx, const char *fn, const char *file);
 int la_vtk_arrays(size_t nd, size_t nconn, size_t ntypes, double **d, int64_t **conn,
                   uint8_t **types, const char *path, char *err, size_t errlen);
-int la_vtk_grid_write(const char *path, size_t nn, size_t nc, double *d, int64_t *conn,
-                      int64_t *offs, uint8_t *types, char *err, size_t errlen);
+/* A grid's arrays for a .vtu (2D quads, 3D hexahedra): nn nodes' mass,
+ * velocity, force and xyz in one buffer; nc cells' connectivity (corners
+ * a cell), offsets and types. la_vtk_grid_alloc: all or none (-1 and err
+ * out of memory); la_vtk_grid_write writes the .vtu and frees them. */
+typedef struct la_vtk_grid {
+    size_t nn, nc;
+    double *mass, *vel, *force, *xyz;
+    int64_t *conn, *offs;
+    uint8_t *types;
+} la_vtk_grid;
+int la_vtk_grid_alloc(la_vtk_grid *g, size_t nn, size_t nc, int corners, const char *path,
+                      char *err, size_t errlen);
+int la_vtk_grid_write(const char *path, la_vtk_grid *g, char *err, size_t errlen);
 
 /* l_plot.c: lamina.plot{...}, time-series plots to PNG and CSV */
 int la_plot(lua_State *L);

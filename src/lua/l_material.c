@@ -40,12 +40,7 @@ static void push_material(lua_State *L, const lm_material *def)
 static void push_sim_materials(lua_State *L, int sidx)
 {
     lua_getiuservalue(L, sidx, 1);
-    if (lua_getfield(L, -1, "mats") != LUA_TTABLE) {
-        lua_pop(L, 1);
-        lua_newtable(L);
-        lua_pushvalue(L, -1);
-        lua_setfield(L, -3, "mats");
-    }
+    la_subtable(L, -1, "mats");
     lua_remove(L, -2);
 }
 

@@ -505,9 +505,6 @@ void la_open_membrane3(lua_State *L)
                                        {"escaped", la_membrane3_escaped},
                                        {"normals", m3_normals},
                                        {NULL, NULL}};
-    la_new_metatable(L, LA_MEMBRANE3);
-    luaL_setfuncs(L, meta, 0);
-    luaL_newlib(L, methods);
-    lua_setfield(L, -2, "methods");
+    la_new_class_in(L, LA_MEMBRANE3, meta, methods, "methods");   /* m3_index looks there */
     lua_pop(L, 1);
 }

@@ -46,12 +46,7 @@ static int convert(lua_State *L, int didx, const char *name, const char *v, cons
 /* registry[key], a table made on first use, pushed */
 static void registry_table(lua_State *L, const char *key)
 {
-    if (la_getfield(L, LUA_REGISTRYINDEX, key) != LUA_TTABLE) {
-        lua_pop(L, 1);
-        lua_newtable(L);
-        lua_pushvalue(L, -1);
-        lua_setfield(L, LUA_REGISTRYINDEX, key);
-    }
+    la_subtable(L, LUA_REGISTRYINDEX, key);
 }
 
 /* lamina.param(name, default): the value set live (lamina serve), else the

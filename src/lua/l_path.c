@@ -220,16 +220,28 @@ static const char *confined(lua_State *L, const char *fn, int idx, const char *v
     return path;
 }
 
+/* A resolved path's part below base (a folder it is inside), refused with
+ * the first name in it that starts with a dot: hidden files and folders
+ * are not `what` (outputs, read). */
+static const char *visible_below(lua_State *L, const char *fn, const char *verb,
+                                 const char *path, const char *resolved, const char *base,
+                                 const char *what)
+{
+    const char *rel = resolved + strlen(base) + (strcmp(base, "/") != 0);
+    const char *dot = dot_component(rel);
+    if (dot)
+        luaL_error(L, "%s: cannot %s '%s': it resolves to '%s', where '%s' starts with a dot "
+                   "(hidden files and folders are not %s)", fn, verb, path, resolved, dot,
+                   what);
+    return rel;
+}
+
 const char *la_check_output_path(lua_State *L, const char *fn, int idx)
 {
     idx = lua_absindex(L, idx);
     char root[PATH_MAX], where[PATH_MAX];
     const char *path = confined(L, fn, idx, "write", root, where);
-    const char *rel = where + strlen(root) + (strcmp(root, "/") != 0);
-    const char *dot = dot_component(rel);
-    if (dot)
-        luaL_error(L, "%s: cannot write '%s': it resolves to '%s', where '%s' starts with a "
-                   "dot (hidden files and folders are not outputs)", fn, path, where, dot);
+    const char *rel = visible_below(L, fn, "write", path, where, root, "outputs");
     struct stat st;
     if (lstat(where, &st) == 0) {
         if (S_ISLNK(st.st_mode))
@@ -325,11 +337,7 @@ const char *la_check_asset_path(lua_State *L, const char *fn, int idx, size_t ma
     if (!base)
         luaL_error(L, "%s: cannot read '%s': it resolves to '%s', outside the script's folder "
                    "'%s' and the output root '%s'", fn, path, real, folder, root);
-    const char *rel = real + strlen(base) + (strcmp(base, "/") != 0);
-    const char *dot = dot_component(rel);
-    if (dot)
-        luaL_error(L, "%s: cannot read '%s': it resolves to '%s', where '%s' starts with a dot "
-                   "(hidden files and folders are not read)", fn, path, real, dot);
+    visible_below(L, fn, "read", path, real, base, "read");
     struct stat st;
     if (stat(real, &st) != 0 || !S_ISREG(st.st_mode))
         luaL_error(L, "%s: cannot read '%s': not a regular file", fn, path);

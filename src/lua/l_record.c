@@ -18,6 +18,7 @@
 #include "fields.h"
 #include "l_internal.h"
 #include "l_sim3.h"
+#include "util.h"
 
 #define LA_RECORD "lamina.record"
 
@@ -58,11 +59,9 @@ static la_record *check_record(lua_State *L, int idx)
 
 static la_column *add_column(lua_State *L, la_record *r, const char *name, int src)
 {
-    la_column *c = realloc(r->cols, (size_t)(r->ncols + 1) * sizeof *c);
+    la_column *c = lu_push(&r->cols, (size_t)r->ncols, sizeof *r->cols);
     if (!c) luaL_error(L, "sim:record: out of memory");
-    r->cols = c;
-    c = &r->cols[r->ncols++];
-    memset(c, 0, sizeof *c);
+    r->ncols++;
     if (strlen(name) >= sizeof c->name)
         luaL_error(L, "sim:record: column name '%s' is too long", name);
     /* a CSV header field: nothing that runs as shell or Python (l_path.c) */
@@ -590,12 +589,7 @@ int la_sim_record(lua_State *L)
 
     /* the sim keeps its recorders (to flush them); the event samples */
     lua_getiuservalue(L, 1, 1);
-    if (la_getfield(L, -1, "recorders") != LUA_TTABLE) {
-        lua_pop(L, 1);
-        lua_newtable(L);
-        lua_pushvalue(L, -1);
-        lua_setfield(L, -3, "recorders");
-    }
+    la_subtable(L, -1, "recorders");
     lua_pushvalue(L, ridx);
     lua_rawseti(L, -2, (lua_Integer)lua_rawlen(L, -2) + 1);
     lua_pop(L, 2);

@@ -328,12 +328,7 @@ int la_report(lua_State *L)
         push_entry(L, names[i], -1);
         lua_remove(L, -2);
     }
-    if (la_getfield(L, LUA_REGISTRYINDEX, REPORT_KEY) != LUA_TTABLE) {
-        lua_pop(L, 1);
-        lua_newtable(L);
-        lua_pushvalue(L, -1);
-        lua_setfield(L, LUA_REGISTRYINDEX, REPORT_KEY);
-    }
+    la_subtable(L, LUA_REGISTRYINDEX, REPORT_KEY);
     int report = lua_gettop(L);
     lua_Integer len = (lua_Integer)lua_rawlen(L, report);
     for (size_t i = 0; i < n; i++) {

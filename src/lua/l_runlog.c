@@ -46,12 +46,7 @@ typedef struct log_clock {
 static void record(lua_State *L, const log_clock *sim, const char *what, const char *value,
                    int prompt)
 {
-    if (la_getfield(L, LUA_REGISTRYINDEX, CHANGES_KEY) != LUA_TTABLE) {
-        lua_pop(L, 1);
-        lua_newtable(L);
-        lua_pushvalue(L, -1);
-        lua_setfield(L, LUA_REGISTRYINDEX, CHANGES_KEY);
-    }
+    la_subtable(L, LUA_REGISTRYINDEX, CHANGES_KEY);
     lua_createtable(L, 0, 5);
     if (sim->has) {
         lua_pushnumber(L, sim->t);

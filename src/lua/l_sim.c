@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "l_boundary.h"
 #include "l_internal.h"
 #include "l_sim3.h"
 #include "l_sim_run_common.h"
@@ -24,7 +25,6 @@ static const char *const transfers[] = {"flip", "apic", NULL};
 static const char *const bases[] = {"linear", "gimp", "bspline2", NULL};
 /* lm_stress: [T] §5.4.3 (stress_cell.c) */
 static const char *const stresses[] = {"points", "cell", NULL};
-static const char *const bcs[] = {"fixed", "symmetry", "free", NULL};
 static const char *const sides[] = {"left", "right", "bottom", "top", NULL};
 
 la_sim *la_check_sim_any(lua_State *L, int idx)
@@ -88,20 +88,7 @@ static void read_domain(lua_State *L, const char *fn, lm_sim_def *d)
  * top = ...}; sides not named keep the default, fixed. */
 static void read_boundary(lua_State *L, const char *fn, lm_sim_def *d)
 {
-    int t = la_getfield(L, 1, "boundary");
-    if (t == LUA_TSTRING) {
-        int bc = la_option(L, fn, "boundary", lua_tostring(L, -1), bcs);
-        for (int s = 0; s < 4; s++) d->bc[s] = (lm_bc)bc;
-    } else if (t == LUA_TTABLE) {
-        la_check_keys(L, -1, "lamina.sim boundary", sides);
-        for (int s = 0; s < 4; s++) {
-            const char *v = la_opt_string(L, -1, fn, sides[s], NULL);
-            if (v) d->bc[s] = (lm_bc)la_option(L, fn, sides[s], v, bcs);
-        }
-    } else if (t != LUA_TNIL) {
-        luaL_error(L, "%s: 'boundary' must be a string or a table of sides", fn);
-    }
-    lua_pop(L, 1);
+    la_read_boundary(L, fn, sides, "sides", NULL, d->bc);
 }
 
 int la_sim_new(lua_State *L)
@@ -469,20 +456,13 @@ static void mass_resolve(lua_State *L, la_sim *s)
     if (to != m->def.mass && lm_sim_set_mass(m, to) != LM_OK) luaL_error(L, "%s", m->err);
 }
 
-typedef struct run_steps_arg {
-    la_run_guard *guard;
-    long nsteps;
-    double t_end;
-} run_steps_arg;
-
 /* The steps of one run, called protected by advance() with the sim at
  * index 1: any error raised here - the Courant refusal, a callback's, a pin
  * velocity function's, a failed checkpoint, a failed step, a signal - ends
  * in advance()'s run guard. */
 static int run_steps(lua_State *L)
 {
-    run_steps_arg *a = lua_touserdata(L, 2);
-    lua_settop(L, 1);
+    la_run_arg *a = la_run_arg_take(L);
     la_sim *s = a->guard->s;
     long nsteps = a->nsteps;
     double t_end = a->t_end;
@@ -545,8 +525,8 @@ static int run_steps(lua_State *L)
  * (l_run_guard.c): the sim is not left running, the records are written. */
 static void advance(lua_State *L, la_sim *s, long nsteps, double t_end)
 {
-    run_steps_arg a = {NULL, nsteps, t_end};
-    la_sim_run_protected(L, s, run_steps, &a, &a.guard);   /* l_sim_run_common.c */
+    la_run_arg a = {NULL, nsteps, t_end};
+    la_sim_run_protected(L, s, run_steps, &a);   /* l_sim_run_common.c */
 }
 
 void la_sim_advance(lua_State *L, la_sim *s, long nsteps)

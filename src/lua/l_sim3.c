@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "l_boundary.h"
 #include "l_frame3d.h"
 #include "l_sim3.h"
 #include "mpm3_membrane.h"
@@ -18,7 +19,6 @@
 static const char *const schemes[] = {"musl", "usl", NULL};
 /* in lm_basis order (mpm.h); gimp is refused by the engine, naming it */
 static const char *const bases[] = {"linear", "gimp", "bspline2", NULL};
-static const char *const bcs[] = {"fixed", "symmetry", "free", NULL};
 static const char *const faces[] = {"x0", "x1", "y0", "y1", "z0", "z1", NULL};
 static const char *const sides2d[] = {"left", "right", "bottom", "top", NULL};
 
@@ -106,29 +106,20 @@ static void read_domain(lua_State *L, const char *fn, lm3_def *d)
     }
 }
 
+static void refuse_sides2d(lua_State *L, const char *fn)
+{
+    for (int i = 0; sides2d[i]; i++)
+        if (la_has(L, -1, sides2d[i]))
+            luaL_error(L, "%s: boundary.%s is a 2D side; with dim = 3 the faces are x0, "
+                       "x1, y0, y1, z0, z1", fn, sides2d[i]);
+}
+
 /* boundary = "fixed" (every face) or {x0 =, x1 =, y0 =, y1 =, z0 =, z1 =};
  * faces not named keep the default, fixed. The 2D side names are refused
  * by name: a script ported from 2D must not leave z unconstrained silently. */
 static void read_boundary(lua_State *L, const char *fn, lm3_def *d)
 {
-    int t = la_getfield(L, 1, "boundary");
-    if (t == LUA_TSTRING) {
-        int bc = la_option(L, fn, "boundary", lua_tostring(L, -1), bcs);
-        for (int f = 0; f < LM3_FACES; f++) d->bc[f] = (lm_bc)bc;
-    } else if (t == LUA_TTABLE) {
-        for (int i = 0; sides2d[i]; i++)
-            if (la_has(L, -1, sides2d[i]))
-                luaL_error(L, "%s: boundary.%s is a 2D side; with dim = 3 the faces are x0, "
-                           "x1, y0, y1, z0, z1", fn, sides2d[i]);
-        la_check_keys(L, -1, "lamina.sim boundary", faces);
-        for (int f = 0; f < LM3_FACES; f++) {
-            const char *v = la_opt_string(L, -1, fn, faces[f], NULL);
-            if (v) d->bc[f] = (lm_bc)la_option(L, fn, faces[f], v, bcs);
-        }
-    } else if (t != LUA_TNIL) {
-        luaL_error(L, "%s: 'boundary' must be a string or a table of faces", fn);
-    }
-    lua_pop(L, 1);
+    la_read_boundary(L, fn, faces, "faces", refuse_sides2d, d->bc);
 }
 
 int la_sim3_new(lua_State *L)

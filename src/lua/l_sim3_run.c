@@ -76,15 +76,9 @@ static void check_courant3(lua_State *L, lm3_sim *sim, const char *when)
     la_fail_raisef(L, LAMINA_FAIL_REFUSED, "%s", msg);
 }
 
-typedef struct run_arg {
-    la_run_guard *guard;
-    long nsteps;
-} run_arg;
-
 static int run_steps(lua_State *L)
 {
-    run_arg *a = lua_touserdata(L, 2);
-    lua_settop(L, 1);
+    la_run_arg *a = la_run_arg_take(L);
     la_sim *s = a->guard->s;
     lm3_sim *sim = s->s3->sim;
     /* the Courant refusal before any step (and any callback), as in 2D */
@@ -106,9 +100,9 @@ static int run_steps(lua_State *L)
 
 static void advance(lua_State *L, la_sim *s, long nsteps)
 {
-    run_arg a = {NULL, nsteps};
+    la_run_arg a = {NULL, nsteps, NAN};
     /* the guard, and the clock live changes are logged at (l_runlog.c) */
-    la_sim_run_protected(L, s, run_steps, &a, &a.guard);
+    la_sim_run_protected(L, s, run_steps, &a);
 }
 
 int la_sim3_run(lua_State *L)

@@ -64,14 +64,20 @@ long la_sim_step_count(lua_State *L, la_sim *s)
     return n;
 }
 
-void la_sim_run_protected(lua_State *L, la_sim *s, lua_CFunction steps, void *arg,
-                          la_run_guard **guard)
+la_run_arg *la_run_arg_take(lua_State *L)
+{
+    la_run_arg *a = lua_touserdata(L, 2);
+    lua_settop(L, 1);
+    return a;
+}
+
+void la_sim_run_protected(lua_State *L, la_sim *s, lua_CFunction steps, la_run_arg *arg)
 {
     /* not the guard's: the run in progress goes on (a pcall may catch this) */
     if (s->running) luaL_error(L, "sim:run/sim:step called from inside a callback");
     la_run_guard g;
     la_run_guard_begin(L, &g, 1, s);
-    *guard = &g;
+    arg->guard = &g;
     lamina_run *run = s->s3 ? la_run(L) : NULL;
     const struct lm3_sim *outer3 = run ? run->active3 : NULL;
     if (run) run->active3 = s->s3->sim;

@@ -25,12 +25,22 @@ long la_sim_run_steps(lua_State *L, la_sim *s, double *t_end);
  * checkpoint already took (the call's last step is the same). */
 long la_sim_step_count(lua_State *L, la_sim *s);
 
+/* What one run's steps are given: the run guard, set by
+ * la_sim_run_protected; the steps to take; and (2D sim:run) the time to
+ * end at, NAN to count steps instead (3D counts them always). */
+typedef struct la_run_arg {
+    la_run_guard *guard;
+    long nsteps;
+    double t_end;
+} la_run_arg;
+
 /* Runs steps(L) protected with the sim at 1 and arg as a light userdata
  * at 2, under the run guard (l_run_guard.c: every way out writes the
- * records; *guard points at it meanwhile); refused from inside a callback.
- * A 3D sim is the run's active3 meanwhile (the clock live changes are
- * logged at, l_runlog.c). */
-void la_sim_run_protected(lua_State *L, la_sim *s, lua_CFunction steps, void *arg,
-                          la_run_guard **guard);
+ * records; arg->guard points at it meanwhile); refused from inside a
+ * callback. A 3D sim is the run's active3 meanwhile (the clock live
+ * changes are logged at, l_runlog.c). */
+void la_sim_run_protected(lua_State *L, la_sim *s, lua_CFunction steps, la_run_arg *arg);
+/* In steps(L): its la_run_arg, the stack left with the sim alone at 1. */
+la_run_arg *la_run_arg_take(lua_State *L);
 
 #endif

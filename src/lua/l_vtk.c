@@ -166,19 +166,31 @@ static int write_particles(const lm_sim *sim, const char *path, char *err, size_
     return rc;
 }
 
-/* A grid's last step as a .vtu and its arrays freed (2D and 3D alike):
- * d holds the nodal mass (nn), velocity (3 nn), force (3 nn) and the
- * nodes' xyz (3 nn), in la_vtk_arrays' buffer d; conn and types the cells. */
-int la_vtk_grid_write(const char *path, size_t nn, size_t nc, double *d, int64_t *conn,
-                      int64_t *offs, uint8_t *types, char *err, size_t errlen)
+/* A grid's last step as a .vtu and its arrays freed (2D and 3D alike). */
+int la_vtk_grid_write(const char *path, la_vtk_grid *g, char *err, size_t errlen)
 {
-    lr_vtk_field pf[] = {{"mass", 1, d}, {"velocity", 3, d + nn}, {"force", 3, d + 4 * nn}};
-    lr_vtk_cells cells = {nc, conn, offs, types};
-    int rc = lr_vtk_write_vtu(path, nn, d + 7 * nn, &cells, pf, 3, NULL, 0, err, errlen);
-    free(d);
-    free(conn);
-    free(types);
+    lr_vtk_field pf[] = {{"mass", 1, g->mass}, {"velocity", 3, g->vel}, {"force", 3, g->force}};
+    lr_vtk_cells cells = {g->nc, g->conn, g->offs, g->types};
+    int rc = lr_vtk_write_vtu(path, g->nn, g->xyz, &cells, pf, 3, NULL, 0, err, errlen);
+    free(g->mass);
+    free(g->conn);
+    free(g->types);
     return rc;
+}
+
+int la_vtk_grid_alloc(la_vtk_grid *g, size_t nn, size_t nc, int corners, const char *path,
+                      char *err, size_t errlen)
+{
+    g->nn = nn;
+    g->nc = nc;
+    if (la_vtk_arrays(10 * nn, (size_t)(corners + 1) * nc, nc, &g->mass, &g->conn, &g->types,
+                      path, err, errlen) != 0)
+        return -1;
+    g->vel = g->mass + nn;
+    g->force = g->mass + 4 * nn;
+    g->xyz = g->mass + 7 * nn;
+    g->offs = g->conn + (size_t)corners * nc;
+    return 0;
 }
 
 /* The three arrays of an unstructured grid for vtk.c, all or none: nd
@@ -206,28 +218,24 @@ int la_vtk_arrays(size_t nd, size_t nconn, size_t ntypes, double **d, int64_t **
 static int write_grid(const lm_sim *sim, const char *path, char *err, size_t errlen)
 {
     const lm_grid *gr = &sim->grid;
-    size_t nn = (size_t)(gr->nx + 1) * (size_t)(gr->ny + 1);
-    size_t nc = (size_t)gr->nx * (size_t)gr->ny;
-    double *d;
-    int64_t *conn;
-    uint8_t *types;
-    if (la_vtk_arrays(10 * nn, 5 * nc, nc, &d, &conn, &types, path, err, errlen) != 0) return -1;
-    double *vel = d + nn, *force = d + 4 * nn, *xyz = d + 7 * nn;
-    int64_t *offs = conn + 4 * nc;
+    la_vtk_grid out;
+    if (la_vtk_grid_alloc(&out, (size_t)(gr->nx + 1) * (size_t)(gr->ny + 1),
+                          (size_t)gr->nx * (size_t)gr->ny, 4, path, err, errlen) != 0)
+        return -1;
     /* the nodes 0..nx x 0..ny, without the wider bases' ghost ring */
     for (int j = 0, i = 0; j <= gr->ny; j++) {
         for (int a = 0; a <= gr->nx; a++, i++) {
             long k = (long)(j + gr->pad) * gr->sx + (a + gr->pad);
-            d[i] = gr->m[k];
-            vel[3 * i] = gr->vx[k];
-            vel[3 * i + 1] = gr->vy[k];
-            vel[3 * i + 2] = 0;
-            force[3 * i] = gr->fx[k];
-            force[3 * i + 1] = gr->fy[k];
-            force[3 * i + 2] = 0;
-            xyz[3 * i] = gr->x0 + a * gr->hx;
-            xyz[3 * i + 1] = gr->y0 + j * gr->hy;
-            xyz[3 * i + 2] = 0;
+            out.mass[i] = gr->m[k];
+            out.vel[3 * i] = gr->vx[k];
+            out.vel[3 * i + 1] = gr->vy[k];
+            out.vel[3 * i + 2] = 0;
+            out.force[3 * i] = gr->fx[k];
+            out.force[3 * i + 1] = gr->fy[k];
+            out.force[3 * i + 2] = 0;
+            out.xyz[3 * i] = gr->x0 + a * gr->hx;
+            out.xyz[3 * i + 1] = gr->y0 + j * gr->hy;
+            out.xyz[3 * i + 2] = 0;
         }
     }
     /* cell (a, j): its corners anticlockwise, as VTK_QUAD wants them */
@@ -235,16 +243,16 @@ static int write_grid(const lm_sim *sim, const char *path, char *err, size_t err
     for (int j = 0, c = 0; j < gr->ny; j++) {
         for (int a = 0; a < gr->nx; a++, c++) {
             int64_t n0 = (int64_t)j * row + a;
-            int64_t *q = conn + 4 * (size_t)c;
+            int64_t *q = out.conn + 4 * (size_t)c;
             q[0] = n0;
             q[1] = n0 + 1;
             q[2] = n0 + 1 + row;
             q[3] = n0 + row;
-            offs[c] = 4 * (int64_t)(c + 1);
-            types[c] = LR_VTK_QUAD;
+            out.offs[c] = 4 * (int64_t)(c + 1);
+            out.types[c] = LR_VTK_QUAD;
         }
     }
-    return la_vtk_grid_write(path, nn, nc, d, conn, offs, types, err, errlen);
+    return la_vtk_grid_write(path, &out, err, errlen);
 }
 
 /* The collection: every output so far, particles (part 0), grid (1) and

@@ -73,27 +73,23 @@ int la_vtk3_write_grid(const la_sim3 *s3, const char *path, char *err, size_t er
 {
     const lm3_grid *g = &s3->sim->grid;
     const int nx = g->n[0], ny = g->n[1], nz = g->n[2];
-    size_t nn = (size_t)(nx + 1) * (size_t)(ny + 1) * (size_t)(nz + 1);
-    size_t nc = (size_t)nx * (size_t)ny * (size_t)nz;
-    double *d;
-    int64_t *conn;
-    uint8_t *types;
-    if (la_vtk_arrays(10 * nn, 9 * nc, nc, &d, &conn, &types, path, err, errlen) != 0) return -1;
-    double *vel = d + nn, *force = d + 4 * nn, *xyz = d + 7 * nn;
-    int64_t *offs = conn + 8 * nc;
+    la_vtk_grid out;
+    if (la_vtk_grid_alloc(&out, (size_t)(nx + 1) * (size_t)(ny + 1) * (size_t)(nz + 1),
+                          (size_t)nx * (size_t)ny * (size_t)nz, 8, path, err, errlen) != 0)
+        return -1;
     size_t i = 0;
     for (int c = 0; c <= nz; c++)
         for (int b = 0; b <= ny; b++)
             for (int a = 0; a <= nx; a++, i++) {
                 long k = lm3_node(g, a, b, c);
-                d[i] = g->m[k];
+                out.mass[i] = g->m[k];
                 for (int e = 0; e < 3; e++) {
-                    vel[3 * i + e] = g->v[e][k];
-                    force[3 * i + e] = g->f[e][k];
+                    out.vel[3 * i + e] = g->v[e][k];
+                    out.force[3 * i + e] = g->f[e][k];
                 }
-                xyz[3 * i] = g->lo[0] + a * g->h;
-                xyz[3 * i + 1] = g->lo[1] + b * g->h;
-                xyz[3 * i + 2] = g->lo[2] + c * g->h;
+                out.xyz[3 * i] = g->lo[0] + a * g->h;
+                out.xyz[3 * i + 1] = g->lo[1] + b * g->h;
+                out.xyz[3 * i + 2] = g->lo[2] + c * g->h;
             }
     /* cell (a, b, c): the bottom face anticlockwise, then the top, as
      * VTK_HEXAHEDRON wants them */
@@ -102,16 +98,16 @@ int la_vtk3_write_grid(const la_sim3 *s3, const char *path, char *err, size_t er
     for (int c = 0; c < nz; c++)
         for (int b = 0; b < ny; b++)
             for (int a = 0; a < nx; a++, cell++) {
-                int64_t n0 = c * sxy + b * sx + a, *q = conn + 8 * cell;
+                int64_t n0 = c * sxy + b * sx + a, *q = out.conn + 8 * cell;
                 q[0] = n0;
                 q[1] = n0 + 1;
                 q[2] = n0 + 1 + sx;
                 q[3] = n0 + sx;
                 for (int k = 0; k < 4; k++) q[4 + k] = q[k] + sxy;
-                offs[cell] = 8 * (int64_t)(cell + 1);
-                types[cell] = VTK_HEXAHEDRON;
+                out.offs[cell] = 8 * (int64_t)(cell + 1);
+                out.types[cell] = VTK_HEXAHEDRON;
             }
-    return la_vtk_grid_write(path, nn, nc, d, conn, offs, types, err, errlen);
+    return la_vtk_grid_write(path, &out, err, errlen);
 }
 
 /* The membranes' points (issue 34 item 2) as their own piece, beside the

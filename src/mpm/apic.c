@@ -56,6 +56,7 @@
 
 #include "gather.h"
 #include "step.h"
+#include "util.h"
 
 struct lm_apic {
     double *c;      /* cxx, cxy, cyx, cyy per point */
@@ -75,11 +76,7 @@ int lm_apic_active(const lm_sim *sim)
 void lm_apic_free(struct lm_apic *a)
 {
     if (!a) return;
-    free(a->c);
-    free(a->mm);
-    free(a->dx);
-    free(a->dy);
-    free(a);
+    LU_FREE_ALL(a->c, a->mm, a->dx, a->dy, a);   /* a last: the list is read first */
 }
 
 /* Point q takes the affine transfer: not a membrane's, not a pinned one

@@ -48,11 +48,9 @@ static int field_of(lm_contact *c, int b)
 {
     for (int k = 0; k < c->nf; k++)
         if (c->f[k].body == b) return k;
-    lm_contact_field *f = realloc(c->f, (size_t)(c->nf + 1) * sizeof *f);
+    lm_contact_field *f = lu_push(&c->f, (size_t)c->nf, sizeof *c->f);
     if (!f) return -1;
-    c->f = f;
-    memset(&f[c->nf], 0, sizeof *f);
-    f[c->nf].body = b;
+    f->body = b;
     return c->nf++;
 }
 

@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "edge_order.h"
 #include "mesh3.h"
 #include "util.h"
 
@@ -517,10 +518,8 @@ typedef struct dedge { int32_t a, b; size_t t; } dedge;
 static int by_edge(const void *x, const void *y)
 {
     const dedge *p = x, *q = y;
-    int32_t pa = p->a < p->b ? p->a : p->b, pb = p->a < p->b ? p->b : p->a;
-    int32_t qa = q->a < q->b ? q->a : q->b, qb = q->a < q->b ? q->b : q->a;
-    if (pa != qa) return pa < qa ? -1 : 1;
-    if (pb != qb) return pb < qb ? -1 : 1;
+    int c = lm_edge_order(p->a, p->b, q->a, q->b);
+    if (c) return c;
     return (p->t > q->t) - (p->t < q->t);
 }
 

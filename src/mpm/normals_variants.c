@@ -122,6 +122,23 @@ static void nodes_to_points(const lm_ngrid *g, const nodes *s, size_t n,
     }
 }
 
+/* The colour methods' lattices (cell centres, quadratic; vertices, cubic)
+ * with a ring of ghosts: n + extra per axis (1 across a 2D grid), into D;
+ * their count. */
+static long ghost_lattice(const lm_ngrid *g, int extra, int D[3])
+{
+    D[0] = g->n[0] + extra;
+    D[1] = g->n[1] + extra;
+    D[2] = g->dim == 3 ? g->n[2] + extra : 1;
+    return (long)D[0] * D[1] * D[2];
+}
+
+/* (i, j, k)'s index in such a lattice of dimensions D (k = 0 in 2D) */
+static long ghost_at(const int D[3], int i, int j, int k)
+{
+    return i + (long)D[0] * (j + (long)D[1] * k);
+}
+
 static lm_nerr check_all(const lm_ngrid *g, size_t n, const double *const x[3],
                          char *err, size_t errlen)
 {
@@ -187,8 +204,8 @@ lm_nerr lm_normals_quadratic_colour(const lm_ngrid *g, size_t n,
     if (e)
         return e;
     /* cell centres with a ring of ghost cells: index c + 1, c in -1..n */
-    int C[3] = {g->n[0] + 2, g->n[1] + 2, g->dim == 3 ? g->n[2] + 2 : 1};
-    long ncent = (long)C[0] * C[1] * C[2];
+    int C[3];
+    long ncent = ghost_lattice(g, 2, C);
     nodes s = grid_nodes(g);
     double *chi = calloc((size_t)ncent, sizeof *chi);
     double *nn = calloc((size_t)s.count * 3, sizeof *nn);
@@ -210,9 +227,7 @@ lm_nerr lm_normals_quadratic_colour(const lm_ngrid *g, size_t n,
         for (int I = 0; I < q; I++) {
             /* centre I sits at cell c + (I's offset) - 1, ghost index + 1 */
             int di = I % 3, dj = (I / 3) % 3, dk = g->dim == 3 ? I / 9 : 1;
-            long at = (c[0] + di) + (long)C[0] * ((c[1] + dj) +
-                      (long)C[1] * (g->dim == 3 ? c[2] + dk : 0));
-            chi[at] += w[I];
+            chi[ghost_at(C, c[0] + di, c[1] + dj, g->dim == 3 ? c[2] + dk : 0)] += w[I];
         }
     }
     /* n_i = sum_c chi_c grad N_i(x_c) over the cells around node i (7.5):
@@ -227,8 +242,7 @@ lm_nerr lm_normals_quadratic_colour(const lm_ngrid *g, size_t n,
             for (int cj = 0; cj < 2; cj++)
                 for (int ci = 0; ci < 2; ci++) {
                     /* cell (ni - 1 + ci, ...): its ghost index is ni + ci */
-                    long at = (ni[0] + ci) + (long)C[0] * ((ni[1] + cj) +
-                              (long)C[1] * (g->dim == 3 ? ni[2] + ck : 0));
+                    long at = ghost_at(C, ni[0] + ci, ni[1] + cj, g->dim == 3 ? ni[2] + ck : 0);
                     int side[3] = {ci, cj, ck};
                     for (int a = 0; a < g->dim; a++)
                         /* side 0: the cell lies below the node, whose
@@ -396,9 +410,8 @@ lm_nerr lm_normals_cubic_colour(const lm_ngrid *g, size_t n, const double *const
         return e;
     /* vertices -1 .. n + 1 per axis (a ring of ghosts: a point on the grid's
      * edge reaches one vertex past it), index v + 1 */
-    int V[3] = {g->n[0] + 3, g->n[1] + 3, g->dim == 3 ? g->n[2] + 3 : 1};
-    int K[3] = {4, 4, g->dim == 3 ? 4 : 1};
-    long nv = (long)V[0] * V[1] * V[2];
+    int V[3], K[3] = {4, 4, g->dim == 3 ? 4 : 1};
+    long nv = ghost_lattice(g, 3, V);
     double *chi = calloc((size_t)nv, sizeof *chi);
     if (!chi) {
         snprintf(err, errlen, "out of memory (%ld vertices)", nv);
@@ -412,8 +425,7 @@ lm_nerr lm_normals_cubic_colour(const lm_ngrid *g, size_t n, const double *const
         for (int k = 0; k < K[2]; k++)
             for (int j = 0; j < K[1]; j++)
                 for (int l = 0; l < K[0]; l++)
-                    chi[(c[0] + l) + (long)V[0] * ((c[1] + j) + (long)V[1] * (c[2] + k))] +=
-                        w[0][l] * w[1][j] * w[2][k];
+                    chi[ghost_at(V, c[0] + l, c[1] + j, c[2] + k)] += w[0][l] * w[1][j] * w[2][k];
     }
     for (size_t i = 0; i < n; i++) {        /* n_p = -grad sum_v chi_v S3, 7.7 as read */
         double p[3], w[3][4], dw[3][4], v[3] = {0, 0, 0};
@@ -423,8 +435,7 @@ lm_nerr lm_normals_cubic_colour(const lm_ngrid *g, size_t n, const double *const
         for (int k = 0; k < K[2]; k++)
             for (int j = 0; j < K[1]; j++)
                 for (int l = 0; l < K[0]; l++) {
-                    double f = chi[(c[0] + l) + (long)V[0] * ((c[1] + j) +
-                                   (long)V[1] * (c[2] + k))];
+                    double f = chi[ghost_at(V, c[0] + l, c[1] + j, c[2] + k)];
                     v[0] -= f * dw[0][l] * w[1][j] * w[2][k];
                     v[1] -= f * w[0][l] * dw[1][j] * w[2][k];
                     v[2] -= f * w[0][l] * w[1][j] * dw[2][k];

@@ -39,6 +39,7 @@
 #include <string.h>
 
 #include "step.h"
+#include "util.h"
 
 
 int lm_sim_add_pin(lm_sim *sim, int b, const size_t *idx, size_t n, double vx, double vy)
@@ -69,11 +70,8 @@ int lm_sim_add_pin(lm_sim *sim, int b, const size_t *idx, size_t n, double vx, d
         sim->work->pin_vx = sim->work->pin_w + nn;
         sim->work->pin_vy = sim->work->pin_w + 2 * nn;
     }
-    lm_pin *pins = realloc(sim->pins, (size_t)(sim->npins + 1) * sizeof *pins);
-    if (!pins) goto oom;
-    sim->pins = pins;
-    lm_pin *pn = &pins[sim->npins];
-    memset(pn, 0, sizeof *pn);
+    lm_pin *pn = lu_push(&sim->pins, (size_t)sim->npins, sizeof *sim->pins);
+    if (!pn) goto oom;
     pn->idx = malloc(n * sizeof *pn->idx);
     pn->x0 = malloc(2 * n * sizeof *pn->x0);
     if (!pn->idx || !pn->x0) {

@@ -202,11 +202,8 @@ int lm3_membrane_pin(lm3_sim *sim, int k, const size_t *idx, size_t n)
         ms->held = calloc(sim->grid.nn, sizeof *ms->held);
         if (!ms->held) goto oom;
     }
-    lm3_mpin *pins = realloc(ms->pins, (size_t)(ms->npins + 1) * sizeof *pins);
-    if (!pins) goto oom;
-    ms->pins = pins;
-    lm3_mpin *pn = &pins[ms->npins];
-    memset(pn, 0, sizeof *pn);
+    lm3_mpin *pn = lu_push(&ms->pins, (size_t)ms->npins, sizeof *ms->pins);
+    if (!pn) goto oom;
     pn->idx = malloc(n * sizeof *pn->idx);
     if (!pn->idx) goto oom;
     pn->n = n;

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "edge_order.h"
 #include "mpm3_membrane.h"
 #include "util.h"
 
@@ -151,11 +152,7 @@ typedef struct edge { int32_t a, b; } edge;
 static int edge_cmp(const void *p, const void *q)
 {
     const edge *x = p, *y = q;
-    int32_t xa = x->a < x->b ? x->a : x->b, xb = x->a < x->b ? x->b : x->a;
-    int32_t ya = y->a < y->b ? y->a : y->b, yb = y->a < y->b ? y->b : y->a;
-    if (xa != ya) return xa < ya ? -1 : 1;
-    if (xb != yb) return xb < yb ? -1 : 1;
-    return 0;
+    return lm_edge_order(x->a, x->b, y->a, y->b);
 }
 
 /* Closed: every undirected edge in exactly two triangles. */

@@ -22,6 +22,7 @@
 
 #include "mpm3.h"
 #include "sim3_walls.h"
+#include "util.h"
 
 static int grow_node_arrays(lm3_sim *sim)
 {
@@ -61,11 +62,8 @@ int lm3_pin_add(lm3_sim *sim, const size_t *idx, size_t n, const double v[3])
         }
     }
     if (!grow_node_arrays(sim)) goto oom;
-    lm3_pin *np = realloc(ps->pin, (size_t)(ps->n + 1) * sizeof *np);
-    if (!np) goto oom;
-    ps->pin = np;
-    lm3_pin *pin = &ps->pin[ps->n];
-    memset(pin, 0, sizeof *pin);
+    lm3_pin *pin = lu_push(&ps->pin, (size_t)ps->n, sizeof *ps->pin);
+    if (!pin) goto oom;
     pin->idx = malloc((n ? n : 1) * sizeof *pin->idx);
     if (!pin->idx) goto oom;
     memcpy(pin->idx, idx, n * sizeof *idx);

@@ -192,6 +192,27 @@ void lm3_remap2_avx512(lm3_sim *sim, const lm3_grid *g, size_t q0, size_t q1)
     }
 }
 
+/* The eight lanes' trilinear weights (lm_linear_1d) per axis: w[a] = (1 -
+ * d, d), d the particles' offsets in their cells. */
+static inline void linear_weights(const lm3_particles *p, size_t q, __m512d w[3][2])
+{
+    const __m512d one = _mm512_set1_pd(1);
+    for (int a = 0; a < 3; a++) {
+        const __m512d d = _mm512_loadu_pd(p->d[a] + q);
+        w[a][0] = _mm512_sub_pd(one, d);
+        w[a][1] = d;
+    }
+}
+
+/* The lanes' node pair (i0, i0 + 1) of stencil row (b, c): the cell's
+ * first node `node` moved b rows in y and c layers in z. */
+static inline void row_nodes(const lm3_grid *g, __m256i node, int b, int c, __m256i *i0,
+                             __m256i *i1)
+{
+    *i0 = _mm256_add_epi32(node, _mm256_set1_epi32((int)((c * g->s[1] + b) * g->s[0])));
+    *i1 = _mm256_add_epi32(*i0, _mm256_set1_epi32(1));
+}
+
 /* Step 4 (sim3_step.c g2p_at with W = 2) at the eight particles q .. q + 7,
  * one a lane (perf34): each lane takes its particle's sums of N f and
  * N v^L in g2p_at's order (rows c outer, b inner, node 0 then node 1,
@@ -203,13 +224,9 @@ int lm3_g2p2_avx512(lm3_sim *sim, size_t q)
 {
     lm3_particles *p = &sim->p;
     const lm3_grid *g = &sim->grid;
-    const __m512d one = _mm512_set1_pd(1), vdt = _mm512_set1_pd(sim->def.dt);
+    const __m512d vdt = _mm512_set1_pd(sim->def.dt);
     __m512d w[3][2];
-    for (int a = 0; a < 3; a++) {
-        const __m512d d = _mm512_loadu_pd(p->d[a] + q);
-        w[a][0] = _mm512_sub_pd(one, d);
-        w[a][1] = d;
-    }
+    linear_weights(p, q, w);
     const __m256i node = _mm256_loadu_si256((const __m256i *)(p->node + q));
     __m512d acc[6];
     for (int e = 0; e < 6; e++) acc[e] = _mm512_setzero_pd();
@@ -217,9 +234,8 @@ int lm3_g2p2_avx512(lm3_sim *sim, size_t q)
         for (int b = 0; b < 2; b++) {
             const __m512d wyz = _mm512_mul_pd(w[1][b], w[2][c]);
             const __m512d N0 = _mm512_mul_pd(w[0][0], wyz), N1 = _mm512_mul_pd(w[0][1], wyz);
-            const __m256i i0 = _mm256_add_epi32(
-                node, _mm256_set1_epi32((int)((c * g->s[1] + b) * g->s[0])));
-            const __m256i i1 = _mm256_add_epi32(i0, _mm256_set1_epi32(1));
+            __m256i i0, i1;
+            row_nodes(g, node, b, c, &i0, &i1);
             for (int e = 0; e < 3; e++) {
                 const __m512d f0 = _mm512_i32gather_pd(i0, g->f[e], 8);
                 const __m512d f1 = _mm512_i32gather_pd(i1, g->f[e], 8);
@@ -272,10 +288,8 @@ int lm3_stress2_avx512(lm3_sim *sim, const double *G, const double *lam, size_t 
     const __m512d one = _mm512_set1_pd(1), zero = _mm512_setzero_pd(), vdt = _mm512_set1_pd(dt);
     /* lm_linear_1d: w = (1 - d, d), g = (-r, r) */
     __m512d w[3][2], gr[3][2];
+    linear_weights(p, q, w);
     for (int a = 0; a < 3; a++) {
-        const __m512d d = _mm512_loadu_pd(p->d[a] + q);
-        w[a][0] = _mm512_sub_pd(one, d);
-        w[a][1] = d;
         gr[a][0] = _mm512_set1_pd(-r);
         gr[a][1] = _mm512_set1_pd(r);
     }
@@ -287,9 +301,8 @@ int lm3_stress2_avx512(lm3_sim *sim, const double *G, const double *lam, size_t 
             const __m512d wyz = _mm512_mul_pd(w[1][b], w[2][c]);
             const __m512d gyz = _mm512_mul_pd(gr[1][b], w[2][c]);
             const __m512d wgz = _mm512_mul_pd(w[1][b], gr[2][c]);
-            const __m256i i0 = _mm256_add_epi32(
-                node, _mm256_set1_epi32((int)((c * g->s[1] + b) * g->s[0])));
-            const __m256i i1 = _mm256_add_epi32(i0, _mm256_set1_epi32(1));
+            __m256i i0, i1;
+            row_nodes(g, node, b, c, &i0, &i1);
             for (int e = 0; e < 3; e++) {
                 const __m512d v0 = _mm512_i32gather_pd(i0, g->v[e], 8);
                 const __m512d v1 = _mm512_i32gather_pd(i1, g->v[e], 8);

@@ -432,13 +432,20 @@ static int draw_panel(lr_canvas *c, const lr_figure *f, const layout *L, size_t 
     return rc;
 }
 
-int lr_figure_draw(const lr_figure *f, lr_canvas *c, char *err, size_t errlen)
+/* 0, or -1 with what is wrong with the figure (or that there is none) in
+ * err: drawing and rendering refuse alike. */
+static int figure_ok(const lr_figure *f, char *err, size_t errlen)
 {
     const char *problem = f ? figure_problem(f) : "no figure";
-    if (problem) {
+    if (problem)
         lu_err(err, errlen, "%s", problem);
+    return problem ? -1 : 0;
+}
+
+int lr_figure_draw(const lr_figure *f, lr_canvas *c, char *err, size_t errlen)
+{
+    if (figure_ok(f, err, errlen) != 0)
         return -1;
-    }
     if (!c || lr_canvas_width(c) != f->width || lr_canvas_height(c) != f->height) {
         lu_err(err, errlen, "the canvas is not the figure's size");
         return -1;
@@ -500,11 +507,8 @@ static int draw_figure(const void *f, lr_canvas *c, char *err, size_t errlen)
 
 unsigned char *lr_figure_render(const lr_figure *f, char *err, size_t errlen)
 {
-    const char *problem = f ? figure_problem(f) : "no figure";
-    if (problem) {
-        lu_err(err, errlen, "%s", problem);
+    if (figure_ok(f, err, errlen) != 0)
         return NULL;
-    }
     return fig_render(f->backend, f->width, f->height, draw_figure, f, err, errlen);
 }
 

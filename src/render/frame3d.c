@@ -541,13 +541,20 @@ static int draw_panel(lr_canvas *c, const lr_panel3d *p, double x, double y, dou
     return 0;
 }
 
-int lr_figure3d_draw(const lr_figure3d *f, lr_canvas *c, char *err, size_t errlen)
+/* 0, or -1 with what is wrong with the frame (or that there is none) in
+ * err: drawing and rendering refuse alike. */
+static int frame_ok(const lr_figure3d *f, char *err, size_t errlen)
 {
     const char *problem = f ? figure_problem(f) : "no figure";
-    if (problem) {
+    if (problem)
         lu_err(err, errlen, "3D frame: %s", problem);
+    return problem ? -1 : 0;
+}
+
+int lr_figure3d_draw(const lr_figure3d *f, lr_canvas *c, char *err, size_t errlen)
+{
+    if (frame_ok(f, err, errlen) != 0)
         return -1;
-    }
     if (!c || lr_canvas_width(c) != f->width || lr_canvas_height(c) != f->height) {
         lu_err(err, errlen, "3D frame: the canvas is not the figure's size");
         return -1;
@@ -599,11 +606,8 @@ static int draw_figure3d(const void *f, lr_canvas *c, char *err, size_t errlen)
 
 unsigned char *lr_figure3d_render(const lr_figure3d *f, char *err, size_t errlen)
 {
-    const char *problem = f ? figure_problem(f) : "no figure";
-    if (problem) {
-        lu_err(err, errlen, "3D frame: %s", problem);
+    if (frame_ok(f, err, errlen) != 0)
         return NULL;
-    }
     return fig_render(f->backend, f->width, f->height, draw_figure3d, f, err, errlen);
 }
 

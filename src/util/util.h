@@ -64,6 +64,11 @@ const char *lu_xml_entity(char c);
  * capacity *cap, which doubles from first: 0, or -1 when out of memory or
  * too large (the array and *cap unchanged). */
 int lu_reserve(void *array, size_t *cap, size_t need, size_t elem, size_t first);
+/* Element n of the array *(T **)array of n elements, grown by one
+ * (realloc) and zeroed: its address, or NULL out of memory (the array
+ * unchanged). For lists that grow one at a time (pins, contact fields,
+ * record columns). */
+void *lu_push(void *array, size_t n, size_t elem);
 /* Frees the n arrays p[0..n) (any may be NULL); LU_FREE_ALL(a, b, ...)
  * frees the arrays named, for a struct that owns many. */
 void lu_free_each(void *const *p, size_t n);

@@ -18,21 +18,10 @@ from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from png_text import png_texts  # noqa: E402
+from agree_checks import checks  # noqa: E402
 
 
-def fail(msg):
-    print("fields_agree: FAILED:", msg)
-    sys.exit(1)
-
-
-def same(a, b, what, tol=1e-13):
-    a, b = np.asarray(a, float), np.asarray(b, float)
-    if a.shape != b.shape:
-        fail(f"{what}: shape {a.shape} vs {b.shape}")
-    scale = max(1.0, float(np.max(np.abs(b))))
-    err = float(np.max(np.abs(a - b)))
-    if err > tol * scale:
-        fail(f"{what}: differs by {err:g} (scale {scale:g})")
+fail, same = checks("fields_agree")
 
 
 def main():

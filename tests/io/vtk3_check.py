@@ -12,30 +12,17 @@ usage: vtk3_check.py REF_FILE PREFIX"""
 import sys
 import xml.etree.ElementTree as ET
 
-import meshio
 import numpy as np
 # the 2D check's helpers (the same script's folder is on sys.path)
-from vtk_check import close, fail, read_vtk
+from vtk_check import close, fail
+from vtk_check import read_both as vtk_check_read_both
 
 MESHIO_TYPES = {"vertex": 1, "hexahedron": 12}
 
 
 def read_both(path):
-    pts, arrays, cells = read_vtk(path)
-    try:
-        mesh = meshio.read(path)
-    except Exception as e:   # noqa: BLE001 - any failure is the finding
-        fail(f"meshio cannot read {path}: {type(e).__name__}: {e}")
-    close(mesh.points, pts, f"{path}: points (meshio vs VTK)", 0)
-    if set(mesh.point_data) != set(arrays):
-        fail(f"{path}: meshio has {sorted(mesh.point_data)}, VTK {sorted(arrays)}")
-    for name, a in arrays.items():
-        close(np.asarray(mesh.point_data[name]).reshape(a.shape), a,
-              f"{path}: {name} (meshio vs VTK)", 0)
-    mcells = [(MESHIO_TYPES[b.type], list(row)) for b in mesh.cells for row in b.data]
-    if sorted(mcells) != sorted(cells):
-        fail(f"{path}: meshio's cells differ from VTK's")
-    return pts, arrays, cells
+    """vtk_check.read_both with the 3D cell types."""
+    return vtk_check_read_both(path, MESHIO_TYPES)
 
 
 def main():

@@ -67,8 +67,9 @@ def read_vtk(path):
 MESHIO_TYPES = {"vertex": 1, "line": 3, "quad": 9}
 
 
-def read_both(path):
-    """Reads path with VTK and meshio; they must agree; VTK's result."""
+def read_both(path, types=MESHIO_TYPES):
+    """Reads path with VTK and meshio; they must agree (meshio's cell types
+    named to VTK's numbers by types); VTK's result."""
     pts, arrays, cells = read_vtk(path)
     try:
         mesh = meshio.read(path)
@@ -80,7 +81,7 @@ def read_both(path):
     for name, a in arrays.items():
         close(np.asarray(mesh.point_data[name]).reshape(a.shape), a,
               f"{path}: {name} (meshio vs VTK)", 0)
-    mcells = [(MESHIO_TYPES[b.type], list(row)) for b in mesh.cells for row in b.data]
+    mcells = [(types[b.type], list(row)) for b in mesh.cells for row in b.data]
     if sorted(mcells) != sorted(cells):
         fail(f"{path}: meshio's cells differ from VTK's")
     return pts, arrays, cells

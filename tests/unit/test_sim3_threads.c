@@ -11,38 +11,14 @@
 #include <math.h>
 #include <string.h>
 
+#include "block3_fixture.h"
 #include "check.h"
 #include "mpm3.h"
 
 static lm3_sim *block(lm_basis basis, lm_scheme scheme, int gas, int threads, int nudge)
 {
-    lm3_def d;
-    memset(&d, 0, sizeof d);
-    d.hi[0] = d.hi[1] = d.hi[2] = 1;
-    d.cell = 1.0 / 20;
-    d.basis = basis;
-    d.scheme = scheme;
-    d.gravity[2] = -9.81;
-    d.threads = threads;
-    for (int f = 0; f < LM3_FACES; f++) d.bc[f] = LM_BC_FIXED;
-    lm3_material m = {.rho = 1000, .E = 1e6, .nu = 0.3};
-    if (gas) {
-        lm3_material g = {.rho = 1000, .kind = LM3_GAS, .gamma = 1.4, .mu = 0.1, .av = 1,
-                          .av_c1 = 1, .av_c2 = 1, .av_lambda = 0.75, .e0 = 1.35e3 / 0.56};   /* c = 36.7 m/s */
-        m = g;
-    }
-    d.dt = 0.2 * d.cell / 36.7;
-    char err[256];
-    lm3_sim *sim = lm3_sim_create(&d, err, sizeof err);
-    int mi = lm3_material_add(sim, &m, err, sizeof err);
-    double lo[3] = {0.25, 0.25, 0.25}, hi[3] = {0.75, 0.75, 0.75}, v[3] = {0, 0, 0};
-    CHECK(lm3_seed_box(sim, mi, lo, hi, 2, v) > 4096);
-    for (size_t q = 0; q < sim->p.n; q++) {
-        double x = sim->p.x[0][q] - 0.5, y = sim->p.x[1][q] - 0.5, z = sim->p.x[2][q] - 0.5;
-        sim->p.v[0][q] = -2 * y + 0.5 * z;
-        sim->p.v[1][q] = 2 * x;
-        sim->p.v[2][q] = 0.3 * x - 1;
-    }
+    lm3_sim *sim = block3_new(basis, scheme, gas, threads, NULL);
+    block3_spin(sim);
     /* one unit in the last place of every particle's x velocity: how far
      * rounding differences everywhere grow in this flow */
     if (nudge)

@@ -19,27 +19,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "block3_fixture.h"
 #include "check.h"
 #include "mpm3.h"
 
 static lm3_sim *block(lm_basis basis, lm_scheme scheme, int threads, int shuffle)
 {
-    lm3_def d;
-    memset(&d, 0, sizeof d);
-    d.hi[0] = d.hi[1] = d.hi[2] = 1;
-    d.cell = 1.0 / 20;
-    d.basis = basis;
-    d.scheme = scheme;
-    d.gravity[2] = -9.81;
-    d.threads = threads;
-    for (int f = 0; f < LM3_FACES; f++) d.bc[f] = LM_BC_FIXED;
-    lm3_material m = {.rho = 1000, .E = 1e6, .nu = 0.3};
-    d.dt = 0.2 * d.cell / 36.7;
-    char err[256];
-    lm3_sim *sim = lm3_sim_create(&d, err, sizeof err);
-    int mi = lm3_material_add(sim, &m, err, sizeof err);
-    double lo[3] = {0.25, 0.25, 0.25}, hi[3] = {0.75, 0.75, 0.75}, v[3] = {0, 0, 0};
-    CHECK(lm3_seed_box(sim, mi, lo, hi, 2, v) > 4096);
+    lm3_sim *sim = block3_new(basis, scheme, 0, threads, NULL);
     const size_t n = sim->p.n;
     if (shuffle) {
         /* q -> 7919 q mod n, a permutation when n is not a multiple of
@@ -55,12 +41,7 @@ static lm3_sim *block(lm_basis basis, lm_scheme scheme, int threads, int shuffle
             for (int k = 0; k < 3; k++) sim->p.x[k][q] = x[k][(q * 7919) % n];
         for (int k = 0; k < 3; k++) free(x[k]);
     }
-    for (size_t q = 0; q < n; q++) {
-        double x = sim->p.x[0][q] - 0.5, y = sim->p.x[1][q] - 0.5, z = sim->p.x[2][q] - 0.5;
-        sim->p.v[0][q] = -2 * y + 0.5 * z;
-        sim->p.v[1][q] = 2 * x;
-        sim->p.v[2][q] = 0.3 * x - 1;
-    }
+    block3_spin(sim);
     return sim;
 }
 

@@ -113,6 +113,23 @@ static void test_reserve(void)
     free(a);
 }
 
+/* lu_push: each element added zeroed, the earlier ones kept; a count past
+ * what size_t can hold refused with the array unchanged */
+static void test_push(void)
+{
+    struct item { int a; double b; } *v = NULL;
+    for (size_t n = 0; n < 5; n++) {
+        struct item *it = lu_push(&v, n, sizeof *v);
+        CHECK(it && it == &v[n] && it->a == 0 && it->b == 0);
+        it->a = (int)n + 1;
+        it->b = 0.5 * (double)n;
+    }
+    for (size_t n = 0; n < 5; n++) CHECK(v[n].a == (int)n + 1 && v[n].b == 0.5 * (double)n);
+    struct item *before = v;
+    CHECK(lu_push(&v, (size_t)-1 / sizeof *v, sizeof *v) == NULL && v == before);
+    free(v);
+}
+
 int main(void)
 {
     test_err();
@@ -121,5 +138,6 @@ int main(void)
     test_opt();
     test_text();
     test_reserve();
+    test_push();
     return CHECK_DONE();
 }
