@@ -46,6 +46,9 @@ local function weights(u, u0, h, basis)
   error("gas_nodes: basis '" .. tostring(basis) .. "' is not one of \"linear\", \"bspline2\"", 3)
 end
 
+-- the same weights for other scripts (scripts/measure/dogbone_pressure_defs.lua)
+M.weights = weights
+
 -- The nodal sums of the gas: energy[key] = sum m e N, mass[key] = sum m N,
 -- mp[key] = sum m p N, keys j * (nx + 1) + i for nodes i, j of the grid.
 function M.sums(sim, gas, o)

@@ -31,20 +31,10 @@ local out = lamina.param("out", "out/dogbone_pressure_defs")
 local count = lamina.param("count", 0)   -- membrane points; 0: the deck's 600 ([T] Table 5: 56 / 100 / 200 / 400)
 
 -- one axis' weights: node index and weight pairs for coordinate x on cell h
+-- (gas_nodes.lua's, origin 0)
+local gn = require("gas_nodes")
 local function weights(x, h, basis)
-  local w = {}
-  if basis == "linear" then
-    local i = math.floor(x / h)
-    local f = x / h - i
-    w[1], w[2] = { i, 1 - f }, { i + 1, f }
-  else   -- quadratic B-spline, node-centred (src/mpm/shape_bspline.c)
-    local i = math.floor(x / h + 0.5)
-    for k = i - 1, i + 1 do
-      local xi = math.abs(x / h - k)
-      w[#w + 1] = { k, xi <= 0.5 and 0.75 - xi * xi or 0.5 * (1.5 - xi) ^ 2 }
-    end
-  end
-  return w
+  return gn.weights(x, 0, h, basis)
 end
 
 -- scatter sums a[node] += v * N over the particles and their mirror images
