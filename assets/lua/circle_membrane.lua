@@ -53,4 +53,22 @@ function M.worst_connectivity_error(mem)
   return w
 end
 
+-- The quarter circle's drift from its start, sampled every millisecond of
+-- the run that follows: the largest |r / r0 - 1| at 0, 45 and 90 degrees and
+-- the largest |hoop / hoop at the start - 1|. Returns a function giving both.
+function M.watch_drift(sim, mem, r0)
+  local s_start, wr, ws = mem:hoop_stress(), 0, 0
+  sim:every(1e-3, function()
+    for _, deg in ipairs{0, 45, 90} do wr = math.max(wr, math.abs(mem:radius_at(deg) / r0 - 1)) end
+    ws = math.max(ws, math.abs(mem:hoop_stress() / s_start - 1))
+  end)
+  return function() return wr, ws end
+end
+
+-- sigma t / (p r) at the present state: the hoop stress against Laplace's
+-- law, r the mean of the radii at 0 and 90 degrees, p the enclosed gas's.
+function M.laplace_ratio(mem, gas, t)
+  return mem:hoop_stress() * t / (gas:pressure(mem) * (mem:radius_at(0) + mem:radius_at(90)) / 2)
+end
+
 return M
