@@ -9,6 +9,7 @@
 --   page.cell(h, { out, t_end, threads, report, radius_series, energy_series, hashes })
 local b = require("dogbone_box9")
 local gn = require("gas_nodes")
+local means = require("dogbone_means")
 local M = {}
 
 -- every gas particle outside the membrane: membrane:escaped's count beyond a
@@ -109,17 +110,9 @@ function M.cell(h, c)
   local clock = lamina.clock()
   sim:run{ t_end = t_end }
   local secs = lamina.clock() - clock
-  local t0 = math.max(0, t_end - 1)
-  local p, hoop = rec:mean("p", t0, t_end), rec:mean("hoop", t0, t_end)
-  local pp = rec:mean("pp", t0, t_end)
-  local r0, r90 = rec:mean("r0", t0, t_end), rec:mean("r90", t0, t_end)
-  local prt, pprt = p * 0.5 * (r0 + r90) / 0.1, pp * 0.5 * (r0 + r90) / 0.1
-  local tot, ke, gk = rec:column("total"), rec:column("kinetic"), rec:column("gk")
-  local n = #tot
-  local dE = (tot[n] - tot[1]) / tot[1]
-  local vis = {}
-  for i = 1, n do vis[i] = tot[i] - ke[i] + gk[i] end
-  local loss, hidden = (vis[1] - vis[n]) / vis[1], ke[n] - gk[n]
+  local e = means.at_end(rec, t_end, 0.1)
+  local p, hoop, pp, r0, r90, prt, pprt = e.p, e.hoop, e.pp, e.r0, e.r90, e.prt, e.pprt
+  local t0, tot, n, dE, vis, loss, hidden = e.t0, e.tot, e.n, e.dE, e.vis, e.loss, e.hidden
   local dev = 100 * (hoop - prt) / prt
   -- [T] Table 5 note c: "Calculated by averaging the final pressure at
   -- interior grid points": at t_end, the nodal pressure the grid feels,

@@ -55,6 +55,7 @@ local finest = lamina.param("finest", 0.05)
 local t_end = lamina.param("t_end", 4)
 local threads = lamina.param("threads", 2)   -- fixed here, so the state does not depend on the machine
 local dog = require("dogbone")
+local means = require("dogbone_means")
 
 local paper_F = { [0.4] = {1.07, 50.3}, [0.2] = {1.33, 28.8}, [0.1] = {1.35, 31.2}, [0.05] = {1.36, 31.7} }
 local paper_T = { [0.4] = {1.08, 1.13, 33.4}, [0.2] = {1.335, 1.334, 24.9}, [0.1] = {1.388, 1.387, 27.0},
@@ -85,17 +86,9 @@ for _, h in ipairs{0.4, 0.2, 0.1, 0.05} do
   local clock = lamina.clock()
   sim:run{ t_end = t_end }
   local secs = lamina.clock() - clock
-  local t0 = math.max(0, t_end - 1)
-  local p, hoop = rec:mean("p", t0, t_end), rec:mean("hoop", t0, t_end)
-  local pp = rec:mean("pp", t0, t_end)
-  local r0, r90 = rec:mean("r0", t0, t_end), rec:mean("r90", t0, t_end)
-  local prt, pprt = p * 0.5 * (r0 + r90) / 0.1, pp * 0.5 * (r0 + r90) / 0.1
-  local tot, ke, gk = rec:column("total"), rec:column("kinetic"), rec:column("gk")
-  local n = #tot
-  local dE = (tot[n] - tot[1]) / tot[1]
-  local vis = {}
-  for i = 1, n do vis[i] = tot[i] - ke[i] + gk[i] end
-  local loss, hidden = (vis[1] - vis[n]) / vis[1], ke[n] - gk[n]
+  local e = means.at_end(rec, t_end, 0.1)
+  local p, hoop, pp, r0, r90, prt, pprt = e.p, e.hoop, e.pp, e.r0, e.r90, e.prt, e.pprt
+  local tot, n, dE, vis, loss, hidden = e.tot, e.n, e.dE, e.vis, e.loss, e.hidden
   print(string.format("cell %.3f: %d gas + %d membrane points, %d steps in %.1f s "
     .. "(%.2f M particle-steps/s; %d points at the end); r(0) %.4f r(90) %.4f p %.2f hoop %.1f p r/t %.1f (%+.1f %%; "
     .. "particle mean p %.2f: %+.1f %%); "
