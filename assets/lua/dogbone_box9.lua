@@ -227,6 +227,16 @@ function M.radius(mem, deg)
   return math.sqrt(p.x[i] ^ 2 + p.y[i] ^ 2)
 end
 
+-- The record values the measure scripts follow (scripts/measure/dogbone_*):
+-- the enclosed gas's pressure, the hoop stress and the radii at 0 and 90
+-- degrees, for sim:record{values = ...}.
+function M.history_values(gas, mem)
+  return { p = function() return gas:pressure(mem) end,
+           hoop = function() return mem:hoop_stress() end,
+           r0 = function() return M.radius(mem, 0) end,
+           r90 = function() return M.radius(mem, 90) end }
+end
+
 -- dt at cell h: the deck's Courant number (dt = 0.35e-4 at h = 0.05).
 function M.dt(h) return M.deck.dt * h / M.deck.cell end
 

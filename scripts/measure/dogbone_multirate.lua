@@ -65,11 +65,7 @@ if adapt > 0 then
     s.dt = math.max(dt0, dt)
   end)
 end
-local rec = sim:record{ every = 0.01, energy = true, values = {
-  p = function() return gas:pressure(mem) end,
-  hoop = function() return mem:hoop_stress() end,
-  r0 = function() return b.radius(mem, 0) end,
-  r90 = function() return b.radius(mem, 90) end } }
+local rec = sim:record{ every = 0.01, energy = true, values = b.history_values(gas, mem) }
 sim:every(0.05, function(s)
   print(string.format("  t %.3f  dt %.3g  substeps %d  gas v_max %.1f  steps %d  energy %.3f  pressure %.2f",
                       s.t, s.dt, s.substeps, vmax(), s.nstep, s:energy().total, gas:pressure(mem)))

@@ -19,11 +19,7 @@ for _, body in ipairs{gas, mem} do
   local m = body:particles().mass
   for i = 1, #body do mass = mass + m[i] end
 end
-local rec = sim:record{ every = 0.01, energy = true, values = {
-  p = function() return gas:pressure(mem) end,
-  hoop = function() return mem:hoop_stress() end,
-  r0 = function() return b.radius(mem, 0) end,
-  r90 = function() return b.radius(mem, 90) end } }
+local rec = sim:record{ every = 0.01, energy = true, values = b.history_values(gas, mem) }
 local clock = lamina.clock()
 sim:run{ t_end = t_end }
 local secs = lamina.clock() - clock
