@@ -103,6 +103,7 @@
 #include "step.h"
 #include "sim_work.h"
 #include "step_kernels.h"
+#include "subcycle_band.h"
 #include "threads.h"
 
 /* The nodal arrays of the scheme (nn nodes each, ghosts included). */
@@ -124,6 +125,8 @@ typedef struct lm_subcycle {
     unsigned char *near;                  /* rows of C the membranes can read */
     long *rows;                           /* those nodes, in order */
     size_t nrows;
+    lm_band *band;                        /* the nodes the sub-steps sweep
+                                             (subcycle_band.c) */
 } lm_subcycle;
 
 void lm_subcycle_free(lm_subcycle *s)
@@ -133,6 +136,7 @@ void lm_subcycle_free(lm_subcycle *s)
     free(s->near);
     free(s->rows);
     free(s->xs);
+    lm_band_free(s->band);
     free(s);
 }
 
@@ -163,7 +167,9 @@ static lm_status reserve(lm_sim *sim)
     double *b = s ? calloc((18 + (size_t)(B * B)) * nn, sizeof *b) : NULL;
     unsigned char *near = b ? calloc(nn, 1) : NULL;
     long *rows = near ? calloc(nn, sizeof *rows) : NULL;
-    if (!rows) {
+    lm_band *band = rows ? lm_band_new(&sim->grid) : NULL;
+    if (!band) {
+        free(rows);
         free(near);
         free(b);
         free(s);
@@ -180,6 +186,7 @@ static lm_status reserve(lm_sim *sim)
     s->C = b + 18 * nn;
     s->near = near;
     s->rows = rows;
+    s->band = band;
     s->B = B;
     sim->work->sub = s;
     return reserve_points(sim, s);
@@ -240,12 +247,13 @@ static lm_status refuse(lm_sim *sim)
 /* The membranes' m^M, p^M, f^M (internal force and gravity) at their
  * stored shape functions, folded at the walls; a segment membrane's net
  * tension as lm_membrane_segment_forces left it (membrane_force.c). */
-static void fast_sums(lm_sim *sim, lm_subcycle *s)
+static void fast_sums(lm_sim *sim, lm_subcycle *s, const lm_band *band)
 {
     const lm_grid *g = &sim->grid;
     const double rx = 1.0 / g->hx, ry = 1.0 / g->hy;
     double *const f[5] = {s->mM, s->pMx, s->pMy, s->fMx, s->fMy};
-    for (int k = 0; k < 5; k++) memset(f[k], 0, s->nn * sizeof *f[k]);
+    if (band) lm_band_zero(band, 5, f);   /* a sub-step's: the rest stays 0 */
+    else for (int k = 0; k < 5; k++) memset(f[k], 0, s->nn * sizeof *f[k]);
     if (g->sw == 2) {
         FOR_FAST(sim, q) lm_k_scatter_mass_forces(sim, q, rx, ry, f, NULL, 0, 0, 2, 0, 1);
     } else {
@@ -253,18 +261,19 @@ static void fast_sums(lm_sim *sim, lm_subcycle *s)
     }
     static const lm_comp comp[5] = {LM_COMP_SCALAR, LM_COMP_X, LM_COMP_Y, LM_COMP_X, LM_COMP_Y};
     lm_grid_fold(g, 5, f, comp);
-    for (size_t i = 0; i < s->nn; i++) {
+    const size_t n = band ? band->n : s->nn;
+    for (size_t r = 0; r < n; r++) {
+        const size_t i = band ? (size_t)band->idx[r] : r;
         s->fMx[i] += s->mM[i] * sim->def.gx;
         s->fMy[i] += s->mM[i] * sim->def.gy;
     }
 }
 
 /* The membranes' re-mapped momenta m_p v_p N_ip into (ux, uy), folded. */
-static void fast_remap(lm_sim *sim, double *ux, double *uy, size_t nn)
+static void fast_remap(lm_sim *sim, double *ux, double *uy, const lm_band *band)
 {
     double *const f[2] = {ux, uy};
-    memset(ux, 0, nn * sizeof *ux);
-    memset(uy, 0, nn * sizeof *uy);
+    lm_band_zero(band, 2, f);
     if (sim->grid.sw == 2) {
         FOR_FAST(sim, q) lm_k_scatter_momentum(sim, q, f, NULL, 0, 0, 2, 0, 0);
     } else {
@@ -352,9 +361,9 @@ static void slow_remap(const lm_sim *sim, const lm_subcycle *s, double *ux, doub
 {
     const lm_grid *g = &sim->grid;
     const int W = g->sw, B = s->B;
-    const long nn = (long)s->nn;
-    memset(ux, 0, s->nn * sizeof *ux);
-    memset(uy, 0, s->nn * sizeof *uy);
+    const lm_band *band = s->band;   /* its rows and what they read */
+    double *const f[2] = {ux, uy};
+    lm_band_zero(band, 2, f);
     for (size_t r = 0; r < s->nrows; r++) {
         const long i = s->rows[r];
         const double *row = s->C + (size_t)i * (size_t)(B * B);
@@ -370,10 +379,10 @@ static void slow_remap(const lm_sim *sim, const lm_subcycle *s, double *ux, doub
         ux[i] = sx;
         uy[i] = sy;
     }
-    double *const f[2] = {ux, uy};
     static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
     lm_grid_fold(g, 2, f, comp);
-    for (long i = 0; i < nn; i++) {
+    for (size_t r = 0; r < band->n; r++) {
+        const long i = band->idx[r];
         ux[i] += s->qGx[i];
         uy[i] += s->qGy[i];
     }
@@ -402,28 +411,48 @@ static void fast_stress(lm_sim *sim, double dt)
     }
 }
 
-/* One sub-step of dt for the membranes (phase 1 of the header). */
-static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int first, double dt)
+/* What the sub-steps read beyond the membranes' stencils (subcycle_band.c
+ * says why): MUSL's re-map of the slow group reads A W - 1 nodes beyond
+ * them; USL nothing. */
+static int band_need(const lm_sim *sim)
+{
+    return sim->def.scheme == LM_MUSL ? sim->grid.sw - 1 : 0;
+}
+
+static lm_band_nodes band_nodes(lm_subcycle *s)
+{
+    lm_band_nodes a = {s->mG, s->fGx, s->fGy, s->pGx, s->pGy, s->Ax, s->Ay,
+                       s->Xx, s->Xy, s->Vx, s->Vy};
+    return a;
+}
+
+/* One sub-step of dt for the membranes (phase 1 of the header): the band's
+ * nodes (subcycle_band.c); the rest follow at the step's end. */
+static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int j, double dt)
 {
     lm_grid *g = &sim->grid;
     lm_particles *p = &sim->p;
-    const size_t nn = s->nn;
-    if (!first) {
+    const lm_band *band = s->band;   /* the nodes swept (subcycle_band.c) */
+    if (j > 0) {
         const double rx = 1.0 / g->hx, ry = 1.0 / g->hy;
         FOR_FAST(sim, q) lm_k_shape(sim, p, q, rx, ry);
+        lm_band_nodes bn = band_nodes(s);
+        lm_band_grow(s->band, sim, &bn, j, dt);
         lm_membrane_segment_forces(sim);
-        fast_sums(sim, s);
+        fast_sums(sim, s, band);
     }
-    for (size_t i = 0; i < nn; i++) {
+    for (size_t r = 0; r < band->n; r++) {
+        const long i = band->idx[r];
         g->m[i] = s->mG[i] + s->mM[i];
         g->px[i] = s->pGx[i] + s->pMx[i];
         g->py[i] = s->pGy[i] + s->pMy[i];
         g->fx[i] = s->fGx[i] + s->fMx[i];
         g->fy[i] = s->fGy[i] + s->fMy[i];
     }
-    lm_step_grid_update(sim);                  /* 3: P^L, the walls */
-    lm_step_g2p_nodes(sim, g->vx, g->vy);      /* 4: a_i, v^L_i, ghosts filled */
-    for (size_t i = 0; i < nn; i++) {
+    lm_band_grid_update(sim, band);            /* 3: P^L, the walls */
+    lm_band_g2p_nodes(sim, band, g->vx, g->vy);   /* 4: a_i, v^L_i, ghosts filled */
+    for (size_t r = 0; r < band->n; r++) {
+        const long i = band->idx[r];
         s->pGx[i] += dt * s->mG[i] * g->ax[i];   /* the slow group's share */
         s->pGy[i] += dt * s->mG[i] * g->ay[i];
         s->Ax[i] += dt * g->ax[i];
@@ -446,12 +475,13 @@ static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int first, double dt)
     }
     if (sim->def.scheme == LM_MUSL) {            /* 5: re-map, all particles */
         slow_remap(sim, s, s->fMx, s->fMy);      /* (f^M is spent: scratch) */
-        fast_remap(sim, g->vx, g->vy, nn);
-        for (size_t i = 0; i < nn; i++) {
+        fast_remap(sim, g->vx, g->vy, band);
+        for (size_t r = 0; r < band->n; r++) {
+            const long i = band->idx[r];
             g->vx[i] += s->fMx[i];
             g->vy[i] += s->fMy[i];
         }
-        lm_step_strain_velocity_end(sim, 1);
+        lm_band_remap_end(sim, band);
     } else {
         lm_step_strain_velocity_end(sim, 0);     /* v^L as step 4 left it */
     }
@@ -479,7 +509,7 @@ lm_status lm_subcycle_step(lm_sim *sim)
     lm_step_clear(sim);                         /* 0 */
     lm_step_shape(sim);
     lm_step_p2g_forces(sim);                    /* 1-2: all particles */
-    fast_sums(sim, s);
+    fast_sums(sim, s, NULL);
     /* the slow group's share; a node the membranes alone reach keeps a
      * rounding error of their sums: zero */
     for (size_t i = 0; i < nn; i++) {
@@ -503,10 +533,13 @@ lm_status lm_subcycle_step(lm_sim *sim)
         s->xs[4 * q] = p->x[q];
         s->xs[4 * q + 1] = p->y[q];
     }
+    lm_band_build(s->band, sim, band_need(sim));   /* the stencils at x^n */
     sim->def.dt = dt;                           /* what the phases read */
-    for (int j = 0; j < k && st == LM_OK; j++) st = sub_step(sim, s, j == 0, dt);
+    for (int j = 0; j < k && st == LM_OK; j++) st = sub_step(sim, s, j, dt);
     sim->def.dt = Dt;
     if (st != LM_OK) return st;
+    lm_band_nodes bn = band_nodes(s);
+    lm_band_far(sim, s->band, &bn, k, dt);      /* the nodes no membrane reached */
 
     /* 2: the slow group with its shape functions of x^n */
     const double r = 1.0 / Dt, pic = sim->def.pic;
