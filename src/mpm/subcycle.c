@@ -104,6 +104,7 @@
 #include "sim_work.h"
 #include "step_kernels.h"
 #include "subcycle_band.h"
+#include "subcycle_runs.h"
 #include "threads.h"
 
 /* The nodal arrays of the scheme (nn nodes each, ghosts included). */
@@ -250,15 +251,10 @@ static lm_status refuse(lm_sim *sim)
 static void fast_sums(lm_sim *sim, lm_subcycle *s, const lm_band *band)
 {
     const lm_grid *g = &sim->grid;
-    const double rx = 1.0 / g->hx, ry = 1.0 / g->hy;
     double *const f[5] = {s->mM, s->pMx, s->pMy, s->fMx, s->fMy};
     if (band) lm_band_zero(band, 5, f);   /* a sub-step's: the rest stays 0 */
     else for (int k = 0; k < 5; k++) memset(f[k], 0, s->nn * sizeof *f[k]);
-    if (g->sw == 2) {
-        FOR_FAST(sim, q) lm_k_scatter_mass_forces(sim, q, rx, ry, f, NULL, 0, 0, 2, 0, 1);
-    } else {
-        FOR_FAST(sim, q) lm_k_scatter_mass_forces(sim, q, rx, ry, f, NULL, 0, 0, 3, 0, 1);
-    }
+    lm_runs_mass_forces(sim, f);   /* lm_k_scatter_mass_forces's, by runs */
     static const lm_comp comp[5] = {LM_COMP_SCALAR, LM_COMP_X, LM_COMP_Y, LM_COMP_X, LM_COMP_Y};
     lm_grid_fold(g, 5, f, comp);
     const size_t n = band ? band->n : s->nn;
@@ -274,11 +270,7 @@ static void fast_remap(lm_sim *sim, double *ux, double *uy, const lm_band *band)
 {
     double *const f[2] = {ux, uy};
     lm_band_zero(band, 2, f);
-    if (sim->grid.sw == 2) {
-        FOR_FAST(sim, q) lm_k_scatter_momentum(sim, q, f, NULL, 0, 0, 2, 0, 0);
-    } else {
-        FOR_FAST(sim, q) lm_k_scatter_momentum(sim, q, f, NULL, 0, 0, 3, 0, 0);
-    }
+    lm_runs_momentum(sim, f);      /* lm_k_scatter_momentum's, by runs */
     static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
     lm_grid_fold(&sim->grid, 2, f, comp);
 }

@@ -169,55 +169,94 @@ void lm_band_build(lm_band *b, const lm_sim *sim, int need)
     list_band(b, sim->grid.sx, sim->grid.sw);
 }
 
-/* Node i through n sub-steps of dt, as subcycle.c's sub_step sweeps a node
- * no membrane reaches (m^M = p^M = f^M = +0: the same additions, so the
- * same bits); the grid's arrays left as the last of them left them. */
-static void advance(lm_grid *g, const lm_band_nodes *a, const unsigned char *zero, long i, int n,
-                    double dt)
+/* Nodes[0..nb) (nb <= LM_BAND_BLOCK) through n sub-steps of dt, as
+ * subcycle.c's sub_step sweeps a node no membrane reaches (m^M = p^M = f^M
+ * = +0: the same additions, so the same bits); the grid's arrays left as
+ * the last of them left them. A block at a time: each node's sums are a
+ * chain of dependent additions, and the nodes of a block interleave. */
+#define LM_BAND_BLOCK 8
+static void advance(lm_grid *g, const lm_band_nodes *a, const unsigned char *zero,
+                    const long *nodes, int nb, int n, double dt)
 {
-    const double mG = a->mG[i], fGx = a->fGx[i], fGy = a->fGy[i];
-    const int zx = zero[i] & 1, zy = zero[i] & 2;
-    double pGx = a->pGx[i], pGy = a->pGy[i], Ax = a->Ax[i], Ay = a->Ay[i];
-    double Xx = a->Xx[i], Xy = a->Xy[i], vx = a->Vx[i], vy = a->Vy[i];
-    double m = 0, px = 0, py = 0, fx = 0, fy = 0, ax = 0, ay = 0;
-    for (int s = 0; s < n; s++) {
-        m = mG + 0.0;                 /* M = m^G + m^M */
-        px = pGx + 0.0;
-        py = pGy + 0.0;
-        fx = fGx + 0.0;
-        fy = fGy + 0.0;
-        px += dt * fx;                /* lm_step_grid_update */
-        py += dt * fy;
-        if (zx) px = fx = 0;          /* lm_grid_apply_bc on P and F */
-        if (zy) py = fy = 0;
-        const double r = m > 0 ? 1.0 / m : 0;   /* lm_step_g2p_nodes */
-        ax = fx * r;
-        ay = fy * r;
-        vx = px * r;
-        vy = py * r;
-        pGx += dt * mG * ax;          /* sub_step's accumulation */
-        pGy += dt * mG * ay;
-        Ax += dt * ax;
-        Ay += dt * ay;
-        Xx += dt * vx;
-        Xy += dt * vy;
-    }
+    double mG[LM_BAND_BLOCK], fGx[LM_BAND_BLOCK], fGy[LM_BAND_BLOCK];
+    double pGx[LM_BAND_BLOCK], pGy[LM_BAND_BLOCK], Ax[LM_BAND_BLOCK], Ay[LM_BAND_BLOCK];
+    double Xx[LM_BAND_BLOCK], Xy[LM_BAND_BLOCK], vx[LM_BAND_BLOCK], vy[LM_BAND_BLOCK];
+    double m[LM_BAND_BLOCK], px[LM_BAND_BLOCK], py[LM_BAND_BLOCK], fx[LM_BAND_BLOCK];
+    double fy[LM_BAND_BLOCK], ax[LM_BAND_BLOCK], ay[LM_BAND_BLOCK];
+    int zx[LM_BAND_BLOCK], zy[LM_BAND_BLOCK];
     if (n <= 0) return;
-    g->m[i] = m;
-    g->px[i] = px;
-    g->py[i] = py;
-    g->fx[i] = fx;
-    g->fy[i] = fy;
-    g->ax[i] = ax;
-    g->ay[i] = ay;
-    a->pGx[i] = pGx;
-    a->pGy[i] = pGy;
-    a->Ax[i] = Ax;
-    a->Ay[i] = Ay;
-    a->Xx[i] = Xx;
-    a->Xy[i] = Xy;
-    a->Vx[i] = vx;
-    a->Vy[i] = vy;
+    for (int j = 0; j < nb; j++) {
+        const long i = nodes[j];
+        mG[j] = a->mG[i];
+        fGx[j] = a->fGx[i];
+        fGy[j] = a->fGy[i];
+        zx[j] = zero[i] & 1;
+        zy[j] = zero[i] & 2;
+        pGx[j] = a->pGx[i];
+        pGy[j] = a->pGy[i];
+        Ax[j] = a->Ax[i];
+        Ay[j] = a->Ay[i];
+        Xx[j] = a->Xx[i];
+        Xy[j] = a->Xy[i];
+    }
+    for (int s = 0; s < n; s++)
+        for (int j = 0; j < nb; j++) {
+            m[j] = mG[j] + 0.0;             /* M = m^G + m^M */
+            px[j] = pGx[j] + 0.0;
+            py[j] = pGy[j] + 0.0;
+            fx[j] = fGx[j] + 0.0;
+            fy[j] = fGy[j] + 0.0;
+            px[j] += dt * fx[j];            /* lm_step_grid_update */
+            py[j] += dt * fy[j];
+            if (zx[j]) px[j] = fx[j] = 0;   /* lm_grid_apply_bc on P and F */
+            if (zy[j]) py[j] = fy[j] = 0;
+            const double r = m[j] > 0 ? 1.0 / m[j] : 0;   /* lm_step_g2p_nodes */
+            ax[j] = fx[j] * r;
+            ay[j] = fy[j] * r;
+            vx[j] = px[j] * r;
+            vy[j] = py[j] * r;
+            pGx[j] += dt * mG[j] * ax[j];   /* sub_step's accumulation */
+            pGy[j] += dt * mG[j] * ay[j];
+            Ax[j] += dt * ax[j];
+            Ay[j] += dt * ay[j];
+            Xx[j] += dt * vx[j];
+            Xy[j] += dt * vy[j];
+        }
+    for (int j = 0; j < nb; j++) {
+        const long i = nodes[j];
+        g->m[i] = m[j];
+        g->px[i] = px[j];
+        g->py[i] = py[j];
+        g->fx[i] = fx[j];
+        g->fy[i] = fy[j];
+        g->ax[i] = ax[j];
+        g->ay[i] = ay[j];
+        a->pGx[i] = pGx[j];
+        a->pGy[i] = pGy[j];
+        a->Ax[i] = Ax[j];
+        a->Ay[i] = Ay[j];
+        a->Xx[i] = Xx[j];
+        a->Xy[i] = Xy[j];
+        a->Vx[i] = vx[j];
+        a->Vy[i] = vy[j];
+    }
+}
+
+/* Every node outside `in` through n sub-steps, in blocks. */
+static void advance_outside(lm_grid *g, const lm_band_nodes *a, const unsigned char *zero,
+                            const unsigned char *in, size_t nn, int n, double dt)
+{
+    long blk[LM_BAND_BLOCK];
+    int nb = 0;
+    for (size_t i = 0; i < nn; i++) {
+        if (in[i]) continue;
+        blk[nb++] = (long)i;
+        if (nb == LM_BAND_BLOCK) {
+            advance(g, a, zero, blk, nb, n, dt);
+            nb = 0;
+        }
+    }
+    if (nb) advance(g, a, zero, blk, nb, n, dt);
 }
 
 /* A, X, V of the ghost nodes from their mirrors (see the header). */
@@ -248,16 +287,16 @@ int lm_band_grow(lm_band *b, lm_sim *sim, const lm_band_nodes *a, int done, doub
     if (holds(b, sim)) return 0;
     unsigned char *was = malloc(b->nn);
     if (!was) {   /* no room to compare: take every node in (still exact) */
-        for (size_t i = 0; i < b->nn; i++)
-            if (!b->in[i]) advance(&sim->grid, a, b->zero, (long)i, done, dt);
+        advance_outside(&sim->grid, a, b->zero, b->in, b->nn, done, dt);
         memset(b->in, 1, b->nn);
     } else {
         memcpy(was, b->in, b->nn);
         mark_band(b, sim, b->need + 1);
-        for (size_t i = 0; i < b->nn; i++) {
+        for (size_t i = 0; i < b->nn; i++) {   /* was: the nodes to leave */
             if (was[i]) b->in[i] = 1;
-            else if (b->in[i]) advance(&sim->grid, a, b->zero, (long)i, done, dt);
+            else was[i] = !b->in[i];
         }
+        advance_outside(&sim->grid, a, b->zero, was, b->nn, done, dt);
         free(was);
     }
     fill_ghosts(&sim->grid, a);
@@ -319,7 +358,6 @@ void lm_band_remap_end(lm_sim *sim, const lm_band *b)
 void lm_band_far(lm_sim *sim, const lm_band *b, const lm_band_nodes *a, int k, double dt)
 {
     lm_grid *g = &sim->grid;
-    for (size_t i = 0; i < b->nn; i++)
-        if (!b->in[i]) advance(g, a, b->zero, (long)i, k, dt);
+    advance_outside(g, a, b->zero, b->in, b->nn, k, dt);
     fill_ghosts(g, a);
 }
