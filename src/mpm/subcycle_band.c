@@ -199,22 +199,27 @@ static void advance(lm_grid *g, const lm_band_nodes *a, const unsigned char *zer
         Xx[j] = a->Xx[i];
         Xy[j] = a->Xy[i];
     }
+    /* what does not change from sub-step to sub-step, worked out once by
+     * the same operations: M, F after the walls, 1 / M, a */
+    double r[LM_BAND_BLOCK];
+    for (int j = 0; j < nb; j++) {
+        m[j] = mG[j] + 0.0;                 /* M = m^G + m^M */
+        fx[j] = zx[j] ? 0 : fGx[j] + 0.0;   /* F = f^G + f^M, the walls */
+        fy[j] = zy[j] ? 0 : fGy[j] + 0.0;
+        r[j] = m[j] > 0 ? 1.0 / m[j] : 0;   /* lm_step_g2p_nodes */
+        ax[j] = fx[j] * r[j];
+        ay[j] = fy[j] * r[j];
+    }
     for (int s = 0; s < n; s++)
         for (int j = 0; j < nb; j++) {
-            m[j] = mG[j] + 0.0;             /* M = m^G + m^M */
-            px[j] = pGx[j] + 0.0;
+            px[j] = pGx[j] + 0.0;           /* P = p^G + p^M */
             py[j] = pGy[j] + 0.0;
-            fx[j] = fGx[j] + 0.0;
-            fy[j] = fGy[j] + 0.0;
-            px[j] += dt * fx[j];            /* lm_step_grid_update */
-            py[j] += dt * fy[j];
-            if (zx[j]) px[j] = fx[j] = 0;   /* lm_grid_apply_bc on P and F */
-            if (zy[j]) py[j] = fy[j] = 0;
-            const double r = m[j] > 0 ? 1.0 / m[j] : 0;   /* lm_step_g2p_nodes */
-            ax[j] = fx[j] * r;
-            ay[j] = fy[j] * r;
-            vx[j] = px[j] * r;
-            vy[j] = py[j] * r;
+            px[j] += dt * fx[j];            /* lm_step_grid_update (F is zeroed */
+            py[j] += dt * fy[j];            /* only where P is, just below) */
+            if (zx[j]) px[j] = 0;           /* lm_grid_apply_bc on P */
+            if (zy[j]) py[j] = 0;
+            vx[j] = px[j] * r[j];
+            vy[j] = py[j] * r[j];
             pGx[j] += dt * mG[j] * ax[j];   /* sub_step's accumulation */
             pGy[j] += dt * mG[j] * ay[j];
             Ax[j] += dt * ax[j];
