@@ -9,9 +9,10 @@
  *     p^G += dt m^G a,  A += dt a,  X += dt v,  V = v
  * with nothing from any other node (the walls act node by node; a ghost
  * node takes its mirror's value, below). Sweeping the whole grid k times a
- * step (about 20 arrays of every node) for that was half of the sub-steps'
- * time on Box 9's dog-bone (docs/performance.md, "Where the 16x run's time
- * goes"). Here the sub-steps sweep the band, a list of the nodes the
+ * step (about 20 arrays of every node) for that was about 7 % of Box 9's
+ * dog-bone run at 16 x (docs/performance.md, "The sub-steps' nodes": the
+ * rest of a sub-step is the membrane points' own arithmetic, which no band
+ * shrinks). Here the sub-steps sweep the band, a list of the nodes the
  * membranes' stencils can reach within the step, and every other node runs
  * the same k-fold recurrence once a step in one tight loop (lm_band_far):
  * the same operations in the same order on the same operands, so the same
