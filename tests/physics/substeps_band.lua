@@ -7,8 +7,8 @@
 -- 1. the gas-filled quarter circle (tests/physics/substeps.lua's, cell 0.1,
 --    symmetry walls left and bottom, fixed right and top: the membrane's
 --    stencils reach the ghost nodes), MUSL with 4 sub-steps (the slow
---    group's consistent re-map reads A two nodes beyond its rows) and USL
---    with 10;
+--    group's consistent re-map reads A two nodes beyond the membranes'
+--    stencils) and USL with 10;
 -- 2. the same circle on a finer grid (cell 0.04, MUSL, 6 sub-steps), where
 --    the band is a small part of the grid;
 -- 3. a segment membrane (the walled string of assets/lua/string_modes.lua,
@@ -16,8 +16,8 @@
 -- 4. Box 9's dog-bone at cell 0.05 as docs/performance.md runs it (USL,
 --    the gas at 16 x 3.5e-5, "auto" sub-steps) to t = 0.05, one thread and
 --    two;
--- 5. a membrane arc falling freely in strong gravity with 6 sub-steps (USL) of a
---    long step, alone: it crosses more than a cell a step, so the band made
+-- 5. a membrane arc falling freely in strong gravity with 6 sub-steps (USL)
+--    of a long step, alone: it crosses more than a cell a step, so the band made
 --    at the step's start no longer holds its stencils within the step and
 --    must grow (the nodes it takes in brought to the sub-step by the same
 --    sums).
@@ -83,8 +83,8 @@ got.dogbone1 = dogbone(1)
 got.dogbone2 = dogbone(2)
 
 do   -- 5. falling faster than a cell a step: the band grows within the step
-  local sim = lamina.sim{ domain = {0, 0, 1, 1}, cell = 0.05, dt = 4e-3, substeps = 6, gravity = {0, -5000}, scheme = "usl",
-                          boundary = "free" }
+  local sim = lamina.sim{ domain = {0, 0, 1, 1}, cell = 0.05, dt = 4e-3, substeps = 6, scheme = "usl",
+                          gravity = {0, -5000}, boundary = "free" }
   local skin = lamina.membrane{ rho = 1, E = 1e3, nu = 0, thickness = 0.01, law = "uniaxial" }
   local mem = sim:membrane{ material = skin, count = 20, name = "arc",
                             curve = lamina.arc{ center = {0.5, 0.6}, radius = 0.2, from = 20, to = 160 } }
