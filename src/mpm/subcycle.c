@@ -88,9 +88,11 @@
  * that error grows until a point inverts. dt must be chosen for the slow
  * group's sound speed plus its particles' speeds.
  *
+ * The axisymmetric hoop term, links and point pins on membranes: each in
+ * the group whose motion changes it (subcycle_terms.c says how and why).
  * Not with what changes the grid's forces by the node (contact's own
- * fields, pins, links, heavy end points, damping, the corrected mass, the
- * cell stress, the axisymmetric hoop): refused by name. Segment
+ * fields, pins that hold nodes, heavy end points, damping, the corrected
+ * mass, the cell stress): refused by name. Segment
  * membranes (membrane_force.c) take their net tension, hold and move in
  * every sub-step as in the single-rate step. Deterministic: every sum in particle order, the threads' split
  * only in the standard steps (the same bits per thread count). */
@@ -103,6 +105,7 @@
 #include "step.h"
 #include "sim_work.h"
 #include "step_kernels.h"
+#include "subcycle_terms.h"
 #include "threads.h"
 
 /* The nodal arrays of the scheme (nn nodes each, ghosts included). */
@@ -215,10 +218,7 @@ static lm_status refuse(lm_sim *sim)
 {
     const char *what = NULL;
     if (sim->contact) what = "contact (sim:contact)";
-    else if (sim->npins) what = "pins (body:pin)";
-    else if (sim->nlinks) what = "links (sim:link)";
-    else if (lm_constraint_active(sim)) what = "a heavy end point (end_mass)";
-    else if (sim->def.axisym) what = "axisymmetric = true";
+    else if (lm_subcycle_heavy_point(sim)) what = "a heavy end point (end_mass)";
     else if (sim->def.stress == LM_STRESS_CELL) what = "stress = \"cell\"";
     else if (sim->def.mass == LM_MASS_CORRECTED) what = "mass = \"corrected\"";
     else if (sim->def.mass == LM_MASS_MEMBRANE) what = "mass = \"membrane\"";
@@ -253,6 +253,7 @@ static void fast_sums(lm_sim *sim, lm_subcycle *s)
     }
     static const lm_comp comp[5] = {LM_COMP_SCALAR, LM_COMP_X, LM_COMP_Y, LM_COMP_X, LM_COMP_Y};
     lm_grid_fold(g, 5, f, comp);
+    lm_subcycle_fast_terms(sim, s->mM, s->pMx, s->pMy, s->fMx, s->fMy);   /* hoop, links, pins */
     for (size_t i = 0; i < s->nn; i++) {
         s->fMx[i] += s->mM[i] * sim->def.gx;
         s->fMy[i] += s->mM[i] * sim->def.gy;
@@ -398,7 +399,7 @@ static void fast_stress(lm_sim *sim, double dt)
         r.w = 0.5 * (r.L[1] - r.L[2]);
         r.dt = dt;
         r.h = fmin(g->hx, g->hy);
-        lm_membrane_update_at(sim, q, &r);
+        lm_update_at(sim, q, &r, sim->def.axisym);   /* a ring's hoop from its radius */
     }
 }
 
@@ -439,11 +440,13 @@ static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int first, double dt)
         s->xs[4 * q + 3] = p->y[q];
     }
     lm_membrane_segment_hold(sim);               /* x^k of segment membranes */
+    lm_subcycle_pins_start(sim);
     if (g->sw == 2) {
         FOR_FAST(sim, q) lm_k_g2p(g, p, q, dt, pic, g->ax, g->ay, g->vx, g->vy, 2);
     } else {
         FOR_FAST(sim, q) lm_k_g2p(g, p, q, dt, pic, g->ax, g->ay, g->vx, g->vy, 3);
     }
+    lm_subcycle_pins_moved(sim);                 /* held points: the pin's */
     if (sim->def.scheme == LM_MUSL) {            /* 5: re-map, all particles */
         slow_remap(sim, s, s->fMx, s->fMy);      /* (f^M is spent: scratch) */
         fast_remap(sim, g->vx, g->vy, nn);
@@ -451,6 +454,7 @@ static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int first, double dt)
             g->vx[i] += s->fMx[i];
             g->vy[i] += s->fMy[i];
         }
+        lm_constraint_remap(sim);                /* held points' momenta off */
         lm_step_strain_velocity_end(sim, 1);
     } else {
         lm_step_strain_velocity_end(sim, 0);     /* v^L as step 4 left it */
@@ -479,6 +483,8 @@ lm_status lm_subcycle_step(lm_sim *sim)
     lm_step_clear(sim);                         /* 0 */
     lm_step_shape(sim);
     lm_step_p2g_forces(sim);                    /* 1-2: all particles */
+    st = lm_subcycle_check_pins(sim);           /* pin.c has classified them */
+    if (st != LM_OK) return st;
     fast_sums(sim, s);
     /* the slow group's share; a node the membranes alone reach keeps a
      * rounding error of their sums: zero */
@@ -504,7 +510,10 @@ lm_status lm_subcycle_step(lm_sim *sim)
         s->xs[4 * q + 1] = p->y[q];
     }
     sim->def.dt = dt;                           /* what the phases read */
-    for (int j = 0; j < k && st == LM_OK; j++) st = sub_step(sim, s, j == 0, dt);
+    for (int j = 0; j < k && st == LM_OK; j++) {
+        st = sub_step(sim, s, j == 0, dt);
+        lm_subcycle_pins_react(sim, j, k);
+    }
     sim->def.dt = Dt;
     if (st != LM_OK) return st;
 
