@@ -84,7 +84,10 @@ function M.impact(o)
   -- to come to approximate equilibrium").
   bag:pin{ points = {1} }
   local tether = sim:link{ a = {bag, 1}, b = {bag, #bag}, stiffness = k_tether }
-  sim.pic = 0.05
+  -- (at m x the deck's dt the blend that damps as much per unit time:
+  -- 1 - 0.95^m a step)
+  local m = o.dt_factor or 1
+  sim.pic = m == 1 and 0.05 or 1 - 0.95 ^ m
   sim:run{ t_end = t_pre }
   local pre = sim:energy()
   local P = bag:particles()
