@@ -8,7 +8,8 @@
 --           basis = "bspline2", tether_k = 1.9e4, refine = 1, threads = 1, quiet = false,
 --           probe = { radius = 0.1, mass = 6.03, speed = 3.90, gap = 0.011, exact_mass = false },
 --           width = 0.32, cells_r = 17,
---           frame_times = {...}, on_frame = function(sim, tf, bodies) }
+--           frame_times = {...}, on_frame = function(sim, tf, bodies),
+--           dt_factor = 1, substeps = nil, scheme = nil }
 -- runs the tethered pre-run to rest, then the probe, and returns the
 -- history (t in ms from the probe's start, u and v into the bag, p, the
 -- tether's tension T, the energies) with the summary numbers. refine
@@ -58,7 +59,12 @@ function M.impact(o)
   local refine, k_tether = o.refine or 1, o.tether_k or 1.9e4
   local width, cells_r = o.width or 0.32, o.cells_r or 17
   local hr, hz = width / (cells_r * refine), 0.5 / (26 * refine)
-  local sim = lamina.sim{ domain = {0, -0.001, width, 0.499}, cell = {hr, hz}, dt = 3.5e-6 / refine,
+  -- dt_factor m: the gas and probe at m x the deck's dt; substeps: the bag
+  -- in its own sub-steps (multi-rate stepping, docs/performance.md
+  -- "Multi-rate on the airbags"); scheme: the step's scheme
+  local sim = lamina.sim{ domain = {0, -0.001, width, 0.499}, cell = {hr, hz},
+                          dt = 3.5e-6 / refine * (o.dt_factor or 1), substeps = o.substeps,
+                          scheme = o.scheme,
                           axisymmetric = true, basis = o.basis or "bspline2", threads = o.threads,
                           -- the papers' lumped mass ([F] eq 7; the default "auto" would make the
                           -- bag's consistent: issue 30)
@@ -78,7 +84,10 @@ function M.impact(o)
   -- to come to approximate equilibrium").
   bag:pin{ points = {1} }
   local tether = sim:link{ a = {bag, 1}, b = {bag, #bag}, stiffness = k_tether }
-  sim.pic = 0.05
+  -- (at m x the deck's dt the blend that damps as much per unit time:
+  -- 1 - 0.95^m a step)
+  local m = o.dt_factor or 1
+  sim.pic = m == 1 and 0.05 or 1 - 0.95 ^ m
   sim:run{ t_end = t_pre }
   local pre = sim:energy()
   local P = bag:particles()
@@ -128,7 +137,7 @@ function M.impact(o)
               internal = rec:column("internal"), total = rec:column("total"), escaped = escaped,
               hash = sim:hash(), tension = tension, ztop = ztop, pre_kinetic = pre.kinetic,
               probe_mass = two_pi * probe:mass(), bag_mass = two_pi * bag:mass(),
-              gas_points = #gas, steps = sim.nstep }
+              gas_points = #gas, steps = sim.nstep, substeps = sim.substeps }
   for i, t in ipairs(rec:column("t")) do r.t[i] = 1e3 * (t - t_pre) end
   r.umax, r.tmax = -1e9, 0
   for i = 1, #r.t do if r.u[i] > r.umax then r.umax, r.tmax = r.u[i], r.t[i] end end

@@ -116,6 +116,13 @@ double lm_axisym_membrane_energy(const lm_sim *sim, size_t q)
 
 void lm_axisym_forces(lm_sim *sim)
 {
+    lm_axisym_forces_into(sim, sim->grid.fx, 0);
+}
+
+/* The hoop terms into fx (folded): every particle's, or (membranes) only
+ * the membranes' points' (multi-rate stepping's sub-steps, subcycle.c). */
+void lm_axisym_forces_into(lm_sim *sim, double *fx, int membranes)
+{
     lm_grid *g = &sim->grid;
     const lm_particles *p = &sim->p;
     const int W = g->sw, NS = W * W;
@@ -123,6 +130,7 @@ void lm_axisym_forces(lm_sim *sim)
         double r = p->x[q];
         if (!(r > 0)) continue;   /* on the axis: see the head of the file */
         const lm_material *mat = sim->mats[p->mat[q]];
+        if (membranes && mat->kind != LM_MEMBRANE) continue;
         double c;
         if (mat->kind == LM_MEMBRANE) {
             /* V / r = thickness * l for a ring off the axis; a segment
@@ -133,11 +141,11 @@ void lm_axisym_forces(lm_sim *sim)
         }
         lm_weights wt;
         lm_weights_of(sim, q, &wt);
-        for (int k = 0; k < NS; k++) g->fx[lm_stencil_node(g, W, p->node[q], k)] += c * wt.N[k];
+        for (int k = 0; k < NS; k++) fx[lm_stencil_node(g, W, p->node[q], k)] += c * wt.N[k];
     }
     /* the ghost nodes were emptied by the in-plane scatter's fold: this
      * folds only the hoop terms (the x image is odd across the axis) */
-    double *const f[1] = {g->fx};
+    double *const f[1] = {fx};
     static const lm_comp comp[1] = {LM_COMP_X};
     lm_grid_fold(g, 1, f, comp);
 }

@@ -200,6 +200,13 @@ void lm_constraint_p2g(lm_sim *sim)
     take_off(sim, g->m, g->px, g->py);
 }
 
+/* The same off the given sums (multi-rate stepping's membrane sums,
+ * subcycle_terms.c). */
+void lm_constraint_take_off(lm_sim *sim, double *m, double *ux, double *uy)
+{
+    take_off(sim, m, ux, uy);
+}
+
 /* Step 5 (MUSL), after the re-map's scatter of m_p v_p. */
 void lm_constraint_remap(lm_sim *sim)
 {

@@ -122,8 +122,16 @@ void lm_sim_set_link_active(lm_sim *sim, int k, int on)
     if (k >= 0 && k < sim->nlinks) sim->links[k].active = on != 0;
 }
 
-/* Step 2: each active link's pull on its two points, spread with N_ip. */
-void lm_link_forces(lm_sim *sim)
+/* Does link lk touch a membrane (multi-rate stepping's fast group)? */
+static int touches_membrane(const lm_sim *sim, const lm_link *lk)
+{
+    return sim->bodies[lk->body[0]].membrane || sim->bodies[lk->body[1]].membrane;
+}
+
+/* Each active link's pull on its two points, spread with N_ip into
+ * (fx, fy), folded; which: LM_LINKS_ALL, or only those that touch a
+ * membrane (LM_LINKS_FAST) or none (LM_LINKS_SLOW). */
+void lm_link_forces_into(lm_sim *sim, double *fx, double *fy, int which)
 {
     if (sim->nlinks == 0) return;
     lm_grid *g = &sim->grid;
@@ -133,6 +141,8 @@ void lm_link_forces(lm_sim *sim)
     int any = 0;
     for (int k = 0; k < sim->nlinks; k++) {
         const lm_link *lk = &sim->links[k];
+        if (which != LM_LINKS_ALL && touches_membrane(sim, lk) != (which == LM_LINKS_FAST))
+            continue;
         double l = lm_link_length(sim, k), T = tension_at(lk, l) * per;
         if (T == 0 || !(l > 0)) continue;
         size_t a = point_of(sim, lk, 0), b = point_of(sim, lk, 1);
@@ -145,17 +155,23 @@ void lm_link_forces(lm_sim *sim)
             const double *N = wt.N;
             for (int j = 0; j < NS; j++) {
                 long i = lm_stencil_node(g, W, p->node[q], j);
-                g->fx[i] += s * ex * N[j];
-                g->fy[i] += s * ey * N[j];
+                fx[i] += s * ex * N[j];
+                fy[i] += s * ey * N[j];
             }
         }
         any = 1;
     }
     if (!any) return;
     /* the scatter's fold emptied the ghost nodes; fold the links' share */
-    double *const f[2] = {g->fx, g->fy};
+    double *const f[2] = {fx, fy};
     static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
     lm_grid_fold(g, 2, f, comp);
+}
+
+/* Step 2: each active link's pull on its two points, spread with N_ip. */
+void lm_link_forces(lm_sim *sim)
+{
+    lm_link_forces_into(sim, sim->grid.fx, sim->grid.fy, LM_LINKS_ALL);
 }
 
 /* Stored energy of the active links (per radian in the axisymmetric

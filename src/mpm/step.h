@@ -334,6 +334,10 @@ lm_status lm_membrane_check_torn(lm_sim *sim);
 /* link.c: step 2's link forces (after the scatter), their stored energy. */
 void lm_link_forces(lm_sim *sim);
 double lm_link_energy(const lm_sim *sim);
+/* The same into (fx, fy), folded: every link, or only those with an end on
+ * a membrane (multi-rate stepping's fast group), or only the others. */
+enum { LM_LINKS_ALL, LM_LINKS_FAST, LM_LINKS_SLOW };
+void lm_link_forces_into(lm_sim *sim, double *fx, double *fy, int which);
 
 /* stress_cell.c: step 2's internal force from the cells' volume-weighted
  * mean stresses, gradients at the cell centres ([T] §5.4.3), for
@@ -356,6 +360,8 @@ void lm_pin_velocity(lm_sim *sim);   /* step 5: the strain velocity */
 int lm_constraint_active(const lm_sim *sim);   /* a heavy end point, no contact */
 lm_status lm_constraint_reserve(lm_sim *sim);  /* room for every heavy point */
 void lm_constraint_p2g(lm_sim *sim);       /* step 1: the extra mass off the grid */
+/* the same off given sums (m may be NULL: momenta only) */
+void lm_constraint_take_off(lm_sim *sim, double *m, double *ux, double *uy);
 void lm_constraint_grid(lm_sim *sim);      /* step 3: shared on p and on f */
 void lm_constraint_remap(lm_sim *sim);     /* step 5: the extra momentum off */
 void lm_constraint_velocity(lm_sim *sim);  /* step 5: the strain velocities */
@@ -394,6 +400,8 @@ void lm_linear_fluid_update(const lm_material *mat, double dexx, double deyy, do
 double lm_axisym_hoop_rate(const lm_sim *sim, size_t q);
 /* Step 2's hoop term f_ri -= V_p sigma_thth N_ip / r_p, added to g->fx. */
 void lm_axisym_forces(lm_sim *sim);
+/* The same into fx: every particle's, or (membranes != 0) the membranes'. */
+void lm_axisym_forces_into(lm_sim *sim, double *fx, int membranes);
 /* A membrane point's hoop strain ln(r / r0) (eps_t on the axis). */
 double lm_axisym_membrane_hoop(const lm_particles *p, size_t q);
 /* Sets eps_t of membrane point q, its stresses and volume (per radian). */

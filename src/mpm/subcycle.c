@@ -88,9 +88,11 @@
  * that error grows until a point inverts. dt must be chosen for the slow
  * group's sound speed plus its particles' speeds.
  *
+ * The axisymmetric hoop term, links and point pins on membranes: each in
+ * the group whose motion changes it (subcycle_terms.c says how and why).
  * Not with what changes the grid's forces by the node (contact's own
- * fields, pins, links, heavy end points, damping, the corrected mass, the
- * cell stress, the axisymmetric hoop): refused by name. Segment
+ * fields, pins that hold nodes, heavy end points, damping, the corrected
+ * mass, the cell stress): refused by name. Segment
  * membranes (membrane_force.c) take their net tension, hold and move in
  * every sub-step as in the single-rate step. Deterministic: every sum in particle order, the threads' split
  * only in the standard steps (the same bits per thread count). */
@@ -105,6 +107,7 @@
 #include "step_kernels.h"
 #include "subcycle_band.h"
 #include "subcycle_runs.h"
+#include "subcycle_terms.h"
 #include "threads.h"
 
 /* The nodal arrays of the scheme (nn nodes each, ghosts included). */
@@ -126,6 +129,8 @@ typedef struct lm_subcycle {
     unsigned char *near;                  /* rows of C the membranes can read */
     long *rows;                           /* those nodes, in order */
     size_t nrows;
+    int whole;                            /* the band is every node: the
+                                             standard steps sweep them */
     lm_band *band;                        /* the nodes the sub-steps sweep
                                              (subcycle_band.c) */
 } lm_subcycle;
@@ -223,10 +228,7 @@ static lm_status refuse(lm_sim *sim)
 {
     const char *what = NULL;
     if (sim->contact) what = "contact (sim:contact)";
-    else if (sim->npins) what = "pins (body:pin)";
-    else if (sim->nlinks) what = "links (sim:link)";
-    else if (lm_constraint_active(sim)) what = "a heavy end point (end_mass)";
-    else if (sim->def.axisym) what = "axisymmetric = true";
+    else if (lm_subcycle_heavy_point(sim)) what = "a heavy end point (end_mass)";
     else if (sim->def.stress == LM_STRESS_CELL) what = "stress = \"cell\"";
     else if (sim->def.mass == LM_MASS_CORRECTED) what = "mass = \"corrected\"";
     else if (sim->def.mass == LM_MASS_MEMBRANE) what = "mass = \"membrane\"";
@@ -257,6 +259,7 @@ static void fast_sums(lm_sim *sim, lm_subcycle *s, const lm_band *band)
     lm_runs_mass_forces(sim, f);   /* lm_k_scatter_mass_forces's, by runs */
     static const lm_comp comp[5] = {LM_COMP_SCALAR, LM_COMP_X, LM_COMP_Y, LM_COMP_X, LM_COMP_Y};
     lm_grid_fold(g, 5, f, comp);
+    lm_subcycle_fast_terms(sim, s->mM, s->pMx, s->pMy, s->fMx, s->fMy);   /* hoop, links, pins */
     const size_t n = band ? band->n : s->nn;
     for (size_t r = 0; r < n; r++) {
         const size_t i = band ? (size_t)band->idx[r] : r;
@@ -399,7 +402,7 @@ static void fast_stress(lm_sim *sim, double dt)
         r.w = 0.5 * (r.L[1] - r.L[2]);
         r.dt = dt;
         r.h = fmin(g->hx, g->hy);
-        lm_membrane_update_at(sim, q, &r);
+        lm_update_at(sim, q, &r, sim->def.axisym);   /* a ring's hoop from its radius */
     }
 }
 
@@ -429,7 +432,7 @@ static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int j, double dt)
         const double rx = 1.0 / g->hx, ry = 1.0 / g->hy;
         FOR_FAST(sim, q) lm_k_shape(sim, p, q, rx, ry);
         lm_band_nodes bn = band_nodes(s);
-        lm_band_grow(s->band, sim, &bn, j, dt);
+        if (!s->whole) lm_band_grow(s->band, sim, &bn, j, dt);
         lm_membrane_segment_forces(sim);
         fast_sums(sim, s, band);
     }
@@ -441,8 +444,13 @@ static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int j, double dt)
         g->fx[i] = s->fGx[i] + s->fMx[i];
         g->fy[i] = s->fGy[i] + s->fMy[i];
     }
-    lm_band_grid_update(sim, band);            /* 3: P^L, the walls */
-    lm_band_g2p_nodes(sim, band, g->vx, g->vy);   /* 4: a_i, v^L_i, ghosts filled */
+    if (s->whole) {
+        lm_step_grid_update(sim);              /* 3: P^L, the walls, pins */
+        lm_step_g2p_nodes(sim, g->vx, g->vy);  /* 4: a_i, v^L_i, ghosts filled */
+    } else {
+        lm_band_grid_update(sim, band);
+        lm_band_g2p_nodes(sim, band, g->vx, g->vy);
+    }
     for (size_t r = 0; r < band->n; r++) {
         const long i = band->idx[r];
         s->pGx[i] += dt * s->mG[i] * g->ax[i];   /* the slow group's share */
@@ -460,11 +468,13 @@ static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int j, double dt)
         s->xs[4 * q + 3] = p->y[q];
     }
     lm_membrane_segment_hold(sim);               /* x^k of segment membranes */
+    lm_subcycle_pins_start(sim);
     if (g->sw == 2) {
         FOR_FAST(sim, q) lm_k_g2p(g, p, q, dt, pic, g->ax, g->ay, g->vx, g->vy, 2);
     } else {
         FOR_FAST(sim, q) lm_k_g2p(g, p, q, dt, pic, g->ax, g->ay, g->vx, g->vy, 3);
     }
+    lm_subcycle_pins_moved(sim);                 /* held points: the pin's */
     if (sim->def.scheme == LM_MUSL) {            /* 5: re-map, all particles */
         slow_remap(sim, s, s->fMx, s->fMy);      /* (f^M is spent: scratch) */
         fast_remap(sim, g->vx, g->vy, band);
@@ -473,7 +483,12 @@ static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int j, double dt)
             g->vx[i] += s->fMx[i];
             g->vy[i] += s->fMy[i];
         }
-        lm_band_remap_end(sim, band);
+        if (s->whole) {
+            lm_constraint_remap(sim);            /* held points' momenta off */
+            lm_step_strain_velocity_end(sim, 1);
+        } else {
+            lm_band_remap_end(sim, band);
+        }
     } else {
         lm_step_strain_velocity_end(sim, 0);     /* v^L as step 4 left it */
     }
@@ -501,6 +516,8 @@ lm_status lm_subcycle_step(lm_sim *sim)
     lm_step_clear(sim);                         /* 0 */
     lm_step_shape(sim);
     lm_step_p2g_forces(sim);                    /* 1-2: all particles */
+    st = lm_subcycle_check_pins(sim);           /* pin.c has classified them */
+    if (st != LM_OK) return st;
     fast_sums(sim, s, NULL);
     /* the slow group's share; a node the membranes alone reach keeps a
      * rounding error of their sums: zero */
@@ -525,13 +542,21 @@ lm_status lm_subcycle_step(lm_sim *sim)
         s->xs[4 * q] = p->x[q];
         s->xs[4 * q + 1] = p->y[q];
     }
-    lm_band_build(s->band, sim, band_need(sim));   /* the stencils at x^n */
+    /* the band's loops are the plain ones without the terms the airbags
+     * add (a link's far end, a pin's solve in step 3): with those, every
+     * node is swept by the standard steps */
+    s->whole = lm_subcycle_terms_active(sim);
+    if (s->whole) lm_band_all(s->band);
+    else lm_band_build(s->band, sim, band_need(sim));   /* the stencils at x^n */
     sim->def.dt = dt;                           /* what the phases read */
-    for (int j = 0; j < k && st == LM_OK; j++) st = sub_step(sim, s, j, dt);
+    for (int j = 0; j < k && st == LM_OK; j++) {
+        st = sub_step(sim, s, j, dt);
+        lm_subcycle_pins_react(sim, j, k);
+    }
     sim->def.dt = Dt;
     if (st != LM_OK) return st;
     lm_band_nodes bn = band_nodes(s);
-    lm_band_far(sim, s->band, &bn, k, dt);      /* the nodes no membrane reached */
+    if (!s->whole) lm_band_far(sim, s->band, &bn, k, dt);   /* the nodes no membrane reached */
 
     /* 2: the slow group with its shape functions of x^n */
     const double r = 1.0 / Dt, pic = sim->def.pic;

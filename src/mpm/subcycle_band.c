@@ -367,3 +367,13 @@ void lm_band_far(lm_sim *sim, const lm_band *b, const lm_band_nodes *a, int k, d
     advance_outside(g, a, b->zero, b->in, b->nn, k, dt);
     fill_ghosts(g, a);
 }
+
+void lm_band_all(lm_band *b)
+{
+    for (size_t i = 0; i < b->nn; i++) {
+        b->in[i] = 1;
+        b->core[i] = 1;
+        b->idx[i] = (long)i;
+    }
+    b->n = b->nn;
+}

@@ -34,6 +34,8 @@ void lm_band_free(lm_band *b);
  * for their motion within the step), with every ghost node's mirror across
  * a wall and back. */
 void lm_band_build(lm_band *b, const lm_sim *sim, int need);
+/* Every node (the sub-steps with the airbags' terms, subcycle.c). */
+void lm_band_all(lm_band *b);
 /* After `done` sub-steps of dt: if a membrane's stencil has come within
  * `need` of the band's edge, widen it around the stencils as lm_band_build
  * and bring the nodes taken in to sub-step `done` by the closed form (the

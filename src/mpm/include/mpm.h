@@ -267,6 +267,7 @@ typedef struct lm_pin {
     double vx, vy;         /* the prescribed velocity of this step */
     double rx, ry;         /* reaction of the last step: the force the pin
                               exerted on the material (per unit depth) */
+    double sx, sy;         /* multi-rate stepping: its sub-steps' sum */
 } lm_pin;
 
 /* A force-displacement link between two material points (link.c): [F]
