@@ -114,6 +114,8 @@ typedef struct lm_subcycle {
     double *mM, *pMx, *pMy, *fMx, *fMy;   /* the membranes' sums of a sub-step */
     double *qGx, *qGy;                    /* p^G at x^n; its re-map's change */
     double *Vx, *Vy;                      /* v^L of the last sub-step */
+    double *Rx, *Ry;                      /* the impulse forms' (MUSL) re-mapped
+                                             displacement sum_s dt_s v^R_s */
     double *C;                            /* the slow group's consistent mass
                                              sum_p m_p N_ip N_jp, B x B a node */
     int B;                                /* 2 sw - 1: the offsets j - i */
@@ -160,7 +162,7 @@ static lm_status reserve(lm_sim *sim)
     sim->work->sub = NULL;
     lm_subcycle *s = calloc(1, sizeof *s);
     const int B = 2 * sim->grid.sw - 1;
-    double *b = s ? calloc((18 + (size_t)(B * B)) * nn, sizeof *b) : NULL;
+    double *b = s ? calloc((20 + (size_t)(B * B)) * nn, sizeof *b) : NULL;
     unsigned char *near = b ? calloc(nn, 1) : NULL;
     long *rows = near ? calloc(nn, sizeof *rows) : NULL;
     if (!rows) {
@@ -175,9 +177,9 @@ static lm_status reserve(lm_sim *sim)
     s->buf = b;
     double **f[] = {&s->mG, &s->pGx, &s->pGy, &s->fGx, &s->fGy, &s->Ax, &s->Ay,
                     &s->Xx, &s->Xy, &s->mM, &s->pMx, &s->pMy, &s->fMx, &s->fMy,
-                    &s->qGx, &s->qGy, &s->Vx, &s->Vy};
-    for (size_t k = 0; k < 18; k++) *f[k] = b + k * nn;
-    s->C = b + 18 * nn;
+                    &s->qGx, &s->qGy, &s->Vx, &s->Vy, &s->Rx, &s->Ry};
+    for (size_t k = 0; k < 20; k++) *f[k] = b + k * nn;
+    s->C = b + 20 * nn;
     s->near = near;
     s->rows = rows;
     s->B = B;
@@ -318,13 +320,13 @@ static int touches_near(const lm_sim *sim, const lm_subcycle *s, size_t q)
  * membrane moves less than a cell in a step within the slow group's
  * Courant limit, and a ghost node's image lies two nodes in); every row
  * there whole, as every particle reaching it is summed. */
-static void slow_consistent_mass(lm_sim *sim, lm_subcycle *s)
+static void slow_consistent_mass(lm_sim *sim, lm_subcycle *s, int all)
 {
     const lm_particles *p = &sim->p;
     const lm_grid *g = &sim->grid;
     const long nn = (long)s->nn, sx = g->sx;
-    memset(s->near, 0, s->nn);
-    for (long i = 0; i < nn; i++) {
+    memset(s->near, all, s->nn);
+    for (long i = 0; i < nn && !all; i++) {
         if (!(s->mM[i] > 0)) continue;
         for (long dy = -2; dy <= 2; dy++)
             for (long dx = -2; dx <= 2; dx++) {
@@ -402,8 +404,71 @@ static void fast_stress(lm_sim *sim, double dt)
     }
 }
 
+/* The impulse forms (lamina.sim{multirate}; docs/performance.md
+ * "Multi-rate stepping", "Impulse forms"). HELD spreads the slow force
+ * evenly, f^G in every sub-step; IMPULSE puts the step's whole impulse
+ * Dt f^G in the first (weight k: r-RESPA / Verlet-I's kick, Tuckerman,
+ * Berne & Martyna 1992, so that the sub-steps between two kicks are the
+ * fast system's own symplectic steps); HALF half of it in the first and
+ * half, as a velocity change alone, after the last (mr_end_kick). */
+static double mr_weight(const lm_sim *sim, int j, int k)
+{
+    switch (sim->def.multirate) {
+    case LM_MULTIRATE_IMPULSE:
+    case LM_MULTIRATE_IMPULSE_LUMPED: return j == 0 ? (double)k : 0.0;
+    case LM_MULTIRATE_HALF:
+    case LM_MULTIRATE_HALF_LUMPED: return j == 0 ? 0.5 * k : 0.0;
+    default: return 1.0;
+    }
+}
+
+/* The slow group's nodal momentum carried as its particles' consistent
+ * re-map p^G(x^n) + C A on every node (what a P2G of all particles would
+ * give each sub-step), not lumped p^G += dt m^G a. */
+static int mr_consistent(const lm_sim *sim)
+{
+    return sim->def.multirate == LM_MULTIRATE_IMPULSE || sim->def.multirate == LM_MULTIRATE_HALF;
+}
+
+/* R += dt v^R, the re-mapped velocities MUSL strained the membranes with */
+static void mr_remapped_displacement(lm_subcycle *s, const lm_grid *g, double dt)
+{
+    for (size_t i = 0; i < s->nn; i++) {
+        s->Rx[i] += dt * g->vx[i];
+        s->Ry[i] += dt * g->vy[i];
+    }
+}
+
+/* HALF's second half kick: the velocity change (Dt / 2) f^G / M_i (the last
+ * sub-step's M_i, the walls applied) to the slow group's A and to the
+ * membrane points at their last shape functions; no displacement. */
+static void mr_end_kick(lm_sim *sim, lm_subcycle *s, double Dt)
+{
+    lm_grid *g = &sim->grid;
+    lm_particles *p = &sim->p;
+    for (size_t i = 0; i < s->nn; i++) {
+        double r = g->m[i] > 0 ? 0.5 * Dt / g->m[i] : 0;
+        g->ax[i] = s->fGx[i] * r;
+        g->ay[i] = s->fGy[i] * r;
+    }
+    lm_grid_apply_bc(g, g->ax, g->ay);
+    double *const fill[2] = {g->ax, g->ay};
+    static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
+    lm_grid_fill(g, 2, fill, comp);
+    for (size_t i = 0; i < s->nn; i++) {
+        s->Ax[i] += g->ax[i];
+        s->Ay[i] += g->ay[i];
+    }
+    FOR_FAST(sim, q) {
+        lm_weights w;
+        lm_weights_of(sim, q, &w);
+        p->vx[q] += lm_gather_rows(g, &w, p->node[q], g->ax);
+        p->vy[q] += lm_gather_rows(g, &w, p->node[q], g->ay);
+    }
+}
+
 /* One sub-step of dt for the membranes (phase 1 of the header). */
-static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int first, double dt)
+static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int first, double dt, double wG)
 {
     lm_grid *g = &sim->grid;
     lm_particles *p = &sim->p;
@@ -418,8 +483,8 @@ static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int first, double dt)
         g->m[i] = s->mG[i] + s->mM[i];
         g->px[i] = s->pGx[i] + s->pMx[i];
         g->py[i] = s->pGy[i] + s->pMy[i];
-        g->fx[i] = s->fGx[i] + s->fMx[i];
-        g->fy[i] = s->fGy[i] + s->fMy[i];
+        g->fx[i] = wG * s->fGx[i] + s->fMx[i];   /* wG: mr_weight */
+        g->fy[i] = wG * s->fGy[i] + s->fMy[i];
     }
     lm_step_grid_update(sim);                  /* 3: P^L, the walls */
     lm_step_g2p_nodes(sim, g->vx, g->vy);      /* 4: a_i, v^L_i, ghosts filled */
@@ -433,6 +498,7 @@ static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int first, double dt)
         s->Vx[i] = g->vx[i];
         s->Vy[i] = g->vy[i];
     }
+    if (mr_consistent(sim)) slow_remap(sim, s, s->pGx, s->pGy);   /* p^G(x^n) + C A */
     const double pic = sim->def.pic;
     FOR_FAST(sim, q) {   /* x before this sub-step (the last one's is kept) */
         s->xs[4 * q + 2] = p->x[q];
@@ -445,13 +511,19 @@ static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int first, double dt)
         FOR_FAST(sim, q) lm_k_g2p(g, p, q, dt, pic, g->ax, g->ay, g->vx, g->vy, 3);
     }
     if (sim->def.scheme == LM_MUSL) {            /* 5: re-map, all particles */
-        slow_remap(sim, s, s->fMx, s->fMy);      /* (f^M is spent: scratch) */
+        if (mr_consistent(sim)) {                /* the carry is that re-map */
+            memcpy(s->fMx, s->pGx, nn * sizeof *s->fMx);
+            memcpy(s->fMy, s->pGy, nn * sizeof *s->fMy);
+        } else {
+            slow_remap(sim, s, s->fMx, s->fMy);  /* (f^M is spent: scratch) */
+        }
         fast_remap(sim, g->vx, g->vy, nn);
         for (size_t i = 0; i < nn; i++) {
             g->vx[i] += s->fMx[i];
             g->vy[i] += s->fMy[i];
         }
         lm_step_strain_velocity_end(sim, 1);
+        if (sim->def.multirate != LM_MULTIRATE_HELD) mr_remapped_displacement(s, g, dt);
     } else {
         lm_step_strain_velocity_end(sim, 0);     /* v^L as step 4 left it */
     }
@@ -493,20 +565,23 @@ lm_status lm_subcycle_step(lm_sim *sim)
             s->fGx[i] = g->fx[i] - s->fMx[i];
             s->fGy[i] = g->fy[i] - s->fMy[i];
         }
-        s->Ax[i] = s->Ay[i] = s->Xx[i] = s->Xy[i] = 0;
+        s->Ax[i] = s->Ay[i] = s->Xx[i] = s->Xy[i] = s->Rx[i] = s->Ry[i] = 0;
         s->qGx[i] = s->pGx[i];
         s->qGy[i] = s->pGy[i];
     }
-    if (sim->def.scheme == LM_MUSL) slow_consistent_mass(sim, s);
+    if (sim->def.scheme == LM_MUSL || mr_consistent(sim))
+        slow_consistent_mass(sim, s, mr_consistent(sim));
 
     for (size_t q = 0; q < p->n; q++) {
         s->xs[4 * q] = p->x[q];
         s->xs[4 * q + 1] = p->y[q];
     }
     sim->def.dt = dt;                           /* what the phases read */
-    for (int j = 0; j < k && st == LM_OK; j++) st = sub_step(sim, s, j == 0, dt);
+    for (int j = 0; j < k && st == LM_OK; j++) st = sub_step(sim, s, j == 0, dt, mr_weight(sim, j, k));
     sim->def.dt = Dt;
     if (st != LM_OK) return st;
+    if (sim->def.multirate == LM_MULTIRATE_HALF || sim->def.multirate == LM_MULTIRATE_HALF_LUMPED)
+        mr_end_kick(sim, s, Dt);
 
     /* 2: the slow group with its shape functions of x^n */
     const double r = 1.0 / Dt, pic = sim->def.pic;
@@ -523,7 +598,15 @@ lm_status lm_subcycle_step(lm_sim *sim)
         if (g->sw == 2) lm_k_g2p(g, p, (size_t)q, Dt, pic, g->ax, g->ay, g->vx, g->vy, 2);
         else lm_k_g2p(g, p, (size_t)q, Dt, pic, g->ax, g->ay, g->vx, g->vy, 3);
     }
-    if (sim->def.scheme == LM_MUSL) {
+    if (sim->def.scheme == LM_MUSL && sim->def.multirate != LM_MULTIRATE_HELD) {
+        /* the impulse forms: the slow group strained as each sub-step
+         * strained the membranes, by the re-mapped velocities' sum */
+        for (size_t i = 0; i < nn; i++) {
+            g->vx[i] = s->Rx[i] * r;
+            g->vy[i] = s->Ry[i] * r;
+        }
+        lm_step_strain_velocity_end(sim, 0);
+    } else if (sim->def.scheme == LM_MUSL) {
         /* MUSL's re-map (over the last sub-step's M_i, g->m) of every
          * particle's new velocity with the grid's part of it taken over the
          * whole step instead of at its end: v_p + (dx_p / dt - u_p), u_p
