@@ -116,6 +116,9 @@ typedef struct lm_subcycle {
     double *Vx, *Vy;                      /* v^L of the last sub-step */
     double *Rx, *Ry;                      /* the impulse forms' (MUSL) re-mapped
                                              displacement sum_s dt_s v^R_s */
+    double *fPx, *fPy;                    /* SPLIT: the last step's f^G */
+    int fP_set;                           /* fP holds a step's f^G */
+    int k;                                /* the step's sub-steps */
     double *C;                            /* the slow group's consistent mass
                                              sum_p m_p N_ip N_jp, B x B a node */
     int B;                                /* 2 sw - 1: the offsets j - i */
@@ -162,7 +165,7 @@ static lm_status reserve(lm_sim *sim)
     sim->work->sub = NULL;
     lm_subcycle *s = calloc(1, sizeof *s);
     const int B = 2 * sim->grid.sw - 1;
-    double *b = s ? calloc((20 + (size_t)(B * B)) * nn, sizeof *b) : NULL;
+    double *b = s ? calloc((22 + (size_t)(B * B)) * nn, sizeof *b) : NULL;
     unsigned char *near = b ? calloc(nn, 1) : NULL;
     long *rows = near ? calloc(nn, sizeof *rows) : NULL;
     if (!rows) {
@@ -177,9 +180,9 @@ static lm_status reserve(lm_sim *sim)
     s->buf = b;
     double **f[] = {&s->mG, &s->pGx, &s->pGy, &s->fGx, &s->fGy, &s->Ax, &s->Ay,
                     &s->Xx, &s->Xy, &s->mM, &s->pMx, &s->pMy, &s->fMx, &s->fMy,
-                    &s->qGx, &s->qGy, &s->Vx, &s->Vy, &s->Rx, &s->Ry};
-    for (size_t k = 0; k < 20; k++) *f[k] = b + k * nn;
-    s->C = b + 20 * nn;
+                    &s->qGx, &s->qGy, &s->Vx, &s->Vy, &s->Rx, &s->Ry, &s->fPx, &s->fPy};
+    for (size_t k = 0; k < 22; k++) *f[k] = b + k * nn;
+    s->C = b + 22 * nn;
     s->near = near;
     s->rows = rows;
     s->B = B;
@@ -415,6 +418,7 @@ static double mr_weight(const lm_sim *sim, int j, int k)
 {
     switch (sim->def.multirate) {
     case LM_MULTIRATE_IMPULSE:
+    case LM_MULTIRATE_SPLIT:
     case LM_MULTIRATE_IMPULSE_LUMPED: return j == 0 ? (double)k : 0.0;
     case LM_MULTIRATE_HALF:
     case LM_MULTIRATE_HALF_LUMPED: return j == 0 ? 0.5 * k : 0.0;
@@ -427,7 +431,9 @@ static double mr_weight(const lm_sim *sim, int j, int k)
  * give each sub-step), not lumped p^G += dt m^G a. */
 static int mr_consistent(const lm_sim *sim)
 {
-    return sim->def.multirate == LM_MULTIRATE_IMPULSE || sim->def.multirate == LM_MULTIRATE_HALF;
+    return sim->def.multirate == LM_MULTIRATE_IMPULSE || sim->def.multirate == LM_MULTIRATE_HALF ||
+           sim->def.multirate == LM_MULTIRATE_HELD_CONSISTENT ||
+           sim->def.multirate == LM_MULTIRATE_SPLIT;
 }
 
 /* R += dt v^R, the re-mapped velocities MUSL strained the membranes with */
@@ -467,6 +473,19 @@ static void mr_end_kick(lm_sim *sim, lm_subcycle *s, double Dt)
     }
 }
 
+/* SPLIT: the last step's slow force f^P held over the sub-steps and the
+ * change f^G - f^P kicked in the first: F = k f^G + (1 - k) f^P + f^M there,
+ * f^P + f^M after (the grid's forces already hold wG f^G + f^M). */
+static void mr_split_force(lm_sim *sim, lm_subcycle *s, int first)
+{
+    lm_grid *g = &sim->grid;
+    const double w = first ? 1 - (double)s->k : 1;
+    for (size_t i = 0; i < s->nn; i++) {
+        g->fx[i] += w * s->fPx[i];
+        g->fy[i] += w * s->fPy[i];
+    }
+}
+
 /* One sub-step of dt for the membranes (phase 1 of the header). */
 static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int first, double dt, double wG)
 {
@@ -486,6 +505,7 @@ static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int first, double dt, dou
         g->fx[i] = wG * s->fGx[i] + s->fMx[i];   /* wG: mr_weight */
         g->fy[i] = wG * s->fGy[i] + s->fMy[i];
     }
+    if (sim->def.multirate == LM_MULTIRATE_SPLIT) mr_split_force(sim, s, first);
     lm_step_grid_update(sim);                  /* 3: P^L, the walls */
     lm_step_g2p_nodes(sim, g->vx, g->vy);      /* 4: a_i, v^L_i, ghosts filled */
     for (size_t i = 0; i < nn; i++) {
@@ -547,6 +567,7 @@ lm_status lm_subcycle_step(lm_sim *sim)
     const double Dt = sim->def.dt;
     const int k = lm_subcycle_count(sim);
     const double dt = Dt / k;
+    s->k = k;
 
     lm_step_clear(sim);                         /* 0 */
     lm_step_shape(sim);
@@ -571,6 +592,11 @@ lm_status lm_subcycle_step(lm_sim *sim)
     }
     if (sim->def.scheme == LM_MUSL || mr_consistent(sim))
         slow_consistent_mass(sim, s, mr_consistent(sim));
+    if (sim->def.multirate == LM_MULTIRATE_SPLIT && !s->fP_set) {
+        memcpy(s->fPx, s->fGx, nn * sizeof *s->fPx);   /* the first step: held */
+        memcpy(s->fPy, s->fGy, nn * sizeof *s->fPy);
+        s->fP_set = 1;
+    }
 
     for (size_t q = 0; q < p->n; q++) {
         s->xs[4 * q] = p->x[q];
@@ -582,6 +608,10 @@ lm_status lm_subcycle_step(lm_sim *sim)
     if (st != LM_OK) return st;
     if (sim->def.multirate == LM_MULTIRATE_HALF || sim->def.multirate == LM_MULTIRATE_HALF_LUMPED)
         mr_end_kick(sim, s, Dt);
+    if (sim->def.multirate == LM_MULTIRATE_SPLIT) {
+        memcpy(s->fPx, s->fGx, nn * sizeof *s->fPx);
+        memcpy(s->fPy, s->fGy, nn * sizeof *s->fPy);
+    }
 
     /* 2: the slow group with its shape functions of x^n */
     const double r = 1.0 / Dt, pic = sim->def.pic;

@@ -295,13 +295,17 @@ typedef enum lm_stress { LM_STRESS_POINTS = 0, LM_STRESS_CELL = 1 } lm_stress;
  * default); IMPULSE, the slow force's whole step's impulse in the first
  * sub-step (r-RESPA's kick), the slow group's momentum carried as its
  * consistent re-map; HALF, half the impulse at each end; the _LUMPED forms
- * carry it lumped. */
+ * carry it lumped; HELD_CONSISTENT, HELD's force with IMPULSE's carry;
+ * SPLIT, the last step's slow force held and this step's change of it
+ * kicked, with IMPULSE's carry. */
 typedef enum {
     LM_MULTIRATE_HELD = 0,
     LM_MULTIRATE_IMPULSE,
     LM_MULTIRATE_IMPULSE_LUMPED,
     LM_MULTIRATE_HALF,
-    LM_MULTIRATE_HALF_LUMPED
+    LM_MULTIRATE_HALF_LUMPED,
+    LM_MULTIRATE_HELD_CONSISTENT,
+    LM_MULTIRATE_SPLIT
 } lm_multirate;
 
 typedef struct lm_sim_def {
