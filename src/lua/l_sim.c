@@ -23,7 +23,8 @@ static const char *const mass_keys[] = {"lumped", "corrected", "membrane", "auto
 static const char *const transfers[] = {"flip", "apic", NULL};
 /* in lm_multirate order (mpm.h) */
 static const char *const multirates[] = {"held", "impulse", "impulse_lumped", "half",
-                                         "half_lumped", "held_consistent", "split", NULL};
+                                         "half_lumped", "held_consistent", "split", "hybrid",
+                                         NULL};
 /* in lm_basis order (mpm.h) */
 static const char *const bases[] = {"linear", "gimp", "bspline2", NULL};
 /* lm_stress: [T] §5.4.3 (stress_cell.c) */

@@ -88,6 +88,27 @@
  * that error grows until a point inverts. dt must be chosen for the slow
  * group's sound speed plus its particles' speeds.
  *
+ * The forms (lamina.sim{multirate}; docs/performance.md "Multi-rate
+ * stepping: impulse forms"). The above is "held": f^G in every sub-step,
+ * p^G carried lumped while the membranes' MUSL strain reads the consistent
+ * p^G(x^n) + C A, so the carried and the strained momenta differ and the
+ * sub-step is the symplectic Euler step of no mass matrix: the energy
+ * drifts (+5.4 % over t = 1 on the ringing circle with k = 10). "impulse"
+ * gives the step's whole Dt f^G in the first sub-step (r-RESPA / Verlet-I's
+ * kick, Tuckerman, Berne & Martyna 1992), carries p^G as the consistent
+ * re-map on every node (mr_consistent: what a P2G of all particles would
+ * give) and strains the gas (MUSL) by the sum of the sub-steps' re-mapped
+ * velocities R (the velocities that strained the membranes): each sub-step
+ * is then the plain FLIP-MUSL step with the gas's stress frozen, on a frozen
+ * grid the symplectic Euler step for the mass matrix M C^-1 M, and the kick
+ * composed with them is symplectic too: no drift (the plain step's trend),
+ * an oscillation of first order in dt. Its price: the loaded membrane
+ * swings at the step's rate (the kick arrives before the tension that
+ * balances it), and on Box 9's dog-bone a gas point beside it goes
+ * unstable (t = 0.43 at 16 x, 0.82 at 8 x). The other forms are the
+ * screened variants (mr_weight, mr_split_force, mr_hybrid_force,
+ * mr_end_kick).
+ *
  * Not with what changes the grid's forces by the node (contact's own
  * fields, pins, links, heavy end points, damping, the corrected mass, the
  * cell stress, the axisymmetric hoop): refused by name. Segment
@@ -422,6 +443,7 @@ static double mr_weight(const lm_sim *sim, int j, int k)
     case LM_MULTIRATE_IMPULSE_LUMPED: return j == 0 ? (double)k : 0.0;
     case LM_MULTIRATE_HALF:
     case LM_MULTIRATE_HALF_LUMPED: return j == 0 ? 0.5 * k : 0.0;
+    case LM_MULTIRATE_HYBRID: return 0.0;   /* mr_hybrid_force */
     default: return 1.0;
     }
 }
@@ -433,7 +455,7 @@ static int mr_consistent(const lm_sim *sim)
 {
     return sim->def.multirate == LM_MULTIRATE_IMPULSE || sim->def.multirate == LM_MULTIRATE_HALF ||
            sim->def.multirate == LM_MULTIRATE_HELD_CONSISTENT ||
-           sim->def.multirate == LM_MULTIRATE_SPLIT;
+           sim->def.multirate == LM_MULTIRATE_SPLIT || sim->def.multirate == LM_MULTIRATE_HYBRID;
 }
 
 /* R += dt v^R, the re-mapped velocities MUSL strained the membranes with */
@@ -486,6 +508,21 @@ static void mr_split_force(lm_sim *sim, lm_subcycle *s, int first)
     }
 }
 
+/* HYBRID: f^G kicked (weight k in the first sub-step, 0 after) where the
+ * membranes had no mass at the step's start (fPx: 1 there, 0 elsewhere),
+ * held (weight 1 in every sub-step) where they had; the grid's forces hold
+ * f^M alone (wG = 0) when this is called. */
+static void mr_hybrid_force(lm_sim *sim, lm_subcycle *s, int first)
+{
+    lm_grid *g = &sim->grid;
+    const double k = (double)s->k;
+    for (size_t i = 0; i < s->nn; i++) {
+        double w = s->fPx[i] > 0 ? (first ? k : 0) : 1;
+        g->fx[i] += w * s->fGx[i];
+        g->fy[i] += w * s->fGy[i];
+    }
+}
+
 /* One sub-step of dt for the membranes (phase 1 of the header). */
 static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int first, double dt, double wG)
 {
@@ -506,6 +543,7 @@ static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int first, double dt, dou
         g->fy[i] = wG * s->fGy[i] + s->fMy[i];
     }
     if (sim->def.multirate == LM_MULTIRATE_SPLIT) mr_split_force(sim, s, first);
+    if (sim->def.multirate == LM_MULTIRATE_HYBRID) mr_hybrid_force(sim, s, first);
     lm_step_grid_update(sim);                  /* 3: P^L, the walls */
     lm_step_g2p_nodes(sim, g->vx, g->vy);      /* 4: a_i, v^L_i, ghosts filled */
     for (size_t i = 0; i < nn; i++) {
@@ -592,6 +630,8 @@ lm_status lm_subcycle_step(lm_sim *sim)
     }
     if (sim->def.scheme == LM_MUSL || mr_consistent(sim))
         slow_consistent_mass(sim, s, mr_consistent(sim));
+    if (sim->def.multirate == LM_MULTIRATE_HYBRID)   /* the kicked nodes */
+        for (size_t i = 0; i < nn; i++) s->fPx[i] = s->mM[i] > 0 ? 0 : 1;
     if (sim->def.multirate == LM_MULTIRATE_SPLIT && !s->fP_set) {
         memcpy(s->fPx, s->fGx, nn * sizeof *s->fPx);   /* the first step: held */
         memcpy(s->fPy, s->fGy, nn * sizeof *s->fPy);

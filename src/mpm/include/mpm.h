@@ -297,7 +297,9 @@ typedef enum lm_stress { LM_STRESS_POINTS = 0, LM_STRESS_CELL = 1 } lm_stress;
  * consistent re-map; HALF, half the impulse at each end; the _LUMPED forms
  * carry it lumped; HELD_CONSISTENT, HELD's force with IMPULSE's carry;
  * SPLIT, the last step's slow force held and this step's change of it
- * kicked, with IMPULSE's carry. */
+ * kicked, with IMPULSE's carry; HYBRID, IMPULSE's kick on the nodes the
+ * membranes do not touch at the step's start, HELD's force on those they
+ * do, with IMPULSE's carry. */
 typedef enum {
     LM_MULTIRATE_HELD = 0,
     LM_MULTIRATE_IMPULSE,
@@ -305,7 +307,8 @@ typedef enum {
     LM_MULTIRATE_HALF,
     LM_MULTIRATE_HALF_LUMPED,
     LM_MULTIRATE_HELD_CONSISTENT,
-    LM_MULTIRATE_SPLIT
+    LM_MULTIRATE_SPLIT,
+    LM_MULTIRATE_HYBRID
 } lm_multirate;
 
 typedef struct lm_sim_def {
