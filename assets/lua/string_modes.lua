@@ -12,7 +12,7 @@
 -- v_y = 0.01 sin(n pi s / L) (amplitude ~1e-4 of a cell: linear), and run
 -- 10 periods at dt = 0.4 h / sqrt(E / rho).
 --
--- M.run{basis, ends = "walls" | "pins", mode, n (cells per L), periods, substeps, mass}
+-- M.run{basis, ends = "walls" | "pins", mode, n (cells per L), periods, substeps, multirate, mass}
 -- returns {err = f_measured / f_exact - 1, de = the largest change of the
 -- total energy over the largest kinetic energy, kr = the largest kinetic
 -- energy of the last period over the first's}.
@@ -28,7 +28,7 @@ function M.run(o)
   -- o.substeps = k: multi-rate stepping (docs/api.md), k sub-steps of the
   -- same 0.4 h / c in each step
   local sim = lamina.sim{ basis = o.basis, dt = 0.4 * h / math.sqrt(E / rho) * (o.substeps or 1),
-    cell = h, substeps = o.substeps, mass = o.mass, scheme = o.scheme,
+    cell = h, substeps = o.substeps, multirate = o.multirate, mass = o.mass, scheme = o.scheme,
     domain = {0, 0, pins and 1.4 or 1, 1},
     boundary = pins and "free" or {left = "fixed", right = "fixed", top = "free", bottom = "free"} }
   local mat = lamina.membrane{ rho = rho, E = E, nu = 0, thickness = t, law = "uniaxial" }

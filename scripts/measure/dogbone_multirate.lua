@@ -8,12 +8,13 @@
 -- chosen every `adapt_every` x 3.5e-5 of time so that dt max(c_p + |v_p|) / h
 -- = adapt over the gas points, as lamina's Courant check counts a gas,
 -- capped at m x the deck's dt; the membrane's k follows through substeps
--- = "auto"), `dt_scale` (the deck's dt scaled: the plain USL step needs
+-- = "auto"), `multirate` (the sub-steps' form, lamina.sim{multirate}:
+-- "held", the default, or an impulse form), `dt_scale` (the deck's dt scaled: the plain USL step needs
 -- 0.65). It prints where the run stopped if it did (pcall), its CPU time
 -- and steps, the means over the last time unit of the page's numbers
 -- (r(0), r(90), pressure over the enclosed space, hoop against p r / t,
 -- mass; energy at the start and end), and every 0.05 the step, the gas's
--- largest speed, the total energy and the pressure.
+-- largest speed, the total energy and the pressure (`print_every` to change).
 --   lamina run scripts/measure/dogbone_multirate.lua --set m=8 --set scheme=usl --set t_end=1
 local b = require("dogbone_box9")
 local m = lamina.param("m", 4)
@@ -30,8 +31,9 @@ local sim = lamina.sim{ domain = {0, 0, d.width, d.width}, cell = h, dt = dt0 * 
                         courant = lamina.param("courant", 1.05),   -- the page's: the deck's 1.04
                         boundary = { left = "symmetry", bottom = "symmetry",
                                      right = "symmetry", top = "symmetry" },
-                        pic = 0, threads = threads, basis = "bspline2", scheme = scheme,
-                        substeps = m > 1 and (k > 0 and k or "auto") or nil }
+                        pic = lamina.param("pic", 0), threads = threads, basis = "bspline2", scheme = scheme,
+                        substeps = m > 1 and (k > 0 and k or "auto") or nil,
+                        multirate = m > 1 and lamina.param("multirate", "held") or nil }
 local air = lamina.gas{ rho = d.rho_gas, e = d.e, gamma = d.gamma, mu = d.mu }
 local skin = lamina.membrane{ rho = d.rho_membrane, E = d.E, nu = d.nu, thickness = d.thickness,
                               law = "plane_stress", one_way = true }
@@ -66,7 +68,7 @@ if adapt > 0 then
   end)
 end
 local rec = sim:record{ every = 0.01, energy = true, values = b.history_values(gas, mem) }
-sim:every(0.05, function(s)
+sim:every(lamina.param("print_every", 0.05), function(s)
   print(string.format("  t %.3f  dt %.3g  substeps %d  gas v_max %.1f  steps %d  energy %.3f  pressure %.2f",
                       s.t, s.dt, s.substeps, vmax(), s.nstep, s:energy().total, gas:pressure(mem)))
 end)

@@ -21,6 +21,10 @@ static const char *const masses[] = {"lumped", "corrected", "membrane", NULL};
 static const char *const mass_keys[] = {"lumped", "corrected", "membrane", "auto", NULL};
 #define MASS_KEY_AUTO 3
 static const char *const transfers[] = {"flip", "apic", NULL};
+/* in lm_multirate order (mpm.h) */
+static const char *const multirates[] = {"held", "impulse", "impulse_lumped", "half",
+                                         "half_lumped", "held_consistent", "split", "hybrid",
+                                         NULL};
 /* in lm_basis order (mpm.h) */
 static const char *const bases[] = {"linear", "gimp", "bspline2", NULL};
 /* lm_stress: [T] §5.4.3 (stress_cell.c) */
@@ -96,7 +100,7 @@ int la_sim_new(lua_State *L)
     static const char *const keys[] = {"domain", "cell", "dt", "scheme", "gravity",
                                        "boundary", "courant", "pic", "seed", "threads",
                                        "basis", "stress", "axisymmetric", "mass", "damping",
-                                       "substeps", "transfer", "dim", NULL};
+                                       "substeps", "transfer", "dim", "multirate", NULL};
     const char *fn = "lamina.sim";
     /* dim = 3: the 3D run (l_sim3.c, docs/3d.md) */
     la_check_table(L, 1, fn);
@@ -183,6 +187,13 @@ int la_sim_new(lua_State *L)
                    fn, LM_SUBSTEPS_MAX, lua_typename(L, st_type));
     }
     lua_pop(L, 1);
+    /* multirate: the sub-steps' form (subcycle.c); it means nothing
+     * without them, so asking for it alone is refused */
+    d.multirate = (lm_multirate)la_option(L, fn, "multirate",
+                                          la_opt_string(L, 1, fn, "multirate", "held"), multirates);
+    if (la_has(L, 1, "multirate") && d.substeps == 0)
+        luaL_error(L, "%s: multirate = \"%s\" needs substeps (\"auto\" or a number)", fn,
+                   multirates[d.multirate]);
     /* threads: the key, else lamina run --threads (the run's configuration,
      * passed in explicitly), else the user's LAMINA_THREADS, else 1; the
      * state is bit-identical for the same count (docs/decisions.md) */

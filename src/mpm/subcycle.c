@@ -90,6 +90,28 @@
  *
  * The axisymmetric hoop term, links and point pins on membranes: each in
  * the group whose motion changes it (subcycle_terms.c says how and why).
+ *
+ * The forms (lamina.sim{multirate}; docs/performance.md "Multi-rate
+ * stepping: impulse forms"). The above is "held": f^G in every sub-step,
+ * p^G carried lumped while the membranes' MUSL strain reads the consistent
+ * p^G(x^n) + C A, so the carried and the strained momenta differ and the
+ * sub-step is the symplectic Euler step of no mass matrix: the energy
+ * drifts (+5.4 % over t = 1 on the ringing circle with k = 10). "impulse"
+ * gives the step's whole Dt f^G in the first sub-step (r-RESPA / Verlet-I's
+ * kick, Tuckerman, Berne & Martyna 1992), carries p^G as the consistent
+ * re-map on every node (mr_consistent: what a P2G of all particles would
+ * give) and strains the gas (MUSL) by the sum of the sub-steps' re-mapped
+ * velocities R (the velocities that strained the membranes): each sub-step
+ * is then the plain FLIP-MUSL step with the gas's stress frozen, on a frozen
+ * grid the symplectic Euler step for the mass matrix M C^-1 M, and the kick
+ * composed with them is symplectic too: no drift (the plain step's trend),
+ * an oscillation of first order in dt. Its price: the loaded membrane
+ * swings at the step's rate (the kick arrives before the tension that
+ * balances it), and on Box 9's dog-bone a gas point beside it goes
+ * unstable (t = 0.43 at 16 x, 0.82 at 8 x). The other forms are the
+ * screened variants (mr_weight, mr_split_force, mr_hybrid_force,
+ * mr_end_kick).
+ *
  * Not with what changes the grid's forces by the node (contact's own
  * fields, pins that hold nodes, heavy end points, damping, the corrected
  * mass, the cell stress): refused by name. Segment
@@ -119,6 +141,11 @@ typedef struct lm_subcycle {
     double *mM, *pMx, *pMy, *fMx, *fMy;   /* the membranes' sums of a sub-step */
     double *qGx, *qGy;                    /* p^G at x^n; its re-map's change */
     double *Vx, *Vy;                      /* v^L of the last sub-step */
+    double *Rx, *Ry;                      /* the impulse forms' (MUSL) re-mapped
+                                             displacement sum_s dt_s v^R_s */
+    double *fPx, *fPy;                    /* SPLIT: the last step's f^G */
+    int fP_set;                           /* fP holds a step's f^G */
+    int k;                                /* the step's sub-steps */
     double *C;                            /* the slow group's consistent mass
                                              sum_p m_p N_ip N_jp, B x B a node */
     int B;                                /* 2 sw - 1: the offsets j - i */
@@ -170,7 +197,7 @@ static lm_status reserve(lm_sim *sim)
     sim->work->sub = NULL;
     lm_subcycle *s = calloc(1, sizeof *s);
     const int B = 2 * sim->grid.sw - 1;
-    double *b = s ? calloc((18 + (size_t)(B * B)) * nn, sizeof *b) : NULL;
+    double *b = s ? calloc((22 + (size_t)(B * B)) * nn, sizeof *b) : NULL;
     unsigned char *near = b ? calloc(nn, 1) : NULL;
     long *rows = near ? calloc(nn, sizeof *rows) : NULL;
     lm_band *band = rows ? lm_band_new(&sim->grid) : NULL;
@@ -187,9 +214,9 @@ static lm_status reserve(lm_sim *sim)
     s->buf = b;
     double **f[] = {&s->mG, &s->pGx, &s->pGy, &s->fGx, &s->fGy, &s->Ax, &s->Ay,
                     &s->Xx, &s->Xy, &s->mM, &s->pMx, &s->pMy, &s->fMx, &s->fMy,
-                    &s->qGx, &s->qGy, &s->Vx, &s->Vy};
-    for (size_t k = 0; k < 18; k++) *f[k] = b + k * nn;
-    s->C = b + 18 * nn;
+                    &s->qGx, &s->qGy, &s->Vx, &s->Vy, &s->Rx, &s->Ry, &s->fPx, &s->fPy};
+    for (size_t k = 0; k < 22; k++) *f[k] = b + k * nn;
+    s->C = b + 22 * nn;
     s->near = near;
     s->rows = rows;
     s->band = band;
@@ -322,13 +349,13 @@ static int touches_near(const lm_sim *sim, const lm_subcycle *s, size_t q)
  * membrane moves less than a cell in a step within the slow group's
  * Courant limit, and a ghost node's image lies two nodes in); every row
  * there whole, as every particle reaching it is summed. */
-static void slow_consistent_mass(lm_sim *sim, lm_subcycle *s)
+static void slow_consistent_mass(lm_sim *sim, lm_subcycle *s, int all)
 {
     const lm_particles *p = &sim->p;
     const lm_grid *g = &sim->grid;
     const long nn = (long)s->nn, sx = g->sx;
-    memset(s->near, 0, s->nn);
-    for (long i = 0; i < nn; i++) {
+    memset(s->near, all, s->nn);
+    for (long i = 0; i < nn && !all; i++) {
         if (!(s->mM[i] > 0)) continue;
         for (long dy = -2; dy <= 2; dy++)
             for (long dx = -2; dx <= 2; dx++) {
@@ -421,9 +448,105 @@ static lm_band_nodes band_nodes(lm_subcycle *s)
     return a;
 }
 
+/* The impulse forms (lamina.sim{multirate}; docs/performance.md
+ * "Multi-rate stepping", "Impulse forms"). HELD spreads the slow force
+ * evenly, f^G in every sub-step; IMPULSE puts the step's whole impulse
+ * Dt f^G in the first (weight k: r-RESPA / Verlet-I's kick, Tuckerman,
+ * Berne & Martyna 1992, so that the sub-steps between two kicks are the
+ * fast system's own symplectic steps); HALF half of it in the first and
+ * half, as a velocity change alone, after the last (mr_end_kick). */
+static double mr_weight(const lm_sim *sim, int j, int k)
+{
+    switch (sim->def.multirate) {
+    case LM_MULTIRATE_IMPULSE:
+    case LM_MULTIRATE_SPLIT:
+    case LM_MULTIRATE_IMPULSE_LUMPED: return j == 0 ? (double)k : 0.0;
+    case LM_MULTIRATE_HALF:
+    case LM_MULTIRATE_HALF_LUMPED: return j == 0 ? 0.5 * k : 0.0;
+    case LM_MULTIRATE_HYBRID: return 0.0;   /* mr_hybrid_force */
+    default: return 1.0;
+    }
+}
+
+/* The slow group's nodal momentum carried as its particles' consistent
+ * re-map p^G(x^n) + C A on every node (what a P2G of all particles would
+ * give each sub-step), not lumped p^G += dt m^G a. */
+static int mr_consistent(const lm_sim *sim)
+{
+    return sim->def.multirate == LM_MULTIRATE_IMPULSE || sim->def.multirate == LM_MULTIRATE_HALF ||
+           sim->def.multirate == LM_MULTIRATE_HELD_CONSISTENT ||
+           sim->def.multirate == LM_MULTIRATE_SPLIT || sim->def.multirate == LM_MULTIRATE_HYBRID;
+}
+
+/* R += dt v^R, the re-mapped velocities MUSL strained the membranes with */
+static void mr_remapped_displacement(lm_subcycle *s, const lm_grid *g, double dt)
+{
+    for (size_t i = 0; i < s->nn; i++) {
+        s->Rx[i] += dt * g->vx[i];
+        s->Ry[i] += dt * g->vy[i];
+    }
+}
+
+/* HALF's second half kick: the velocity change (Dt / 2) f^G / M_i (the last
+ * sub-step's M_i, the walls applied) to the slow group's A and to the
+ * membrane points at their last shape functions; no displacement. */
+static void mr_end_kick(lm_sim *sim, lm_subcycle *s, double Dt)
+{
+    lm_grid *g = &sim->grid;
+    lm_particles *p = &sim->p;
+    for (size_t i = 0; i < s->nn; i++) {
+        double r = g->m[i] > 0 ? 0.5 * Dt / g->m[i] : 0;
+        g->ax[i] = s->fGx[i] * r;
+        g->ay[i] = s->fGy[i] * r;
+    }
+    lm_grid_apply_bc(g, g->ax, g->ay);
+    double *const fill[2] = {g->ax, g->ay};
+    static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
+    lm_grid_fill(g, 2, fill, comp);
+    for (size_t i = 0; i < s->nn; i++) {
+        s->Ax[i] += g->ax[i];
+        s->Ay[i] += g->ay[i];
+    }
+    FOR_FAST(sim, q) {
+        lm_weights w;
+        lm_weights_of(sim, q, &w);
+        p->vx[q] += lm_gather_rows(g, &w, p->node[q], g->ax);
+        p->vy[q] += lm_gather_rows(g, &w, p->node[q], g->ay);
+    }
+}
+
+/* SPLIT: the last step's slow force f^P held over the sub-steps and the
+ * change f^G - f^P kicked in the first: F = k f^G + (1 - k) f^P + f^M there,
+ * f^P + f^M after (the grid's forces already hold wG f^G + f^M). */
+static void mr_split_force(lm_sim *sim, lm_subcycle *s, int first)
+{
+    lm_grid *g = &sim->grid;
+    const double w = first ? 1 - (double)s->k : 1;
+    for (size_t i = 0; i < s->nn; i++) {
+        g->fx[i] += w * s->fPx[i];
+        g->fy[i] += w * s->fPy[i];
+    }
+}
+
+/* HYBRID: f^G kicked (weight k in the first sub-step, 0 after) where the
+ * membranes had no mass at the step's start (fPx: 1 there, 0 elsewhere),
+ * held (weight 1 in every sub-step) where they had; the grid's forces hold
+ * f^M alone (wG = 0) when this is called. */
+static void mr_hybrid_force(lm_sim *sim, lm_subcycle *s, int first)
+{
+    lm_grid *g = &sim->grid;
+    const double k = (double)s->k;
+    for (size_t i = 0; i < s->nn; i++) {
+        double w = s->fPx[i] > 0 ? (first ? k : 0) : 1;
+        g->fx[i] += w * s->fGx[i];
+        g->fy[i] += w * s->fGy[i];
+    }
+}
+
 /* One sub-step of dt for the membranes (phase 1 of the header): the band's
- * nodes (subcycle_band.c); the rest follow at the step's end. */
-static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int j, double dt)
+ * nodes (subcycle_band.c); the rest follow at the step's end. wG: the
+ * slow force's weight in it (mr_weight). */
+static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int j, double dt, double wG)
 {
     lm_grid *g = &sim->grid;
     lm_particles *p = &sim->p;
@@ -441,9 +564,11 @@ static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int j, double dt)
         g->m[i] = s->mG[i] + s->mM[i];
         g->px[i] = s->pGx[i] + s->pMx[i];
         g->py[i] = s->pGy[i] + s->pMy[i];
-        g->fx[i] = s->fGx[i] + s->fMx[i];
-        g->fy[i] = s->fGy[i] + s->fMy[i];
+        g->fx[i] = wG * s->fGx[i] + s->fMx[i];   /* wG: mr_weight */
+        g->fy[i] = wG * s->fGy[i] + s->fMy[i];
     }
+    if (sim->def.multirate == LM_MULTIRATE_SPLIT) mr_split_force(sim, s, j == 0);
+    if (sim->def.multirate == LM_MULTIRATE_HYBRID) mr_hybrid_force(sim, s, j == 0);
     if (s->whole) {
         lm_step_grid_update(sim);              /* 3: P^L, the walls, pins */
         lm_step_g2p_nodes(sim, g->vx, g->vy);  /* 4: a_i, v^L_i, ghosts filled */
@@ -462,6 +587,7 @@ static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int j, double dt)
         s->Vx[i] = g->vx[i];
         s->Vy[i] = g->vy[i];
     }
+    if (mr_consistent(sim)) slow_remap(sim, s, s->pGx, s->pGy);   /* p^G(x^n) + C A */
     const double pic = sim->def.pic;
     FOR_FAST(sim, q) {   /* x before this sub-step (the last one's is kept) */
         s->xs[4 * q + 2] = p->x[q];
@@ -476,7 +602,12 @@ static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int j, double dt)
     }
     lm_subcycle_pins_moved(sim);                 /* held points: the pin's */
     if (sim->def.scheme == LM_MUSL) {            /* 5: re-map, all particles */
-        slow_remap(sim, s, s->fMx, s->fMy);      /* (f^M is spent: scratch) */
+        if (mr_consistent(sim)) {                /* the carry is that re-map */
+            memcpy(s->fMx, s->pGx, s->nn * sizeof *s->fMx);
+            memcpy(s->fMy, s->pGy, s->nn * sizeof *s->fMy);
+        } else {
+            slow_remap(sim, s, s->fMx, s->fMy);  /* (f^M is spent: scratch) */
+        }
         fast_remap(sim, g->vx, g->vy, band);
         for (size_t r = 0; r < band->n; r++) {
             const long i = band->idx[r];
@@ -489,6 +620,7 @@ static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int j, double dt)
         } else {
             lm_band_remap_end(sim, band);
         }
+        if (sim->def.multirate != LM_MULTIRATE_HELD) mr_remapped_displacement(s, g, dt);
     } else {
         lm_step_strain_velocity_end(sim, 0);     /* v^L as step 4 left it */
     }
@@ -512,6 +644,7 @@ lm_status lm_subcycle_step(lm_sim *sim)
     const double Dt = sim->def.dt;
     const int k = lm_subcycle_count(sim);
     const double dt = Dt / k;
+    s->k = k;
 
     lm_step_clear(sim);                         /* 0 */
     lm_step_shape(sim);
@@ -532,31 +665,46 @@ lm_status lm_subcycle_step(lm_sim *sim)
             s->fGx[i] = g->fx[i] - s->fMx[i];
             s->fGy[i] = g->fy[i] - s->fMy[i];
         }
-        s->Ax[i] = s->Ay[i] = s->Xx[i] = s->Xy[i] = 0;
+        s->Ax[i] = s->Ay[i] = s->Xx[i] = s->Xy[i] = s->Rx[i] = s->Ry[i] = 0;
         s->qGx[i] = s->pGx[i];
         s->qGy[i] = s->pGy[i];
     }
-    if (sim->def.scheme == LM_MUSL) slow_consistent_mass(sim, s);
+    if (sim->def.scheme == LM_MUSL || mr_consistent(sim))
+        slow_consistent_mass(sim, s, mr_consistent(sim));
+    if (sim->def.multirate == LM_MULTIRATE_HYBRID)   /* the kicked nodes */
+        for (size_t i = 0; i < nn; i++) s->fPx[i] = s->mM[i] > 0 ? 0 : 1;
+    if (sim->def.multirate == LM_MULTIRATE_SPLIT && !s->fP_set) {
+        memcpy(s->fPx, s->fGx, nn * sizeof *s->fPx);   /* the first step: held */
+        memcpy(s->fPy, s->fGy, nn * sizeof *s->fPy);
+        s->fP_set = 1;
+    }
 
     for (size_t q = 0; q < p->n; q++) {
         s->xs[4 * q] = p->x[q];
         s->xs[4 * q + 1] = p->y[q];
     }
     /* the band's loops are the plain ones without the terms the airbags
-     * add (a link's far end, a pin's solve in step 3): with those, every
-     * node is swept by the standard steps */
-    s->whole = lm_subcycle_terms_active(sim);
+     * add (a link's far end, a pin's solve in step 3) and with the slow
+     * force held in every sub-step (a far node's closed form): otherwise
+     * every node is swept by the standard steps */
+    s->whole = lm_subcycle_terms_active(sim) || sim->def.multirate != LM_MULTIRATE_HELD;
     if (s->whole) lm_band_all(s->band);
     else lm_band_build(s->band, sim, band_need(sim));   /* the stencils at x^n */
     sim->def.dt = dt;                           /* what the phases read */
     for (int j = 0; j < k && st == LM_OK; j++) {
-        st = sub_step(sim, s, j, dt);
+        st = sub_step(sim, s, j, dt, mr_weight(sim, j, k));
         lm_subcycle_pins_react(sim, j, k);
     }
     sim->def.dt = Dt;
     if (st != LM_OK) return st;
     lm_band_nodes bn = band_nodes(s);
     if (!s->whole) lm_band_far(sim, s->band, &bn, k, dt);   /* the nodes no membrane reached */
+    if (sim->def.multirate == LM_MULTIRATE_HALF || sim->def.multirate == LM_MULTIRATE_HALF_LUMPED)
+        mr_end_kick(sim, s, Dt);
+    if (sim->def.multirate == LM_MULTIRATE_SPLIT) {
+        memcpy(s->fPx, s->fGx, nn * sizeof *s->fPx);
+        memcpy(s->fPy, s->fGy, nn * sizeof *s->fPy);
+    }
 
     /* 2: the slow group with its shape functions of x^n */
     const double r = 1.0 / Dt, pic = sim->def.pic;
@@ -573,7 +721,15 @@ lm_status lm_subcycle_step(lm_sim *sim)
         if (g->sw == 2) lm_k_g2p(g, p, (size_t)q, Dt, pic, g->ax, g->ay, g->vx, g->vy, 2);
         else lm_k_g2p(g, p, (size_t)q, Dt, pic, g->ax, g->ay, g->vx, g->vy, 3);
     }
-    if (sim->def.scheme == LM_MUSL) {
+    if (sim->def.scheme == LM_MUSL && sim->def.multirate != LM_MULTIRATE_HELD) {
+        /* the impulse forms: the slow group strained as each sub-step
+         * strained the membranes, by the re-mapped velocities' sum */
+        for (size_t i = 0; i < nn; i++) {
+            g->vx[i] = s->Rx[i] * r;
+            g->vy[i] = s->Ry[i] * r;
+        }
+        lm_step_strain_velocity_end(sim, 0);
+    } else if (sim->def.scheme == LM_MUSL) {
         /* MUSL's re-map (over the last sub-step's M_i, g->m) of every
          * particle's new velocity with the grid's part of it taken over the
          * whole step instead of at its end: v_p + (dx_p / dt - u_p), u_p

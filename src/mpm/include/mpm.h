@@ -290,6 +290,28 @@ typedef struct lm_link {
  * remedy for the noise of points crossing cell edges. */
 typedef enum lm_stress { LM_STRESS_POINTS = 0, LM_STRESS_CELL = 1 } lm_stress;
 
+/* Multi-rate stepping's forms (lamina.sim{multirate}, subcycle.c and
+ * docs/performance.md "Multi-rate stepping"): HELD, the slow group's force
+ * spread evenly over the sub-steps, its nodal momentum carried lumped (the
+ * default); IMPULSE, the slow force's whole step's impulse in the first
+ * sub-step (r-RESPA's kick), the slow group's momentum carried as its
+ * consistent re-map; HALF, half the impulse at each end; the _LUMPED forms
+ * carry it lumped; HELD_CONSISTENT, HELD's force with IMPULSE's carry;
+ * SPLIT, the last step's slow force held and this step's change of it
+ * kicked, with IMPULSE's carry; HYBRID, IMPULSE's kick on the nodes the
+ * membranes do not touch at the step's start, HELD's force on those they
+ * do, with IMPULSE's carry. */
+typedef enum {
+    LM_MULTIRATE_HELD = 0,
+    LM_MULTIRATE_IMPULSE,
+    LM_MULTIRATE_IMPULSE_LUMPED,
+    LM_MULTIRATE_HALF,
+    LM_MULTIRATE_HALF_LUMPED,
+    LM_MULTIRATE_HELD_CONSISTENT,
+    LM_MULTIRATE_SPLIT,
+    LM_MULTIRATE_HYBRID
+} lm_multirate;
+
 typedef struct lm_sim_def {
     double x0, y0, x1, y1; /* domain */
     double hx, hy;         /* cell size (the domain is rounded up to whole cells) */
@@ -321,6 +343,9 @@ typedef struct lm_sim_def {
                               each step the membranes take k sub-steps of
                               dt / k; LM_SUBSTEPS_AUTO: k from the membranes'
                               Courant limit, step by step */
+    lm_multirate multirate;   /* with substeps: how the slow group's force
+                              enters the sub-steps and what its nodal
+                              momentum carries (subcycle.c) */
 } lm_sim_def;
 
 #define LM_SUBSTEPS_AUTO (-1)
