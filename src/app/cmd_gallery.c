@@ -374,7 +374,13 @@ static int render_all(const g_options *o)
     /* the stale figures, several at once (gallery_queue.c) */
     if (!broken && njobs) {
         static const g_queue_ops ops = { render_start, render_finish };
-        broken = g_queue_run(jobs, njobs, o->jobs, &ops, (void *)o, &ran, &failed) != 0;
+        g_queue_stats st = { 0 };
+        broken = g_queue_run(jobs, njobs, o->jobs, &ops, (void *)o, &st) != 0;
+        ran += st.ran;
+        failed += st.failed;
+        if (!o->quiet)
+            printf("gallery: %zu run%s: %.1f s of processor time in %.1f s, up to %d at once\n",
+                   st.ran, st.ran == 1 ? "" : "s", st.cpu, st.wall, o->jobs);
     }
     free(jobs);
     if (!broken && g_write_index(o, &all, err, sizeof err) != 0) {

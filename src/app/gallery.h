@@ -193,12 +193,17 @@ typedef struct g_queue_ops {
 double g_last_cost(const char *meta_path);
 /* The default of --jobs: the processors online (1 if unknown). */
 int g_default_jobs(void);
+typedef struct g_queue_stats {
+    size_t ran, failed;     /* runs ended, of which failed */
+    double cpu;             /* their processor time, summed */
+    double wall;            /* from the first start to the last end */
+} g_queue_stats;
 /* Runs the n jobs, at most max_jobs at once, the costliest first (unknown
- * cost first of all; ties in the given order). Counts the runs and the
- * failures; after a -1 (the gallery cannot be written) starts no more,
- * waits for the running ones, and returns -1; else 0. */
+ * cost first of all; ties in the given order), counting into st; after a
+ * -1 (the gallery cannot be written) starts no more, waits for the running
+ * ones, and returns -1; else 0. */
 int g_queue_run(g_job *jobs, size_t n, int max_jobs, const g_queue_ops *ops, void *ctx,
-                size_t *ran, size_t *failed);
+                g_queue_stats *st);
 
 /* ---- gallery_thumb.c ------------------------------------------------- */
 

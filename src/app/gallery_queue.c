@@ -19,6 +19,7 @@
 #include "gallery.h"
 
 #include <stdlib.h>
+#include <time.h>
 #include <unistd.h>
 
 double g_last_cost(const char *meta_path)
@@ -53,9 +54,17 @@ static int by_cost(const void *a, const void *b)
     return i < j ? -1 : i > j;
 }
 
-int g_queue_run(g_job *jobs, size_t n, int max_jobs, const g_queue_ops *ops, void *ctx,
-                size_t *ran, size_t *failed)
+static double now(void)
 {
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+int g_queue_run(g_job *jobs, size_t n, int max_jobs, const g_queue_ops *ops, void *ctx,
+                g_queue_stats *st)
+{
+    double t0 = now();
     size_t *order = g_alloc((n ? n : 1) * sizeof *order);
     size_t *running = g_alloc((size_t)(max_jobs > 0 ? max_jobs : 1) * sizeof *running);
     for (size_t i = 0; i < n; i++)
@@ -72,8 +81,8 @@ int g_queue_run(g_job *jobs, size_t n, int max_jobs, const g_queue_ops *ops, voi
             if (rc == 0)
                 running[nrun++] = (size_t)(j - jobs);
             else if (rc > 0) {
-                (*ran)++;
-                (*failed)++;
+                st->ran++;
+                st->failed++;
             } else
                 broken = 1;
         }
@@ -89,8 +98,9 @@ int g_queue_run(g_job *jobs, size_t n, int max_jobs, const g_queue_ops *ops, voi
                 continue;
             }
             int rc = ops->finish(ctx, j, p, &r, err);
-            *ran += rc >= 0;
-            *failed += rc == 1;
+            st->ran += rc >= 0;
+            st->failed += rc == 1;
+            st->cpu += p > 0 ? r.cpu_seconds : 0;
             broken |= rc < 0;
             running[k] = running[--nrun];
             ended = 1;
@@ -98,6 +108,7 @@ int g_queue_run(g_job *jobs, size_t n, int max_jobs, const g_queue_ops *ops, voi
         if (!ended && nrun > 0)
             g_run_nap();
     }
+    st->wall += now() - t0;
     free(running);
     free(order);
     return broken ? -1 : 0;

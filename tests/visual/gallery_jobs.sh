@@ -24,6 +24,8 @@ cat "$work/one.txt" "$work/two.txt"
 order=$(sed -n 's/^gallery: \([a-z_]*\): [0-9.]* s, .*/\1/p' "$work/one.txt" | tr '\n' ' ')
 [ "$order" = "two_disks frame_options revolve demo " ] ||
   { echo "FAIL: --jobs 1 ran them in the order '$order', not costliest first"; fail=1; }
+grep -q '^gallery: 4 runs: [0-9.]* s of processor time in [0-9.]* s, up to 2 at once$' "$work/two.txt" ||
+  { echo "FAIL: no line with the runs' processor and wall time"; fail=1; }
 n=0
 for m in "$work"/one/g/*/meta.json; do
   d=${m%/meta.json}; name=${d##*/}; n=$((n + 1))
