@@ -57,6 +57,7 @@ static int take(int argc, char **argv, int *i, const char *name, const char **ou
 
 static int parse_args(int argc, char **argv, g_options *o)
 {
+    int jobs_given = 0;
     for (int i = 0; i < argc; i++) {
         const char *a = argv[i], *set = NULL;
         int r;
@@ -83,6 +84,7 @@ static int parse_args(int argc, char **argv, g_options *o)
             if (*end || n < 1 || n > 64)
                 return usage_error("--jobs needs a whole number from 1 to 64 (got '%s')", set);
             o->jobs = (int)n;
+            jobs_given = 1;
         } else if ((r = take(argc, argv, &i, "--set", &set))) {
             if (r < 0)
                 return -1;
@@ -112,6 +114,9 @@ static int parse_args(int argc, char **argv, g_options *o)
         return usage_error("%s", "--check, --compare and --update-baselines exclude each other");
     if (o->force && (o->check || o->compare || o->update))
         return usage_error("%s", "--force is for rendering the gallery only");
+    if (jobs_given && (o->check || o->compare || o->update))
+        return usage_error("%s", "--jobs is for rendering the gallery only (--check, --compare "
+                                 "and --update-baselines run one figure at a time)");
     if (o->nsets && !o->compare)
         return usage_error("%s", "--set is for --compare only (a gallery figure is what "
                                  "its script makes)");
