@@ -16,7 +16,8 @@
 static const char usage_text[] =
     "usage: lamina gallery [--only PATTERN] [--force] [--heavy] [--check] [--compare]\n"
     "                      [--update-baselines] [--scripts DIR] [--gallery DIR]\n"
-    "                      [--baselines DIR] [--work DIR] [--set name=value] [--quiet]\n"
+    "                      [--baselines DIR] [--work DIR] [--set name=value] [--jobs N]\n"
+    "                      [--timeout S] [--quiet]\n"
     "  (no mode)           render the stale scripts/paper/*.lua into gallery/, write the index\n"
     "  --check             verify gallery/ against the scripts, running nothing\n"
     "  --compare           visual regression: render small candidates into --work and\n"
@@ -30,6 +31,8 @@ static const char usage_text[] =
     "  --baselines DIR     the baseline images (tests/visual/baselines)\n"
     "  --work DIR          candidates and failure reports (out/visual)\n"
     "  --set name=value    passed to every run (--compare only; for negative controls)\n"
+    "  --jobs N            figures rendered at once, the longest first (the cores online)\n"
+    "  --timeout S         each figure's time limit in seconds (1800)\n"
     "See docs/gallery.md.\n";
 
 static int usage_error(const char *fmt, const char *arg)
@@ -54,6 +57,7 @@ static int take(int argc, char **argv, int *i, const char *name, const char **ou
 
 static int parse_args(int argc, char **argv, g_options *o)
 {
+    int jobs_given = 0;
     for (int i = 0; i < argc; i++) {
         const char *a = argv[i], *set = NULL;
         int r;
@@ -72,6 +76,15 @@ static int parse_args(int argc, char **argv, g_options *o)
             if (*end || !(t >= 1 && t <= 604800))
                 return usage_error("--timeout needs seconds from 1 to 604800 (got '%s')", set);
             g_run_set_limit(t);
+        } else if ((r = take(argc, argv, &i, "--jobs", &set))) {
+            if (r < 0)
+                return -1;
+            char *end;
+            long n = strtol(set, &end, 10);
+            if (*end || n < 1 || n > 64)
+                return usage_error("--jobs needs a whole number from 1 to 64 (got '%s')", set);
+            o->jobs = (int)n;
+            jobs_given = 1;
         } else if ((r = take(argc, argv, &i, "--set", &set))) {
             if (r < 0)
                 return -1;
@@ -101,6 +114,9 @@ static int parse_args(int argc, char **argv, g_options *o)
         return usage_error("%s", "--check, --compare and --update-baselines exclude each other");
     if (o->force && (o->check || o->compare || o->update))
         return usage_error("%s", "--force is for rendering the gallery only");
+    if (jobs_given && (o->check || o->compare || o->update))
+        return usage_error("%s", "--jobs is for rendering the gallery only (--check, --compare "
+                                 "and --update-baselines run one figure at a time)");
     if (o->nsets && !o->compare)
         return usage_error("%s", "--set is for --compare only (a gallery figure is what "
                                  "its script makes)");
@@ -144,7 +160,8 @@ static int write_meta(const char *path, const g_script *s, const g_run_result *r
     put_opt_string(f, "version", LAMINA_VERSION);
     put_opt_string(f, "script_hash", s->script_hash);
     put_opt_string(f, "hash", s->hash);
-    fprintf(f, "  \"status\": %d,\n  \"seconds\": %.3f,\n", r->status, r->seconds);
+    fprintf(f, "  \"status\": %d,\n  \"seconds\": %.3f,\n  \"cpu_seconds\": %.3f,\n", r->status,
+            r->seconds, r->cpu_seconds);
     put_opt_string(f, "key_image", key);
     put_opt_string(f, "thumb", has_thumb ? G_THUMB : NULL);
     put_strs(f, "images", images);
@@ -205,9 +222,36 @@ static int refresh_page(const g_options *o, const g_script *s)
     return rc;
 }
 
-/* 0 rendered, 1 the run failed, -1 the gallery could not be written. */
-static int render(const g_options *o, const g_script *s)
+/* The run of one figure started (gallery_queue.c): 0, or -1 (the gallery
+ * could not be written) with the error printed. */
+static int render_start(void *ctx, g_job *j)
 {
+    const g_options *o = ctx;
+    const g_script *s = j->s;
+    char err[1024];
+    char *dir = g_fmt("%s/%s", o->gallery, s->stem);
+    char *report = g_fmt("%s/%s", dir, G_REPORT);
+    char *log = g_fmt("%s/%s", dir, G_LOG);
+    /* a fresh folder: a frame the script no longer writes must not linger */
+    int rc = g_clear_dir(dir, err, sizeof err) != 0 || g_mkdirs(dir, err, sizeof err) != 0 ||
+                     g_run_start(s, dir, report, log, NULL, 0, &j->child, err, sizeof err) != 0
+                 ? -1
+                 : 0;
+    if (rc < 0)
+        fprintf(stderr, "lamina gallery: %s: %s\n", s->stem, err);
+    free(log);
+    free(report);
+    free(dir);
+    return rc;
+}
+
+/* The figure's run ended: its thumbnail, meta.json and page. 0 rendered,
+ * 1 the run failed, -1 the gallery could not be written. */
+static int render_finish(void *ctx, g_job *j, int poll_rc, const g_run_result *rr,
+                         const char *run_err)
+{
+    const g_options *o = ctx;
+    const g_script *s = j->s;
     char err[1024];
     char *dir = g_fmt("%s/%s", o->gallery, s->stem);
     char *report = g_fmt("%s/%s", dir, G_REPORT);
@@ -216,12 +260,10 @@ static int render(const g_options *o, const g_script *s)
     char *thumb = g_fmt("%s/%s", dir, G_THUMB);
     g_strs images = { 0 }, data = { 0 };
     lu_json *rep = NULL;
-    g_run_result r = { 0 };
+    g_run_result r = *rr;
     int rc = -1;
-    /* a fresh folder: a frame the script no longer writes must not linger */
-    if (g_clear_dir(dir, err, sizeof err) != 0 || g_mkdirs(dir, err, sizeof err) != 0 ||
-        g_run(s, dir, report, log, NULL, 0, &r, err, sizeof err) != 0 ||
-        g_outputs(dir, &images, &data, err, sizeof err) != 0)
+    snprintf(err, sizeof err, "%s", run_err ? run_err : "");
+    if (poll_rc < 0 || g_outputs(dir, &images, &data, err, sizeof err) != 0)
         goto done;
     const char *key = r.status == 0 ? g_key_image(s, &images) : NULL;
     if (key) {
@@ -296,8 +338,9 @@ static int render_all(const g_options *o)
         g_scripts_free(&chosen);
         return 2;
     }
-    size_t ran = 0, fresh = 0, failed = 0, heavy = 0;
+    size_t ran = 0, fresh = 0, failed = 0, heavy = 0, njobs = 0;
     int broken = 0;
+    g_job *jobs = g_alloc((chosen.n ? chosen.n : 1) * sizeof *jobs);
     for (size_t i = 0; i < chosen.n && !broken; i++) {
         const g_script *s = &chosen.v[i];
         if (!s->h.title || !s->h.source || !s->h.look)
@@ -328,11 +371,23 @@ static int render_all(const g_options *o)
             broken = refresh_page(o, s) != 0;
             continue;
         }
-        int rc = render(o, s);
-        ran += rc >= 0;
-        failed += rc == 1;
-        broken = rc < 0;
+        jobs[njobs].s = s;
+        char *meta = g_fmt("%s/%s/%s", o->gallery, s->stem, G_META);
+        jobs[njobs++].cost = g_last_cost(meta);   /* before its folder is cleared */
+        free(meta);
     }
+    /* the stale figures, several at once (gallery_queue.c) */
+    if (!broken && njobs) {
+        static const g_queue_ops ops = { render_start, render_finish };
+        g_queue_stats st = { 0 };
+        broken = g_queue_run(jobs, njobs, o->jobs, &ops, (void *)o, &st) != 0;
+        ran += st.ran;
+        failed += st.failed;
+        if (!o->quiet)
+            printf("gallery: %zu run%s: %.1f s of processor time in %.1f s, up to %d at once\n",
+                   st.ran, st.ran == 1 ? "" : "s", st.cpu, st.wall, o->jobs);
+    }
+    free(jobs);
     if (!broken && g_write_index(o, &all, err, sizeof err) != 0) {
         fprintf(stderr, "lamina gallery: %s\n", err);
         broken = 1;
@@ -354,6 +409,7 @@ int cmd_gallery(int argc, char **argv)
     o.gallery = "gallery";
     o.baselines = "tests/visual/baselines";
     o.work = "out/visual";
+    o.jobs = g_default_jobs();
     o.sets = calloc((size_t)argc + 1, sizeof *o.sets);
     if (!o.sets)
         return 2;

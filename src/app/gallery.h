@@ -5,6 +5,7 @@
  *   gallery_json.c    reading (lu_json_parse) and writing meta.json, report.json
  *   gallery_script.c  finding the scripts, their header comment, their hash
  *   gallery_run.c     one script as a `lamina run` subprocess, timed
+ *   gallery_queue.c   several figures' runs at once, the longest first
  *   gallery_thumb.c   box-filtered thumbnails
  *   gallery_index.c   the index (README.md, index.html) and the figure pages
  *   gallery_check.c   --check: the gallery agrees with the scripts
@@ -41,6 +42,7 @@ typedef struct g_options {
     const char *only;           /* --only PATTERN (a glob on the script's stem) */
     int force, check, compare, update, quiet;
     int heavy;                  /* --heavy: render the pages marked heavy too */
+    int jobs;                   /* --jobs N: figures run at once (the cores online) */
     const char **sets;          /* --set name=value, for --compare */
     int nsets;
 } g_options;
@@ -134,6 +136,7 @@ void g_visual_sets(const g_script *s, g_strs *out);
 typedef struct g_run_result {
     int status;         /* lamina run's exit status; 128+N killed by signal N */
     double seconds;     /* wall-clock */
+    double cpu_seconds; /* the run's processor time (user + system, all its threads) */
     int timed_out;      /* stopped after the time limit (g_run_set_limit) */
 } g_run_result;
 
@@ -147,8 +150,60 @@ double g_run_limit(void);
  * with stdout and stderr into log. */
 int g_run(const g_script *s, const char *out, const char *report, const char *log,
           const char *const *sets, int nsets, g_run_result *r, char *err, size_t errlen);
+/* The same in two halves, so that several figures can run at once
+ * (gallery_queue.c): g_run_start forks the run; g_run_poll returns 0 while
+ * it runs (sending the time limit's signals when due), 1 when it ended
+ * (r filled), -1 on an error. g_run_nap sleeps between polls (20 ms). */
+typedef struct g_child {
+    int pid;
+    double t0;
+    int sent;           /* 0, 1 after SIGTERM, 2 after SIGKILL */
+} g_child;
+int g_run_start(const g_script *s, const char *out, const char *report, const char *log,
+                const char *const *sets, int nsets, g_child *c, char *err, size_t errlen);
+int g_run_poll(g_child *c, g_run_result *r, char *err, size_t errlen);
+void g_run_nap(void);
 /* The last few lines of a log, to stderr, indented. */
 void g_show_log_tail(const char *log, int lines);
+
+/* ---- gallery_queue.c ------------------------------------------------- */
+
+/* Figures rendered at once, longest first (LPT: the longest run starts
+ * first so that it does not start last and end alone); the light ones
+ * fill the other cores meanwhile. Each run's state depends on its
+ * script's thread count only (docs/design.md, "Engine"), never on what
+ * else runs, so the pages are the same whatever the order. */
+typedef struct g_job {
+    const g_script *s;
+    double cost;        /* the last run's CPU seconds (g_last_cost); < 0 unknown */
+    g_child child;
+} g_job;
+
+typedef struct g_queue_ops {
+    /* 0: started (j->child runs); 1: nothing to wait for (it failed at
+     * once: counted as failed); -1: the gallery cannot be written */
+    int (*start)(void *ctx, g_job *j);
+    /* the run ended (poll_rc 1, r filled) or could not be waited for
+     * (poll_rc -1, err): 0 rendered, 1 the run failed, -1 broken */
+    int (*finish)(void *ctx, g_job *j, int poll_rc, const g_run_result *r, const char *err);
+} g_queue_ops;
+
+/* The figure's last run's cost from its meta.json: "cpu_seconds", else
+ * "seconds" (older pages); -1 when there is none. */
+double g_last_cost(const char *meta_path);
+/* The default of --jobs: the processors online (1 if unknown). */
+int g_default_jobs(void);
+typedef struct g_queue_stats {
+    size_t ran, failed;     /* runs ended, of which failed */
+    double cpu;             /* their processor time, summed */
+    double wall;            /* from the first start to the last end */
+} g_queue_stats;
+/* Runs the n jobs, at most max_jobs at once, the costliest first (unknown
+ * cost first of all; ties in the given order), counting into st; after a
+ * -1 (the gallery cannot be written) starts no more, waits for the running
+ * ones, and returns -1; else 0. */
+int g_queue_run(g_job *jobs, size_t n, int max_jobs, const g_queue_ops *ops, void *ctx,
+                g_queue_stats *st);
 
 /* ---- gallery_thumb.c ------------------------------------------------- */
 

@@ -4,6 +4,8 @@
  * crashes takes only its own figure down, its output goes to its own log,
  * and what runs is exactly what a person gets from `lamina run`. The binary
  * is /proc/self/exe, this very program, whatever the PATH says. */
+/* wait4(2), a child's own processor time (BSD and Linux; not in POSIX) */
+#define _DEFAULT_SOURCE
 #include "gallery.h"
 
 #include <errno.h>
@@ -11,6 +13,7 @@
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -34,8 +37,8 @@ double g_run_limit(void)
     return run_limit;
 }
 
-int g_run(const g_script *s, const char *out, const char *report, const char *log,
-          const char *const *sets, int nsets, g_run_result *r, char *err, size_t errlen)
+int g_run_start(const g_script *s, const char *out, const char *report, const char *log,
+                const char *const *sets, int nsets, g_child *c, char *err, size_t errlen)
 {
     /* everything the child needs is built before fork: after it, the child
      * may only call async-signal-safe functions */
@@ -66,7 +69,8 @@ int g_run(const g_script *s, const char *out, const char *report, const char *lo
         return -1;
     }
     fflush(NULL);   /* or the child would flush our buffered output again */
-    double t0 = now();
+    c->t0 = now();
+    c->sent = 0;
     pid_t pid = fork();
     if (pid == 0) {
         dup2(fd, STDOUT_FILENO);
@@ -85,35 +89,62 @@ int g_run(const g_script *s, const char *out, const char *report, const char *lo
         snprintf(err, errlen, "cannot start a process: %s", strerror(e));
         return -1;
     }
+    c->pid = (int)pid;
+    return 0;
+}
+
+int g_run_poll(g_child *c, g_run_result *r, char *err, size_t errlen)
+{
     /* a figure has run_limit seconds: then SIGTERM (lamina run stops at a
      * step boundary and writes what it recorded), and SIGKILL 10 s later
      * for a script stuck where no step boundary comes */
     int status;
-    int sent = 0;
-    r->timed_out = 0;
-    for (;;) {
-        pid_t got = waitpid(pid, &status, WNOHANG);
-        if (got == pid) break;
-        if (got < 0 && errno != EINTR) {
-            snprintf(err, errlen, "cannot wait for the run: %s", strerror(errno));
-            return -1;
-        }
-        double t = now() - t0;
-        if (!sent && t > run_limit) {
-            kill(pid, SIGTERM);
-            sent = 1;
-            r->timed_out = 1;
-        } else if (sent == 1 && t > run_limit + 10) {
-            kill(pid, SIGKILL);
-            sent = 2;
-        }
-        struct timespec nap = {0, 20 * 1000 * 1000};
-        nanosleep(&nap, NULL);
+    struct rusage ru;
+    pid_t got = wait4((pid_t)c->pid, &status, WNOHANG, &ru);
+    if (got < 0 && errno != EINTR) {
+        snprintf(err, errlen, "cannot wait for the run: %s", strerror(errno));
+        return -1;
     }
-    r->seconds = now() - t0;
+    if (got != (pid_t)c->pid) {
+        double t = now() - c->t0;
+        if (!c->sent && t > run_limit) {
+            kill((pid_t)c->pid, SIGTERM);
+            c->sent = 1;
+        } else if (c->sent == 1 && t > run_limit + 10) {
+            kill((pid_t)c->pid, SIGKILL);
+            c->sent = 2;
+        }
+        return 0;
+    }
+    r->seconds = now() - c->t0;
+    /* the child's own processor time (its threads', not other figures'):
+     * what the queue orders the next run by, whatever the load was */
+    r->cpu_seconds = (double)ru.ru_utime.tv_sec + 1e-6 * (double)ru.ru_utime.tv_usec +
+                     (double)ru.ru_stime.tv_sec + 1e-6 * (double)ru.ru_stime.tv_usec;
+    r->timed_out = c->sent > 0;
     r->status = WIFEXITED(status) ? WEXITSTATUS(status)
                                   : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
-    return 0;
+    return 1;
+}
+
+void g_run_nap(void)
+{
+    struct timespec nap = {0, 20 * 1000 * 1000};
+    nanosleep(&nap, NULL);
+}
+
+int g_run(const g_script *s, const char *out, const char *report, const char *log,
+          const char *const *sets, int nsets, g_run_result *r, char *err, size_t errlen)
+{
+    g_child c;
+    if (g_run_start(s, out, report, log, sets, nsets, &c, err, errlen) != 0)
+        return -1;
+    for (;;) {
+        int done = g_run_poll(&c, r, err, errlen);
+        if (done)
+            return done < 0 ? -1 : 0;
+        g_run_nap();
+    }
 }
 
 void g_show_log_tail(const char *log, int lines)

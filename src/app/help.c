@@ -31,9 +31,10 @@ static const command_help commands[] = {
      "lamina gallery [--only PATTERN] [--force] [--check] [--compare]\n"
      "               [--update-baselines] [--scripts DIR] [--gallery DIR]\n"
      "               [--baselines DIR] [--work DIR] [--set name=value] [--quiet]\n"
-     "               [--timeout S]",
+     "               [--timeout S] [--jobs N]",
      "render scripts/paper/*.lua into gallery/; --timeout is each figure's time\n"
-     "limit, default 1800 s (docs/gallery.md)"},
+     "limit, default 1800 s; --jobs N figures at once, the costliest first (default:\n"
+     "the cores online; docs/gallery.md)"},
     {"repl",
      "lamina repl [SCRIPT.lua] [--set name=value ...] [--quiet]",
      "a Lua prompt over the script's simulation, paused before its first sim:run\n"
