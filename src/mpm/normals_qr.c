@@ -8,8 +8,9 @@
  *  1. Householder QR with column pivoting (Businger-Golub): at step k the
  *     remaining column of largest norm is moved to position k, so |R_kk|
  *     does not increase and the numerical rank r is the number of
- *     |R_kk| > LM_LSQ_RANK_TOL |R_00|. (normals_qr_pivot.c: the column
- *     operations four columns to a vector, the same bits as column loops.)
+ *     |R_kk| > LM_LSQ_RANK_TOL |R_00|. (From 16 columns up in
+ *     normals_qr_pivot.c: the column operations four columns to a vector,
+ *     the same bits as the column loops here.)
  *  2. r = n: back substitution, R x = Q^T b.
  *  3. r < n (rank deficient, or fewer rows than unknowns): a complete
  *     orthogonal decomposition. Householder reflections applied from the
@@ -128,6 +129,183 @@ static double householder(double *u, int len, int stride, double *alpha)
     return 2.0 / (w0 * w0 + tail);
 }
 
+/* ---- QR with column pivoting ------------------------------------------------ */
+
+/* Sums over i = k .. m-1 for the columns j0 .. n-1 of C (column j at
+ * C + j m): with u, acc_j = sum u_i C_ij; without, acc_j = sum C_ij^2.
+ * Each column's sum adds its terms in the order i = k .. m-1, as a plain
+ * loop would, so the sums are bit for bit the same; four (then two)
+ * columns go together so that four running sums are in flight instead of
+ * one chain of dependent additions. */
+static void column_sums(int m, int n, int k, int j0, const double *C,
+                        const double *u, double *acc)
+{
+    int j = j0;
+    for (; j + 4 <= n; j += 4) {
+        const double *c0 = C + (size_t)j * m, *c1 = c0 + m, *c2 = c1 + m, *c3 = c2 + m;
+        double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+        if (u)
+            for (int i = k; i < m; i++) {
+                s0 += u[i] * c0[i];
+                s1 += u[i] * c1[i];
+                s2 += u[i] * c2[i];
+                s3 += u[i] * c3[i];
+            }
+        else
+            for (int i = k; i < m; i++) {
+                s0 += c0[i] * c0[i];
+                s1 += c1[i] * c1[i];
+                s2 += c2[i] * c2[i];
+                s3 += c3[i] * c3[i];
+            }
+        acc[j] = s0;
+        acc[j + 1] = s1;
+        acc[j + 2] = s2;
+        acc[j + 3] = s3;
+    }
+    for (; j + 2 <= n; j += 2) {
+        const double *c0 = C + (size_t)j * m, *c1 = c0 + m;
+        double s0 = 0, s1 = 0;
+        if (u)
+            for (int i = k; i < m; i++) {
+                s0 += u[i] * c0[i];
+                s1 += u[i] * c1[i];
+            }
+        else
+            for (int i = k; i < m; i++) {
+                s0 += c0[i] * c0[i];
+                s1 += c1[i] * c1[i];
+            }
+        acc[j] = s0;
+        acc[j + 1] = s1;
+    }
+    for (; j < n; j++) {
+        const double *c0 = C + (size_t)j * m;
+        double s0 = 0;
+        for (int i = k; i < m; i++)
+            s0 += u ? u[i] * c0[i] : c0[i] * c0[i];
+        acc[j] = s0;
+    }
+}
+
+/* The reflection's update of the columns j0 .. n-1, c_j -= d_j w over rows
+ * k .. m-1 (d_j = tau w.c_j in d), and with it the next step's pivot norms:
+ * nrm_j = sum over i = k+1 .. m-1 of the updated c_ij^2. That sum is the one
+ * the next step would form - the same terms in the same order - taken while
+ * the values are at hand instead of in a pass of its own; four columns go
+ * together so that their sums do not wait on one another. */
+static void reflect(int m, int n, int k, int j0, double *C, const double *restrict w,
+                    const double *d, double *nrm)
+{
+    int j = j0;
+    for (; j + 4 <= n; j += 4) {
+        double *restrict c0 = C + (size_t)j * m, *restrict c1 = c0 + m;
+        double *restrict c2 = c1 + m, *restrict c3 = c2 + m;
+        double d0 = d[j], d1 = d[j + 1], d2 = d[j + 2], d3 = d[j + 3];
+        double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+        c0[k] -= d0 * w[k];
+        c1[k] -= d1 * w[k];
+        c2[k] -= d2 * w[k];
+        c3[k] -= d3 * w[k];
+        for (int i = k + 1; i < m; i++) {
+            double wi = w[i];
+            double v0 = c0[i] - d0 * wi, v1 = c1[i] - d1 * wi;
+            double v2 = c2[i] - d2 * wi, v3 = c3[i] - d3 * wi;
+            c0[i] = v0;
+            c1[i] = v1;
+            c2[i] = v2;
+            c3[i] = v3;
+            s0 += v0 * v0;
+            s1 += v1 * v1;
+            s2 += v2 * v2;
+            s3 += v3 * v3;
+        }
+        nrm[j] = s0;
+        nrm[j + 1] = s1;
+        nrm[j + 2] = s2;
+        nrm[j + 3] = s3;
+    }
+    for (; j < n; j++) {
+        double *restrict c0 = C + (size_t)j * m, d0 = d[j], s0 = 0;
+        c0[k] -= d0 * w[k];
+        for (int i = k + 1; i < m; i++) {
+            double v0 = c0[i] - d0 * w[i];
+            c0[i] = v0;
+            s0 += v0 * v0;
+        }
+        nrm[j] = s0;
+    }
+}
+
+/* Step 1: A P = Q R in place (R in the upper triangle, the Householder
+ * vectors are not kept: Q^T is applied to b on the way). C (m n) holds A's
+ * columns apart while the reflections work on them, acc n sums.
+ *
+ * Why the columns apart: every operation here runs down columns, which in
+ * the row-major A are n apart; one column after another in C they are
+ * contiguous and a pivot swap moves one block. The arithmetic - each
+ * element's operations and their order - is that of the plain column loops
+ * on A, so R, Q^T b and the permutation are bit for bit the same. (The QR
+ * was half the cost of the per-step normals, docs/performance.md.) */
+static void qr_pivoted(int m, int n, double *A, double *b, int *perm,
+                       double *C, double *acc, double *nrm)
+{
+    for (int j = 0; j < n; j++)
+        for (int i = 0; i < m; i++)
+            C[(size_t)j * m + i] = AT(A, i, j, n);
+    int kmax = m < n ? m : n, have_norms = 0;
+    for (int k = 0; k < kmax; k++) {
+        /* the pivot: the remaining column of largest norm (first of ties);
+         * the last reflection has left the norms in nrm */
+        if (!have_norms)
+            column_sums(m, n, k, k, C, NULL, nrm);
+        int best = k;
+        double bn = -1;
+        for (int j = k; j < n; j++)
+            if (nrm[j] > bn) {
+                bn = nrm[j];
+                best = j;
+            }
+        double *ck = C + (size_t)k * m;
+        if (best != k) {
+            double *cb = C + (size_t)best * m;
+            for (int i = 0; i < m; i++) {
+                double t = ck[i];
+                ck[i] = cb[i];
+                cb[i] = t;
+            }
+            int t = perm[k];
+            perm[k] = perm[best];
+            perm[best] = t;
+        }
+        double alpha;
+        double tau = householder(ck + k, m - k, 1, &alpha);
+        if (tau != 0.0) {
+            /* H = I - tau w w^T (w in ck[k..m)) on the columns right of k
+             * and on b: d_j = tau w.c_j, then c_j -= d_j w */
+            column_sums(m, n, k, k + 1, C, ck, acc);
+            double db = 0;
+            for (int i = k; i < m; i++)
+                db += ck[i] * b[i];
+            for (int j = k + 1; j < n; j++)
+                acc[j] *= tau;
+            reflect(m, n, k, k + 1, C, ck, acc, nrm);
+            db *= tau;
+            for (int i = k; i < m; i++)
+                b[i] -= db * ck[i];
+        }
+        have_norms = tau != 0.0;
+        ck[k] = alpha;
+        for (int i = k + 1; i < m; i++)
+            ck[i] = 0.0;
+    }
+    /* R back into A's leading rows, all that is read after (the rows
+     * below are zero in R and A is scratch to the caller) */
+    for (int i = 0; i < kmax; i++)
+        for (int j = 0; j < n; j++)
+            AT(A, i, j, n) = C[(size_t)j * m + i];
+}
+
 /* Back substitution with the r x r upper triangle of R (leading dim n). */
 static void back_substitute(int r, int n, const double *R, const double *c,
                             double *y)
@@ -208,8 +386,16 @@ static lm_nerr qr_solve(int m, int n, double *A, double *b, double *x,
     int kmax = m < n ? m : n;
     for (int j = 0; j < n; j++)
         perm[j] = j;
-    /* step 1 (normals_qr_pivot.c), C its scratch */
-    lm_qr_pivoted(m, n, A, b, perm, C);
+    /* step 1: the 3D quadratic fits' 27 columns four to a vector
+     * (normals_qr_pivot.c); fewer columns (2D, linear) column by column
+     * here, where the vectors' padding and start-up cost more than they
+     * save (9 columns: the same time with AVX2, 15-20 % more without; 4:
+     * 20 % more). The same bits either way. sv and y: scratch until the
+     * solve (then y starts from 0) */
+    if (n >= LM_QR_VECTOR_COLS)
+        lm_qr_pivoted(m, n, A, b, perm, C);
+    else
+        qr_pivoted(m, n, A, b, perm, C, sv, y);
     for (int j = 0; j < n; j++)
         y[j] = 0.0;
 

@@ -107,6 +107,8 @@ lm_nerr lm_lsq_qr_ws(int m, int n, double *A, double *b, double *x,
  * pivoting), b becomes Q^T b, perm (0 .. n-1 on entry) the column order P;
  * work holds LM_QR_WORK(m, n) doubles of scratch. normals_qr_pivot.c. */
 #define LM_QR_LD(n) (((n) + 3) / 4 * 4)
+/* normals_qr.c calls it for systems of at least this many columns */
+#define LM_QR_VECTOR_COLS 16
 #define LM_QR_WORK(m, n) ((size_t)(m) * (LM_QR_LD(n) + 1) + 2 * (size_t)LM_QR_LD(n))
 void lm_qr_pivoted(int m, int n, double *A, double *b, int *perm, double *work);
 /* The instruction set lm_qr_pivoted uses: 0 the portable build's, 1 AVX2
