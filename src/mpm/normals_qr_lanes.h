@@ -24,12 +24,25 @@ static QR_INLINE void QR_NAME(st)(double *p, QR_V v)
  * Lanes left of the columns asked for (a first vector that starts before
  * them) are summed too and not read by the caller. */
 static QR_INLINE void QR_NAME(sums_pass)(int G, int m, int L, int k, int c0, const double *A,
-                                         const double *u, double *acc)
+                                         const double *u, double *acc, const double *b,
+                                         double *ub)
 {
     QR_V s[QR_G];
     for (int g = 0; g < G; g++)
         s[g] = (QR_V){0};
-    if (u)
+    if (u && b) {
+        /* and u . b, its terms in the same order, a chain of its own that
+         * runs beside the vectors instead of after them */
+        double t = 0;
+        for (int i = k; i < m; i++) {
+            const double *r = RowAt(A, i, L) + c0;
+            double ui = u[i];
+            t += ui * b[i];
+            for (int g = 0; g < G; g++)
+                s[g] += ui * QR_NAME(ld)(r + QR_W * g);
+        }
+        *ub = t;
+    } else if (u)
         for (int i = k; i < m; i++) {
             const double *r = RowAt(A, i, L) + c0;
             double ui = u[i];
@@ -49,24 +62,33 @@ static QR_INLINE void QR_NAME(sums_pass)(int G, int m, int L, int k, int c0, con
 }
 
 /* acc[j] for j = j0 .. L-1 (and the lanes of j0's vector left of it):
- * QR_G vectors to a pass down the rows, then the rest. */
+ * QR_G vectors to a pass down the rows, then the rest; with b (u given,
+ * j0 < L), *ub = u . b in the first pass. */
 static QR_INLINE void QR_NAME(col_sums)(int m, int L, int k, int j0, const double *A,
-                                        const double *u, double *acc)
+                                        const double *u, double *acc, const double *b,
+                                        double *ub)
 {
     int c = j0 & ~(QR_W - 1);
-    for (; c + QR_W * QR_G <= L; c += QR_W * QR_G)
-        QR_NAME(sums_pass)(QR_G, m, L, k, c, A, u, acc);
+    for (; c + QR_W * QR_G <= L; c += QR_W * QR_G, b = NULL)
+        QR_NAME(sums_pass)(QR_G, m, L, k, c, A, u, acc, b, ub);
     switch ((L - c) / QR_W) {
 #if QR_G > 4
-    case 7: QR_NAME(sums_pass)(7, m, L, k, c, A, u, acc); break;
-    case 6: QR_NAME(sums_pass)(6, m, L, k, c, A, u, acc); break;
-    case 5: QR_NAME(sums_pass)(5, m, L, k, c, A, u, acc); break;
-    case 4: QR_NAME(sums_pass)(4, m, L, k, c, A, u, acc); break;
+    case 7: QR_NAME(sums_pass)(7, m, L, k, c, A, u, acc, b, ub); break;
+    case 6: QR_NAME(sums_pass)(6, m, L, k, c, A, u, acc, b, ub); break;
+    case 5: QR_NAME(sums_pass)(5, m, L, k, c, A, u, acc, b, ub); break;
+    case 4: QR_NAME(sums_pass)(4, m, L, k, c, A, u, acc, b, ub); break;
 #endif
-    case 3: QR_NAME(sums_pass)(3, m, L, k, c, A, u, acc); break;
-    case 2: QR_NAME(sums_pass)(2, m, L, k, c, A, u, acc); break;
-    case 1: QR_NAME(sums_pass)(1, m, L, k, c, A, u, acc); break;
-    default: break;
+    case 3: QR_NAME(sums_pass)(3, m, L, k, c, A, u, acc, b, ub); break;
+    case 2: QR_NAME(sums_pass)(2, m, L, k, c, A, u, acc, b, ub); break;
+    case 1: QR_NAME(sums_pass)(1, m, L, k, c, A, u, acc, b, ub); break;
+    default:
+        if (b) {   /* no column left to pass over (j0 = L): u . b alone */
+            double t = 0;
+            for (int i = k; i < m; i++)
+                t += u[i] * b[i];
+            *ub = t;
+        }
+        break;
     }
 }
 
@@ -132,8 +154,9 @@ static QR_INLINE void QR_NAME(reflect_rows)(int m, int L, int k, int j0, double 
 }
 
 /* The factorisation of the m x L working copy T (columns n .. L-1 zero:
- * lanes being independent, whatever they come to is never read back). w
- * (m), acc and nrm (L each): scratch. */
+ * lanes being independent, whatever they come to is never read back; so
+ * are rows kmax .. m-1 of R's finished columns). w (m), acc and nrm (L
+ * each): scratch. */
 static QR_INLINE void QR_NAME(factor)(int m, int n, double *T, double *b, int *perm,
                                       double *w, double *acc, double *nrm)
 {
@@ -143,7 +166,7 @@ static QR_INLINE void QR_NAME(factor)(int m, int n, double *T, double *b, int *p
         /* the pivot: the remaining column of largest norm (first of ties);
          * the last reflection has left the norms in nrm */
         if (!have_norms)
-            QR_NAME(col_sums)(m, L, k, k, T, NULL, nrm);
+            QR_NAME(col_sums)(m, L, k, k, T, NULL, nrm, NULL, NULL);
         int best = k;
         double bn = -1;
         for (int j = k; j < n; j++)
@@ -161,18 +184,26 @@ static QR_INLINE void QR_NAME(factor)(int m, int n, double *T, double *b, int *p
             perm[k] = perm[best];
             perm[best] = t;
         }
-        /* column k's rows k .. m-1, contiguous, become the reflection's w */
-        for (int i = k; i < m; i++)
-            w[i] = RowAt(T, i, L)[k];
+        /* column k's rows k .. m-1, contiguous, become the reflection's w,
+         * with the sum of the squares below row k (householder()'s, in
+         * its order) taken on the way; R's column k below the diagonal is
+         * zero (rows kmax .. m-1 are not read again: left as they are) */
+        double tail = 0;
+        w[k] = RowAt(T, k, L)[k];
+        for (int i = k + 1; i < m; i++) {
+            double *t = RowAt(T, i, L) + k, x = *t;
+            w[i] = x;
+            tail += x * x;
+            if (i < kmax)
+                *t = 0.0;
+        }
         double alpha;
-        double tau = householder(w + k, m - k, &alpha);
+        double tau = householder(w + k, tail, &alpha);
         if (tau != 0.0) {
             /* H on the columns right of k and on b: d_j = tau w.c_j, then
              * c_j -= d_j w */
-            QR_NAME(col_sums)(m, L, k, k + 1, T, w, acc);
             double db = 0;
-            for (int i = k; i < m; i++)
-                db += w[i] * b[i];
+            QR_NAME(col_sums)(m, L, k, k + 1, T, w, acc, b, &db);
             for (int j = k + 1; j < L; j++)
                 acc[j] *= tau;
             QR_NAME(reflect_rows)(m, L, k, k + 1, T, w, acc, nrm);
@@ -182,7 +213,5 @@ static QR_INLINE void QR_NAME(factor)(int m, int n, double *T, double *b, int *p
         }
         have_norms = tau != 0.0;
         RowAt(T, k, L)[k] = alpha;
-        for (int i = k + 1; i < m; i++)
-            RowAt(T, i, L)[k] = 0.0;
     }
 }

@@ -50,14 +50,13 @@
  * (the columns n .. L-1 are zero padding). */
 #define RowAt(A, i, L) ((A) + (size_t)(i) * (size_t)(L))
 
-/* The reflection H = I - tau w w^T with H u = alpha e_0 for u (len
- * entries): w overwrites u (w_0 = u_0 - alpha), returns tau; 0 when u is
- * already alpha e_0. (normals_qr.c's, for the contiguous copy here.) */
-static QR_INLINE double householder(double *u, int len, double *alpha)
+/* The reflection H = I - tau w w^T with H u = alpha e_0 for u = (u_0,
+ * ...), tail the sum of its squares after u_0 (the plain loop's, in row
+ * order): w_0 = u_0 - alpha overwrites u_0, returns tau; 0 when u is
+ * already alpha e_0. (normals_qr.c's householder(), its tail summed by the
+ * caller.) */
+static QR_INLINE double householder(double *u, double tail, double *alpha)
 {
-    double tail = 0;
-    for (int i = 1; i < len; i++)
-        tail += u[i] * u[i];
     double u0 = u[0];
     if (tail == 0.0) {
         *alpha = u0;
