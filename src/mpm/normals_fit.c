@@ -321,7 +321,7 @@ lm_nerr lm_nfit_element(const lm_nbox *box, const double *const x[3],
     sc.rows = k + 2 + (o->smooth > 0 ? LM_NSMOOTH_MAXROWS : 0);
     sc.S = malloc(sizeof(double) * sc.rows * LM_NMAX);
     sc.rhs = malloc(sizeof(double) * sc.rows);
-    sc.cols = malloc(sizeof(double) * sc.rows * LM_NMAX);
+    sc.cols = malloc(sizeof(double) * LM_QR_WORK(sc.rows, LM_NMAX));
     sc.smooth = NULL;
     sc.fallbacks = 0;
     lm_nerr e;

@@ -8,7 +8,9 @@
  *  1. Householder QR with column pivoting (Businger-Golub): at step k the
  *     remaining column of largest norm is moved to position k, so |R_kk|
  *     does not increase and the numerical rank r is the number of
- *     |R_kk| > LM_LSQ_RANK_TOL |R_00|.
+ *     |R_kk| > LM_LSQ_RANK_TOL |R_00|. (From 16 columns up in
+ *     normals_qr_pivot.c: the column operations four columns to a vector,
+ *     the same bits as the column loops here.)
  *  2. r = n: back substitution, R x = Q^T b.
  *  3. r < n (rank deficient, or fewer rows than unknowns): a complete
  *     orthogonal decomposition. Householder reflections applied from the
@@ -369,7 +371,7 @@ lm_nerr lm_lsq_qr(int m, int n, double *A, double *b, double *x,
     return lm_lsq_qr_cond(m, n, A, b, x, info, 1);
 }
 
-/* Steps 1-3 in the caller's buffers: perm and y (n), C (m n), sv (n), W
+/* Steps 1-3 in the caller's buffers: perm and y (n), C (LM_QR_WORK), sv (n), W
  * (min(m, n) (1 + n)) and tau (min(m, n)). */
 static lm_nerr qr_solve(int m, int n, double *A, double *b, double *x,
                         lm_lsq_info *info, int want_cond, int *perm, double *C,
@@ -384,8 +386,16 @@ static lm_nerr qr_solve(int m, int n, double *A, double *b, double *x,
     int kmax = m < n ? m : n;
     for (int j = 0; j < n; j++)
         perm[j] = j;
-    /* sv and y: scratch until the solve (then y starts from 0) */
-    qr_pivoted(m, n, A, b, perm, C, sv, y);
+    /* step 1: the 3D quadratic fits' 27 columns four to a vector
+     * (normals_qr_pivot.c); fewer columns (2D, linear) column by column
+     * here, where the vectors' padding and start-up cost more than they
+     * save (9 columns: the same time with AVX2, 15-20 % more without; 4:
+     * 20 % more). The same bits either way. sv and y: scratch until the
+     * solve (then y starts from 0) */
+    if (n >= LM_QR_VECTOR_COLS)
+        lm_qr_pivoted(m, n, A, b, perm, C);
+    else
+        qr_pivoted(m, n, A, b, perm, C, sv, y);
     for (int j = 0; j < n; j++)
         y[j] = 0.0;
 
@@ -429,7 +439,7 @@ lm_nerr lm_lsq_qr_cond(int m, int n, double *A, double *b, double *x,
     int kmax = m < n ? m : n;
     size_t len = (size_t)(1 + n);
     int *perm = malloc(sizeof(int) * (size_t)n);
-    double *C = malloc(sizeof(double) * (size_t)m * (size_t)n);
+    double *C = malloc(sizeof(double) * LM_QR_WORK(m, n));
     double *y = malloc(sizeof(double) * (size_t)n);
     double *sv = malloc(sizeof(double) * (size_t)n);
     double *W = malloc(sizeof(double) * (size_t)kmax * len);

@@ -34,7 +34,7 @@ lm_nerr lm_nwork_reserve(lm_nwork *w, size_t n)
         grow((void **)&w->done, n, sizeof *w->done) ||
         grow((void **)&w->fit.S, rows * LM_NMAX, sizeof *w->fit.S) ||
         grow((void **)&w->fit.rhs, rows, sizeof *w->fit.rhs) ||
-        grow((void **)&w->fit.cols, rows * LM_NMAX, sizeof *w->fit.cols))
+        grow((void **)&w->fit.cols, LM_QR_WORK(rows, LM_NMAX), sizeof *w->fit.cols))
         return LM_NERR_MEMORY;
     if (!w->fit.smooth) {
         /* empty: smooth[1] = 0 says no aspect is kept yet */

@@ -18,8 +18,8 @@ typedef struct lm_nsite {
 } lm_nsite;
 
 /* One fit's scratch (normals_fit.c): the system [S]{phi} = {phi0} of up
- * to `rows` rows of LM_NMAX columns, and as much for the QR's copy of its
- * columns. smooth (NULL: none kept) holds LM_NSMOOTH_CACHE doubles: the
+ * to `rows` rows of LM_NMAX columns, and cols the QR's scratch for as many
+ * rows (LM_QR_WORK(rows, LM_NMAX): its padded copy of S). smooth (NULL: none kept) holds LM_NSMOOTH_CACHE doubles: the
  * curvature rows' own S^T S (weight 1) for the last element aspect the
  * Cholesky fits met, so that it is not rebuilt for every fit. */
 #define LM_NSMOOTH_CACHE (2 + 81)
@@ -97,9 +97,23 @@ int lm_nfit_quadratic_2d_ne(lm_nfit *f, const double *const x[3], const size_t *
  * for each), the two side by side: the same bits as two calls. */
 void lm_nfit_normal2(const lm_nfit *f, const double a[3], const double b[3],
                      double na[3], double nb[3], int bad[2]);
-/* lm_lsq_qr_cond for n <= LM_NMAX with C (m n entries) given: no
- * allocation. */
+/* lm_lsq_qr_cond for n <= LM_NMAX with C (LM_QR_WORK(m, n) entries)
+ * given: no allocation. */
 lm_nerr lm_lsq_qr_ws(int m, int n, double *A, double *b, double *x,
                      lm_lsq_info *info, int want_cond, double *C);
+
+/* Step 1 of the QR solve (normals_qr.c): A (m x n, row-major) becomes R
+ * in its leading min(m, n) rows (A P = Q R, Householder with column
+ * pivoting), b becomes Q^T b, perm (0 .. n-1 on entry) the column order P;
+ * work holds LM_QR_WORK(m, n) doubles of scratch. normals_qr_pivot.c. */
+#define LM_QR_LD(n) (((n) + 3) / 4 * 4)
+/* normals_qr.c calls it for systems of at least this many columns */
+#define LM_QR_VECTOR_COLS 16
+#define LM_QR_WORK(m, n) ((size_t)(m) * (LM_QR_LD(n) + 1) + 2 * (size_t)LM_QR_LD(n))
+void lm_qr_pivoted(int m, int n, double *A, double *b, int *perm, double *work);
+/* The instruction set lm_qr_pivoted uses: 0 the portable build's, 1 AVX2
+ * (only where the processor has it), -1 the processor's best (the
+ * default). The results are the same bits either way; for tests. */
+void lm_qr_pivot_isa(int set);
 
 #endif

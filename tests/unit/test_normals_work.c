@@ -4,6 +4,8 @@
  * stay the same):
  *  - the QR against a plain row-major reference written the way the QR was
  *    before (one column at a time): the same solution, bit for bit;
+ *  - the same on the 3D membranes' 27-column systems, with the portable
+ *    and the AVX2 lanes of normals_qr_pivot.c;
  *  - lm_lsq_qr_ws (stack and caller's buffer) against lm_lsq_qr_cond;
  *  - one workspace reused over membranes of several sizes (growing and
  *    shrinking, every orientation) against a fresh lm_normals_grid;
@@ -11,6 +13,7 @@
  *    against two calls of lm_nfit_normal: the same bits and flags, points
  *    on and a rounding outside the element, flat and NaN fits included. */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -121,7 +124,7 @@ static void test_qr_bits(void)
     unsigned seed = 7;
     int same = 0, tried = 0;
     for (int c = 0; c < 200; c++) {
-        double A[64 * 9], b[64], A1[64 * 9], b1[64], A2[64 * 9], b2[64], C[64 * 9];
+        double A[64 * 9], b[64], A1[64 * 9], b1[64], A2[64 * 9], b2[64], C[LM_QR_WORK(64, 9)];
         double x0[9], x1[9], x2[9];
         int m = fit_like(&seed, 9 + c % 20, c % 3 != 0, A, b);
         memcpy(A1, A, sizeof A);
@@ -142,12 +145,76 @@ static void test_qr_bits(void)
     CHECK(same == tried);
 }
 
+/* Rows like the 3D membranes' fits (sim3_membrane_normals.c, the systems
+ * that made test_sim3_membrane the longest unit test): the 27 triquadratic
+ * functions at k points near a sphere, a random point and the 63 curvature
+ * rows (k = 20 .. 119: m = 84 .. 183 rows), and a few underdetermined
+ * ones without the curvature rows (k < 26). The QR four columns to a
+ * vector (normals_qr_pivot.c) with either instruction set against the
+ * column-by-column reference: the same solution, bit for bit; the two
+ * sets against each other on every system, rank-deficient ones too. */
+static void test_qr_bits_3d(void)
+{
+    unsigned seed = 5;
+    int tried = 0, same = 0, agree = 0;
+    enum { MR = 120 + 1 + LM_NSMOOTH_MAXROWS };
+    static double A[MR * 27], b[MR], Ai[2][MR * 27], bi[2][MR], C[LM_QR_WORK(MR, 27)];
+    lm_nbox box = {3, {0, 0, 0}, {1, 1, 1}};
+    for (int c = 0; c < 60; c++) {
+        int k = c < 50 ? 20 + 2 * c : 5 + 4 * (c - 50) % 21, smooth = c < 50, m = 0;
+        for (int p = 0; p <= k; p++, m++) {
+            /* a point of the sphere of radius 0.8 about (0.5, 0.5, -0.3),
+             * jittered by 1e-3; the last one anywhere in the box */
+            double th = 0.3 + 0.4 * urand(&seed), ph = 1.2 + 0.6 * urand(&seed);
+            double r = 0.8 + 1e-3 * (urand(&seed) - 0.5);
+            double xi[3] = {0.5 + r * sin(th) * cos(ph) + 0.2, 0.5 + r * sin(th) * sin(ph) - 0.2,
+                            -0.3 + r * cos(th) - 0.1};
+            if (p == k)
+                for (int a = 0; a < 3; a++)
+                    xi[a] = urand(&seed);
+            for (int a = 0; a < 3; a++)
+                xi[a] = fmin(1, fmax(0, xi[a]));
+            lm_nbasis_eval(LM_NB_QUADRATIC, 3, xi, A + (size_t)m * 27, NULL);
+            b[m] = p < k;
+        }
+        if (smooth) {
+            int r = lm_nsmooth_rows(LM_NB_QUADRATIC, &box, 2e-3 * sqrt((double)m),
+                                    A + (size_t)m * 27);
+            for (int q = 0; q < r; q++)
+                b[m + q] = 0;
+            m += r;
+        }
+        double x0[27], x[2][27];
+        lm_lsq_info info[2];
+        for (int isa = 0; isa < 2; isa++) {
+            memcpy(Ai[isa], A, sizeof(double) * (size_t)m * 27);
+            memcpy(bi[isa], b, sizeof(double) * (size_t)m);
+            lm_qr_pivot_isa(isa);
+            CHECK(lm_lsq_qr_ws(m, 27, Ai[isa], bi[isa], x[isa], &info[isa], 0, C) ==
+                  LM_NERR_NONE);
+        }
+        lm_qr_pivot_isa(-1);
+        agree += memcmp(x[0], x[1], sizeof x[0]) == 0 && info[0].rank == info[1].rank;
+        if (info[0].rank == 27 && m <= 256) {   /* the reference: full rank, col[256] */
+            ref_qr(m, 27, A, b, x0);
+            tried++;
+            same += memcmp(x0, x[0], sizeof x0) == 0;
+        }
+    }
+    printf("3D fit-like systems: %d of 60 the same bits with both instruction sets; "
+           "%d of %d full-rank ones the same bits as the column-by-column reference\n",
+           agree, same, tried);
+    CHECK(agree == 60);
+    CHECK(tried >= 40);
+    CHECK(same == tried);
+}
+
 /* Underdetermined and rank-deficient systems: the two entry points agree. */
 static void test_qr_ws_deficient(void)
 {
     unsigned seed = 11;
     for (int c = 0; c < 50; c++) {
-        double A[8 * 9], b[8], A1[8 * 9], b1[8], C[8 * 9], x[9], x1[9];
+        double A[8 * 9], b[8], A1[8 * 9], b1[8], C[LM_QR_WORK(8, 9)], x[9], x1[9];
         int m = 3 + c % 6;
         for (int i = 0; i < m; i++) {
             for (int j = 0; j < 9; j++)
@@ -276,6 +343,7 @@ static void test_normal_pair_bits(void)
 int main(void)
 {
     test_qr_bits();
+    test_qr_bits_3d();
     test_qr_ws_deficient();
     test_workspace_reuse();
     test_normal_pair_bits();
