@@ -1,25 +1,36 @@
--- title: Dog-bone at cell 0.05 with the quadratic B-spline: no gas splitting needed
--- source: York, Sulsky & Schreyer 2000 (fluid-membrane), §4.3, Tables III-IV;
---   York's dissertation §6.2, Table 5 (row cell 0.05); a remedy of issue 13
---   (robust numerics), docs/robustness.md "The dog-bone with segment forces"
+-- title: Dog-bone at cell 0.05 with the quadratic B-spline (no gas splitting): positions with pressure contours, and the membrane's stress
+-- source: York, Sulsky & Schreyer 2000 (fluid-membrane), §4.3, Tables III-IV,
+--   and §4.3.2, Fig 12; York's dissertation §6.2, Table 5 (row cell 0.05),
+--   and §6.2.4, Fig 56; a remedy of issue 13 (robust numerics),
+--   docs/robustness.md "The dog-bone with segment forces"
 -- look: the same expansion as the gas_dogbone_superellipse page's finest
 --   row, but with
 --   lamina.sim{basis = "bspline2"} and the papers' continuity density, no
 --   splitting, pure FLIP: the membrane seals (no gas outside at any sample),
---   rings and settles to a quarter circle; r(0) and r(90) converge
+--   rings and settles to a quarter circle; r(0) and r(90) converge.
+--   [F] Fig 12 (fig12_*): the material points at increasing times over the
+--   gas pressure interpolated to the nodes (one colour range for every
+--   frame), the last (t = 4) larger: the slack membrane is pushed out, rings
+--   and settles to a smooth quarter circle, the pressure nearly uniform
+--   inside. [T] Fig 56 (fig56_t4.0): the same at t = 4 beside the membrane
+--   drawn as a band coloured by its tangential stress sigma_t
 -- checks: radius and space-mean pressure at t = 3-4 beside [T] Table 5's
 --   cell-0.05 row (1.394 / 1.396, 29.0), within the two papers' own
---   difference at that cell ([F] Table III: 1.36, 31.7); the hoop stress against p r / t of
---   the same run (ours; [F] Table IV reports 2-5 %); gas outside the membrane
+--   difference at that cell ([F] Table III: 1.36, 31.7); Laplace's law, the
+--   mean hoop stress against p r / t of the same run (ours) within [F]
+--   Table IV's 5 % (it reports 2-5 %); gas outside the membrane
 --   (0). With the papers' bilinear basis this run fails at t = 0.58 without
 --   splitting (gas_dogbone_superellipse page; [T]'s Box 9 deck, on the
 --   gas_dogbone page, needs the B-spline at 0.05 too)
 -- assumed: the set-up of the gas_dogbone_superellipse page (assets/lua/dogbone.lua: its
 --   construction of the shape, gas rho 1, mu 0.2, e 250, 64 ppc; membrane
 --   rho 0.5, E 1e6, nu 0.3, t 0.1, plane stress, one-way, 400 points,
---   initial strain ln(1.39/2.2)); dt = 0.5 h / c_membrane; means over the
---   last time unit; two threads (the state is bit-identical for a given
---   thread count, whatever the machine)
+--   initial strain ln(1.39/2.2), point forces); dt = 0.5 h / c_membrane;
+--   means over the last time unit; two threads (the state is bit-identical
+--   for a given thread count, whatever the machine). The pressure bands are
+--   the nodal pressure without q (sim:frame contours, [T]: "interpolated to
+--   grid points from material points"). One run draws both papers' figures
+--   (it was two pages running the same simulation, issue 36 item 1)
 -- heavy: cell 0.05 to t = 4 with the quadratic B-spline: about 6 min here on two threads
 -- visual: cell=0.2 t_end=0.3 threads=1
 -- thumb: dogbone_t4.0.png
@@ -54,6 +65,28 @@ for _, tf in ipairs{0, 0.2, 1, t_end} do
              title = string.format("bspline2, cell %.3f, t = %.1f", h, tf) }
   end)
 end
+-- [F] Fig 12: the membrane's points over the nodal pressure bands at
+-- increasing times, one colour range for all; [T] Fig 56 beside it at t_end
+local p_range, window = {0, 80}, {0, 0, 1.55, 1.55}
+local function fig12(s, tf, width, height)
+  s:frame{ file = string.format("%s/fig12_t%.1f.png", out, tf), width = width, height = height,
+           window = window, title = string.format("Fig 12: cell %.2f, t = %.1f", h, tf),
+           contours = "pressure", particles = "membranes", grid = false, range = p_range,
+           contour_levels = 16 }
+end
+for _, tf in ipairs{0, 0.2, 0.5, 1, 2} do
+  if tf < t_end then sim:at(tf, function(s) fig12(s, tf, 360, 380) end) end
+end
+sim:at(t_end, function(s)
+  fig12(s, t_end, 640, 640)
+  s:frame{ file = string.format("%s/fig56_t%.1f.png", out, t_end), width = 800, height = 440,
+           layout = {1, 2}, window = window, title = string.format("Fig 56: cell %.2f, t = %.1f", h, t_end),
+           panels = {
+             { title = "gas pressure at the nodes", contours = "pressure", particles = "membranes",
+               grid = false, range = p_range, contour_levels = 16 },
+             { title = "membrane stress sigma_t", colour = "membrane_stress", colourmap = "viridis",
+               particles = "membranes", grid = false, range = {0, 1000}, band = 7 } } }
+end)
 local clock = lamina.clock()
 sim:run{ t_end = t_end }
 local secs = lamina.clock() - clock
@@ -74,11 +107,13 @@ lamina.plot{ file = out .. "/radii.png", csv = true, width = 640, height = 380,
                         { x = t, y = rec:column("r90"), label = "90 deg", dashed = true } } }
 local pt, pf = paper_T[h] or {}, paper_F[h] or {}
 local function spread(a, b) return a and b and math.abs(a - b) or nil end
+local function whose(f) return f and string.format("([T] Table 5; tol: [F] Table III's %g)", f) end
 lamina.report{
-  radius_0 = { r0, paper = pt[1], tol = spread(pt[1], pf[1]) },
-  radius_90 = { r90, paper = pt[2], tol = spread(pt[2], pf[1]) },
-  pressure = { p, paper = pt[3], tol = spread(pt[3], pf[2]) },
-  hoop_vs_prt = { 100 * (hoop - prt) / prt,
+  radius_0 = { r0, paper = pt[1], tol = spread(pt[1], pf[1]), unit = whose(pf[1]) },
+  radius_90 = { r90, paper = pt[2], tol = spread(pt[2], pf[1]), unit = whose(pf[1]) },
+  pressure = { p, paper = pt[3], tol = spread(pt[3], pf[2]), unit = whose(pf[2]) },
+  -- Laplace's law: [F] Table IV's agreement at its finer cells is 2-5 %
+  hoop_vs_prt = { 100 * (hoop - prt) / prt, ref = 0, tol = 5,
                   unit = "% (against p r / t of this run, ours; [F] Table IV: 2-5 %)" },
   gas_outside = escaped,
   energy_change = { 100 * (tot[#tot] - tot[1]) / tot[1], unit = "% (particles' sum)" },
