@@ -134,7 +134,7 @@ static QR_INLINE void QR_NAME(reflect_rows)(int m, int L, int k, int j0, double 
 {
     int c = j0 & ~(QR_W - 1);
     /* lane l of the first vector is column c + l: kept where left of j0 */
-    QR_VL keep, none = {0};
+    QR_VL keep = {0}, none = {0};   /* (every lane set below; gcc -O0 cannot see it) */
     for (int l = 0; l < QR_W; l++)
         keep[l] = c + l < j0 ? -1 : 0;
     for (; c + QR_W * QR_G <= L; c += QR_W * QR_G, keep = none)
