@@ -37,13 +37,7 @@
 #define QR_INLINE inline
 #endif
 
-/* the vector helpers are inlined: no call passes a vector, whatever the ABI */
-#if defined(__clang__)
-#pragma clang diagnostic ignored "-Wunknown-warning-option"
-#pragma clang diagnostic ignored "-Wpsabi"
-#elif defined(__GNUC__)
-#pragma GCC diagnostic ignored "-Wpsabi"
-#endif
+#include "psabi_quiet.h"   /* the helpers are inlined: no call passes a vector */
 
 /* Row i of the working copy: L = LM_QR_LD(n) doubles, a multiple of four,
  * so that every row starts a vector and a vector's columns lie in one row

@@ -154,14 +154,11 @@ static void classify(lm_sim *sim)
     }
 }
 
-/* Step 1: which pins hold their points; the held points' positions kept;
- * the heavy and point-held masses off the grid (constraint.c); for the
- * pins that hold nodes, w_i = sum N_ip and sum N_ip v_pin over their
- * particles. */
-void lm_pin_p2g(lm_sim *sim)
+/* The pinned points' positions before a move (step 1, and each of the
+ * multi-rate sub-steps: subcycle_terms.c); lm_pin_particles moves them
+ * with their pins from there. */
+void lm_pin_keep_start(lm_sim *sim)
 {
-    if (sim->npins) classify(sim);
-    if (lm_constraint_active(sim)) lm_constraint_p2g(sim);   /* heavy ends, pins */
     for (int k = 0; k < sim->npins; k++) {
         lm_pin *pn = &sim->pins[k];
         size_t first = sim->bodies[pn->body].first;
@@ -170,6 +167,17 @@ void lm_pin_p2g(lm_sim *sim)
             pn->x0[2 * j + 1] = sim->p.y[first + pn->idx[j]];
         }
     }
+}
+
+/* Step 1: which pins hold their points; the held points' positions kept;
+ * the heavy and point-held masses off the grid (constraint.c); for the
+ * pins that hold nodes, w_i = sum N_ip and sum N_ip v_pin over their
+ * particles. */
+void lm_pin_p2g(lm_sim *sim)
+{
+    if (sim->npins) classify(sim);
+    if (lm_constraint_active(sim)) lm_constraint_p2g(sim);   /* heavy ends, pins */
+    lm_pin_keep_start(sim);
     if (!holds_nodes(sim)) return;
     size_t nn = lm_grid_nodes(&sim->grid);
     const int ns = sim->grid.sw * sim->grid.sw;

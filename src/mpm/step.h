@@ -347,6 +347,7 @@ void lm_stress_cell_forces(lm_sim *sim);
 
 /* pin.c: held particles (lm_sim_add_pin). */
 void lm_pin_p2g(lm_sim *sim);        /* step 1: the held nodes' weights */
+void lm_pin_keep_start(lm_sim *sim); /* the pinned points' x, y before a move */
 void lm_pin_grid(lm_sim *sim);       /* step 3: p^L and f at held nodes */
 void lm_pin_particles(lm_sim *sim);  /* after step 4: v_p = v_pin */
 /* A field's p^L = m v_pin at the nodes the pins hold (pin_w > 0, m > 0;

@@ -35,13 +35,7 @@
  * for AVX2 (picked at run time), two SSE2 ones in the portable build;
  * each lane the scalar operation either way, so the same bits. */
 typedef double v4d __attribute__((vector_size(32)));
-/* the helpers below are inlined: no call passes a v4d, whatever the ABI */
-#if defined(__clang__)
-#pragma clang diagnostic ignored "-Wunknown-warning-option"
-#pragma clang diagnostic ignored "-Wpsabi"
-#elif defined(__GNUC__)
-#pragma GCC diagnostic ignored "-Wpsabi"
-#endif
+#include "psabi_quiet.h"   /* the helpers are inlined: no call passes a vector */
 
 static LM_FORCE_INLINE v4d v4_load(const double *p)
 {

@@ -105,14 +105,7 @@ void lm_subcycle_fast_terms(lm_sim *sim, double *m, double *px, double *py, doub
 
 void lm_subcycle_pins_start(lm_sim *sim)
 {
-    for (int k = 0; k < sim->npins; k++) {
-        lm_pin *pn = &sim->pins[k];
-        size_t first = sim->bodies[pn->body].first;
-        for (size_t j = 0; j < pn->n; j++) {
-            pn->x0[2 * j] = sim->p.x[first + pn->idx[j]];
-            pn->x0[2 * j + 1] = sim->p.y[first + pn->idx[j]];
-        }
-    }
+    lm_pin_keep_start(sim);
 }
 
 void lm_subcycle_pins_moved(lm_sim *sim)
