@@ -24,6 +24,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "normals_qr_steps.h"
 #include "normals.h"
 #include "normals_work.h"
 
@@ -117,16 +118,7 @@ static double householder(double *u, int len, int stride, double *alpha)
     double tail = 0;
     for (int i = 1; i < len; i++)
         tail += u[(size_t)i * stride] * u[(size_t)i * stride];
-    double u0 = u[0];
-    if (tail == 0.0) {
-        *alpha = u0;
-        return 0.0;
-    }
-    double norm = sqrt(u0 * u0 + tail);
-    *alpha = u0 >= 0 ? -norm : norm;
-    double w0 = u0 - *alpha;
-    u[0] = w0;
-    return 2.0 / (w0 * w0 + tail);
+    return lm_qr_householder(u, tail, alpha);
 }
 
 /* ---- QR with column pivoting ------------------------------------------------ */
@@ -259,13 +251,7 @@ static void qr_pivoted(int m, int n, double *A, double *b, int *perm,
          * the last reflection has left the norms in nrm */
         if (!have_norms)
             column_sums(m, n, k, k, C, NULL, nrm);
-        int best = k;
-        double bn = -1;
-        for (int j = k; j < n; j++)
-            if (nrm[j] > bn) {
-                bn = nrm[j];
-                best = j;
-            }
+        int best = lm_qr_pivot(nrm, k, n);
         double *ck = C + (size_t)k * m;
         if (best != k) {
             double *cb = C + (size_t)best * m;

@@ -167,13 +167,7 @@ static QR_INLINE void QR_NAME(factor)(int m, int n, double *T, double *b, int *p
          * the last reflection has left the norms in nrm */
         if (!have_norms)
             QR_NAME(col_sums)(m, L, k, k, T, NULL, nrm, NULL, NULL);
-        int best = k;
-        double bn = -1;
-        for (int j = k; j < n; j++)
-            if (nrm[j] > bn) {
-                bn = nrm[j];
-                best = j;
-            }
+        int best = lm_qr_pivot(nrm, k, n);
         if (best != k) {
             for (int i = 0; i < m; i++) {
                 double *r = RowAt(T, i, L), t = r[k];
@@ -198,7 +192,7 @@ static QR_INLINE void QR_NAME(factor)(int m, int n, double *T, double *b, int *p
                 *t = 0.0;
         }
         double alpha;
-        double tau = householder(w + k, tail, &alpha);
+        double tau = lm_qr_householder(w + k, tail, &alpha);
         if (tau != 0.0) {
             /* H on the columns right of k and on b: d_j = tau w.c_j, then
              * c_j -= d_j w */

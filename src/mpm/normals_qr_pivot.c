@@ -30,6 +30,7 @@
 
 #include "normals.h"
 #include "normals_work.h"
+#include "normals_qr_steps.h"   /* the reflection, the pivot: normals_qr.c's */
 
 #if defined(__GNUC__)
 #define QR_INLINE inline __attribute__((always_inline))
@@ -43,25 +44,6 @@
  * so that every row starts a vector and a vector's columns lie in one row
  * (the columns n .. L-1 are zero padding). */
 #define RowAt(A, i, L) ((A) + (size_t)(i) * (size_t)(L))
-
-/* The reflection H = I - tau w w^T with H u = alpha e_0 for u = (u_0,
- * ...), tail the sum of its squares after u_0 (the plain loop's, in row
- * order): w_0 = u_0 - alpha overwrites u_0, returns tau; 0 when u is
- * already alpha e_0. (normals_qr.c's householder(), its tail summed by the
- * caller.) */
-static QR_INLINE double householder(double *u, double tail, double *alpha)
-{
-    double u0 = u[0];
-    if (tail == 0.0) {
-        *alpha = u0;
-        return 0.0;
-    }
-    double norm = sqrt(u0 * u0 + tail);
-    *alpha = u0 >= 0 ? -norm : norm;
-    double w0 = u0 - *alpha;
-    u[0] = w0;
-    return 2.0 / (w0 * w0 + tail);
-}
 
 /* the portable build's width: two doubles, one SSE2 (or NEON) register;
  * eight vectors to a pass */
