@@ -1,10 +1,18 @@
 /* normals_qr_lanes.h - the column operations of normals_qr_pivot.c for one
- * vector width, included there once per width: QR_V (a vector of QR_W
- * doubles), QR_VL (as many 64-bit integers) and QR_NAME(f) (the width's
- * name for f) are defined by the includer. Lane l of a vector is column
- * c + l of one row; each lane's operations are the scalar ones of the
- * column loops, in their order (normals_qr_pivot.c says why that gives the
- * same bits). No include guard: meant to be included more than once. */
+ * vector width, included there once per width: QR_W (doubles to a
+ * vector), QR_G (vectors to a pass) and QR_NAME(f) (the width's name for
+ * f) are defined by the includer and undefined at the end here, so the
+ * next width can define its own. QR_V is the vector of QR_W doubles and
+ * QR_VL of as many 64-bit integers (GCC's vector extension). Lane l of a
+ * vector is column c + l of one row; each lane's operations are the
+ * scalar ones of the column loops, in their order (normals_qr_pivot.c
+ * says why that gives the same bits). No include guard: meant to be
+ * included more than once. */
+
+typedef double QR_NAME(vd) __attribute__((vector_size(8 * QR_W)));
+typedef long long QR_NAME(vl) __attribute__((vector_size(8 * QR_W)));
+#define QR_V QR_NAME(vd)
+#define QR_VL QR_NAME(vl)
 
 static QR_INLINE QR_V QR_NAME(ld)(const double *p)
 {
@@ -209,3 +217,9 @@ static QR_INLINE void QR_NAME(factor)(int m, int n, double *T, double *b, int *p
         RowAt(T, k, L)[k] = alpha;
     }
 }
+
+#undef QR_V
+#undef QR_VL
+#undef QR_W
+#undef QR_G
+#undef QR_NAME
