@@ -222,6 +222,30 @@ static int refresh_page(const g_options *o, const g_script *s)
     return rc;
 }
 
+/* The files of one figure's folder in the gallery, named once for the
+ * start and the end of its run (g_fmt exits on no memory). */
+enum { FIG_DIR, FIG_REPORT, FIG_LOG, FIG_META, FIG_THUMB, FIG_NPATHS };
+
+typedef struct fig_paths {
+    char *p[FIG_NPATHS];        /* p[FIG_DIR] the folder, the rest in it */
+} fig_paths;
+
+static fig_paths fig_paths_of(const g_options *o, const g_script *s)
+{
+    static const char *const name[FIG_NPATHS] = {NULL, G_REPORT, G_LOG, G_META, G_THUMB};
+    fig_paths f;
+    f.p[FIG_DIR] = g_fmt("%s/%s", o->gallery, s->stem);
+    for (int k = FIG_DIR + 1; k < FIG_NPATHS; k++)
+        f.p[k] = g_fmt("%s/%s", f.p[FIG_DIR], name[k]);
+    return f;
+}
+
+static void fig_paths_free(fig_paths *f)
+{
+    for (int k = 0; k < FIG_NPATHS; k++)
+        free(f->p[k]);
+}
+
 /* The run of one figure started (gallery_queue.c): 0, or -1 (the gallery
  * could not be written) with the error printed. */
 static int render_start(void *ctx, g_job *j)
@@ -229,19 +253,17 @@ static int render_start(void *ctx, g_job *j)
     const g_options *o = ctx;
     const g_script *s = j->s;
     char err[1024];
-    char *dir = g_fmt("%s/%s", o->gallery, s->stem);
-    char *report = g_fmt("%s/%s", dir, G_REPORT);
-    char *log = g_fmt("%s/%s", dir, G_LOG);
+    fig_paths f = fig_paths_of(o, s);
     /* a fresh folder: a frame the script no longer writes must not linger */
+    const char *dir = f.p[FIG_DIR];
     int rc = g_clear_dir(dir, err, sizeof err) != 0 || g_mkdirs(dir, err, sizeof err) != 0 ||
-                     g_run_start(s, dir, report, log, NULL, 0, &j->child, err, sizeof err) != 0
+                     g_run_start(s, dir, f.p[FIG_REPORT], f.p[FIG_LOG], NULL, 0, &j->child, err,
+                                 sizeof err) != 0
                  ? -1
                  : 0;
     if (rc < 0)
         fprintf(stderr, "lamina gallery: %s: %s\n", s->stem, err);
-    free(log);
-    free(report);
-    free(dir);
+    fig_paths_free(&f);
     return rc;
 }
 
@@ -253,11 +275,9 @@ static int render_finish(void *ctx, g_job *j, int poll_rc, const g_run_result *r
     const g_options *o = ctx;
     const g_script *s = j->s;
     char err[1024];
-    char *dir = g_fmt("%s/%s", o->gallery, s->stem);
-    char *report = g_fmt("%s/%s", dir, G_REPORT);
-    char *log = g_fmt("%s/%s", dir, G_LOG);
-    char *meta = g_fmt("%s/%s", dir, G_META);
-    char *thumb = g_fmt("%s/%s", dir, G_THUMB);
+    fig_paths f = fig_paths_of(o, s);
+    const char *dir = f.p[FIG_DIR], *report = f.p[FIG_REPORT], *log = f.p[FIG_LOG];
+    const char *meta = f.p[FIG_META], *thumb = f.p[FIG_THUMB];
     g_strs images = { 0 }, data = { 0 };
     lu_json *rep = NULL;
     g_run_result r = *rr;
@@ -310,11 +330,7 @@ done:
     lu_json_free(rep);
     g_strs_free(&images);
     g_strs_free(&data);
-    free(thumb);
-    free(meta);
-    free(log);
-    free(report);
-    free(dir);
+    fig_paths_free(&f);
     return rc;
 }
 

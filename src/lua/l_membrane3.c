@@ -126,24 +126,18 @@ static int m3_particles(lua_State *L)
     const double th = r->def.mat.thickness;
     static const char *const xs[] = {"x", "y", "z"}, *const vs[] = {"vx", "vy", "vz"};
     static const char *const ns[] = {"nx", "ny", "nz"}, *const ts[] = {"t11", "t22", "t12"};
+    /* the computed columns' values, kept on the stack below the result */
+    double *col = lua_newuserdatauv(L, (n ? n : 1) * sizeof(double), 0);
     lua_createtable(L, 0, 18);
     for (int a = 0; a < 3; a++) push_array(L, xs[a], p->x[a], f, n, 1);
     for (int a = 0; a < 3; a++) push_array(L, vs[a], p->v[a], f, n, 1);
     for (int a = 0; a < 3; a++) push_array(L, ns[a], p->nrm[a], f, n, 1);
     for (int a = 0; a < 3; a++) push_array(L, ts[a], p->s[a], f, n, th);
     push_array(L, "mass", p->m, f, n, 1);
-    lua_createtable(L, (int)n, 0);
-    for (size_t i = 0; i < n; i++) {
-        lua_pushnumber(L, p->A0[f + i] * exp(p->e[0][f + i] + p->e[1][f + i]));
-        lua_rawseti(L, -2, (lua_Integer)i + 1);
-    }
-    lua_setfield(L, -2, "area");
-    lua_createtable(L, (int)n, 0);
-    for (size_t i = 0; i < n; i++) {
-        lua_pushnumber(L, lm3_membrane_tension(s3->sim, f + i));
-        lua_rawseti(L, -2, (lua_Integer)i + 1);
-    }
-    lua_setfield(L, -2, "tension");
+    for (size_t i = 0; i < n; i++) col[i] = p->A0[f + i] * exp(p->e[0][f + i] + p->e[1][f + i]);
+    push_array(L, "area", col, 0, n, 1);
+    for (size_t i = 0; i < n; i++) col[i] = lm3_membrane_tension(s3->sim, f + i);
+    push_array(L, "tension", col, 0, n, 1);
     lua_pushinteger(L, (lua_Integer)n);
     lua_setfield(L, -2, "n");
     return 1;

@@ -513,8 +513,7 @@ void la_record_flush(lua_State *L, int sidx)
 static int rec_gc(lua_State *L)
 {
     la_record *r = luaL_checkudata(L, 1, LA_RECORD);
-    free(r->cols);
-    free(r->rows);
+    LU_FREE_ALL(r->cols, r->rows);
     r->cols = NULL;
     r->rows = NULL;
     r->ncols = 0;

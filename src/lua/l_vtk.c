@@ -19,6 +19,7 @@
 #include "fields.h"
 #include "l_internal.h"
 #include "l_sim3.h"
+#include "util.h"
 #include "vtk.h"
 
 #define LA_VTK "lamina.vtk"
@@ -36,8 +37,7 @@ typedef struct la_vtk {
 static int vtk_gc(lua_State *L)
 {
     la_vtk *v = luaL_checkudata(L, 1, LA_VTK);
-    free(v->times);
-    free(v->mem);
+    LU_FREE_ALL(v->times, v->mem);
     v->times = NULL;
     v->mem = NULL;
     return 0;

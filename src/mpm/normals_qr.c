@@ -123,6 +123,31 @@ static double householder(double *u, int len, int stride, double *alpha)
 
 /* ---- QR with column pivoting ------------------------------------------------ */
 
+#if defined(__GNUC__)
+#define QR_GROUP_INLINE inline __attribute__((always_inline))
+#else
+#define QR_GROUP_INLINE inline
+#endif
+
+/* The sums of column_sums for the K (1, 2 or 4) columns from C0 (column q
+ * at C0 + q m), one running sum a column, into acc[0 .. K-1]. K is a
+ * constant at each call, so the sums stay in registers. */
+static QR_GROUP_INLINE void sums_group(int K, int m, int k, const double *C0,
+                                       const double *u, double *acc)
+{
+    double s[4] = {0, 0, 0, 0};
+    if (u)
+        for (int i = k; i < m; i++)
+            for (int q = 0; q < K; q++)
+                s[q] += u[i] * C0[(size_t)q * m + i];
+    else
+        for (int i = k; i < m; i++)
+            for (int q = 0; q < K; q++)
+                s[q] += C0[(size_t)q * m + i] * C0[(size_t)q * m + i];
+    for (int q = 0; q < K; q++)
+        acc[q] = s[q];
+}
+
 /* Sums over i = k .. m-1 for the columns j0 .. n-1 of C (column j at
  * C + j m): with u, acc_j = sum u_i C_ij; without, acc_j = sum C_ij^2.
  * Each column's sum adds its terms in the order i = k .. m-1, as a plain
@@ -133,51 +158,12 @@ static void column_sums(int m, int n, int k, int j0, const double *C,
                         const double *u, double *acc)
 {
     int j = j0;
-    for (; j + 4 <= n; j += 4) {
-        const double *c0 = C + (size_t)j * m, *c1 = c0 + m, *c2 = c1 + m, *c3 = c2 + m;
-        double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
-        if (u)
-            for (int i = k; i < m; i++) {
-                s0 += u[i] * c0[i];
-                s1 += u[i] * c1[i];
-                s2 += u[i] * c2[i];
-                s3 += u[i] * c3[i];
-            }
-        else
-            for (int i = k; i < m; i++) {
-                s0 += c0[i] * c0[i];
-                s1 += c1[i] * c1[i];
-                s2 += c2[i] * c2[i];
-                s3 += c3[i] * c3[i];
-            }
-        acc[j] = s0;
-        acc[j + 1] = s1;
-        acc[j + 2] = s2;
-        acc[j + 3] = s3;
-    }
-    for (; j + 2 <= n; j += 2) {
-        const double *c0 = C + (size_t)j * m, *c1 = c0 + m;
-        double s0 = 0, s1 = 0;
-        if (u)
-            for (int i = k; i < m; i++) {
-                s0 += u[i] * c0[i];
-                s1 += u[i] * c1[i];
-            }
-        else
-            for (int i = k; i < m; i++) {
-                s0 += c0[i] * c0[i];
-                s1 += c1[i] * c1[i];
-            }
-        acc[j] = s0;
-        acc[j + 1] = s1;
-    }
-    for (; j < n; j++) {
-        const double *c0 = C + (size_t)j * m;
-        double s0 = 0;
-        for (int i = k; i < m; i++)
-            s0 += u ? u[i] * c0[i] : c0[i] * c0[i];
-        acc[j] = s0;
-    }
+    for (; j + 4 <= n; j += 4)
+        sums_group(4, m, k, C + (size_t)j * m, u, acc + j);
+    for (; j + 2 <= n; j += 2)
+        sums_group(2, m, k, C + (size_t)j * m, u, acc + j);
+    for (; j < n; j++)
+        sums_group(1, m, k, C + (size_t)j * m, u, acc + j);
 }
 
 /* The reflection's update of the columns j0 .. n-1, c_j -= d_j w over rows

@@ -47,19 +47,10 @@
 
 /* the portable build's width: two doubles, one SSE2 (or NEON) register;
  * eight vectors to a pass */
-typedef double v2d __attribute__((vector_size(16)));
-typedef long long v2l __attribute__((vector_size(16)));
-#define QR_V v2d
-#define QR_VL v2l
 #define QR_W 2
 #define QR_G 8
 #define QR_NAME(f) f##_2
 #include "normals_qr_lanes.h"
-#undef QR_V
-#undef QR_VL
-#undef QR_W
-#undef QR_G
-#undef QR_NAME
 
 static void factor_default(int m, int n, double *A, double *b, int *perm, double *w,
                            double *acc, double *nrm)
@@ -71,19 +62,10 @@ static void factor_default(int m, int n, double *A, double *b, int *perm, double
 #define QR_DISPATCH 1
 /* four doubles, one AVX register, in the function compiled for AVX2;
  * four vectors to a pass */
-typedef double v4d __attribute__((vector_size(32)));
-typedef long long v4l __attribute__((vector_size(32)));
-#define QR_V v4d
-#define QR_VL v4l
 #define QR_W 4
 #define QR_G 4
 #define QR_NAME(f) f##_4
 #include "normals_qr_lanes.h"
-#undef QR_V
-#undef QR_VL
-#undef QR_W
-#undef QR_G
-#undef QR_NAME
 
 __attribute__((target("avx2"))) static void factor_avx2(int m, int n, double *A, double *b,
                                                         int *perm, double *w, double *acc,

@@ -436,20 +436,30 @@ static int draw_panel(lr_canvas *c, const lr_figure *f, const layout *L, size_t 
  * err: drawing and rendering refuse alike. */
 static int figure_ok(const lr_figure *f, char *err, size_t errlen)
 {
-    const char *problem = f ? figure_problem(f) : "no figure";
+    return fig_refuse("", f ? figure_problem(f) : "no figure", err, errlen);
+}
+
+int fig_refuse(const char *what, const char *problem, char *err, size_t errlen)
+{
     if (problem)
-        lu_err(err, errlen, "%s", problem);
+        lu_err(err, errlen, "%s%s", what, problem);
     return problem ? -1 : 0;
+}
+
+int fig_canvas_fits(const char *what, const lr_canvas *c, int w, int h, char *err,
+                    size_t errlen)
+{
+    if (c && lr_canvas_width(c) == w && lr_canvas_height(c) == h)
+        return 0;
+    lu_err(err, errlen, "%sthe canvas is not the figure's size", what);
+    return -1;
 }
 
 int lr_figure_draw(const lr_figure *f, lr_canvas *c, char *err, size_t errlen)
 {
-    if (figure_ok(f, err, errlen) != 0)
+    if (figure_ok(f, err, errlen) != 0 ||
+        fig_canvas_fits("", c, f->width, f->height, err, errlen) != 0)
         return -1;
-    if (!c || lr_canvas_width(c) != f->width || lr_canvas_height(c) != f->height) {
-        lu_err(err, errlen, "the canvas is not the figure's size");
-        return -1;
-    }
     layout L;
     L.box = calloc(f->npanels, sizeof *L.box);
     if (!L.box) {

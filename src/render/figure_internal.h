@@ -47,6 +47,13 @@ enum { FIG_SKIP_LEFT = 1, FIG_SKIP_RIGHT = 2, FIG_SKIP_BOTTOM = 4, FIG_SKIP_TOP 
 typedef int (*fig_draw_fn)(const void *ctx, lr_canvas *c, char *err, size_t errlen);
 unsigned char *fig_render(lr_backend b, int w, int h, fig_draw_fn draw, const void *ctx,
                           char *err, size_t errlen);
+/* figure.c: the refusals lr_figure_* and lr_figure3d_* share, each message
+ * after `what` ("" or "3D frame: "): 0, or -1 with `problem` (what is
+ * wrong with a figure; NULL: nothing) in err; 0, or -1 when canvas c is
+ * missing or not w x h. */
+int fig_refuse(const char *what, const char *problem, char *err, size_t errlen);
+int fig_canvas_fits(const char *what, const lr_canvas *c, int w, int h, char *err,
+                    size_t errlen);
 /* figure_layers.c */
 void fig_draw_grid(lr_canvas *c, const fig_view *v, const lr_grid *g, int skip);
 /* The value range of the panel's value-coloured points, for auto ranges;

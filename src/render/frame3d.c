@@ -545,20 +545,14 @@ static int draw_panel(lr_canvas *c, const lr_panel3d *p, double x, double y, dou
  * err: drawing and rendering refuse alike. */
 static int frame_ok(const lr_figure3d *f, char *err, size_t errlen)
 {
-    const char *problem = f ? figure_problem(f) : "no figure";
-    if (problem)
-        lu_err(err, errlen, "3D frame: %s", problem);
-    return problem ? -1 : 0;
+    return fig_refuse("3D frame: ", f ? figure_problem(f) : "no figure", err, errlen);
 }
 
 int lr_figure3d_draw(const lr_figure3d *f, lr_canvas *c, char *err, size_t errlen)
 {
-    if (frame_ok(f, err, errlen) != 0)
+    if (frame_ok(f, err, errlen) != 0 ||
+        fig_canvas_fits("3D frame: ", c, f->width, f->height, err, errlen) != 0)
         return -1;
-    if (!c || lr_canvas_width(c) != f->width || lr_canvas_height(c) != f->height) {
-        lu_err(err, errlen, "3D frame: the canvas is not the figure's size");
-        return -1;
-    }
     double W = f->width, H = f->height;
     double margin = MARGIN * fmin(W, H), font = fmax(12.0, H / 40.0);
     double band = TEXT_BAND * font;

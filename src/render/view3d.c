@@ -22,12 +22,7 @@ void lr_scene3d_free(lr_scene3d *s)
         return;
     for (size_t i = 0; i < s->n; i++)
         free(s->items[i].text);
-    free(s->items);
-    free(s->pts);
-    free(s->cloud);
-    free(s->cloud_rgba);
-    free(s->tri);
-    free(s);
+    LU_FREE_ALL(s->items, s->pts, s->cloud, s->cloud_rgba, s->tri, s);
 }
 
 size_t lr_scene3d_count(const lr_scene3d *s)
