@@ -9,7 +9,11 @@
 -- = adapt over the gas points, as lamina's Courant check counts a gas,
 -- capped at m x the deck's dt; the membrane's k follows through substeps
 -- = "auto"), `multirate` (the sub-steps' form, lamina.sim{multirate}:
--- "held", the default, or an impulse form), `dt_scale` (the deck's dt scaled: the plain USL step needs
+-- "held", the default, or an impulse form), `force` (the membrane's force
+-- form: "point", the page's, or "segment": its strain from its lengths;
+-- docs/performance.md "The gas's step beside a membrane"), `mu` (the gas's
+-- viscosity, the deck's 0.1), `viscous_limit` (lamina.sim{viscous_limit}:
+-- 0.1 carries `multirate = "impulse"` to t = 8.5), `dt_scale` (the deck's dt scaled: the plain USL step needs
 -- 0.65). It prints where the run stopped if it did (pcall), its CPU time
 -- and steps, the means over the last time unit of the page's numbers
 -- (r(0), r(90), pressure over the enclosed space, hoop against p r / t,
@@ -33,13 +37,15 @@ local sim = lamina.sim{ domain = {0, 0, d.width, d.width}, cell = h, dt = dt0 * 
                                      right = "symmetry", top = "symmetry" },
                         pic = lamina.param("pic", 0), threads = threads, basis = "bspline2", scheme = scheme,
                         substeps = m > 1 and (k > 0 and k or "auto") or nil,
-                        multirate = m > 1 and lamina.param("multirate", "held") or nil }
-local air = lamina.gas{ rho = d.rho_gas, e = d.e, gamma = d.gamma, mu = d.mu }
+                        multirate = m > 1 and lamina.param("multirate", "held") or nil,
+                        viscous_limit = lamina.param("viscous_limit", 0) }
+local air = lamina.gas{ rho = d.rho_gas, e = d.e, gamma = d.gamma, mu = lamina.param("mu", d.mu) }
 local skin = lamina.membrane{ rho = d.rho_membrane, E = d.E, nu = d.nu, thickness = d.thickness,
                               law = "plane_stress", one_way = true }
 local gas = sim:body{ material = air, ppc = d.nprg, region = b.contains, name = "gas" }
 local mem = sim:membrane{ material = skin, name = "membrane", count = d.points, normals = "connectivity",
-                          orient = {0, 0}, force = "point", curve = lamina.polyline(b.polyline()) }
+                          orient = {0, 0}, force = lamina.param("force", "point"),
+                          curve = lamina.polyline(b.polyline()) }
 local mass = 0
 for _, body in ipairs{gas, mem} do
   local mm = body:particles().mass
@@ -68,9 +74,24 @@ if adapt > 0 then
   end)
 end
 local rec = sim:record{ every = 0.01, energy = true, values = b.history_values(gas, mem) }
+-- with viscous_limit = kappa: the share of the gas's points (and of its
+-- mass) rarefied below mu dt / (kappa h^2), whose viscosity the limit lowers
+local function limited()
+  local kappa = sim.viscous_limit
+  if kappa <= 0 then return "" end
+  local g = gas:particles()
+  local below = d.mu * sim.dt / (kappa * h * h)
+  local n, mm, mt = 0, 0, 0
+  for q = 1, #gas do
+    mt = mt + g.mass[q]
+    if g.rho[q] < below then n, mm = n + 1, mm + g.mass[q] end
+  end
+  return string.format("  viscosity limited at %.1f %% of the gas points (%.1f %% of its mass; rho < %.3g)",
+                       100 * n / #gas, 100 * mm / mt, below)
+end
 sim:every(lamina.param("print_every", 0.05), function(s)
-  print(string.format("  t %.3f  dt %.3g  substeps %d  gas v_max %.1f  steps %d  energy %.3f  pressure %.2f",
-                      s.t, s.dt, s.substeps, vmax(), s.nstep, s:energy().total, gas:pressure(mem)))
+  print(string.format("  t %.3f  dt %.3g  substeps %d  gas v_max %.1f  steps %d  energy %.3f  pressure %.2f%s",
+                      s.t, s.dt, s.substeps, vmax(), s.nstep, s:energy().total, gas:pressure(mem), limited()))
 end)
 local cpu = os.clock()
 local ok, err = pcall(function() sim:run{ t_end = t_end } end)

@@ -100,7 +100,8 @@ int la_sim_new(lua_State *L)
     static const char *const keys[] = {"domain", "cell", "dt", "scheme", "gravity",
                                        "boundary", "courant", "pic", "seed", "threads",
                                        "basis", "stress", "axisymmetric", "mass", "damping",
-                                       "substeps", "transfer", "dim", "multirate", NULL};
+                                       "substeps", "transfer", "dim", "multirate",
+                                       "viscous_limit", NULL};
     const char *fn = "lamina.sim";
     /* dim = 3: the 3D run (l_sim3.c, docs/3d.md) */
     la_check_table(L, 1, fn);
@@ -194,6 +195,14 @@ int la_sim_new(lua_State *L)
     if (la_has(L, 1, "multirate") && d.substeps == 0)
         luaL_error(L, "%s: multirate = \"%s\" needs substeps (\"auto\" or a number)", fn,
                    multirates[d.multirate]);
+    /* viscous_limit = kappa: a gas point's shear viscosity at most
+     * kappa rho h^2 / dt (material_gas.c, lm_gas_mu); axisym.c's gas
+     * update has its own viscous stress and does not take it */
+    d.visc_limit = la_opt_number(L, 1, fn, "viscous_limit", 0.0);
+    if (!(d.visc_limit >= 0) || !isfinite(d.visc_limit))
+        luaL_error(L, "%s: viscous_limit must be a finite number >= 0 (got %f)", fn, d.visc_limit);
+    if (d.visc_limit > 0 && d.axisym)
+        luaL_error(L, "%s: viscous_limit works in the plane only (got axisymmetric = true)", fn);
     /* threads: the key, else lamina run --threads (the run's configuration,
      * passed in explicitly), else the user's LAMINA_THREADS, else 1; the
      * state is bit-identical for the same count (docs/decisions.md) */
@@ -672,6 +681,7 @@ static int sim_index(lua_State *L)
     else if (strcmp(k, "axisymmetric") == 0) lua_pushboolean(L, m->def.axisym);
     else if (strcmp(k, "courant") == 0) lua_pushnumber(L, m->def.courant);
     else if (strcmp(k, "damping") == 0) lua_pushnumber(L, m->def.damping);
+    else if (strcmp(k, "viscous_limit") == 0) lua_pushnumber(L, m->def.visc_limit);
     else if (strcmp(k, "substeps") == 0) lua_pushinteger(L, lm_subcycle_count(m));
     else if (strcmp(k, "gravity") == 0) {
         lua_createtable(L, 2, 0);

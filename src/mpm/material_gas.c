@@ -26,6 +26,30 @@ double lm_gas_av(const lm_material *mat, double rho, double div, double max_div,
     return c_max * g * rho * mat->av_lambda * D * (mat->av_c1 + mat->av_c2 * ratio);
 }
 
+/* The shear viscosity a gas point's update uses: the material's mu, or
+ * with lamina.sim{viscous_limit = kappa} (kappa > 0) at most
+ * kappa rho h^2 / dt. The viscous stress 2 mu edot is explicit: on the grid
+ * it is a diffusion of the velocity with the kinematic viscosity mu / rho,
+ * and a forward step of a diffusion is stable only while
+ * (mu / rho) dt / h^2 stays below a bound of order 1/4 in 2-D (the von
+ * Neumann limit of the forward-time centred-space heat equation, 1/2 per
+ * dimension: Press et al., Numerical Recipes, 2nd ed., §19.2), less with
+ * the viscous stress's 4/3 on a normal rate. The
+ * Courant check counts sound speed and speed, not this: a gas point rarefied
+ * near a membrane (Box 9's dog-bone at 8-16 x the deck's dt: rho 0.09, 14
+ * neighbours within h, its nodes 2-13 % of a full cell's mass) crosses it
+ * while the sound speed allows the step, and its velocity flips sign each
+ * step, growing about 1.3 x a step until it inverts (docs/performance.md
+ * "The gas's step beside a membrane"). The limit takes from such a point
+ * only the viscosity the step cannot resolve; a point denser than
+ * mu dt / (kappa h^2) keeps mu to the bit. */
+double lm_gas_mu(const lm_material *mat, double kappa, double rho, double h, double dt)
+{
+    if (!(kappa > 0)) return mat->mu;
+    double most = kappa * rho * h * h / dt;
+    return mat->mu > most ? most : mat->mu;
+}
+
 void lm_gas_update(const lm_material *mat, double exx, double eyy, double exy,
                    double dt, double rho, double q, double *e, double *sxx, double *syy,
                    double *sxy, double *szz)
@@ -45,7 +69,8 @@ void lm_gas_update(const lm_material *mat, double exx, double eyy, double exy,
 
 /* Step 8 at a gas point: rho / (1 + tr de) unless the density comes from
  * the cells (density.c), the artificial viscosity from the step's maxima,
- * then the stress and e. */
+ * then the stress and e (with lamina.sim{viscous_limit}, the viscosity
+ * lm_gas_mu allows at the point's density). */
 void lm_gas_update_at(lm_sim *sim, size_t q, const lm_rate *r)
 {
     lm_particles *p = &sim->p;
@@ -53,6 +78,13 @@ void lm_gas_update_at(lm_sim *sim, size_t q, const lm_rate *r)
     const double *L = r->L;
     if (mat->density == LM_DENSITY_CONTINUITY) p->rho[q] /= 1 + r->dexx + r->deyy;
     p->q[q] = lm_gas_av(mat, p->rho[q], L[0] + L[3], r->max_div, r->c_max, r->h);
+    lm_material limited;
+    double mu = lm_gas_mu(mat, sim->def.visc_limit, p->rho[q], r->h, r->dt);
+    if (mu != mat->mu) {   /* a rarefied point: the material with its mu lowered */
+        limited = *mat;
+        limited.mu = mu;
+        mat = &limited;
+    }
     lm_gas_update(mat, L[0], L[3], 0.5 * (L[1] + L[2]), r->dt, p->rho[q], p->q[q], &p->e[q],
                   &p->sxx[q], &p->syy[q], &p->sxy[q], &p->szz[q]);
 }

@@ -386,6 +386,9 @@ double lm_gas_sound_speed(const lm_material *mat, double e);
  * material_gas.c), zero unless the point is in compression. */
 double lm_gas_av(const lm_material *mat, double rho, double div, double max_div,
                  double c_max, double h);
+/* The shear viscosity a gas point's update uses: mat->mu, at most
+ * kappa rho h^2 / dt when kappa > 0 (lamina.sim{viscous_limit}). */
+double lm_gas_mu(const lm_material *mat, double kappa, double rho, double h, double dt);
 /* sigma = 2 mu edot - 2/3 mu tr(edot) I - (p + q) I with p from e^k and
  * rho^{k+1}, edot the strain rate (sym L); then e += sigma:(dt edot) / rho
  * ([F] eq 23). */

@@ -346,6 +346,11 @@ typedef struct lm_sim_def {
     lm_multirate multirate;   /* with substeps: how the slow group's force
                               enters the sub-steps and what its nodal
                               momentum carries (subcycle.c) */
+    double visc_limit;     /* kappa >= 0: a gas point's shear viscosity at
+                              most kappa rho_p h^2 / dt, the explicit
+                              step's diffusion limit at its density
+                              (material_gas.c, lm_gas_mu); 0: off, the
+                              material's mu everywhere */
 } lm_sim_def;
 
 #define LM_SUBSTEPS_AUTO (-1)
