@@ -39,7 +39,7 @@ double lm_gas_av(const lm_material *mat, double rho, double div, double max_div,
  * near a membrane (Box 9's dog-bone at 8-16 x the deck's dt: rho 0.09, 14
  * neighbours within h, its nodes 2-13 % of a full cell's mass) crosses it
  * while the sound speed allows the step, and its velocity flips sign each
- * step, growing about 1.3 x a step until it inverts (docs/performance.md
+ * step, growing about 1.4 x a step until it inverts (docs/performance.md
  * "The gas's step beside a membrane"). The limit takes from such a point
  * only the viscosity the step cannot resolve; a point denser than
  * mu dt / (kappa h^2) keeps mu to the bit. */
