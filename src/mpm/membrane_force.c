@@ -83,29 +83,38 @@ static double segment_ring_tension(const lm_particles *p, const lm_material *mat
     return st * mat->thickness * rm;
 }
 
+/* Runs `pass` on every segment body with its material: the force and the
+ * strain passes visit the same bodies. */
+static void each_segment_body(lm_sim *sim,
+                              void (*pass)(lm_sim *, const lm_body *, const lm_material *))
+{
+    for (int b = 0; b < sim->nbodies; b++)
+        if (segment_body(sim, b)) pass(sim, &sim->bodies[b], sim->mats[sim->bodies[b].mat]);
+}
+
 /* The net tension of each point's two segments at x^k: (fpx, fpy). */
-void lm_membrane_segment_forces(lm_sim *sim)
+static void body_forces(lm_sim *sim, const lm_body *bd, const lm_material *mat)
 {
     lm_particles *p = &sim->p;
-    for (int b = 0; b < sim->nbodies; b++) {
-        if (!segment_body(sim, b)) continue;
-        const lm_body *bd = &sim->bodies[b];
-        const lm_material *mat = sim->mats[bd->mat];
-        for (size_t q = bd->first; q < bd->first + bd->count; q++) p->fpx[q] = p->fpy[q] = 0;
-        for (size_t q = bd->first; q < bd->first + bd->count; q++) {
-            size_t r = next_of(bd, q);
-            if (r == (size_t)-1 || !(p->L0[q] > 0)) continue;
-            double l = seg_len(p, q, r);
-            if (!(l > 0)) continue;   /* coincident points: no direction */
-            double F = lm_membrane_stress(mat, log(l / p->L0[q])) * mat->thickness;
-            if (sim->def.axisym) F = segment_ring_tension(p, mat, q, r, l);
-            double tx = (p->x[r] - p->x[q]) / l, ty = (p->y[r] - p->y[q]) / l;
-            p->fpx[q] += F * tx;
-            p->fpy[q] += F * ty;
-            p->fpx[r] -= F * tx;
-            p->fpy[r] -= F * ty;
-        }
+    for (size_t q = bd->first; q < bd->first + bd->count; q++) p->fpx[q] = p->fpy[q] = 0;
+    for (size_t q = bd->first; q < bd->first + bd->count; q++) {
+        size_t r = next_of(bd, q);
+        if (r == (size_t)-1 || !(p->L0[q] > 0)) continue;
+        double l = seg_len(p, q, r);
+        if (!(l > 0)) continue;   /* coincident points: no direction */
+        double F = lm_membrane_stress(mat, log(l / p->L0[q])) * mat->thickness;
+        if (sim->def.axisym) F = segment_ring_tension(p, mat, q, r, l);
+        double tx = (p->x[r] - p->x[q]) / l, ty = (p->y[r] - p->y[q]) / l;
+        p->fpx[q] += F * tx;
+        p->fpy[q] += F * ty;
+        p->fpx[r] -= F * tx;
+        p->fpy[r] -= F * ty;
     }
+}
+
+void lm_membrane_segment_forces(lm_sim *sim)
+{
+    each_segment_body(sim, body_forces);
 }
 
 /* MUSL moves a point with the Lagrangian grid velocity v^L (step 4) but
@@ -175,37 +184,37 @@ void lm_membrane_segment_move(lm_sim *sim)
 /* After the positions moved: each point's eps_t is the mean of its
  * segments' strains, its stress sigma_t t(x)t along its tangent and its
  * volume thickness * ds * exp(eps_t), for diagnostics and drawing. */
-void lm_membrane_segment_strains(lm_sim *sim)
+static void body_strains(lm_sim *sim, const lm_body *bd, const lm_material *mat)
 {
     lm_particles *p = &sim->p;
-    for (int b = 0; b < sim->nbodies; b++) {
-        if (!segment_body(sim, b)) continue;
-        const lm_body *bd = &sim->bodies[b];
-        const lm_material *mat = sim->mats[bd->mat];
-        size_t last = bd->first + bd->count - 1;
-        for (size_t q = bd->first; q <= last; q++) {
-            double sum = 0;
-            int k = 0;
-            size_t r = next_of(bd, q);
-            if (r != (size_t)-1 && p->L0[q] > 0) {
-                sum += log(seg_len(p, q, r) / p->L0[q]);
-                k++;
-            }
-            size_t z = q > bd->first ? q - 1 : (bd->closed && bd->count > 2 ? last : (size_t)-1);
-            if (z != (size_t)-1 && p->L0[z] > 0) {
-                sum += log(seg_len(p, z, q) / p->L0[z]);
-                k++;
-            }
-            if (k == 0 || !isfinite(sum)) continue;
-            double et = sum / k;
-            if (sim->def.axisym) {   /* a ring: the hoop too (axisym.c) */
-                lm_axisym_membrane_set(sim, q, et);
-                continue;
-            }
-            lm_membrane_set_strain(mat, et, p->tx[q], p->ty[q], p->m[q], p->ds[q], &p->et[q],
-                                   &p->rho[q], &p->sxx[q], &p->syy[q], &p->sxy[q], &p->szz[q]);
+    size_t last = bd->first + bd->count - 1;
+    for (size_t q = bd->first; q <= last; q++) {
+        double sum = 0;
+        int k = 0;
+        size_t r = next_of(bd, q);
+        if (r != (size_t)-1 && p->L0[q] > 0) {
+            sum += log(seg_len(p, q, r) / p->L0[q]);
+            k++;
         }
+        size_t z = q > bd->first ? q - 1 : (bd->closed && bd->count > 2 ? last : (size_t)-1);
+        if (z != (size_t)-1 && p->L0[z] > 0) {
+            sum += log(seg_len(p, z, q) / p->L0[z]);
+            k++;
+        }
+        if (k == 0 || !isfinite(sum)) continue;
+        double et = sum / k;
+        if (sim->def.axisym) {   /* a ring: the hoop too (axisym.c) */
+            lm_axisym_membrane_set(sim, q, et);
+            continue;
+        }
+        lm_membrane_set_strain(mat, et, p->tx[q], p->ty[q], p->m[q], p->ds[q], &p->et[q],
+                               &p->rho[q], &p->sxx[q], &p->syy[q], &p->sxy[q], &p->szz[q]);
     }
+}
+
+void lm_membrane_segment_strains(lm_sim *sim)
+{
+    each_segment_body(sim, body_strains);
 }
 
 /* Stored energy of the segments: thickness * int sigma(eps) dl with

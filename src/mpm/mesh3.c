@@ -436,27 +436,25 @@ int lm3_mesh_parse(const char *name, const char *buf, size_t len, lm3_mesh *m, c
     build b;
     memset(&b, 0, sizeof b);
     int rc, stl = 0;
+    int solid = starts_with_word(buf, len, "solid");
     if (len >= 84 && (size_t)le_u32((const unsigned char *)buf + 80) ==
                          (len - 84) / 50 && (len - 84) % 50 == 0) {
         stl = 1;
         rc = parse_stl_binary(name, (const unsigned char *)buf, (len - 84) / 50, &b, err,
                               errlen);
-    } else if (starts_with_word(buf, len, "solid")) {
-        stl = 1;
-        if (len >= 84 && memchr(buf, 0, len)) {
-            /* "solid" in a binary header whose count does not fit the size */
-            lu_err(err, errlen, "%s: a binary STL of %zu bytes cannot hold the %u triangles its "
-                   "header counts (84 + 50 n bytes)", name, len,
-                   (unsigned)le_u32((const unsigned char *)buf + 80));
-            rc = -1;
-        } else {
-            rc = parse_stl_ascii(name, buf, len, &b, err, errlen);
-        }
     } else if (len >= 84 && memchr(buf, 0, len)) {
-        lu_err(err, errlen, "%s: a binary file that is not an STL of 84 + 50 n bytes (%zu "
-               "bytes; the header counts %u triangles)", name, len,
-               (unsigned)le_u32((const unsigned char *)buf + 80));
+        /* binary, but its size does not fit its header's count; "solid" in
+         * the header reads as an STL's (the ASCII keyword) */
+        lu_err(err, errlen,
+               solid ? "%s: a binary STL of %zu bytes cannot hold the %u triangles its "
+                       "header counts (84 + 50 n bytes)"
+                     : "%s: a binary file that is not an STL of 84 + 50 n bytes (%zu "
+                       "bytes; the header counts %u triangles)",
+               name, len, (unsigned)le_u32((const unsigned char *)buf + 80));
         rc = -1;
+    } else if (solid) {
+        stl = 1;
+        rc = parse_stl_ascii(name, buf, len, &b, err, errlen);
     } else {
         rc = parse_obj(name, buf, len, &b, err, errlen);
     }
