@@ -300,6 +300,7 @@ static void fast_sums(lm_sim *sim, lm_subcycle *s, const lm_band *band)
     if (s->gb) lm_gasband_sums(sim, s->gb, f);
     static const lm_comp comp[5] = {LM_COMP_SCALAR, LM_COMP_X, LM_COMP_Y, LM_COMP_X, LM_COMP_Y};
     lm_grid_fold(g, 5, f, comp);
+    if (s->gb) lm_gasband_reach(s->gb, s->mM, band == NULL);   /* band NULL: the step's start */
     lm_subcycle_fast_terms(sim, s->mM, s->pMx, s->pMy, s->fMx, s->fMy);   /* hoop, links, pins */
     const size_t n = band ? band->n : s->nn;
     for (size_t r = 0; r < n; r++) {
@@ -732,6 +733,12 @@ lm_status lm_subcycle_step(lm_sim *sim)
     if (st != LM_OK) return st;
     lm_band_nodes bn = band_nodes(s);
     if (!s->whole) lm_band_far(sim, s->band, &bn, k, dt);   /* the nodes no membrane reached */
+    if (s->gb && sim->def.multirate == LM_MULTIRATE_HELD) {   /* the far gas: the plain step's X */
+        lm_gasband_far_displacement(s->gb, s->Ax, s->Ay, s->Xx, s->Xy, k, Dt);
+        double *const fill[2] = {s->Xx, s->Xy};   /* a ghost node: its mirror's image */
+        static const lm_comp xy[2] = {LM_COMP_X, LM_COMP_Y};
+        lm_grid_fill(g, 2, fill, xy);
+    }
     if (sim->def.multirate == LM_MULTIRATE_HALF || sim->def.multirate == LM_MULTIRATE_HALF_LUMPED)
         mr_end_kick(sim, s, Dt);
     if (sim->def.multirate == LM_MULTIRATE_SPLIT) {

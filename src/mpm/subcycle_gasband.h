@@ -15,6 +15,8 @@ typedef struct lm_gasband {
     double *keep;            /* their state around the slow group's update */
     unsigned char *dist;     /* a node's distance in cells to the nodes the
                                 membranes' stencils reach, capped */
+    unsigned char *reach;    /* 1: a fast point reached the node in some
+                                sub-step of this step */
     size_t nn;
     double steps, points;    /* steps taken, fast gas points summed over them */
 } lm_gasband;
@@ -36,6 +38,16 @@ static inline int lm_gasband_fast(const lm_gasband *gb, const lm_sim *sim, size_
  * fx, fy (mass_forces) or px, py (momentum, MUSL's re-map). */
 void lm_gasband_sums(const lm_sim *sim, const lm_gasband *gb, double *const *f);
 void lm_gasband_momentum(const lm_sim *sim, const lm_gasband *gb, double *const *f);
+/* After a sub-step's fast sums (start: the step's first, which resets):
+ * the nodes with fast mass marked. */
+void lm_gasband_reach(lm_gasband *gb, const double *mF, int start);
+/* HELD's displacement on the nodes no fast point reached in the step: the
+ * k sub-steps under the held force moved them by Dt v + Dt^2 a (k + 1) / (2k)
+ * where the plain step moves them by Dt v + Dt^2 a; add the difference,
+ * ((k - 1) / (2k)) Dt A (A = Dt a there), so that the slow gas away from the
+ * band steps as the plain step at Dt (subcycle_gasband.c says why). */
+void lm_gasband_far_displacement(const lm_gasband *gb, const double *Ax, const double *Ay,
+                                 double *Xx, double *Xy, int k, double Dt);
 /* Their shape functions at their present place, FLIP update, and stress
  * over dt from the grid's strain velocity (g->vx, g->vy). */
 void lm_gasband_shape(lm_sim *sim, const lm_gasband *gb);

@@ -27,9 +27,10 @@
 -- 4. Deterministic: the same run twice, the same hash.
 -- Measured 2026-12-05 (held): 1. equal to the 12 digits printed; 2. hoop
 -- 0.0558 % (4, w 0), 0.0563 % (10, w 0), 0.0558 % (10, w 1) against the
--- plain step's 0.0556 %; 3. trend plain -0.0016 %, band -0.0006 % (largest
--- 0.0039 % against 0.0041 %), without the band +0.0363 %; 713 of 1 291 gas
--- points fast. impulse (the expected failure physics.substeps_band_gas_impulse):
+-- plain step's 0.0556 %; 3. trend plain -0.0016 %, band -0.0016 % (largest
+-- 0.0040 % against 0.0041 %; -0.0006 % before the far nodes took the plain
+-- step's displacement, subcycle_gasband.c), without the band +0.0363 %;
+-- 713 of 1 291 gas points fast. impulse (the expected failure physics.substeps_band_gas_impulse):
 -- 2. with 4 sub-steps, fast_band 0, hoop 0.231 % but the energy +1.29e-5 of
 -- itself (limit 1e-5; plain 2.1e-9; the kick's offset, first order in dt);
 -- 10 sub-steps, fast_band 1: hoop 0.154 % (without the band 45 %,
