@@ -112,6 +112,12 @@
  * screened variants (mr_weight, mr_split_force, mr_hybrid_force,
  * mr_end_kick).
  *
+ * fast_band (lamina.sim{fast_band = w}, subcycle_gasband.c): the gas points
+ * within w cells of the membranes' stencils join the fast group, wherever
+ * this file says "the membranes" of the sub-steps (their sums, moves,
+ * re-map and stress), so that the groups meet inside the gas; with "held"
+ * the nodes no fast point reaches take the plain step's displacement.
+ *
  * Not with what changes the grid's forces by the node (contact's own
  * fields, pins that hold nodes, heavy end points, damping, the corrected
  * mass, the cell stress): refused by name. Segment
