@@ -62,18 +62,11 @@ local function circle(o)
   sim:run{ t_end = o.t_end or 0.05 }
   ts[#ts + 1], es[#es + 1] = sim.t, sim:energy().total / E0 - 1
   local wr, ws = drift()
-  -- least-squares slope of the energy over the run, times its length
-  local n, mt, me = #ts, 0, 0
-  for i = 1, n do mt, me = mt + ts[i] / n, me + es[i] / n end
-  local sxy, sxx, worst = 0, 0, 0
-  for i = 1, n do
-    sxy = sxy + (ts[i] - mt) * (es[i] - me)
-    sxx = sxx + (ts[i] - mt) ^ 2
-    worst = math.max(worst, math.abs(es[i]))
-  end
+  local trend, worst = cm.energy_trend(ts, es)   -- least-squares slope times the run's length
+  local n = #ts
   local beyond, _, grazing = mem:escaped(gas)
   local res = { wr = wr, ws = ws, st = cm.laplace_ratio(mem, gas, t), out = beyond + grazing,
-                trend = sxy / sxx * (ts[n] - ts[1]), worst = worst, dE = math.abs(es[n]), hash = sim:hash(),
+                trend = trend, worst = worst, dE = math.abs(es[n]), hash = sim:hash(),
                 r = mem:radius_at(45), hoop = mem:hoop_stress(), fast = nf > 0 and fast / nf or 0, gas = #gas }
   print(string.format("circle%s, cell %g, %s, substeps %s, fast_band %s, %s: radius %.4f %%, hoop %.4f %%, "
     .. "sigma t / p r %.5f, energy: end %+.2e, trend %+.4f %%, largest %.4f %%, gas out %d, fast gas %.0f of %d",
