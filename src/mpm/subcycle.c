@@ -745,8 +745,6 @@ lm_status lm_subcycle_step(lm_sim *sim)
         static const lm_comp xy[2] = {LM_COMP_X, LM_COMP_Y};
         lm_grid_fill(g, 2, fill, xy);
     }
-    if (s->gb && sim->def.multirate == LM_MULTIRATE_IMPULSE)   /* the far gas: the plain step's X */
-        lm_gasband_far_kicked(s->gb, sim, s->mG, s->qGx, s->qGy, s->Ax, s->Ay, s->Xx, s->Xy, Dt);
     if (sim->def.multirate == LM_MULTIRATE_HALF || sim->def.multirate == LM_MULTIRATE_HALF_LUMPED)
         mr_end_kick(sim, s, Dt);
     if (sim->def.multirate == LM_MULTIRATE_SPLIT) {

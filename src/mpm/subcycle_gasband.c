@@ -48,13 +48,8 @@
  * fast_band those nodes get the difference ((k - 1) / (2k)) Dt A and step as
  * the plain step at Dt (the lead's "kick's displacement" of that section,
  * which failed at the membrane's nodes; with the band no membrane node is
- * among them). With "impulse" those nodes take the whole step's kick in the
- * first sub-step and then move with the consistent carry, v = M^-1 (p^G(x^n)
- * + C A) instead of v + A: the re-map smooths A, so the shortest modes move
- * as if alpha were near 1 / k (Box 9's dog-bone, 16 x, w 1: a gas point at
- * the centre left the domain at t = 0.425); so there X is set to the plain
- * step's Dt (v + A), v = p^G(x^n) / m^G, the walls applied
- * (lm_gasband_far_kicked: the same run reaches t = 1 with its energy flat).
+ * among them). The impulse forms' kick gives those nodes the plain step's
+ * displacement already.
  *
  * Not with what reads the whole gas at once: the cells' density
  * (density.c) and the artificial viscosity's maxima ([F] eq 24), nor the
@@ -203,27 +198,6 @@ void lm_gasband_far_displacement(const lm_gasband *gb, const double *Ax, const d
         Xx[i] += c * Ax[i];
         Xy[i] += c * Ay[i];
     }
-}
-
-void lm_gasband_far_kicked(const lm_gasband *gb, lm_sim *sim, const double *mG, const double *qx,
-                           const double *qy, const double *Ax, const double *Ay, double *Xx,
-                           double *Xy, double Dt)
-{
-    lm_grid *g = &sim->grid;
-    for (size_t i = 0; i < gb->nn; i++) {
-        const int far = !gb->reach[i] && mG[i] > 0;
-        g->ax[i] = far ? qx[i] / mG[i] + Ax[i] : 0;
-        g->ay[i] = far ? qy[i] / mG[i] + Ay[i] : 0;
-    }
-    lm_grid_apply_bc(g, g->ax, g->ay);
-    for (size_t i = 0; i < gb->nn; i++) {
-        if (gb->reach[i] || !(mG[i] > 0)) continue;
-        Xx[i] = Dt * g->ax[i];
-        Xy[i] = Dt * g->ay[i];
-    }
-    double *const fill[2] = {Xx, Xy};   /* a ghost node: its mirror's image */
-    static const lm_comp xy[2] = {LM_COMP_X, LM_COMP_Y};
-    lm_grid_fill(g, 2, fill, xy);
 }
 
 void lm_gasband_sums(const lm_sim *sim, const lm_gasband *gb, double *const *f)

@@ -48,13 +48,6 @@ void lm_gasband_reach(lm_gasband *gb, const double *mF, int start);
  * band steps as the plain step at Dt (subcycle_gasband.c says why). */
 void lm_gasband_far_displacement(const lm_gasband *gb, const double *Ax, const double *Ay,
                                  double *Xx, double *Xy, int k, double Dt);
-/* IMPULSE's displacement on those nodes: after the kick their velocity is
- * the consistent carry's M^-1 (p + C A), not v + A, so X = Dt bc(v + A)
- * (v the slow momentum's p^G(x^n) / m^G, bc the walls) is set there, the
- * plain step's; the ghost nodes re-imaged. The grid's a_x, a_y are scratch. */
-void lm_gasband_far_kicked(const lm_gasband *gb, lm_sim *sim, const double *mG, const double *qx,
-                           const double *qy, const double *Ax, const double *Ay, double *Xx,
-                           double *Xy, double Dt);
 /* Their shape functions at their present place, FLIP update, and stress
  * over dt from the grid's strain velocity (g->vx, g->vy). */
 void lm_gasband_shape(lm_sim *sim, const lm_gasband *gb);
