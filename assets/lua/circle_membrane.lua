@@ -65,6 +65,20 @@ function M.watch_drift(sim, mem, r0)
   return function() return wr, ws end
 end
 
+-- An energy record's least-squares slope over the run times its length (its
+-- trend) and its largest |value|: ts the times, es the relative changes.
+function M.energy_trend(ts, es)
+  local n, mt, me = #ts, 0, 0
+  for i = 1, n do mt, me = mt + ts[i] / n, me + es[i] / n end
+  local sxy, sxx, worst = 0, 0, 0
+  for i = 1, n do
+    sxy = sxy + (ts[i] - mt) * (es[i] - me)
+    sxx = sxx + (ts[i] - mt) ^ 2
+    worst = math.max(worst, math.abs(es[i]))
+  end
+  return sxy / sxx * (ts[n] - ts[1]), worst
+end
+
 -- sigma t / (p r) at the present state: the hoop stress against Laplace's
 -- law, r the mean of the radii at 0 and 90 degrees, p the enclosed gas's.
 function M.laplace_ratio(mem, gas, t)

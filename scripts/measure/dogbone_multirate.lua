@@ -13,7 +13,10 @@
 -- form: "point", the page's, or "segment": its strain from its lengths;
 -- docs/performance.md "The gas's step beside a membrane"), `mu` (the gas's
 -- viscosity, the deck's 0.1), `viscous_limit` (lamina.sim{viscous_limit}:
--- 0.1 carries `multirate = "impulse"` to t = 8.5), `dt_scale` (the deck's dt scaled: the plain USL step needs
+-- 0.1 carries `multirate = "impulse"` to t = 8.5), `fast_band` (>= 0: the gas
+-- points within that many cells of the membranes' stencils in the fast
+-- group, lamina.sim{fast_band}; -1, the default: off; the mean count of
+-- fast gas points is printed), `dt_scale` (the deck's dt scaled: the plain USL step needs
 -- 0.65). It prints where the run stopped if it did (pcall), its CPU time
 -- and steps, the means over the last time unit of the page's numbers
 -- (r(0), r(90), pressure over the enclosed space, hoop against p r / t,
@@ -38,7 +41,8 @@ local sim = lamina.sim{ domain = {0, 0, d.width, d.width}, cell = h, dt = dt0 * 
                         pic = lamina.param("pic", 0), threads = threads, basis = "bspline2", scheme = scheme,
                         substeps = m > 1 and (k > 0 and k or "auto") or nil,
                         multirate = m > 1 and lamina.param("multirate", "held") or nil,
-                        viscous_limit = lamina.param("viscous_limit", 0) }
+                        viscous_limit = lamina.param("viscous_limit", 0),
+                        fast_band = lamina.param("fast_band", -1) >= 0 and lamina.param("fast_band", -1) or nil }
 local air = lamina.gas{ rho = d.rho_gas, e = d.e, gamma = d.gamma, mu = lamina.param("mu", d.mu) }
 local skin = lamina.membrane{ rho = d.rho_membrane, E = d.E, nu = d.nu, thickness = d.thickness,
                               law = "plane_stress", one_way = true }
@@ -73,6 +77,8 @@ if adapt > 0 then
     s.dt = math.max(dt0, dt)
   end)
 end
+local fast_sum, fast_n = 0, 0   -- fast gas points, sampled every 0.01
+sim:every(0.01, function(s) fast_sum, fast_n = fast_sum + s.fast_gas, fast_n + 1 end)
 local rec = sim:record{ every = 0.01, energy = true, values = b.history_values(gas, mem) }
 -- with viscous_limit = kappa: the share of the gas's points (and of its
 -- mass) rarefied below mu dt / (kappa h^2), whose viscosity the limit lowers
@@ -99,6 +105,9 @@ cpu = os.clock() - cpu
 print(string.format("dog-bone cell 0.05, %s, gas dt %s x %.3g%s: %s at t = %.4f, %d steps, %.2f CPU s",
   scheme, adapt > 0 and "<=" or "", m, adapt > 0 and string.format(" (adaptive, gas Courant %.2f)", adapt) or "",
   ok and "reached" or "STOPPED", sim.t, sim.nstep, cpu))
+if fast_n > 0 and fast_sum > 0 then
+  print(string.format("  fast gas points: %.1f on average (of %d)", fast_sum / fast_n, #gas))
+end
 if not ok then print("  " .. tostring(err)) end
 local t1 = sim.t
 local t0 = math.max(0, t1 - 1)

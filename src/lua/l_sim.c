@@ -101,7 +101,7 @@ int la_sim_new(lua_State *L)
                                        "boundary", "courant", "pic", "seed", "threads",
                                        "basis", "stress", "axisymmetric", "mass", "damping",
                                        "substeps", "transfer", "dim", "multirate",
-                                       "viscous_limit", NULL};
+                                       "viscous_limit", "fast_band", NULL};
     const char *fn = "lamina.sim";
     /* dim = 3: the 3D run (l_sim3.c, docs/3d.md) */
     la_check_table(L, 1, fn);
@@ -203,6 +203,18 @@ int la_sim_new(lua_State *L)
         luaL_error(L, "%s: viscous_limit must be a finite number >= 0 (got %f)", fn, d.visc_limit);
     if (d.visc_limit > 0 && d.axisym)
         luaL_error(L, "%s: viscous_limit works in the plane only (got axisymmetric = true)", fn);
+    /* fast_band = w: the gas points within w cells of the membranes'
+     * stencils join the sub-steps (src/mpm/subcycle_gasband.c) */
+    if (la_has(L, 1, "fast_band")) {
+        double w = la_number(L, 1, fn, "fast_band");
+        if (!(w >= 0 && w <= 8) || w != floor(w))
+            luaL_error(L, "%s: fast_band must be a whole number of cells from 0 to 8 (got %f)",
+                       fn, w);
+        if (d.substeps == 0)
+            luaL_error(L, "%s: fast_band = %d needs substeps (\"auto\" or a number)", fn, (int)w);
+        d.fast_band = 1;
+        d.fast_band_w = (int)w;
+    }
     /* threads: the key, else lamina run --threads (the run's configuration,
      * passed in explicitly), else the user's LAMINA_THREADS, else 1; the
      * state is bit-identical for the same count (docs/decisions.md) */
@@ -683,6 +695,7 @@ static int sim_index(lua_State *L)
     else if (strcmp(k, "damping") == 0) lua_pushnumber(L, m->def.damping);
     else if (strcmp(k, "viscous_limit") == 0) lua_pushnumber(L, m->def.visc_limit);
     else if (strcmp(k, "substeps") == 0) lua_pushinteger(L, lm_subcycle_count(m));
+    else if (strcmp(k, "fast_gas") == 0) lua_pushinteger(L, lm_subcycle_fast_gas(m));
     else if (strcmp(k, "gravity") == 0) {
         lua_createtable(L, 2, 0);
         lua_pushnumber(L, m->def.gx);

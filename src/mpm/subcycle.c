@@ -112,6 +112,12 @@
  * screened variants (mr_weight, mr_split_force, mr_hybrid_force,
  * mr_end_kick).
  *
+ * fast_band (lamina.sim{fast_band = w}, subcycle_gasband.c): the gas points
+ * within w cells of the membranes' stencils join the fast group, wherever
+ * this file says "the membranes" of the sub-steps (their sums, moves,
+ * re-map and stress), so that the groups meet inside the gas; with "held"
+ * the nodes no fast point reaches take the plain step's displacement.
+ *
  * Not with what changes the grid's forces by the node (contact's own
  * fields, pins that hold nodes, heavy end points, damping, the corrected
  * mass, the cell stress): refused by name. Segment
@@ -128,6 +134,7 @@
 #include "sim_work.h"
 #include "step_kernels.h"
 #include "subcycle_band.h"
+#include "subcycle_gasband.h"
 #include "subcycle_runs.h"
 #include "subcycle_terms.h"
 #include "threads.h"
@@ -160,6 +167,8 @@ typedef struct lm_subcycle {
                                              standard steps sweep them */
     lm_band *band;                        /* the nodes the sub-steps sweep
                                              (subcycle_band.c) */
+    lm_gasband *gb;                       /* fast_band: the gas points in the
+                                             fast group (subcycle_gasband.c) */
 } lm_subcycle;
 
 void lm_subcycle_free(lm_subcycle *s)
@@ -170,6 +179,7 @@ void lm_subcycle_free(lm_subcycle *s)
     free(s->rows);
     free(s->xs);
     lm_band_free(s->band);
+    lm_gasband_free(s->gb);
     free(s);
 }
 
@@ -177,6 +187,8 @@ void lm_subcycle_free(lm_subcycle *s)
 static lm_status reserve_points(lm_sim *sim, lm_subcycle *s)
 {
     size_t n = sim->p.n;
+    lm_status st = lm_gasband_reserve(sim, &s->gb);
+    if (st != LM_OK) return st;
     if (n <= s->xcap) return LM_OK;
     double *x = realloc(s->xs, 4 * n * sizeof *x);
     if (!x) {
@@ -250,6 +262,12 @@ int lm_subcycle_count(const lm_sim *sim)
     return n < 1 ? 1 : n > LM_SUBSTEPS_MAX ? LM_SUBSTEPS_MAX : (int)n;
 }
 
+long lm_subcycle_fast_gas(const lm_sim *sim)
+{
+    const lm_subcycle *s = sim->work ? sim->work->sub : NULL;
+    return s && s->gb ? (long)s->gb->n : 0;
+}
+
 /* What the scheme cannot do, by name (the header says why). */
 static lm_status refuse(lm_sim *sim)
 {
@@ -261,6 +279,7 @@ static lm_status refuse(lm_sim *sim)
     else if (sim->def.mass == LM_MASS_MEMBRANE) what = "mass = \"membrane\"";
     else if (sim->def.damping > 0) what = "damping";
     else if (sim->def.apic) what = "transfer = \"apic\"";   /* its transfers are FLIP's */
+    else what = lm_gasband_refusal(sim);
     if (!what) return LM_OK;
     snprintf(sim->err, sizeof sim->err,
              "substeps (multi-rate stepping) does not work with %s; leave substeps out", what);
@@ -284,8 +303,10 @@ static void fast_sums(lm_sim *sim, lm_subcycle *s, const lm_band *band)
     if (band) lm_band_zero(band, 5, f);   /* a sub-step's: the rest stays 0 */
     else for (int k = 0; k < 5; k++) memset(f[k], 0, s->nn * sizeof *f[k]);
     lm_runs_mass_forces(sim, f);   /* lm_k_scatter_mass_forces's, by runs */
+    if (s->gb) lm_gasband_sums(sim, s->gb, f);
     static const lm_comp comp[5] = {LM_COMP_SCALAR, LM_COMP_X, LM_COMP_Y, LM_COMP_X, LM_COMP_Y};
     lm_grid_fold(g, 5, f, comp);
+    if (s->gb) lm_gasband_reach(s->gb, s->mM, band == NULL);   /* band NULL: the step's start */
     lm_subcycle_fast_terms(sim, s->mM, s->pMx, s->pMy, s->fMx, s->fMy);   /* hoop, links, pins */
     const size_t n = band ? band->n : s->nn;
     for (size_t r = 0; r < n; r++) {
@@ -296,11 +317,13 @@ static void fast_sums(lm_sim *sim, lm_subcycle *s, const lm_band *band)
 }
 
 /* The membranes' re-mapped momenta m_p v_p N_ip into (ux, uy), folded. */
-static void fast_remap(lm_sim *sim, double *ux, double *uy, const lm_band *band)
+static void fast_remap(lm_sim *sim, const lm_subcycle *s, double *ux, double *uy,
+                       const lm_band *band)
 {
     double *const f[2] = {ux, uy};
     lm_band_zero(band, 2, f);
     lm_runs_momentum(sim, f);      /* lm_k_scatter_momentum's, by runs */
+    if (s->gb) lm_gasband_momentum(sim, s->gb, f);
     static const lm_comp comp[2] = {LM_COMP_X, LM_COMP_Y};
     lm_grid_fold(&sim->grid, 2, f, comp);
 }
@@ -371,7 +394,7 @@ static void slow_consistent_mass(lm_sim *sim, lm_subcycle *s, int all)
         memset(s->C + (size_t)i * BB, 0, BB * sizeof *s->C);
     }
     for (size_t q = 0; q < p->n; q++) {
-        if (sim->bodies[p->body[q]].membrane || !touches_near(sim, s, q)) continue;
+        if (lm_gasband_fast(s->gb, sim, q) || !touches_near(sim, s, q)) continue;
         if (g->sw == 2) consistent_rows(sim, s, q, 2);
         else consistent_rows(sim, s, q, 3);
     }
@@ -513,6 +536,13 @@ static void mr_end_kick(lm_sim *sim, lm_subcycle *s, double Dt)
         p->vx[q] += lm_gather_rows(g, &w, p->node[q], g->ax);
         p->vy[q] += lm_gather_rows(g, &w, p->node[q], g->ay);
     }
+    for (size_t r = 0; s->gb && r < s->gb->n; r++) {
+        const size_t q = s->gb->idx[r];
+        lm_weights w;
+        lm_weights_of(sim, q, &w);
+        p->vx[q] += lm_gather_rows(g, &w, p->node[q], g->ax);
+        p->vy[q] += lm_gather_rows(g, &w, p->node[q], g->ay);
+    }
 }
 
 /* SPLIT: the last step's slow force f^P held over the sub-steps and the
@@ -554,6 +584,7 @@ static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int j, double dt, double 
     if (j > 0) {
         const double rx = 1.0 / g->hx, ry = 1.0 / g->hy;
         FOR_FAST(sim, q) lm_k_shape(sim, p, q, rx, ry);
+        if (s->gb) lm_gasband_shape(sim, s->gb);
         lm_band_nodes bn = band_nodes(s);
         if (!s->whole) lm_band_grow(s->band, sim, &bn, j, dt);
         lm_membrane_segment_forces(sim);
@@ -593,6 +624,11 @@ static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int j, double dt, double 
         s->xs[4 * q + 2] = p->x[q];
         s->xs[4 * q + 3] = p->y[q];
     }
+    for (size_t r = 0; s->gb && r < s->gb->n; r++) {
+        const size_t q = s->gb->idx[r];
+        s->xs[4 * q + 2] = p->x[q];
+        s->xs[4 * q + 3] = p->y[q];
+    }
     lm_membrane_segment_hold(sim);               /* x^k of segment membranes */
     lm_subcycle_pins_start(sim);
     if (g->sw == 2) {
@@ -600,6 +636,7 @@ static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int j, double dt, double 
     } else {
         FOR_FAST(sim, q) lm_k_g2p(g, p, q, dt, pic, g->ax, g->ay, g->vx, g->vy, 3);
     }
+    if (s->gb) lm_gasband_g2p(sim, s->gb, dt, pic);
     lm_subcycle_pins_moved(sim);                 /* held points: the pin's */
     if (sim->def.scheme == LM_MUSL) {            /* 5: re-map, all particles */
         if (mr_consistent(sim)) {                /* the carry is that re-map */
@@ -608,7 +645,7 @@ static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int j, double dt, double 
         } else {
             slow_remap(sim, s, s->fMx, s->fMy);  /* (f^M is spent: scratch) */
         }
-        fast_remap(sim, g->vx, g->vy, band);
+        fast_remap(sim, s, g->vx, g->vy, band);
         for (size_t r = 0; r < band->n; r++) {
             const long i = band->idx[r];
             g->vx[i] += s->fMx[i];
@@ -628,6 +665,7 @@ static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int j, double dt, double 
     lm_status st = lm_membrane_tangents(sim);    /* 6a */
     if (st != LM_OK) return st;
     fast_stress(sim, dt);                        /* 7-8 */
+    if (s->gb) lm_gasband_stress(sim, s->gb, dt);   /* the fast gas points' */
     lm_membrane_segment_strains(sim);
     return LM_OK;
 }
@@ -651,6 +689,7 @@ lm_status lm_subcycle_step(lm_sim *sim)
     lm_step_p2g_forces(sim);                    /* 1-2: all particles */
     st = lm_subcycle_check_pins(sim);           /* pin.c has classified them */
     if (st != LM_OK) return st;
+    if (s->gb) lm_gasband_select(s->gb, sim);   /* the fast gas points at x^n */
     fast_sums(sim, s, NULL);
     /* the slow group's share; a node the membranes alone reach keeps a
      * rounding error of their sums: zero */
@@ -687,7 +726,8 @@ lm_status lm_subcycle_step(lm_sim *sim)
      * add (a link's far end, a pin's solve in step 3) and with the slow
      * force held in every sub-step (a far node's closed form): otherwise
      * every node is swept by the standard steps */
-    s->whole = lm_subcycle_terms_active(sim) || sim->def.multirate != LM_MULTIRATE_HELD;
+    s->whole = lm_subcycle_terms_active(sim) || sim->def.multirate != LM_MULTIRATE_HELD ||
+               s->gb;   /* the band's nodes are the membranes' (subcycle_band.c) */
     if (s->whole) lm_band_all(s->band);
     else lm_band_build(s->band, sim, band_need(sim));   /* the stencils at x^n */
     sim->def.dt = dt;                           /* what the phases read */
@@ -699,6 +739,12 @@ lm_status lm_subcycle_step(lm_sim *sim)
     if (st != LM_OK) return st;
     lm_band_nodes bn = band_nodes(s);
     if (!s->whole) lm_band_far(sim, s->band, &bn, k, dt);   /* the nodes no membrane reached */
+    if (s->gb && sim->def.multirate == LM_MULTIRATE_HELD) {   /* the far gas: the plain step's X */
+        lm_gasband_far_displacement(s->gb, s->Ax, s->Ay, s->Xx, s->Xy, k, Dt);
+        double *const fill[2] = {s->Xx, s->Xy};   /* a ghost node: its mirror's image */
+        static const lm_comp xy[2] = {LM_COMP_X, LM_COMP_Y};
+        lm_grid_fill(g, 2, fill, xy);
+    }
     if (sim->def.multirate == LM_MULTIRATE_HALF || sim->def.multirate == LM_MULTIRATE_HALF_LUMPED)
         mr_end_kick(sim, s, Dt);
     if (sim->def.multirate == LM_MULTIRATE_SPLIT) {
@@ -717,7 +763,7 @@ lm_status lm_subcycle_step(lm_sim *sim)
     long n = (long)p->n;
 #pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) if (n >= LM_PARTICLE_LOOP_MIN)
     for (long q = 0; q < n; q++) {
-        if (sim->bodies[p->body[q]].membrane) continue;
+        if (lm_gasband_fast(s->gb, sim, (size_t)q)) continue;
         if (g->sw == 2) lm_k_g2p(g, p, (size_t)q, Dt, pic, g->ax, g->ay, g->vx, g->vy, 2);
         else lm_k_g2p(g, p, (size_t)q, Dt, pic, g->ax, g->ay, g->vx, g->vy, 3);
     }
@@ -741,7 +787,7 @@ lm_status lm_subcycle_step(lm_sim *sim)
         const double rs = (double)k / Dt;
         for (size_t q = 0; q < p->n; q++) {
             double dx = p->x[q] - s->xs[4 * q], dy = p->y[q] - s->xs[4 * q + 1], ux, uy;
-            if (sim->bodies[p->body[q]].membrane) {
+            if (lm_gasband_fast(s->gb, sim, q)) {
                 ux = (p->x[q] - s->xs[4 * q + 2]) * rs;
                 uy = (p->y[q] - s->xs[4 * q + 3]) * rs;
             } else {
@@ -767,6 +813,8 @@ lm_status lm_subcycle_step(lm_sim *sim)
     if (st != LM_OK) return st;
     double max_div, c_max;
     lm_step_gas_maxima(sim, &max_div, &c_max);  /* 6c */
+    if (s->gb) lm_gasband_keep(sim, s->gb);     /* updated in the sub-steps */
     lm_step_stress_part(sim, max_div, c_max, 1);
+    if (s->gb) lm_gasband_restore(sim, s->gb);
     return LM_OK;
 }

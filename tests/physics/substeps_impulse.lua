@@ -57,17 +57,10 @@ local function circle(k, multirate, slack, t_end)   -- (shared with the equilibr
   sim:run{ t_end = t_end or 0.05 }
   ts[#ts + 1], es[#es + 1] = sim.t, sim:energy().total / E0 - 1
   local wr, ws = drift()
-  -- least-squares slope of the energy over the run, times its length
-  local n, mt, me = #ts, 0, 0
-  for i = 1, n do mt, me = mt + ts[i] / n, me + es[i] / n end
-  local sxy, sxx, worst = 0, 0, 0
-  for i = 1, n do
-    sxy = sxy + (ts[i] - mt) * (es[i] - me)
-    sxx = sxx + (ts[i] - mt) ^ 2
-    worst = math.max(worst, math.abs(es[i]))
-  end
+  local trend, worst = cm.energy_trend(ts, es)   -- least-squares slope times the run's length
+  local n = #ts
   local res = { wr = wr, ws = ws, st = cm.laplace_ratio(mem, gas, t), out = outside(mem:escaped(gas)),
-                trend = sxy / sxx * (ts[n] - ts[1]), worst = worst, dE = es[n], hash = sim:hash() }
+                trend = trend, worst = worst, dE = es[n], hash = sim:hash() }
   print(string.format("circle%s, substeps %s, %s: radius %.4f %%, hoop %.4f %%, sigma t / p r %.5f, energy: end %+.4f %%, "
     .. "trend %+.4f %%, largest %.4f %%, gas out %d", slack and " (slack, ringing)" or "", tostring(k),
     tostring(multirate), 100 * wr, 100 * ws, res.st, 100 * res.dE, 100 * res.trend, 100 * worst, res.out))

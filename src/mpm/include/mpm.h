@@ -351,6 +351,11 @@ typedef struct lm_sim_def {
                               step's diffusion limit at its density
                               (material_gas.c, lm_gas_mu); 0: off, the
                               material's mu everywhere */
+    int fast_band;         /* with substeps: 1, the gas points within
+                              fast_band_w cells of the membranes' stencils
+                              take the sub-steps too (subcycle_gasband.c);
+                              0 (default): the membranes alone */
+    int fast_band_w;
 } lm_sim_def;
 
 #define LM_SUBSTEPS_AUTO (-1)
@@ -558,6 +563,9 @@ lm_status lm_sim_try_dt(lm_sim *sim, double dt);
  * the membranes take in a step of the present dt (1 when off or when there
  * is no membrane). */
 int lm_subcycle_count(const lm_sim *sim);
+/* With fast_band: the gas points in the sub-steps' fast group in the last
+ * step (subcycle_gasband.c); 0 when off or before the first step. */
+long lm_subcycle_fast_gas(const lm_sim *sim);
 
 /* Changes the time step between steps (the clock keeps counting exactly). */
 void lm_sim_set_dt(lm_sim *sim, double dt);
