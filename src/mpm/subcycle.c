@@ -128,6 +128,7 @@
 #include "sim_work.h"
 #include "step_kernels.h"
 #include "subcycle_band.h"
+#include "subcycle_kick.h"
 #include "subcycle_runs.h"
 #include "subcycle_terms.h"
 #include "threads.h"
@@ -158,6 +159,8 @@ typedef struct lm_subcycle {
     size_t nrows;
     int whole;                            /* the band is every node: the
                                              standard steps sweep them */
+    int kick;                             /* the impulse forms' band after
+                                             the kick (subcycle_kick.c) */
     lm_band *band;                        /* the nodes the sub-steps sweep
                                              (subcycle_band.c) */
 } lm_subcycle;
@@ -379,15 +382,16 @@ static void slow_consistent_mass(lm_sim *sim, lm_subcycle *s, int all)
 
 /* (ux, uy) = p^G(x^n) + fold(C A): the slow group's particles' re-mapped
  * momenta had they taken the velocity change A so far. */
-static void slow_remap(const lm_sim *sim, const lm_subcycle *s, double *ux, double *uy)
+static void slow_remap_rows(const lm_sim *sim, const lm_subcycle *s, double *ux, double *uy,
+                            const long *rows, size_t nrows)
 {
     const lm_grid *g = &sim->grid;
     const int W = g->sw, B = s->B;
     const lm_band *band = s->band;   /* its rows and what they read */
     double *const f[2] = {ux, uy};
     lm_band_zero(band, 2, f);
-    for (size_t r = 0; r < s->nrows; r++) {
-        const long i = s->rows[r];
+    for (size_t r = 0; r < nrows; r++) {
+        const long i = rows[r];
         const double *row = s->C + (size_t)i * (size_t)(B * B);
         double sx = 0, sy = 0;
         for (int dy = 0; dy < B; dy++)
@@ -407,6 +411,30 @@ static void slow_remap(const lm_sim *sim, const lm_subcycle *s, double *ux, doub
         const long i = band->idx[r];
         ux[i] += s->qGx[i];
         uy[i] += s->qGy[i];
+    }
+}
+
+static void slow_remap(const lm_sim *sim, const lm_subcycle *s, double *ux, double *uy)
+{
+    slow_remap_rows(sim, s, ux, uy, s->rows, s->nrows);
+}
+
+/* The consistent carry p^G = p^G(x^n) + C A: on every row, or after the
+ * impulse forms' kick on the band's alone (subcycle_kick.c: p^G elsewhere
+ * stays what the kick's re-map made it), through f^M (spent: scratch) so
+ * that the fold of the rows outside the band leaves p^G there alone. */
+static void slow_carry(const lm_sim *sim, lm_subcycle *s)
+{
+    const lm_band *band = s->band;
+    if (s->whole) {
+        slow_remap(sim, s, s->pGx, s->pGy);
+        return;
+    }
+    slow_remap_rows(sim, s, s->fMx, s->fMy, band->idx, band->n);
+    for (size_t r = 0; r < band->n; r++) {
+        const long i = band->idx[r];
+        s->pGx[i] = s->fMx[i];
+        s->pGy[i] = s->fMy[i];
     }
 }
 
@@ -478,10 +506,12 @@ static int mr_consistent(const lm_sim *sim)
            sim->def.multirate == LM_MULTIRATE_SPLIT || sim->def.multirate == LM_MULTIRATE_HYBRID;
 }
 
-/* R += dt v^R, the re-mapped velocities MUSL strained the membranes with */
+/* R += dt v^R, the re-mapped velocities MUSL strained the membranes with
+ * (on the band; the kick's far nodes: subcycle_kick.c) */
 static void mr_remapped_displacement(lm_subcycle *s, const lm_grid *g, double dt)
 {
-    for (size_t i = 0; i < s->nn; i++) {
+    for (size_t r = 0; r < s->band->n; r++) {
+        const long i = s->band->idx[r];
         s->Rx[i] += dt * g->vx[i];
         s->Ry[i] += dt * g->vy[i];
     }
@@ -555,7 +585,12 @@ static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int j, double dt, double 
         const double rx = 1.0 / g->hx, ry = 1.0 / g->hy;
         FOR_FAST(sim, q) lm_k_shape(sim, p, q, rx, ry);
         lm_band_nodes bn = band_nodes(s);
-        if (!s->whole) lm_band_grow(s->band, sim, &bn, j, dt);
+        if (s->kick && !s->whole && lm_kick_band_grow(s->band, sim, &bn, s->Rx, s->Ry, j, dt)) {
+            lm_band_all(s->band);   /* a stencil left S: every node from here */
+            s->whole = 1;
+        } else if (!s->whole && !s->kick) {
+            lm_band_grow(s->band, sim, &bn, j, dt);
+        }
         lm_membrane_segment_forces(sim);
         fast_sums(sim, s, band);
     }
@@ -587,7 +622,7 @@ static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int j, double dt, double 
         s->Vx[i] = g->vx[i];
         s->Vy[i] = g->vy[i];
     }
-    if (mr_consistent(sim)) slow_remap(sim, s, s->pGx, s->pGy);   /* p^G(x^n) + C A */
+    if (mr_consistent(sim)) slow_carry(sim, s);   /* p^G(x^n) + C A */
     const double pic = sim->def.pic;
     FOR_FAST(sim, q) {   /* x before this sub-step (the last one's is kept) */
         s->xs[4 * q + 2] = p->x[q];
@@ -688,17 +723,23 @@ lm_status lm_subcycle_step(lm_sim *sim)
      * force held in every sub-step (a far node's closed form): otherwise
      * every node is swept by the standard steps */
     s->whole = lm_subcycle_terms_active(sim) || sim->def.multirate != LM_MULTIRATE_HELD;
+    s->kick = !lm_subcycle_terms_active(sim) && lm_kick_banded(sim) && k > 1;
     if (s->whole) lm_band_all(s->band);
     else lm_band_build(s->band, sim, band_need(sim));   /* the stencils at x^n */
     sim->def.dt = dt;                           /* what the phases read */
     for (int j = 0; j < k && st == LM_OK; j++) {
         st = sub_step(sim, s, j, dt, mr_weight(sim, j, k));
         lm_subcycle_pins_react(sim, j, k);
+        if (j == 0 && s->kick) {   /* after the kick: the band (subcycle_kick.c) */
+            lm_kick_band_build(s->band, sim);
+            s->whole = 0;
+        }
     }
     sim->def.dt = Dt;
     if (st != LM_OK) return st;
     lm_band_nodes bn = band_nodes(s);
-    if (!s->whole) lm_band_far(sim, s->band, &bn, k, dt);   /* the nodes no membrane reached */
+    if (!s->whole && s->kick) lm_kick_band_far(sim, s->band, &bn, s->Rx, s->Ry, k, dt);
+    else if (!s->whole) lm_band_far(sim, s->band, &bn, k, dt);   /* the nodes no membrane reached */
     if (sim->def.multirate == LM_MULTIRATE_HALF || sim->def.multirate == LM_MULTIRATE_HALF_LUMPED)
         mr_end_kick(sim, s, Dt);
     if (sim->def.multirate == LM_MULTIRATE_SPLIT) {
