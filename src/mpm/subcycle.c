@@ -126,6 +126,7 @@
 #include "gather.h"
 #include "step.h"
 #include "sim_work.h"
+#include "simd2.h"
 #include "step_kernels.h"
 #include "subcycle_band.h"
 #include "subcycle_kick.h"
@@ -328,9 +329,14 @@ static LM_FORCE_INLINE void consistent_rows(const lm_sim *sim, lm_subcycle *s, s
             if (!s->near[i]) continue;
             const double w = m * N[b1 * W + a1];
             double *row = s->C + (size_t)i * (size_t)(B * B);
-            for (int b2 = 0; b2 < W; b2++)
-                for (int a2 = 0; a2 < W; a2++)
-                    row[(b2 - b1 + W - 1) * B + a2 - a1 + W - 1] += w * N[b2 * W + a2];
+            for (int b2 = 0; b2 < W; b2++) {
+                /* d[a2] += w N[b2 W + a2]: two at once, each lane the
+                 * scalar's product and sum (simd2.h: the same bits) */
+                double *d = row + (b2 - b1 + W - 1) * B + W - 1 - a1;
+                const double *n = N + b2 * W;
+                lm_v2d_store(d, lm_v2d_load(d) + w * lm_v2d_load(n));
+                if (W == 3) d[2] += w * n[2];
+            }
         }
 }
 
