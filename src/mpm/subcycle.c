@@ -386,6 +386,29 @@ static void slow_consistent_mass(lm_sim *sim, lm_subcycle *s, int all)
     }
 }
 
+/* Rows i and i + 1 of C A into u[i], u[i + 1]: each lane row i's or row
+ * i + 1's sum in slow_remap_rows's order (its A one node apart, so the two
+ * read neighbouring A: one load), a zero entry adding nothing as there (its
+ * product masked to +0, and a sum that starts at +0 is never -0): the same
+ * bits (simd2.h). o: the offset of the row's first entry. */
+typedef long long lm_v2l __attribute__((vector_size(16)));
+static LM_FORCE_INLINE void slow_remap_pair(const lm_subcycle *s, const double *row, long i,
+                                            int B, long o, long sx, double *ux, double *uy)
+{
+    const size_t BB = (size_t)(B * B);
+    lm_v2d ax = {0, 0}, ay = {0, 0};
+    for (int dy = 0; dy < B; dy++)
+        for (int dx = 0; dx < B; dx++) {
+            const lm_v2d c = {row[dy * B + dx], row[BB + (size_t)(dy * B + dx)]};
+            const lm_v2l nz = c != 0;
+            const long j = i + (long)dy * sx + dx - o;
+            ax += (lm_v2d)((lm_v2l)(c * lm_v2d_load(s->Ax + j)) & nz);
+            ay += (lm_v2d)((lm_v2l)(c * lm_v2d_load(s->Ay + j)) & nz);
+        }
+    lm_v2d_store(ux + i, ax);
+    lm_v2d_store(uy + i, ay);
+}
+
 /* (ux, uy) = p^G(x^n) + fold(C A): the slow group's particles' re-mapped
  * momenta had they taken the velocity change A so far. */
 static void slow_remap_rows(const lm_sim *sim, const lm_subcycle *s, double *ux, double *uy,
@@ -399,6 +422,11 @@ static void slow_remap_rows(const lm_sim *sim, const lm_subcycle *s, double *ux,
     for (size_t r = 0; r < nrows; r++) {
         const long i = rows[r];
         const double *row = s->C + (size_t)i * (size_t)(B * B);
+        if (r + 1 < nrows && rows[r + 1] == i + 1) {   /* rows i, i + 1 together */
+            slow_remap_pair(s, row, i, B, (long)(W - 1) * (g->sx + 1), g->sx, ux, uy);
+            r++;
+            continue;
+        }
         double sx = 0, sy = 0;
         for (int dy = 0; dy < B; dy++)
             for (int dx = 0; dx < B; dx++) {
