@@ -748,10 +748,11 @@ lm_status lm_subcycle_step(lm_sim *sim)
         s->fP_set = 1;
     }
 
-    for (size_t q = 0; q < p->n; q++) {
-        s->xs[4 * q] = p->x[q];
-        s->xs[4 * q + 1] = p->y[q];
-    }
+    if (sim->def.scheme == LM_MUSL && sim->def.multirate == LM_MULTIRATE_HELD)
+        for (size_t q = 0; q < p->n; q++) {   /* x^n: read by held's MUSL strain alone */
+            s->xs[4 * q] = p->x[q];
+            s->xs[4 * q + 1] = p->y[q];
+        }
     /* the band's loops are the plain ones without the terms the airbags
      * add (a link's far end, a pin's solve in step 3) and with the slow
      * force held in every sub-step (a far node's closed form): otherwise
