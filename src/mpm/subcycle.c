@@ -132,9 +132,11 @@
 #include "gather.h"
 #include "step.h"
 #include "sim_work.h"
+#include "simd2.h"
 #include "step_kernels.h"
 #include "subcycle_band.h"
 #include "subcycle_gasband.h"
+#include "subcycle_kick.h"
 #include "subcycle_runs.h"
 #include "subcycle_terms.h"
 #include "threads.h"
@@ -165,6 +167,8 @@ typedef struct lm_subcycle {
     size_t nrows;
     int whole;                            /* the band is every node: the
                                              standard steps sweep them */
+    int kick;                             /* the impulse forms' band after
+                                             the kick (subcycle_kick.c) */
     lm_band *band;                        /* the nodes the sub-steps sweep
                                              (subcycle_band.c) */
     lm_gasband *gb;                       /* fast_band: the gas points in the
@@ -348,9 +352,14 @@ static LM_FORCE_INLINE void consistent_rows(const lm_sim *sim, lm_subcycle *s, s
             if (!s->near[i]) continue;
             const double w = m * N[b1 * W + a1];
             double *row = s->C + (size_t)i * (size_t)(B * B);
-            for (int b2 = 0; b2 < W; b2++)
-                for (int a2 = 0; a2 < W; a2++)
-                    row[(b2 - b1 + W - 1) * B + a2 - a1 + W - 1] += w * N[b2 * W + a2];
+            for (int b2 = 0; b2 < W; b2++) {
+                /* d[a2] += w N[b2 W + a2]: two at once, each lane the
+                 * scalar's product and sum (simd2.h: the same bits) */
+                double *d = row + (b2 - b1 + W - 1) * B + W - 1 - a1;
+                const double *n = N + b2 * W;
+                lm_v2d_store(d, lm_v2d_load(d) + w * lm_v2d_load(n));
+                if (W == 3) d[2] += w * n[2];
+            }
         }
 }
 
@@ -400,18 +409,47 @@ static void slow_consistent_mass(lm_sim *sim, lm_subcycle *s, int all)
     }
 }
 
+/* Rows i and i + 1 of C A into u[i], u[i + 1]: each lane row i's or row
+ * i + 1's sum in slow_remap_rows's order (its A one node apart, so the two
+ * read neighbouring A: one load), a zero entry adding nothing as there (its
+ * product masked to +0, and a sum that starts at +0 is never -0): the same
+ * bits (simd2.h). o: the offset of the row's first entry. */
+typedef long long lm_v2l __attribute__((vector_size(16)));
+static LM_FORCE_INLINE void slow_remap_pair(const lm_subcycle *s, const double *row, long i,
+                                            int B, long o, long sx, double *ux, double *uy)
+{
+    const size_t BB = (size_t)(B * B);
+    lm_v2d ax = {0, 0}, ay = {0, 0};
+    for (int dy = 0; dy < B; dy++)
+        for (int dx = 0; dx < B; dx++) {
+            const lm_v2d c = {row[dy * B + dx], row[BB + (size_t)(dy * B + dx)]};
+            const lm_v2l nz = c != 0;
+            const long j = i + (long)dy * sx + dx - o;
+            ax += (lm_v2d)((lm_v2l)(c * lm_v2d_load(s->Ax + j)) & nz);
+            ay += (lm_v2d)((lm_v2l)(c * lm_v2d_load(s->Ay + j)) & nz);
+        }
+    lm_v2d_store(ux + i, ax);
+    lm_v2d_store(uy + i, ay);
+}
+
 /* (ux, uy) = p^G(x^n) + fold(C A): the slow group's particles' re-mapped
  * momenta had they taken the velocity change A so far. */
-static void slow_remap(const lm_sim *sim, const lm_subcycle *s, double *ux, double *uy)
+static void slow_remap_rows(const lm_sim *sim, const lm_subcycle *s, double *ux, double *uy,
+                            const long *rows, size_t nrows)
 {
     const lm_grid *g = &sim->grid;
     const int W = g->sw, B = s->B;
     const lm_band *band = s->band;   /* its rows and what they read */
     double *const f[2] = {ux, uy};
     lm_band_zero(band, 2, f);
-    for (size_t r = 0; r < s->nrows; r++) {
-        const long i = s->rows[r];
+    for (size_t r = 0; r < nrows; r++) {
+        const long i = rows[r];
         const double *row = s->C + (size_t)i * (size_t)(B * B);
+        if (r + 1 < nrows && rows[r + 1] == i + 1) {   /* rows i, i + 1 together */
+            slow_remap_pair(s, row, i, B, (long)(W - 1) * (g->sx + 1), g->sx, ux, uy);
+            r++;
+            continue;
+        }
         double sx = 0, sy = 0;
         for (int dy = 0; dy < B; dy++)
             for (int dx = 0; dx < B; dx++) {
@@ -430,6 +468,30 @@ static void slow_remap(const lm_sim *sim, const lm_subcycle *s, double *ux, doub
         const long i = band->idx[r];
         ux[i] += s->qGx[i];
         uy[i] += s->qGy[i];
+    }
+}
+
+static void slow_remap(const lm_sim *sim, const lm_subcycle *s, double *ux, double *uy)
+{
+    slow_remap_rows(sim, s, ux, uy, s->rows, s->nrows);
+}
+
+/* The consistent carry p^G = p^G(x^n) + C A: on every row, or after the
+ * impulse forms' kick on the band's alone (subcycle_kick.c: p^G elsewhere
+ * stays what the kick's re-map made it), through f^M (spent: scratch) so
+ * that the fold of the rows outside the band leaves p^G there alone. */
+static void slow_carry(const lm_sim *sim, lm_subcycle *s)
+{
+    const lm_band *band = s->band;
+    if (s->whole) {
+        slow_remap(sim, s, s->pGx, s->pGy);
+        return;
+    }
+    slow_remap_rows(sim, s, s->fMx, s->fMy, band->idx, band->n);
+    for (size_t r = 0; r < band->n; r++) {
+        const long i = band->idx[r];
+        s->pGx[i] = s->fMx[i];
+        s->pGy[i] = s->fMy[i];
     }
 }
 
@@ -501,10 +563,12 @@ static int mr_consistent(const lm_sim *sim)
            sim->def.multirate == LM_MULTIRATE_SPLIT || sim->def.multirate == LM_MULTIRATE_HYBRID;
 }
 
-/* R += dt v^R, the re-mapped velocities MUSL strained the membranes with */
+/* R += dt v^R, the re-mapped velocities MUSL strained the membranes with
+ * (on the band; the kick's far nodes: subcycle_kick.c) */
 static void mr_remapped_displacement(lm_subcycle *s, const lm_grid *g, double dt)
 {
-    for (size_t i = 0; i < s->nn; i++) {
+    for (size_t r = 0; r < s->band->n; r++) {
+        const long i = s->band->idx[r];
         s->Rx[i] += dt * g->vx[i];
         s->Ry[i] += dt * g->vy[i];
     }
@@ -586,7 +650,12 @@ static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int j, double dt, double 
         FOR_FAST(sim, q) lm_k_shape(sim, p, q, rx, ry);
         if (s->gb) lm_gasband_shape(sim, s->gb);
         lm_band_nodes bn = band_nodes(s);
-        if (!s->whole) lm_band_grow(s->band, sim, &bn, j, dt);
+        if (s->kick && !s->whole && lm_kick_band_grow(s->band, sim, &bn, s->Rx, s->Ry, j, dt)) {
+            lm_band_all(s->band);   /* a stencil left S: every node from here */
+            s->whole = 1;
+        } else if (!s->whole && !s->kick) {
+            lm_band_grow(s->band, sim, &bn, j, dt);
+        }
         lm_membrane_segment_forces(sim);
         fast_sums(sim, s, band);
     }
@@ -618,7 +687,7 @@ static lm_status sub_step(lm_sim *sim, lm_subcycle *s, int j, double dt, double 
         s->Vx[i] = g->vx[i];
         s->Vy[i] = g->vy[i];
     }
-    if (mr_consistent(sim)) slow_remap(sim, s, s->pGx, s->pGy);   /* p^G(x^n) + C A */
+    if (mr_consistent(sim)) slow_carry(sim, s);   /* p^G(x^n) + C A */
     const double pic = sim->def.pic;
     FOR_FAST(sim, q) {   /* x before this sub-step (the last one's is kept) */
         s->xs[4 * q + 2] = p->x[q];
@@ -718,27 +787,35 @@ lm_status lm_subcycle_step(lm_sim *sim)
         s->fP_set = 1;
     }
 
-    for (size_t q = 0; q < p->n; q++) {
-        s->xs[4 * q] = p->x[q];
-        s->xs[4 * q + 1] = p->y[q];
-    }
+    if (sim->def.scheme == LM_MUSL && sim->def.multirate == LM_MULTIRATE_HELD)
+        for (size_t q = 0; q < p->n; q++) {   /* x^n: read by held's MUSL strain alone */
+            s->xs[4 * q] = p->x[q];
+            s->xs[4 * q + 1] = p->y[q];
+        }
     /* the band's loops are the plain ones without the terms the airbags
      * add (a link's far end, a pin's solve in step 3) and with the slow
      * force held in every sub-step (a far node's closed form): otherwise
      * every node is swept by the standard steps */
     s->whole = lm_subcycle_terms_active(sim) || sim->def.multirate != LM_MULTIRATE_HELD ||
                s->gb;   /* the band's nodes are the membranes' (subcycle_band.c) */
+    s->kick = !lm_subcycle_terms_active(sim) && lm_kick_banded(sim) && k > 1 &&
+              !s->gb;   /* fast_band's gas points change the carry too */
     if (s->whole) lm_band_all(s->band);
     else lm_band_build(s->band, sim, band_need(sim));   /* the stencils at x^n */
     sim->def.dt = dt;                           /* what the phases read */
     for (int j = 0; j < k && st == LM_OK; j++) {
         st = sub_step(sim, s, j, dt, mr_weight(sim, j, k));
         lm_subcycle_pins_react(sim, j, k);
+        if (j == 0 && s->kick) {   /* after the kick: the band (subcycle_kick.c) */
+            lm_kick_band_build(s->band, sim);
+            s->whole = 0;
+        }
     }
     sim->def.dt = Dt;
     if (st != LM_OK) return st;
     lm_band_nodes bn = band_nodes(s);
-    if (!s->whole) lm_band_far(sim, s->band, &bn, k, dt);   /* the nodes no membrane reached */
+    if (!s->whole && s->kick) lm_kick_band_far(sim, s->band, &bn, s->Rx, s->Ry, k, dt);
+    else if (!s->whole) lm_band_far(sim, s->band, &bn, k, dt);   /* the nodes no membrane reached */
     if (s->gb && sim->def.multirate == LM_MULTIRATE_HELD) {   /* the far gas: the plain step's X */
         lm_gasband_far_displacement(s->gb, s->Ax, s->Ay, s->Xx, s->Xy, k, Dt);
         double *const fill[2] = {s->Xx, s->Xy};   /* a ghost node: its mirror's image */
