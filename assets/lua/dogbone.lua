@@ -93,15 +93,22 @@ M.counts = { [0.4] = 56, [0.2] = 100, [0.1] = 200, [0.05] = 400 }
 -- away from the origin), pic (default 0), split (gas splitting, default
 -- none), threads (default 1), density (lamina.gas{density}, default
 -- "continuity"), force (sim:membrane{force}, default "point"), mass
--- (lamina.sim{mass}, default the sim's). Returns sim, gas, membrane.
+-- (lamina.sim{mass}, default the sim's), multirate (the gas's step m x dt
+-- with the membrane sub-stepped, below). Returns sim, gas, membrane.
 function M.setup(h, o)
   o = o or {}
   local cm = math.sqrt(1e6 / ((1 - 0.3^2) * 0.5))
-  local sim = lamina.sim{ domain = {0, 0, 1.6, 1.6}, cell = h, dt = 0.5 * h / cm,
+  -- o.multirate = m (> 1): the gas at m x this dt, the membrane in the
+  -- fewest sub-steps within its Courant limit, the impulse form, and a gas
+  -- point's viscosity at most 0.25 rho h^2 / dt (docs/performance.md "The
+  -- gas's step beside a membrane"); nil or 1: the plain step, as before
+  local m = o.multirate and o.multirate > 1 and o.multirate or nil
+  local sim = lamina.sim{ domain = {0, 0, 1.6, 1.6}, cell = h, dt = 0.5 * h / cm * (m or 1),
                           boundary = { left = "symmetry", bottom = "symmetry",
                                        right = "fixed", top = "fixed" },
                           pic = o.pic or 0, threads = o.threads,
-                          basis = o.basis or "linear", mass = o.mass }
+                          basis = o.basis or "linear", mass = o.mass,
+                          substeps = m and "auto", multirate = m and "impulse", viscous_limit = m and 0.25 }
   local air = lamina.gas{ rho = 1, e = 250, gamma = 1.4, mu = 0.2, split = o.split,
                           density = o.density }
   local skin = lamina.membrane{ rho = 0.5, E = 1e6, nu = 0.3, thickness = 0.1,

@@ -243,7 +243,8 @@ function M.dt(h) return M.deck.dt * h / M.deck.cell end
 -- The expansion problem at cell h. o: normals (default "connectivity",
 -- oriented away from the origin), pic (default 0), split (gas splitting),
 -- threads, density (lamina.gas{density}), basis, force (sim:membrane{force},
--- default "point"), count (membrane points, default the deck's 600).
+-- default "point"), count (membrane points, default the deck's 600),
+-- multirate (the gas's step m x the deck's dt with sub-steps, below).
 -- Returns sim, gas, membrane.
 function M.setup(h, o)
   o = o or {}
@@ -251,12 +252,21 @@ function M.setup(h, o)
   -- o.substeps = k: multi-rate stepping (docs/api.md `substeps`), the gas
   -- stepping k times the deck's dt and the membrane k sub-steps of it
   local k = o.substeps
-  local sim = lamina.sim{ domain = {0, 0, d.width, d.width}, cell = h, dt = M.dt(h) * (k or 1),
+  -- o.multirate = m (> 1): the gas at m x the deck's dt, the membrane in the
+  -- fewest sub-steps within its Courant limit, the impulse form, and a gas
+  -- point's viscosity at most 0.25 rho h^2 / dt (lamina.sim{substeps = "auto",
+  -- multirate = "impulse", viscous_limit = 0.25}: what carries this deck's
+  -- MUSL step past a rarefied gas point's explicit viscous limit,
+  -- docs/performance.md "The gas's step beside a membrane"); nil or 1: the
+  -- plain step, every hash as before
+  local m = o.multirate and o.multirate > 1 and o.multirate or nil
+  local sim = lamina.sim{ domain = {0, 0, d.width, d.width}, cell = h, dt = M.dt(h) * (k or m or 1),
                           courant = 1.05,   -- the deck's dt c / h = 1.04 (above)
                           boundary = { left = "symmetry", bottom = "symmetry",
                                        right = "symmetry", top = "symmetry" },
                           pic = o.pic or 0, threads = o.threads,
-                          basis = o.basis or "linear", substeps = k }
+                          basis = o.basis or "linear", substeps = k or (m and "auto"),
+                          multirate = m and "impulse", viscous_limit = m and 0.25 }
   local air = lamina.gas{ rho = d.rho_gas, e = d.e, gamma = d.gamma, mu = d.mu, split = o.split,
                           density = o.density }
   local skin = lamina.membrane{ rho = d.rho_membrane, E = d.E, nu = d.nu, thickness = d.thickness,

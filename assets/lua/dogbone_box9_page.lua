@@ -6,7 +6,9 @@
 -- what each number means.
 --   local page = require("dogbone_box9_page")
 --   page.fig47(out)
---   page.cell(h, { out, t_end, threads, report, radius_series, energy_series, hashes })
+--   page.cell(h, { out, t_end, threads, report, radius_series, energy_series, hashes, multirate })
+-- (multirate = m: the gas at m x the deck's dt with the membrane's sub-steps,
+-- assets/lua/dogbone_box9.lua's setup; nil: the plain step)
 local b = require("dogbone_box9")
 local gn = require("gas_nodes")
 local means = require("dogbone_means")
@@ -60,7 +62,7 @@ function M.cell(h, c)
   local out, t_end, threads, report = c.out, c.t_end, c.threads, c.report
   local radius_series, energy_series, hashes = c.radius_series, c.energy_series, c.hashes
   local basis = h < 0.075 and "bspline2" or "linear"
-  local sim, gas, mem = b.setup(h, { basis = basis, threads = threads })
+  local sim, gas, mem = b.setup(h, { basis = basis, threads = threads, multirate = c.multirate })
   local ngas, nmem = #gas, #mem
   local mass = 0
   for _, body in ipairs{gas, mem} do
@@ -205,9 +207,11 @@ function M.cell(h, c)
   report["hidden_kinetic_" .. tag] = { hidden, unit = string.format("(of %.0f)", tot[1]) }
   report["gas_outside_" .. tag] = { escaped, ref = 0, tol = 0, unit = "points ([T] §6.2: none should escape)" }
   report["total_mass_" .. tag] = { mass, paper = T5[h][4], tol = 0.0005, unit = "([T] Table 5, to its three digits)" }
-  report["run_" .. tag] = string.format("%s basis, %d + %d points, dt %.3g, %d steps, %.0f s",
+  report["run_" .. tag] = string.format("%s basis, %d + %d points, dt %.3g, %d steps%s, %.0f s",
                                         basis == "linear" and "bilinear" or "quadratic B-spline",
-                                        ngas, nmem, sim.dt, sim.nstep, secs)
+                                        ngas, nmem, sim.dt, sim.nstep,
+                                        sim.substeps > 1 and string.format(" of %d membrane sub-steps (impulse, "
+                                          .. "viscous_limit %g)", sim.substeps, sim.viscous_limit) or "", secs)
   local t = rec:column("t")
   radius_series[#radius_series + 1] = { x = t, y = rec:column("r0"), label = string.format("0 deg, cell %.2f", h) }
   radius_series[#radius_series + 1] = { x = t, y = rec:column("r90"), label = string.format("90 deg, cell %.2f", h),
