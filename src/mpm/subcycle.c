@@ -140,6 +140,7 @@
 #include "subcycle_runs.h"
 #include "subcycle_terms.h"
 #include "threads.h"
+#include "util.h"
 
 /* The nodal arrays of the scheme (nn nodes each, ghosts included). */
 typedef struct lm_subcycle {
@@ -178,10 +179,7 @@ typedef struct lm_subcycle {
 void lm_subcycle_free(lm_subcycle *s)
 {
     if (!s) return;
-    free(s->buf);
-    free(s->near);
-    free(s->rows);
-    free(s->xs);
+    LU_FREE_ALL(s->buf, s->near, s->rows, s->xs);
     lm_band_free(s->band);
     lm_gasband_free(s->gb);
     free(s);

@@ -49,6 +49,7 @@
 #include <string.h>
 
 #include "subcycle_band.h"
+#include "util.h"
 
 lm_band *lm_band_new(const lm_grid *g)
 {
@@ -78,13 +79,7 @@ lm_band *lm_band_new(const lm_grid *g)
 void lm_band_free(lm_band *b)
 {
     if (!b) return;
-    free(b->idx);
-    free(b->in);
-    free(b->old);
-    free(b->core);
-    free(b->zero);
-    free(b->mark);
-    free(b);
+    LU_FREE_ALL(b->idx, b->in, b->old, b->core, b->zero, b->mark, b);
 }
 
 /* in = the membranes' present stencils widened by reach, closed under the

@@ -60,18 +60,14 @@
 
 #include "subcycle_gasband.h"
 #include "step_kernels.h"
+#include "util.h"
 
 #define KEEP 7   /* rho, e, q, sxx, syy, sxy, szz */
 
 void lm_gasband_free(lm_gasband *gb)
 {
     if (!gb) return;
-    free(gb->fast);
-    free(gb->idx);
-    free(gb->keep);
-    free(gb->dist);
-    free(gb->reach);
-    free(gb);
+    LU_FREE_ALL(gb->fast, gb->idx, gb->keep, gb->dist, gb->reach, gb);
 }
 
 lm_status lm_gasband_reserve(lm_sim *sim, lm_gasband **gbp)
