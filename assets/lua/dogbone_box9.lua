@@ -230,6 +230,40 @@ end
 -- The record values the measure scripts follow (scripts/measure/dogbone_*):
 -- the enclosed gas's pressure, the hoop stress and the radii at 0 and 90
 -- degrees, for sim:record{values = ...}.
+-- For the measure scripts: the bodies' total mass, and a body's largest
+-- point speed.
+function M.total_mass(bodies)
+  local mass = 0
+  for _, body in ipairs(bodies) do
+    local mm = body:particles().mass
+    for i = 1, #body do mass = mass + mm[i] end
+  end
+  return mass
+end
+function M.max_speed(body)
+  local g = body:particles()
+  local v = 0
+  for q = 1, #body do v = math.max(v, g.vx[q] ^ 2 + g.vy[q] ^ 2) end
+  return math.sqrt(v)
+end
+
+-- The page's numbers as the measure scripts report them
+-- (scripts/measure/dogbone_*.lua): the means of M.history_values' columns over
+-- the run's last time unit [t1 - 1, t1], p r / t from them, printed with the
+-- mass and the total energy at the start and end; returns r0, r90, p, hoop,
+-- prt, t1.
+function M.last_unit(rec, t1, mass)
+  local t0 = math.max(0, t1 - 1)
+  local r0, r90, p, hoop = rec:mean("r0", t0, t1), rec:mean("r90", t0, t1), rec:mean("p", t0, t1),
+                           rec:mean("hoop", t0, t1)
+  local prt = p * 0.5 * (r0 + r90) / M.deck.thickness
+  local tot = rec:column("total")
+  print(string.format("  over [%.2f, %.2f]: r(0) %.4f r(90) %.4f pressure %.3f hoop %.1f vs p r / t %.1f (%+.2f %%) "
+    .. "mass %.5f energy %.3f -> %.3f", t0, t1, r0, r90, p, hoop, prt, 100 * (hoop - prt) / prt, mass, tot[1],
+    tot[#tot]))
+  return r0, r90, p, hoop, prt, t1
+end
+
 function M.history_values(gas, mem)
   return { p = function() return gas:pressure(mem) end,
            hoop = function() return mem:hoop_stress() end,

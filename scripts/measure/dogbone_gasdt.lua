@@ -59,17 +59,8 @@ local gas = sim:body{ material = air, ppc = d.nprg, region = b.contains, name = 
 local with_membrane = lamina.param("membrane", 1) > 0
 local mem = with_membrane and sim:membrane{ material = skin, name = "membrane", count = d.points, normals = "connectivity",
                           orient = {0, 0}, force = lamina.param("force", "point"), curve = lamina.polyline(b.polyline()) }
-local mass = 0
-for _, body in ipairs(mem and {gas, mem} or {gas}) do
-  local mm = body:particles().mass
-  for i = 1, #body do mass = mass + mm[i] end
-end
-local function vmax()
-  local g = gas:particles()
-  local v = 0
-  for q = 1, #gas do v = math.max(v, g.vx[q] ^ 2 + g.vy[q] ^ 2) end
-  return math.sqrt(v)
-end
+local mass = b.total_mass(mem and {gas, mem} or {gas})
+local function vmax() return b.max_speed(gas) end
 
 -- quadratic B-spline weight of a point at x for the node at x_i (cell h)
 local function n1(x, xi)
@@ -221,12 +212,4 @@ print(string.format("dog-bone cell 0.05, plain %s, dt %g x 3.5e-5, E x %.4g, mu 
   scheme, m, E_scale, mu, substeps ~= 0 and string.format(", substeps %s %s", substeps, simdef.multirate) or "",
   ok and "reached" or "STOPPED", sim.t, sim.nstep, cpu))
 if not ok then print("  " .. tostring(err)) end
-local t1 = sim.t
-local t0 = math.max(0, t1 - 1)
-local r0, r90, p, hoop = rec:mean("r0", t0, t1), rec:mean("r90", t0, t1), rec:mean("p", t0, t1),
-                         rec:mean("hoop", t0, t1)
-local prt = p * 0.5 * (r0 + r90) / 0.1
-local tot = rec:column("total")
-print(string.format("  over [%.2f, %.2f]: r(0) %.4f r(90) %.4f pressure %.3f hoop %.1f vs p r / t %.1f (%+.2f %%) "
-  .. "mass %.5f energy %.3f -> %.3f", t0, t1, r0, r90, p, hoop, prt, 100 * (hoop - prt) / prt, mass, tot[1],
-  tot[#tot]))
+b.last_unit(rec, sim.t, mass)

@@ -50,17 +50,8 @@ local gas = sim:body{ material = air, ppc = d.nprg, region = b.contains, name = 
 local mem = sim:membrane{ material = skin, name = "membrane", count = d.points, normals = "connectivity",
                           orient = {0, 0}, force = lamina.param("force", "point"),
                           curve = lamina.polyline(b.polyline()) }
-local mass = 0
-for _, body in ipairs{gas, mem} do
-  local mm = body:particles().mass
-  for i = 1, #body do mass = mass + mm[i] end
-end
-local function vmax()
-  local g = gas:particles()
-  local v = 0
-  for q = 1, #gas do v = math.max(v, g.vx[q] ^ 2 + g.vy[q] ^ 2) end
-  return math.sqrt(v)
-end
+local mass = b.total_mass({gas, mem})
+local function vmax() return b.max_speed(gas) end
 -- the gas's largest c_p + |v_p| (c_p from its specific internal energy,
 -- c^2 = gamma (gamma - 1) e): what lamina's Courant check counts for a gas
 local function cmax()
@@ -109,15 +100,7 @@ if fast_n > 0 and fast_sum > 0 then
   print(string.format("  fast gas points: %.1f on average (of %d)", fast_sum / fast_n, #gas))
 end
 if not ok then print("  " .. tostring(err)) end
-local t1 = sim.t
-local t0 = math.max(0, t1 - 1)
-local r0, r90, p, hoop = rec:mean("r0", t0, t1), rec:mean("r90", t0, t1), rec:mean("p", t0, t1),
-                         rec:mean("hoop", t0, t1)
-local prt = p * 0.5 * (r0 + r90) / 0.1
-local tot = rec:column("total")
-print(string.format("  over [%.2f, %.2f]: r(0) %.4f r(90) %.4f pressure %.3f hoop %.1f vs p r / t %.1f (%+.2f %%) "
-  .. "mass %.5f energy %.3f -> %.3f", t0, t1, r0, r90, p, hoop, prt, 100 * (hoop - prt) / prt, mass, tot[1],
-  tot[#tot]))
+local r0, r90, p, hoop, prt, t1 = b.last_unit(rec, sim.t, mass)
 -- at the page's t = 8.5: the page's tolerances (scripts/paper/gas_dogbone.lua,
 -- the two papers' own difference; hoop against p r / t 5 %; mass to three
 -- digits) against [T] Table 5 (sim 4) and against the plain step's own
