@@ -36,21 +36,32 @@
  * and the segment forms (membrane_force.c); no integration drift. */
 #include <math.h>
 
-#include "gather.h"
 #include "membrane_law.h"
+#include "step_kernels.h"
 
-/* sum_i N_ip v_ri with the strain velocity (step 5), stencil W wide. */
-static inline double radial_velocity(const lm_sim *sim, size_t q)
+/* sum_i N_ip v_ri / r_p with the strain velocity (step 5): N alone, the
+ * stencil's rows without a division a node, in lm_gather's node-by-node
+ * order (the bits it always had; its cost was a quarter of an airbag
+ * step, issue 36). */
+static LM_FORCE_INLINE double hoop_rate_w(const lm_sim *sim, size_t q, const int W)
 {
-    lm_weights wt;
-    lm_weights_of(sim, q, &wt);
-    return lm_gather(&sim->grid, &wt, sim->p.node[q], sim->grid.vx);
+    const lm_grid *g = &sim->grid;
+    const lm_particles *p = &sim->p;
+    double r = p->x[q];
+    if (!(r > 0)) return 0;
+    double Nl[9];
+    const double *N = lm_k_weights_N(p, q, W, Nl);
+    double s = 0;
+    for (int b = 0; b < W; b++) {
+        const long row = lm_stencil_row(g, p->node[q], b);
+        for (int a = 0; a < W; a++) s += N[b * W + a] * g->vx[row + a];
+    }
+    return s / r;
 }
 
 double lm_axisym_hoop_rate(const lm_sim *sim, size_t q)
 {
-    double r = sim->p.x[q];
-    return r > 0 ? radial_velocity(sim, q) / r : 0;
+    return sim->grid.sw == 2 ? hoop_rate_w(sim, q, 2) : hoop_rate_w(sim, q, 3);
 }
 
 double lm_axisym_ring_radius(double r, double l)
@@ -125,7 +136,7 @@ void lm_axisym_forces_into(lm_sim *sim, double *fx, int membranes)
 {
     lm_grid *g = &sim->grid;
     const lm_particles *p = &sim->p;
-    const int W = g->sw, NS = W * W;
+    const int W = g->sw;
     for (size_t q = 0; q < p->n; q++) {
         double r = p->x[q];
         if (!(r > 0)) continue;   /* on the axis: see the head of the file */
@@ -139,9 +150,14 @@ void lm_axisym_forces_into(lm_sim *sim, double *fx, int membranes)
         } else {
             c = -(p->m[q] / p->rho[q]) * p->szz[q] / r;
         }
-        lm_weights wt;
-        lm_weights_of(sim, q, &wt);
-        for (int k = 0; k < NS; k++) fx[lm_stencil_node(g, W, p->node[q], k)] += c * wt.N[k];
+        /* N alone, row by row: each node of the stencil once, so the
+         * order of a node's sum (particle by particle) is unchanged */
+        double Nl[9];
+        const double *N = W == 2 ? lm_k_weights_N(p, q, 2, Nl) : lm_k_weights_N(p, q, 3, Nl);
+        for (int b = 0; b < W; b++) {
+            const long row = lm_stencil_row(g, p->node[q], b);
+            for (int a = 0; a < W; a++) fx[row + a] += c * N[b * W + a];
+        }
     }
     /* the ghost nodes were emptied by the in-plane scatter's fold: this
      * folds only the hoop terms (the x image is odd across the axis) */

@@ -357,6 +357,13 @@ static inline void velocity_gradient(const lm_grid *g, const lm_particles *p, si
     if (g->sw == 2) lm_k_velocity_gradient(g, p, q, g->vx, g->vy, L, rx, ry, 2);
     else lm_k_velocity_gradient(g, p, q, g->vx, g->vy, L, rx, ry, 3);
 }
+/* The same and the hoop rate (axisym.c) in one read of the stencil */
+static inline double velocity_gradient_hoop(const lm_grid *g, const lm_particles *p, size_t q,
+                                            double L[4], double rx, double ry)
+{
+    return g->sw == 2 ? lm_k_velocity_gradient_hoop(g, p, q, L, rx, ry, 2)
+                      : lm_k_velocity_gradient_hoop(g, p, q, L, rx, ry, 3);
+}
 
 /* Phase 6c: the artificial viscosity of [F] eq 24 needs, before any gas
  * point is updated, the largest |div v| and the largest sound speed over
@@ -378,11 +385,11 @@ void lm_step_gas_maxima(lm_sim *sim, double *max_div, double *c_max)
     for (long q = 0; q < n; q++) {
         const lm_material *mat = sim->mats[p->mat[q]];
         if (mat->kind != LM_GAS || !mat->av) continue;
-        double L[4];
-        velocity_gradient(&sim->grid, p, (size_t)q, L, rx, ry);
+        double L[4], hoop = 0;
+        if (sim->def.axisym) hoop = velocity_gradient_hoop(&sim->grid, p, (size_t)q, L, rx, ry);
+        else velocity_gradient(&sim->grid, p, (size_t)q, L, rx, ry);
         if (moved) lm_contact_gradient_near(sim, (size_t)q, L);
-        double div = fabs(sim->def.axisym ? L[0] + L[3] + lm_axisym_hoop_rate(sim, (size_t)q)
-                                           : L[0] + L[3]);
+        double div = fabs(sim->def.axisym ? L[0] + L[3] + hoop : L[0] + L[3]);
         double c = lm_gas_sound_speed(mat, p->e[q]);
         if (div > md) md = div;
         if (c > cm) cm = c;
@@ -395,14 +402,15 @@ void lm_step_gas_maxima(lm_sim *sim, double *max_div, double *c_max)
  * (dt/2)(L + L^T) and the spin (1/2)(L - L^T). */
 static void rate_at(const lm_sim *sim, size_t q, lm_rate *r, int moved, double rx, double ry)
 {
-    velocity_gradient(&sim->grid, &sim->p, q, r->L, rx, ry);
+    r->hoop = 0;
+    if (sim->def.axisym) r->hoop = velocity_gradient_hoop(&sim->grid, &sim->p, q, r->L, rx, ry);
+    else velocity_gradient(&sim->grid, &sim->p, q, r->L, rx, ry);
     if (moved) lm_contact_gradient_near(sim, q, r->L);   /* contact.h */
     const double *L = r->L, dt = sim->def.dt;
     r->dexx = dt * L[0];
     r->deyy = dt * L[3];
     r->dexy = 0.5 * dt * (L[1] + L[2]);
     r->w = 0.5 * (L[1] - L[2]);
-    r->hoop = sim->def.axisym ? lm_axisym_hoop_rate(sim, q) : 0;
 }
 
 /* Steps 7-8 ([F] eqs 14-23): each particle's rate from the grid velocity

@@ -7,6 +7,7 @@ set -eu
 lamina=$1; script=$2
 out=out/main_balloon
 rm -rf "$out"
+mkdir -p out
 "$lamina" run "$script" --set out="$out" --set t_end=0.3 > "$out.log"
 cat "$out.log"
 n=$(ls "$out"/frame_*.png | wc -l)
