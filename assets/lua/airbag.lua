@@ -9,7 +9,7 @@
 --           probe = { radius = 0.1, mass = 6.03, speed = 3.90, gap = 0.011, exact_mass = false },
 --           width = 0.32, cells_r = 17,
 --           frame_times = {...}, on_frame = function(sim, tf, bodies),
---           dt_factor = 1, substeps = nil, scheme = nil }
+--           dt_factor = 1, impact_dt_factor = nil, substeps = nil, scheme = nil }
 -- runs the tethered pre-run to rest, then the probe, and returns the
 -- history (t in ms from the probe's start, u and v into the bag, p, the
 -- tether's tension T, the energies) with the summary numbers. refine
@@ -95,6 +95,9 @@ function M.impact(o)
   for i = 1, #P.x do if P.x[i] <= 0.1 then ztop = math.max(ztop, P.y[i]) end end
   local tension = tether:tension()
   sim.pic = 0
+  -- impact_dt_factor: the impact (after the pre-run) at that many x the
+  -- deck's dt / refine, the pre-run at dt_factor's
+  if o.impact_dt_factor then sim.dt = 3.5e-6 / refine * o.impact_dt_factor end
   if variant == "removed" then tether:remove() end
   -- the probe, 11 mm above the bag as in Box 10 (0.329 over the pole's 0.318)
   local po = o.probe or {}
