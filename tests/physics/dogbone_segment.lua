@@ -26,7 +26,11 @@
 -- quarter cell plus its skin-grazers (issue 30: the count this file used)
 local function all_outside(beyond, _, grazing) return beyond + grazing end
 local dog = require("dogbone")
-local h, t_end = 0.1, 2.5
+-- t_end < 2.5 (the sanitized build's quick run, tests/CMakeLists.txt): the
+-- same set-up and checks through the snap (energy within 1 %, gas
+-- contained), without the settled shape's, which need t = 1.5-2.5
+local h, t_end = 0.1, lamina.param("t_end", 2.5)
+local settled = t_end >= 2.5
 -- The papers' lumped mass, named: on the default ("auto": "membrane" for
 -- segment membranes) these 60 points are one of the counts where a particle
 -- gets through (5 outside by t = 2.5), as 56, 57, 59, 61, 63 and 64 are on
@@ -58,6 +62,18 @@ sim:every(0.01, function()
   escaped = math.max(escaped, outside())
   worst = math.max(worst, math.abs(sim:energy().total / e0 - 1))
 end)
+if not settled then
+  sim:run{ t_end = t_end }
+  print(string.format("dog-bone, segments, cell 0.1, 60 points, to t = %g: energy within %.2f %%, "
+                      .. "gas outside %d", t_end, 100 * worst, escaped))
+  -- leak_ok: the default mass's known leak at this count (above) reported,
+  -- not asserted (the full run asserts it: an expected failure)
+  if not lamina.param("leak_ok", false) then
+    assert(escaped == 0, escaped .. " gas particles outside the membrane")
+  end
+  assert(worst < 0.01, string.format("energy changed by %.2f %% (limit 1 %%)", 100 * worst))
+  return
+end
 sim:run{ t_end = t_end - 1 }
 local n, hoop, r0, r90, p = 0, 0, 0, 0, 0
 while sim.t < t_end - 1e-9 do
