@@ -39,29 +39,15 @@
 #include "membrane_law.h"
 #include "step_kernels.h"
 
-/* sum_i N_ip v_ri / r_p with the strain velocity (step 5): N alone, the
- * stencil's rows without a division a node, in lm_gather's node-by-node
- * order (the bits it always had; its cost was a quarter of an airbag
- * step, issue 36). */
-static LM_FORCE_INLINE double hoop_rate_w(const lm_sim *sim, size_t q, const int W)
-{
-    const lm_grid *g = &sim->grid;
-    const lm_particles *p = &sim->p;
-    double r = p->x[q];
-    if (!(r > 0)) return 0;
-    double Nl[9];
-    const double *N = lm_k_weights_N(p, q, W, Nl);
-    double s = 0;
-    for (int b = 0; b < W; b++) {
-        const long row = lm_stencil_row(g, p->node[q], b);
-        for (int a = 0; a < W; a++) s += N[b * W + a] * g->vx[row + a];
-    }
-    return s / r;
-}
-
+/* sum_i N_ip v_ri / r_p with the strain velocity (step 5): the step's own
+ * kernel (step_kernels.h), which the step reads with the velocity gradient */
 double lm_axisym_hoop_rate(const lm_sim *sim, size_t q)
 {
-    return sim->grid.sw == 2 ? hoop_rate_w(sim, q, 2) : hoop_rate_w(sim, q, 3);
+    const lm_grid *g = &sim->grid;
+    const double rx = 1.0 / g->hx, ry = 1.0 / g->hy;
+    double L[4];
+    return g->sw == 2 ? lm_k_gradient_hoop(g, &sim->p, q, g->vx, g->vy, L, rx, ry, 2, 1)
+                      : lm_k_gradient_hoop(g, &sim->p, q, g->vx, g->vy, L, rx, ry, 3, 1);
 }
 
 double lm_axisym_ring_radius(double r, double l)

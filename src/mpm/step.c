@@ -361,8 +361,8 @@ static inline void velocity_gradient(const lm_grid *g, const lm_particles *p, si
 static inline double velocity_gradient_hoop(const lm_grid *g, const lm_particles *p, size_t q,
                                             double L[4], double rx, double ry)
 {
-    return g->sw == 2 ? lm_k_velocity_gradient_hoop(g, p, q, L, rx, ry, 2)
-                      : lm_k_velocity_gradient_hoop(g, p, q, L, rx, ry, 3);
+    return g->sw == 2 ? lm_k_gradient_hoop(g, p, q, g->vx, g->vy, L, rx, ry, 2, 1)
+                      : lm_k_gradient_hoop(g, p, q, g->vx, g->vy, L, rx, ry, 3, 1);
 }
 
 /* Phase 6c: the artificial viscosity of [F] eq 24 needs, before any gas

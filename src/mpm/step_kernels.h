@@ -221,16 +221,19 @@ static LM_FORCE_INLINE void lm_k_g2p(const lm_grid *g, lm_particles *p, size_t q
 }
 
 /* L = sum_i v_i (x) G_ip (L = dv/dx) at particle q from the nodal
- * velocities (vx, vy), stencil W wide. */
-static LM_FORCE_INLINE void lm_k_velocity_gradient(const lm_grid *g, const lm_particles *p,
-                                                   size_t q, const double *gvx,
-                                                   const double *gvy, double L[4], double rx,
-                                                   double ry, const int W)
+ * velocities (vx, vy), stencil W wide; with hoop (the axisymmetric form,
+ * axisym.c) also sum_i N_ip v_ri / r_p, returned (0 on the axis, r_p = 0),
+ * from the same read of the nodes: each sum in its own order, so the bits
+ * of the two apart. */
+static LM_FORCE_INLINE double lm_k_gradient_hoop(const lm_grid *g, const lm_particles *p,
+                                                 size_t q, const double *gvx,
+                                                 const double *gvy, double L[4], double rx,
+                                                 double ry, const int W, const int hoop)
 {
-    double Gxl[9], Gyl[9];
-    const double *Gx, *Gy;
+    double Nl[9], Gxl[9], Gyl[9];
+    const double *N = hoop ? lm_k_weights_N(p, q, W, Nl) : NULL, *Gx, *Gy;
     lm_k_weights_G(p, q, W, rx, ry, Gxl, Gyl, &Gx, &Gy);
-    double Lxx = 0, Lxy = 0, Lyx = 0, Lyy = 0;
+    double Lxx = 0, Lxy = 0, Lyx = 0, Lyy = 0, s = 0;
     for (int b = 0; b < W; b++) {
         const long row = lm_stencil_row(g, p->node[q], b);
         for (int a = 0; a < W; a++) {
@@ -240,38 +243,19 @@ static LM_FORCE_INLINE void lm_k_velocity_gradient(const lm_grid *g, const lm_pa
             Lxy += vx * gy;
             Lyx += vy * gx;
             Lyy += vy * gy;
-        }
-    }
-    L[0] = Lxx; L[1] = Lxy; L[2] = Lyx; L[3] = Lyy;
-}
-
-/* The same with the axisymmetric hoop rate sum_i N_ip v_ri / r_p
- * (axisym.c) from the same read of the nodes: each sum in its own order,
- * so the bits of the two apart (0 on the axis, r_p = 0). */
-static LM_FORCE_INLINE double lm_k_velocity_gradient_hoop(const lm_grid *g,
-                                                         const lm_particles *p, size_t q,
-                                                         double L[4], double rx, double ry,
-                                                         const int W)
-{
-    double Nl[9], Gxl[9], Gyl[9];
-    const double *N = lm_k_weights_N(p, q, W, Nl), *Gx, *Gy;
-    lm_k_weights_G(p, q, W, rx, ry, Gxl, Gyl, &Gx, &Gy);
-    double Lxx = 0, Lxy = 0, Lyx = 0, Lyy = 0, s = 0;
-    for (int b = 0; b < W; b++) {
-        const long row = lm_stencil_row(g, p->node[q], b);
-        for (int a = 0; a < W; a++) {
-            double gx = Gx[b * W + a], gy = Gy[b * W + a];
-            double vx = g->vx[row + a], vy = g->vy[row + a];
-            Lxx += vx * gx;
-            Lxy += vx * gy;
-            Lyx += vy * gx;
-            Lyy += vy * gy;
-            s += N[b * W + a] * vx;
+            if (hoop) s += N[b * W + a] * vx;
         }
     }
     L[0] = Lxx; L[1] = Lxy; L[2] = Lyx; L[3] = Lyy;
     double r = p->x[q];
-    return r > 0 ? s / r : 0;
+    return hoop && r > 0 ? s / r : 0;
+}
+static LM_FORCE_INLINE void lm_k_velocity_gradient(const lm_grid *g, const lm_particles *p,
+                                                   size_t q, const double *gvx,
+                                                   const double *gvy, double L[4], double rx,
+                                                   double ry, const int W)
+{
+    (void)lm_k_gradient_hoop(g, p, q, gvx, gvy, L, rx, ry, W, 0);
 }
 
 /* The domain the check holds the particles to, worked out once a pass
