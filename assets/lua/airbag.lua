@@ -59,11 +59,12 @@ function M.impact(o)
   local refine, k_tether = o.refine or 1, o.tether_k or 1.9e4
   local width, cells_r = o.width or 0.32, o.cells_r or 17
   local hr, hz = width / (cells_r * refine), 0.5 / (26 * refine)
+  local dt_deck = 3.5e-6 / refine   -- Box 10's dt, divided by the refinement
   -- dt_factor m: the gas and probe at m x the deck's dt; substeps: the bag
   -- in its own sub-steps (multi-rate stepping, docs/performance.md
   -- "Multi-rate on the airbags"); scheme: the step's scheme
   local sim = lamina.sim{ domain = {0, -0.001, width, 0.499}, cell = {hr, hz},
-                          dt = 3.5e-6 / refine * (o.dt_factor or 1), substeps = o.substeps,
+                          dt = dt_deck * (o.dt_factor or 1), substeps = o.substeps,
                           scheme = o.scheme,
                           axisymmetric = true, basis = o.basis or "bspline2", threads = o.threads,
                           -- the papers' lumped mass ([F] eq 7; the default "auto" would make the
@@ -97,7 +98,7 @@ function M.impact(o)
   sim.pic = 0
   -- impact_dt_factor: the impact (after the pre-run) at that many x the
   -- deck's dt / refine, the pre-run at dt_factor's
-  if o.impact_dt_factor then sim.dt = 3.5e-6 / refine * o.impact_dt_factor end
+  if o.impact_dt_factor then sim.dt = dt_deck * o.impact_dt_factor end
   if variant == "removed" then tether:remove() end
   -- the probe, 11 mm above the bag as in Box 10 (0.329 over the pole's 0.318)
   local po = o.probe or {}
