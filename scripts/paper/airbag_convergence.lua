@@ -13,28 +13,31 @@
 --   start)
 -- assumed: as airbag_impact (assets/lua/airbag.lua), the same inputs on
 --   every mesh: gas 16 points per cell, bag points a quarter cell apart, the
---   tethered pre-run at the deck's dt 3.5e-6 s divided by the refinement and
---   the impact at 4 x that (m = 4; `--set m=1` runs the deck's dt
---   throughout): the step is set by the deck, 15 x below every body's
---   Courant limit (docs/performance.md "Multi-rate on the airbags"), and
---   the impact at 4 x moves each mesh's deepest displacement by at most
---   0.02 mm (the deck's dt: 137.47 / 144.04 / 148.59 mm), a hundredth of
---   the mesh-to-mesh change, the final velocity by 0.1 % (-3.110 / -3.027
---   / -2.971 m/s), the gas outside not at all (6 / 5 / 2) and the energy
---   change from -0.29 / -0.27 / -0.38 % to -0.38 / -0.44 / -0.66 % (the
---   MUSL step's loss grows with the step); a pre-run at 2 x leaves more gas
---   points grazing the bag (8 / 9 / 6), so it keeps the deck's dt. The two
+--   tethered pre-run damped to rest (grid damping 150 /s and a PIC blend of
+--   1.25 % a deck step, both per unit time) at 4 x the deck's dt 3.5e-6 s
+--   divided by the refinement and the impact at 8 x it (m = 8, m_pre = 4;
+--   `--set m=1` runs the deck's dt throughout): the step is set by the
+--   deck, 15 x below every body's Courant limit (docs/performance.md
+--   "Multi-rate on the airbags", "The airbag's pre-run"). Ours, on the
+--   deck's dt throughout: deepest 139.98 / 145.94 / 150.54 mm at 59.8 /
+--   61.8 / 63.2 ms, final velocity -3.087 / -2.956 / -2.875 m/s, energy
+--   change -0.27 / -0.30 / -0.45 %, 4 / 3 / 1 gas points outside (302 CPU
+--   s); the longer steps move the deepest by at most 0.03 mm, a
+--   hundred-and-fiftieth of the mesh-to-mesh change, the final velocity by
+--   0.1 %, and the energy change to -0.42 / -0.63 / -1.22 % (the MUSL
+--   step's loss grows with the step), 6 / 6 / 5 gas points outside
+--   (skin-grazers: the pre-run's larger blend a step), 47.8 CPU s. The two
 --   finer meshes run on two threads (the state is bit-identical for a
 --   given thread count)
--- heavy: three meshes to 100 ms, the finest 34 x 52 cells with 12 779 gas points: about 2 min here
+-- heavy: three meshes to 100 ms, the finest 34 x 52 cells with 12 779 gas points: about 30 s here
 -- visual: t_end=0.002 t_pre=0.001 meshes=1
 -- thumb: displacement.png
 local out = lamina.param("out", "out/airbag_convergence")
 local t_end = lamina.param("t_end", 0.1)
 local t_pre = lamina.param("t_pre", 0.03)
 local meshes = lamina.param("meshes", "1,1.5,2")
-local dt_m = lamina.param("m", 4)   -- the impact's step m x the deck's dt / refine (1: the deck's)
-local dt_pre = lamina.param("m_pre", 1)   -- the pre-run's likewise
+local dt_m = lamina.param("m", 8)   -- the impact's step m x the deck's dt / refine (1: the deck's)
+local dt_pre = lamina.param("m_pre", math.min(4, dt_m))   -- the pre-run's likewise
 local airbag = require("airbag")
 
 local runs, list = {}, {}
