@@ -254,21 +254,19 @@ void lm_step_grid_update(lm_sim *sim)
     if (damped) lm_damp_account(sim);
 }
 
-/* Step 4's nodal values, per node once, not per particle corner:
- * a_i = f_i / m_i into (ax, ay) and v_i^L = p_i^L (1 / m_i) into (ux, uy),
- * ghost nodes filled. */
+/* Step 4's nodal values at every node (lm_k_g2p_node), ghost nodes filled. */
 void lm_step_g2p_nodes(lm_sim *sim, double *ux, double *uy)
 {
     lm_grid *g = &sim->grid;
     long nn = (long)lm_grid_nodes(g);
 #pragma omp parallel for num_threads(lm_sim_team(sim)) schedule(static) if (nn > LM_NODE_LOOP_MIN)
-    for (long i = 0; i < nn; i++) {
-        double r = g->m[i] > 0 ? 1.0 / g->m[i] : 0;
-        g->ax[i] = g->fx[i] * r;
-        g->ay[i] = g->fy[i] * r;
-        ux[i] = g->px[i] * r;
-        uy[i] = g->py[i] * r;
-    }
+    for (long i = 0; i < nn; i++) lm_k_g2p_node(g, i, ux, uy);
+    lm_step_fill_g2p_nodes(g, ux, uy);
+}
+
+/* The ghost nodes of step 4's nodal values (lm_k_g2p_node's four fields). */
+void lm_step_fill_g2p_nodes(lm_grid *g, double *ux, double *uy)
+{
     double *const fill[4] = {g->ax, g->ay, ux, uy};
     static const lm_comp comp[4] = {LM_COMP_X, LM_COMP_Y, LM_COMP_X, LM_COMP_Y};
     lm_grid_fill(g, 4, fill, comp);

@@ -189,6 +189,7 @@ void lm_step_p2g_forces(lm_sim *sim);       /* 1 and 2 in one pass (point stress
 void lm_step_grid_update(lm_sim *sim);      /* 3. p_i^L, boundary conditions */
 void lm_step_g2p(lm_sim *sim);              /* 4. v_p, x_p */
 void lm_step_g2p_nodes(lm_sim *sim, double *ux, double *uy);   /* 4's a_i, v_i^L */
+void lm_step_fill_g2p_nodes(lm_grid *g, double *ux, double *uy);   /* their ghosts */
 void lm_step_strain_velocity(lm_sim *sim);  /* 5. MUSL re-map or USL */
 void lm_step_strain_velocity_end(lm_sim *sim, int remap);   /* 5's divide, pins, walls */
 /* 6a. membrane tangents and normals at x^{k+1}: lm_membrane_tangents */

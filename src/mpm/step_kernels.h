@@ -92,6 +92,45 @@ static LM_FORCE_INLINE double *lm_k_at(double *f, double *c, long j, long lo,
     return split && (unsigned long)(j - lo) <= span ? c + j : f + j;
 }
 
+/* Step 4's values at node i, per node once, not per particle corner:
+ * a_i = f_i / m_i into (ax, ay) and v_i^L = p_i^L (1 / m_i) into (ux, uy);
+ * a node without mass gets zeros. */
+static LM_FORCE_INLINE void lm_k_g2p_node(lm_grid *g, long i, double *ux, double *uy)
+{
+    double r = g->m[i] > 0 ? 1.0 / g->m[i] : 0;
+    g->ax[i] = g->fx[i] * r;
+    g->ay[i] = g->fy[i] * r;
+    ux[i] = g->px[i] * r;
+    uy[i] = g->py[i] * r;
+}
+
+/* What particle q gives the nodal forces ([F] eq 9): a segment membrane
+ * point (seg) its net tension, spread with N_ip; any other its volume and
+ * stress, with the weights' gradients (into gx, gy when they are made
+ * here). */
+typedef struct lm_k_force_src {
+    double V, sxx, syy, sxy, fpx, fpy;
+    const double *Gx, *Gy;
+} lm_k_force_src;
+
+static LM_FORCE_INLINE lm_k_force_src lm_k_force_source(const lm_particles *p, size_t q,
+                                                        const int seg, const int W, double rx,
+                                                        double ry, double gx[9], double gy[9])
+{
+    lm_k_force_src s = {0, 0, 0, 0, 0, 0, NULL, NULL};
+    if (seg) {
+        s.fpx = p->fpx[q];
+        s.fpy = p->fpy[q];
+    } else {
+        s.V = p->m[q] / p->rho[q];
+        s.sxx = p->sxx[q];
+        s.syy = p->syy[q];
+        s.sxy = p->sxy[q];
+        lm_k_weights_G(p, q, W, rx, ry, gx, gy, &s.Gx, &s.Gy);
+    }
+    return s;
+}
+
 /* Steps 1 and 2 at particle q: m_p N_ip, m_p v_p N_ip and the internal
  * force -V_p sigma_p . G_ip ([F] eq 9; a segment membrane point's net
  * tension spread with N_ip instead; segs = 0: the caller knows there is
@@ -110,19 +149,11 @@ static LM_FORCE_INLINE void lm_k_scatter_mass_forces(const lm_sim *sim, size_t q
     const lm_particles *p = &sim->p;
     double Nl[9], Gxl[9], Gyl[9];
     const double m = p->m[q], vx = p->vx[q], vy = p->vy[q];
-    const double *N = lm_k_weights_N(p, q, W, Nl), *Gx = NULL, *Gy = NULL;
+    const double *N = lm_k_weights_N(p, q, W, Nl);
     const int seg = segs && lm_k_segment_point(sim, q);
-    double V = 0, sxx = 0, syy = 0, sxy = 0, fpx = 0, fpy = 0;
-    if (seg) {
-        fpx = p->fpx[q];
-        fpy = p->fpy[q];
-    } else {
-        V = p->m[q] / p->rho[q];
-        sxx = p->sxx[q];
-        syy = p->syy[q];
-        sxy = p->sxy[q];
-        lm_k_weights_G(p, q, W, rx, ry, Gxl, Gyl, &Gx, &Gy);
-    }
+    const lm_k_force_src s = lm_k_force_source(p, q, seg, W, rx, ry, Gxl, Gyl);
+    const double V = s.V, sxx = s.sxx, syy = s.syy, sxy = s.sxy, fpx = s.fpx, fpy = s.fpy;
+    const double *Gx = s.Gx, *Gy = s.Gy;
     for (int b = 0; b < W; b++) {
         const long row = lm_stencil_row(g, p->node[q], b);
         for (int a = 0; a < W; a++) {

@@ -48,6 +48,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "step.h"
+#include "step_kernels.h"
 #include "subcycle_band.h"
 #include "util.h"
 
@@ -327,17 +329,8 @@ void lm_band_grid_update(lm_sim *sim, const lm_band *b)
 void lm_band_g2p_nodes(lm_sim *sim, const lm_band *b, double *ux, double *uy)
 {
     lm_grid *g = &sim->grid;
-    for (size_t r = 0; r < b->n; r++) {
-        const long i = b->idx[r];
-        double s = g->m[i] > 0 ? 1.0 / g->m[i] : 0;
-        g->ax[i] = g->fx[i] * s;
-        g->ay[i] = g->fy[i] * s;
-        ux[i] = g->px[i] * s;
-        uy[i] = g->py[i] * s;
-    }
-    double *const fill[4] = {g->ax, g->ay, ux, uy};
-    static const lm_comp comp[4] = {LM_COMP_X, LM_COMP_Y, LM_COMP_X, LM_COMP_Y};
-    lm_grid_fill(g, 4, fill, comp);
+    for (size_t r = 0; r < b->n; r++) lm_k_g2p_node(g, b->idx[r], ux, uy);
+    lm_step_fill_g2p_nodes(g, ux, uy);
 }
 
 void lm_band_remap_end(lm_sim *sim, const lm_band *b)

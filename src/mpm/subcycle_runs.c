@@ -61,7 +61,7 @@ static LM_FORCE_INLINE void runs(const lm_sim *sim, double *const *f, const int 
             }
             double Nl[9], Gxl[9], Gyl[9];
             const double m = p->m[q], vx = p->vx[q], vy = p->vy[q];
-            const double *N = lm_k_weights_N(p, q, W, Nl), *Gx = NULL, *Gy = NULL;
+            const double *N = lm_k_weights_N(p, q, W, Nl);
             if (!forces) {
                 for (int k = 0; k < NS; k++) {
                     double w = m * N[k];
@@ -71,29 +71,19 @@ static LM_FORCE_INLINE void runs(const lm_sim *sim, double *const *f, const int 
                 continue;
             }
             const int seg = lm_k_segment_point(sim, q);
-            double V = 0, sxx = 0, syy = 0, sxy = 0, fpx = 0, fpy = 0;
-            if (seg) {
-                fpx = p->fpx[q];
-                fpy = p->fpy[q];
-            } else {
-                V = p->m[q] / p->rho[q];
-                sxx = p->sxx[q];
-                syy = p->syy[q];
-                sxy = p->sxy[q];
-                lm_k_weights_G(p, q, W, rx, ry, Gxl, Gyl, &Gx, &Gy);
-            }
+            const lm_k_force_src s = lm_k_force_source(p, q, seg, W, rx, ry, Gxl, Gyl);
             for (int k = 0; k < NS; k++) {
                 double w = m * N[k];
                 acc[0][k] += w;
                 acc[1][k] += w * vx;
                 acc[2][k] += w * vy;
                 if (seg) {
-                    acc[3][k] += N[k] * fpx;
-                    acc[4][k] += N[k] * fpy;
+                    acc[3][k] += N[k] * s.fpx;
+                    acc[4][k] += N[k] * s.fpy;
                 } else {
-                    double gx = Gx[k], gy = Gy[k];
-                    acc[3][k] -= V * (sxx * gx + sxy * gy);
-                    acc[4][k] -= V * (sxy * gx + syy * gy);
+                    double gx = s.Gx[k], gy = s.Gy[k];
+                    acc[3][k] -= s.V * (s.sxx * gx + s.sxy * gy);
+                    acc[4][k] -= s.V * (s.sxy * gx + s.syy * gy);
                 }
             }
         }
