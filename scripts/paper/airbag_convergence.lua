@@ -24,7 +24,7 @@
 --   change -0.27 / -0.30 / -0.45 %, 4 / 3 / 1 gas points outside (302 CPU
 --   s); the longer steps move the deepest by at most 0.03 mm, a
 --   hundred-and-fiftieth of the mesh-to-mesh change, the final velocity by
---   0.1 %, and the energy change to -0.42 / -0.63 / -1.22 % (the MUSL
+--   at most 0.13 %, and the energy change to -0.42 / -0.63 / -1.22 % (the MUSL
 --   step's loss grows with the step), 6 / 6 / 5 gas points outside
 --   (skin-grazers: the pre-run's larger blend a step), 47.8 CPU s. The two
 --   finer meshes run on two threads (the state is bit-identical for a
