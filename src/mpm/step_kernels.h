@@ -152,8 +152,6 @@ static LM_FORCE_INLINE void lm_k_scatter_mass_forces(const lm_sim *sim, size_t q
     const double *N = lm_k_weights_N(p, q, W, Nl);
     const int seg = segs && lm_k_segment_point(sim, q);
     const lm_k_force_src s = lm_k_force_source(p, q, seg, W, rx, ry, Gxl, Gyl);
-    const double V = s.V, sxx = s.sxx, syy = s.syy, sxy = s.sxy, fpx = s.fpx, fpy = s.fpy;
-    const double *Gx = s.Gx, *Gy = s.Gy;
     for (int b = 0; b < W; b++) {
         const long row = lm_stencil_row(g, p->node[q], b);
         for (int a = 0; a < W; a++) {
@@ -163,15 +161,15 @@ static LM_FORCE_INLINE void lm_k_scatter_mass_forces(const lm_sim *sim, size_t q
             *lm_k_at(f[2], split ? c[2] : NULL, row + a, lo, span, split) += w * vy;
             if (seg) {
                 *lm_k_at(f[3], split ? c[3] : NULL, row + a, lo, span, split) +=
-                    N[b * W + a] * fpx;
+                    N[b * W + a] * s.fpx;
                 *lm_k_at(f[4], split ? c[4] : NULL, row + a, lo, span, split) +=
-                    N[b * W + a] * fpy;
+                    N[b * W + a] * s.fpy;
             } else {
-                double gx = Gx[b * W + a], gy = Gy[b * W + a];
+                double gx = s.Gx[b * W + a], gy = s.Gy[b * W + a];
                 *lm_k_at(f[3], split ? c[3] : NULL, row + a, lo, span, split) -=
-                    V * (sxx * gx + sxy * gy);
+                    s.V * (s.sxx * gx + s.sxy * gy);
                 *lm_k_at(f[4], split ? c[4] : NULL, row + a, lo, span, split) -=
-                    V * (sxy * gx + syy * gy);
+                    s.V * (s.sxy * gx + s.syy * gy);
             }
         }
     }
@@ -281,6 +279,8 @@ static LM_FORCE_INLINE double lm_k_gradient_hoop(const lm_grid *g, const lm_part
     double r = p->x[q];
     return hoop && r > 0 ? s / r : 0;
 }
+
+/* L alone (lm_k_gradient_hoop without the hoop sum). */
 static LM_FORCE_INLINE void lm_k_velocity_gradient(const lm_grid *g, const lm_particles *p,
                                                    size_t q, const double *gvx,
                                                    const double *gvy, double L[4], double rx,
